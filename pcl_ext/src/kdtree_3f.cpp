@@ -1,0 +1,140 @@
+/*
+ * pcl_ext: KdTree3f, a k-d tree over float coordinates stored in leaf order.
+ */
+#include <pcl_ext/search/kdtree_3f.h>
+
+#include <nanoflann.hpp>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace pcl_ext
+{
+namespace search
+{
+namespace
+{
+/** nanoflann dataset adaptor over a flat xyz array. */
+struct FlatCloud
+{
+  std::vector<float> xyz;
+
+  std::size_t
+  kdtree_get_point_count () const { return xyz.size () / 3; }
+
+  float
+  kdtree_get_pt (std::size_t i, std::size_t dim) const { return xyz[3 * i + dim]; }
+
+  template <class BoundingBox>
+  bool
+  kdtree_get_bbox (BoundingBox&) const { return false; }
+};
+
+using Tree = nanoflann::KDTreeSingleIndexAdaptor<
+    nanoflann::L2_Simple_Adaptor<float, FlatCloud>, FlatCloud, 3, std::uint32_t>;
+}  // namespace
+
+struct KdTree3f::Impl
+{
+  FlatCloud data;
+  std::vector<pcl::index_t> point_indices;  // tree position -> caller's point index
+  std::unique_ptr<Tree> tree;
+};
+
+KdTree3f::KdTree3f () : impl_ (new Impl) {}
+
+KdTree3f::~KdTree3f () = default;
+
+void
+KdTree3f::build (std::vector<float> xyz, std::vector<pcl::index_t> point_indices,
+                 unsigned int leaf_size)
+{
+  impl_->tree.reset ();
+  impl_->data.xyz = std::move (xyz);
+  impl_->point_indices = std::move (point_indices);
+  const std::size_t n = impl_->data.kdtree_get_point_count ();
+  if (n == 0)
+    return;
+  impl_->tree.reset (new Tree (3, impl_->data,
+                               nanoflann::KDTreeSingleIndexAdaptorParams (std::max (1u, leaf_size))));
+
+  // Reorder the coordinates into the tree's leaf order and make the tree's permutation the
+  // identity: a leaf's points then sit next to each other in memory, and so do the points of
+  // nearby leaves, which is what makes a whole-cloud neighbourhood pass cache friendly.
+  auto& order = impl_->tree->vAcc;
+  std::vector<float> sorted_xyz (3 * n);
+  std::vector<pcl::index_t> sorted_indices (n);
+  for (std::size_t pos = 0; pos < n; ++pos)
+  {
+    const std::size_t old = order[pos];
+    std::copy_n (&impl_->data.xyz[3 * old], 3, &sorted_xyz[3 * pos]);
+    sorted_indices[pos] = impl_->point_indices[old];
+    order[pos] = static_cast<std::uint32_t> (pos);
+  }
+  impl_->data.xyz.swap (sorted_xyz);
+  impl_->point_indices.swap (sorted_indices);
+}
+
+std::size_t
+KdTree3f::size () const
+{
+  return impl_->tree ? impl_->point_indices.size () : 0;
+}
+
+std::size_t
+KdTree3f::nearestKSearch (const float* query, std::size_t k, pcl::index_t* indices,
+                          float* sqr_distances) const
+{
+  if (!impl_->tree || k == 0)
+    return 0;
+  k = std::min (k, size ());
+  // nanoflann writes tree positions; map them to point indices in place.
+  static_assert (sizeof (pcl::index_t) == sizeof (std::uint32_t), "index width");
+  auto* positions = reinterpret_cast<std::uint32_t*> (indices);
+  nanoflann::KNNResultSet<float, std::uint32_t> result (k);
+  result.init (positions, sqr_distances);
+  impl_->tree->findNeighbors (result, query, nanoflann::SearchParams ());
+  const std::size_t found = result.size ();
+  for (std::size_t i = 0; i < found; ++i)
+    indices[i] = impl_->point_indices[positions[i]];
+  return found;
+}
+
+std::size_t
+KdTree3f::radiusSearch (const float* query, double radius, pcl::Indices& indices,
+                        std::vector<float>& sqr_distances, std::size_t max_nn,
+                        bool sorted) const
+{
+  indices.clear ();
+  sqr_distances.clear ();
+  if (!impl_->tree || !(radius > 0.0))
+    return 0;
+  std::vector<std::pair<std::uint32_t, float>> matches;
+  nanoflann::SearchParams params;
+  params.sorted = sorted || max_nn > 0;
+  impl_->tree->radiusSearch (query, static_cast<float> (radius * radius), matches, params);
+  if (max_nn > 0 && matches.size () > max_nn)
+    matches.resize (max_nn);
+  indices.resize (matches.size ());
+  sqr_distances.resize (matches.size ());
+  for (std::size_t i = 0; i < matches.size (); ++i)
+  {
+    indices[i] = impl_->point_indices[matches[i].first];
+    sqr_distances[i] = matches[i].second;
+  }
+  return matches.size ();
+}
+
+const float*
+KdTree3f::point (std::size_t pos) const
+{
+  return &impl_->data.xyz[3 * pos];
+}
+
+pcl::index_t
+KdTree3f::pointIndex (std::size_t pos) const
+{
+  return impl_->point_indices[pos];
+}
+}  // namespace search
+}  // namespace pcl_ext
