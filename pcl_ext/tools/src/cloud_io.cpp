@@ -1,0 +1,96 @@
+/*
+ * pcl_ext: loading and saving clouds in apps.
+ */
+#include <pcl_ext/tools/cloud_io.h>
+#include <pcl_ext/tools/file_output.h>
+
+#include <pcl/console/print.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+
+#include <fstream>
+#include <iostream>
+
+namespace pcl_ext
+{
+namespace tools
+{
+int
+findField (const pcl::PCLPointCloud2& cloud, const std::string& name)
+{
+  for (std::size_t i = 0; i < cloud.fields.size (); ++i)
+    if (cloud.fields[i].name == name)
+      return static_cast<int> (i);
+  return -1;
+}
+
+bool
+loadCloud (const std::string& path, pcl::PCLPointCloud2& cloud)
+{
+  cloud = pcl::PCLPointCloud2 ();
+  if (!std::ifstream (path).good ())
+  {
+    std::cerr << "Error: cannot open " << path << ": no such readable file.\n";
+    return false;
+  }
+  const std::string ext = fileExtension (path);
+  // PCL prints its own parse errors; silence them and report once, naming the file.
+  const auto level = pcl::console::getVerbosityLevel ();
+  pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
+  int result = -1;
+  try
+  {
+    if (ext == "pcd")
+      result = pcl::io::loadPCDFile (path, cloud);
+    else if (ext == "ply")
+      result = pcl::io::loadPLYFile (path, cloud);
+    else
+    {
+      pcl::console::setVerbosityLevel (level);
+      std::cerr << "Error: " << path << ": unsupported extension '" << ext
+                << "' (expected .pcd or .ply).\n";
+      return false;
+    }
+  }
+  catch (const std::exception&)
+  {
+    result = -1;  // reported below, naming the file
+  }
+  pcl::console::setVerbosityLevel (level);
+  if (result < 0)
+  {
+    std::cerr << "Error: " << path << " is not a valid " << ext << " file.\n";
+    cloud = pcl::PCLPointCloud2 ();
+    return false;
+  }
+  if (findField (cloud, "x") < 0 || findField (cloud, "y") < 0 || findField (cloud, "z") < 0)
+  {
+    std::cerr << "Error: " << path << " has no x, y, z fields.\n";
+    cloud = pcl::PCLPointCloud2 ();
+    return false;
+  }
+  return true;
+}
+
+bool
+saveCloud (const std::string& path, const pcl::PCLPointCloud2& cloud, bool ascii)
+{
+  const std::string ext = fileExtension (path);
+  if (ext != "pcd" && ext != "ply")
+  {
+    std::cerr << "Error: cannot write " << path << ": unsupported extension '" << ext
+              << "' (expected .pcd or .ply).\n";
+    return false;
+  }
+  return writeFileAtomically (path, [&] (const std::string& temporary) {
+    if (ext == "ply")
+      return pcl::io::savePLYFile (temporary, cloud, Eigen::Vector4f::Zero (),
+                                   Eigen::Quaternionf::Identity (), !ascii) == 0;
+    pcl::PCDWriter writer;
+    if (ascii)
+      return writer.writeASCII (temporary, cloud) == 0;
+    return writer.writeBinaryCompressed (temporary, cloud) == 0;
+  });
+}
+}  // namespace tools
+}  // namespace pcl_ext
