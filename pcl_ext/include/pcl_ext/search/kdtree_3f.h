@@ -6,6 +6,7 @@
 #include <pcl/types.h>
 
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -46,10 +47,13 @@ public:
   /** \brief Up to \a k nearest neighbours of \a query, closest first.
     * \param[out] indices point indices (as given to build)
     * \param[out] sqr_distances squared distances
+    * \param[in] sqr_bound a squared distance within which at least k points are known to lie
+    * (it prunes the search from the start; the result does not depend on it)
     * \return the number found (min(k, size())) */
   std::size_t
   nearestKSearch (const float* query, std::size_t k, pcl::index_t* indices,
-                  float* sqr_distances) const;
+                  float* sqr_distances,
+                  float sqr_bound = std::numeric_limits<float>::max ()) const;
 
   /** \brief All neighbours within \a radius of \a query.
     * \param[in] max_nn keep only the max_nn closest (0: all)

@@ -10,7 +10,9 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace pcl_ext
@@ -150,32 +152,52 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree ()
   sqr_distances_.resize (offsets_[rows]);
 
   // For the whole cloud, visit the points in the tree's leaf order: consecutive queries then
-  // walk the same branches and leaves. Rows are still written at their own offsets.
+  // walk the same branches and leaves, and each query's k-th distance bounds the next one's
+  // (|q' - x| <= |q' - q| + |q - x|), so the search prunes from its first step. Work is split
+  // into fixed runs of queries, each started without a bound, so the result (ties included)
+  // is the same for any number of threads.
   const bool tree_order = fake_indices_ && tree.size () == searchable_;
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (tree_order ? tree.size () : rows);
+  const std::size_t n = tree_order ? tree.size () : rows;
+  constexpr std::size_t run = 256;
+  const std::ptrdiff_t num_runs = static_cast<std::ptrdiff_t> ((n + run - 1) / run);
   const unsigned int threads = resolveThreadCount (threads_);
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 256) default(none) \
-    shared(tree, k, n, tree_order)
-  for (std::ptrdiff_t j = 0; j < n; ++j)
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1) default(none) \
+    shared(tree, k, n, num_runs, tree_order)
+  for (std::ptrdiff_t r = 0; r < num_runs; ++r)
   {
-    std::size_t row;
-    const float* q;
-    float query[3];
-    if (tree_order)
+    float previous[3] = {0, 0, 0};
+    float previous_kth = -1.0f;  // k-th distance of the previous query; < 0: none
+    const std::size_t last = std::min (n, static_cast<std::size_t> (r + 1) * run);
+    for (std::size_t j = static_cast<std::size_t> (r) * run; j < last; ++j)
     {
-      row = static_cast<std::size_t> (tree.pointIndex (static_cast<std::size_t> (j)));
-      q = tree.point (static_cast<std::size_t> (j));
+      std::size_t row;
+      float q[3];
+      if (tree_order)
+      {
+        row = static_cast<std::size_t> (tree.pointIndex (j));
+        std::copy_n (tree.point (j), 3, q);
+      }
+      else
+      {
+        row = j;
+        const PointT& p = (*input_)[(*indices_)[row]];
+        if (!pcl::isFinite (p))
+          continue;
+        q[0] = p.x; q[1] = p.y; q[2] = p.z;
+      }
+      float bound = std::numeric_limits<float>::max ();
+      if (previous_kth >= 0.0f)
+      {
+        const float dx = q[0] - previous[0], dy = q[1] - previous[1], dz = q[2] - previous[2];
+        const float reach = std::sqrt (previous_kth) + std::sqrt (dx * dx + dy * dy + dz * dz);
+        // Widened by a relative margin so float rounding never drops a true neighbour.
+        bound = reach * reach * (1.0f + 1e-4f) + 1e-30f;
+      }
+      float* d2 = &sqr_distances_[offsets_[row]];
+      tree.nearestKSearch (q, k, &indices_flat_[offsets_[row]], d2, bound);
+      std::copy_n (q, 3, previous);
+      previous_kth = d2[k - 1];
     }
-    else
-    {
-      row = static_cast<std::size_t> (j);
-      const PointT& p = (*input_)[(*indices_)[row]];
-      if (!pcl::isFinite (p))
-        continue;
-      query[0] = p.x; query[1] = p.y; query[2] = p.z;
-      q = query;
-    }
-    tree.nearestKSearch (q, k, &indices_flat_[offsets_[row]], &sqr_distances_[offsets_[row]]);
   }
 }
 
