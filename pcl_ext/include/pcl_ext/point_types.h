@@ -44,7 +44,7 @@ pointClassName (PointClass c)
   * Written by the covariance feature estimators. Fields follow pcl::Normal's layout for the
   * normal, so pcl::copyPointCloud to a normal cloud works field by field.
   */
-struct EIGEN_ALIGNED16 CovarianceFeatures
+struct EIGEN_ALIGN16 CovarianceFeatures
 {
   PCL_ADD_NORMAL4D;            // normal_x, normal_y, normal_z: eigenvector of the smallest eigenvalue
   float lambda0;               ///< smallest eigenvalue

@@ -1,0 +1,161 @@
+/*
+ * pcl_ext: headless rendering of coloured clouds to PNG.
+ */
+#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/visualization/offscreen_renderer.h>
+
+#include <pcl/common/point_tests.h>
+#include <pcl/visualization/pcl_visualizer.h>
+
+#include <vtkPNGWriter.h>
+#include <vtkRenderWindow.h>
+#include <vtkSmartPointer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+namespace pcl_ext
+{
+namespace visualization
+{
+bool
+displayAvailable ()
+{
+  const char* display = std::getenv ("DISPLAY");
+  return display && *display;
+}
+
+namespace
+{
+/** Centre and radius of the bounding box of every finite point in every view. */
+bool
+sceneBounds (const std::vector<View>& views, Eigen::Vector3d& centre, double& radius)
+{
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant (std::numeric_limits<double>::infinity ());
+  Eigen::Vector3d hi = -lo;
+  bool any = false;
+  for (const auto& view : views)
+    for (const auto& layer : view.layers)
+      if (layer.cloud)
+        for (const auto& p : *layer.cloud)
+          if (pcl::isFinite (p))
+          {
+            const Eigen::Vector3d q (p.x, p.y, p.z);
+            lo = lo.cwiseMin (q);
+            hi = hi.cwiseMax (q);
+            any = true;
+          }
+  if (!any)
+    return false;
+  centre = 0.5 * (lo + hi);
+  radius = std::max (0.5 * (hi - lo).norm (), 1e-6);
+  return true;
+}
+}  // namespace
+
+bool
+renderToPng (const std::vector<View>& views, const std::string& path,
+             const RenderOptions& options)
+{
+  if (views.empty ())
+  {
+    std::cerr << "Error: nothing to render into " << path << ".\n";
+    return false;
+  }
+  if (options.width < 16 || options.height < 16 || options.width > 16384 ||
+      options.height > 16384)
+  {
+    std::cerr << "Error: image size " << options.width << " x " << options.height
+              << " is out of range (16 .. 16384).\n";
+    return false;
+  }
+  if (!(options.view_direction.norm () > 0.0) || !options.view_direction.allFinite () ||
+      !(options.zoom_out > 0.0))
+  {
+    std::cerr << "Error: invalid camera settings for " << path << ".\n";
+    return false;
+  }
+  Eigen::Vector3d centre;
+  double radius;
+  if (!sceneBounds (views, centre, radius))
+  {
+    std::cerr << "Error: no finite point to render into " << path << ".\n";
+    return false;
+  }
+  if (!displayAvailable ())
+  {
+    std::cerr << "Error: rendering " << path << " needs an X display (VTK here is built for X "
+              << "only); on a headless machine run under Xvfb, e.g. 'xvfb-run -a <command>'.\n";
+    return false;
+  }
+  if (!tools::checkWritable (path))
+    return false;
+
+  // A visualizer without an interactor: never spin() and never saveScreenshot() here (both
+  // need the interactor); read the frame buffer through vtkWindowToImageFilter instead.
+  pcl::visualization::PCLVisualizer viewer ("pcl_ext offscreen", false);
+  viewer.getRenderWindow ()->SetOffScreenRendering (1);
+  viewer.getRenderWindow ()->SetSize (options.width, options.height);
+
+  const int n = static_cast<int> (views.size ());
+  const int cols = options.columns > 0 ? std::min (options.columns, n)
+                                       : static_cast<int> (std::ceil (std::sqrt (double (n))));
+  const int rows = (n + cols - 1) / cols;
+  const Eigen::Vector3d dir = options.view_direction.normalized ();
+  // Fit the bounding sphere in the panel's smaller field of view.
+  const Eigen::Vector3d eye = centre - dir * radius * options.zoom_out;
+  const double bg[3] = {options.background[0] / 255.0, options.background[1] / 255.0,
+                        options.background[2] / 255.0};
+  const double text = (bg[0] + bg[1] + bg[2]) / 3.0 > 0.5 ? 0.0 : 1.0;
+
+  for (int v = 0; v < n; ++v)
+  {
+    const int col = v % cols, row = v / cols;
+    // VTK viewports are in normalised coordinates with y up; panel 0 is top left.
+    const double x0 = double (col) / cols, x1 = double (col + 1) / cols;
+    const double y1 = 1.0 - double (row) / rows, y0 = 1.0 - double (row + 1) / rows;
+    int viewport = 0;
+    viewer.createViewPort (x0, y0, x1, y1, viewport);
+    viewer.setBackgroundColor (bg[0], bg[1], bg[2], viewport);
+    for (std::size_t l = 0; l < views[v].layers.size (); ++l)
+    {
+      const auto& layer = views[v].layers[l];
+      if (!layer.cloud || layer.cloud->empty ())
+        continue;
+      const std::string id = "v" + std::to_string (v) + "l" + std::to_string (l);
+      pcl::visualization::PointCloudColorHandlerRGBField<pcl::PointXYZRGB> rgb (layer.cloud);
+      viewer.addPointCloud<pcl::PointXYZRGB> (layer.cloud, rgb, id, viewport);
+      viewer.setPointCloudRenderingProperties (pcl::visualization::PCL_VISUALIZER_POINT_SIZE,
+                                               layer.point_size, id, viewport);
+    }
+    if (!views[v].title.empty ())
+    {
+      const int panel_height = options.height / rows;
+      const int font = std::max (10, std::min (22, panel_height / 22));
+      viewer.addText (views[v].title, 8, panel_height - font - 8, font, text, text, text,
+                      "title" + std::to_string (v), viewport);
+    }
+    viewer.setCameraPosition (eye.x (), eye.y (), eye.z (), centre.x (), centre.y (),
+                              centre.z (), options.up.x (), options.up.y (), options.up.z (),
+                              viewport);
+    viewer.setCameraClipDistances (radius * 0.01, radius * (options.zoom_out + 4.0), viewport);
+  }
+  viewer.getRenderWindow ()->Render ();
+
+  auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New ();
+  grab->SetInput (viewer.getRenderWindow ());
+  grab->SetInputBufferTypeToRGB ();
+  grab->ReadFrontBufferOff ();
+  grab->Update ();
+  return tools::writeFileAtomically (path, [&grab] (const std::string& temporary) {
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New ();
+    writer->SetFileName (temporary.c_str ());
+    writer->SetInputConnection (grab->GetOutputPort ());
+    writer->Write ();
+    return writer->GetErrorCode () == 0;
+  });
+}
+}  // namespace visualization
+}  // namespace pcl_ext

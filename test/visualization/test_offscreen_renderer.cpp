@@ -1,0 +1,121 @@
+/*
+ * Test of the offscreen renderer: the PNG exists, has the asked size, and shows the cloud.
+ * Needs an X display (scripts/test.sh starts Xvfb when none is set).
+ */
+#include <pcl_ext/visualization/colour_maps.h>
+#include <pcl_ext/visualization/offscreen_renderer.h>
+
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+namespace
+{
+pcl::PointCloud<pcl::PointXYZ>
+sphereCloud (int n)
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 0; i < n; ++i)
+  {
+    // Fibonacci sphere: even coverage, no randomness.
+    const double z = 1.0 - 2.0 * (i + 0.5) / n;
+    const double r = std::sqrt (1.0 - z * z);
+    const double phi = i * 2.399963229728653;
+    cloud.push_back (pcl::PointXYZ (r * std::cos (phi), r * std::sin (phi), z));
+  }
+  return cloud;
+}
+
+std::string
+temporaryPng (const std::string& stem)
+{
+  return testing::TempDir () + "/" + stem + "_" + std::to_string (::getpid ()) + ".png";
+}
+}  // namespace
+
+TEST (OffscreenRenderer, WritesPngOfRequestedSizeShowingTheCloud)
+{
+  ASSERT_TRUE (pcl_ext::visualization::displayAvailable ())
+      << "this test needs an X display; scripts/test.sh starts Xvfb when none is set";
+  const auto cloud = sphereCloud (20000);
+  std::vector<float> height;
+  for (const auto& p : cloud)
+    height.push_back (p.z);
+  using namespace pcl_ext::visualization;
+  View scalar {"height", {{makeColouredCloud (cloud, colourByScalar (height)), 3.0}}};
+  std::vector<std::uint32_t> labels;
+  for (const auto& p : cloud)
+    labels.push_back (p.x > 0 ? 1 : 2);
+  View labelled {"labels", {{makeColouredCloud (cloud, colourByLabel (labels)), 3.0}}};
+
+  RenderOptions options;
+  options.width = 640;
+  options.height = 300;
+  const std::string path = temporaryPng ("render");
+  std::remove (path.c_str ());
+  ASSERT_TRUE (renderToPng ({scalar, labelled}, path, options));
+
+  auto reader = vtkSmartPointer<vtkPNGReader>::New ();
+  ASSERT_TRUE (reader->CanReadFile (path.c_str ()));
+  reader->SetFileName (path.c_str ());
+  reader->Update ();
+  vtkImageData* image = reader->GetOutput ();
+  int dims[3];
+  image->GetDimensions (dims);
+  EXPECT_EQ (dims[0], 640);
+  EXPECT_EQ (dims[1], 300);
+  // Count pixels that differ from the white background, in each half (one panel each).
+  std::size_t left = 0, right = 0;
+  const int channels = image->GetNumberOfScalarComponents ();
+  for (int y = 0; y < dims[1]; ++y)
+    for (int x = 0; x < dims[0]; ++x)
+    {
+      const auto* px = static_cast<unsigned char*> (image->GetScalarPointer (x, y, 0));
+      bool background = true;
+      for (int c = 0; c < std::min (channels, 3); ++c)
+        background = background && px[c] > 245;
+      if (!background)
+        (x < dims[0] / 2 ? left : right) += 1;
+    }
+  EXPECT_GT (left, 2000u);
+  EXPECT_GT (right, 2000u);
+  std::remove (path.c_str ());
+}
+
+TEST (OffscreenRenderer, RefusesNothingToDrawAndBadSizesWithoutWriting)
+{
+  using namespace pcl_ext::visualization;
+  const std::string path = temporaryPng ("refused");
+  std::remove (path.c_str ());
+  EXPECT_FALSE (renderToPng ({}, path));
+  View empty {"empty", {{pcl::PointCloud<pcl::PointXYZRGB>::Ptr (new pcl::PointCloud<pcl::PointXYZRGB>), 2.0}}};
+  EXPECT_FALSE (renderToPng ({empty}, path));
+  const auto cloud = sphereCloud (100);
+  View ok {"ok", {{makeColouredCloud (cloud, std::vector<Colour> (100, Colour {1, 2, 3})), 2.0}}};
+  RenderOptions tiny;
+  tiny.width = 0;
+  EXPECT_FALSE (renderToPng ({ok}, path, tiny));
+  EXPECT_FALSE (renderToPng ({ok}, "/nonexistent-folder/x.png"));
+  EXPECT_FALSE (std::ifstream (path).good ());
+}
+
+TEST (ColourMaps, LabelsAreStableAndDistinct)
+{
+  using namespace pcl_ext::visualization;
+  const auto a = colourByLabel ({0, 1, 2, 1});
+  EXPECT_EQ (a[0].r, 170);
+  EXPECT_EQ (a[1].r, a[3].r);
+  EXPECT_TRUE (a[1].r != a[2].r || a[1].g != a[2].g || a[1].b != a[2].b);
+  const auto s = colourByScalar ({0.0f, 1.0f, NAN}, ColourMap::Grey, 0.0f, 1.0f);
+  EXPECT_EQ (s[0].r, 0);
+  EXPECT_EQ (s[1].r, 255);
+  EXPECT_EQ (s[2].r, 70);
+  const auto c = colourByClass ({2});
+  EXPECT_EQ (c[0].r, 220);
+}
