@@ -1,0 +1,221 @@
+/*
+ * pcl_ext: the true geometry of a synthetic scene, with a BVH for ray casting.
+ */
+#include <pcl_ext/simulation/random.h>
+#include <pcl_ext/simulation/scene_geometry.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pcl_ext
+{
+namespace simulation
+{
+int
+SceneGeometry::addPrimitive (Primitive::Ptr primitive)
+{
+  primitives_.push_back (std::move (primitive));
+  return static_cast<int> (primitives_.size ()) - 1;
+}
+
+void
+SceneGeometry::addCurve (const GroundTruthCurve& curve)
+{
+  curves_.push_back (curve);
+}
+
+void
+SceneGeometry::build ()
+{
+  std::vector<Aabb> boxes (primitives_.size ());
+  bounds_ = Aabb ();
+  for (std::size_t i = 0; i < primitives_.size (); ++i)
+  {
+    boxes[i] = primitives_[i]->bounds ().grown (1e-9);
+    bounds_.extend (boxes[i]);
+  }
+  order_.resize (primitives_.size ());
+  for (std::size_t i = 0; i < order_.size (); ++i)
+    order_[i] = static_cast<int> (i);
+  nodes_.clear ();
+  if (!primitives_.empty ())
+    buildNode (0, static_cast<int> (primitives_.size ()), boxes);
+
+  curve_boxes_.resize (curves_.size ());
+  curves_of_segment_.clear ();
+  for (std::size_t i = 0; i < curves_.size (); ++i)
+  {
+    curve_boxes_[i] = curves_[i].bounds ();
+    curves_of_segment_[curves_[i].segment_a].push_back (static_cast<int> (i));
+    if (curves_[i].segment_b != 0 && curves_[i].segment_b != curves_[i].segment_a)
+      curves_of_segment_[curves_[i].segment_b].push_back (static_cast<int> (i));
+  }
+}
+
+int
+SceneGeometry::buildNode (int first, int count, const std::vector<Aabb>& boxes)
+{
+  const int index = static_cast<int> (nodes_.size ());
+  nodes_.emplace_back ();
+  Aabb box, centres;
+  for (int i = first; i < first + count; ++i)
+  {
+    box.extend (boxes[order_[i]]);
+    centres.extend (boxes[order_[i]].centre ());
+  }
+  nodes_[index].box = box;
+  if (count <= 2)
+  {
+    nodes_[index].first = first;
+    nodes_[index].count = count;
+    return index;
+  }
+  // Median split along the widest extent of the centres.
+  int axis = 0;
+  (centres.max - centres.min).maxCoeff (&axis);
+  const int mid = first + count / 2;
+  std::nth_element (order_.begin () + first, order_.begin () + mid, order_.begin () + first + count,
+                    [&] (int a, int b) {
+                      const double ca = boxes[a].centre ()[axis], cb = boxes[b].centre ()[axis];
+                      return ca < cb || (ca == cb && a < b);
+                    });
+  const int left = buildNode (first, mid - first, boxes);
+  const int right = buildNode (mid, first + count - mid, boxes);
+  nodes_[index].left = left;
+  nodes_[index].right = right;
+  return index;
+}
+
+bool
+SceneGeometry::passesThrough (int primitive, std::uint64_t ray_key) const
+{
+  const double porosity = primitives_[primitive]->porosity;
+  if (porosity <= 0.0)
+    return false;
+  RandomStream rng (hashCombine (ray_key, static_cast<std::uint64_t> (primitive) + 0x5eedULL));
+  return rng.uniform () < porosity;
+}
+
+bool
+SceneGeometry::intersect (const Ray& ray, double t_max, std::uint64_t ray_key,
+                          RayHit& hit) const
+{
+  if (nodes_.empty ())
+    return false;
+  const Vec3 inv = ray.direction.cwiseInverse ();
+  double best = t_max;
+  bool found = false;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = nodes_[stack[--top]];
+    double t0 = 0.0, t1 = best;
+    if (!node.box.clip (ray.origin, inv, t0, t1))
+      continue;
+    if (node.left < 0)
+    {
+      for (int k = node.first; k < node.first + node.count; ++k)
+      {
+        const int p = order_[k];
+        double t;
+        Vec3 n;
+        if (primitives_[p]->intersect (ray, 0.0, best, t, n) && !passesThrough (p, ray_key))
+        {
+          best = t;
+          hit.t = t;
+          hit.normal = n;
+          hit.primitive = p;
+          found = true;
+        }
+      }
+      continue;
+    }
+    // Visit the nearer child first so that `best` shrinks early.
+    double la0 = 0.0, la1 = best, ra0 = 0.0, ra1 = best;
+    const bool hl = nodes_[node.left].box.clip (ray.origin, inv, la0, la1);
+    const bool hr = nodes_[node.right].box.clip (ray.origin, inv, ra0, ra1);
+    if (hl && hr)
+    {
+      if (la0 <= ra0)
+      {
+        stack[top++] = node.right;
+        stack[top++] = node.left;
+      }
+      else
+      {
+        stack[top++] = node.left;
+        stack[top++] = node.right;
+      }
+    }
+    else if (hl)
+      stack[top++] = node.left;
+    else if (hr)
+      stack[top++] = node.right;
+  }
+  return found;
+}
+
+bool
+SceneGeometry::intersectBruteForce (const Ray& ray, double t_max, std::uint64_t ray_key,
+                                    RayHit& hit) const
+{
+  double best = t_max;
+  bool found = false;
+  for (std::size_t p = 0; p < primitives_.size (); ++p)
+  {
+    double t;
+    Vec3 n;
+    if (primitives_[p]->intersect (ray, 0.0, best, t, n) &&
+        !passesThrough (static_cast<int> (p), ray_key))
+    {
+      best = t;
+      hit.t = t;
+      hit.normal = n;
+      hit.primitive = static_cast<int> (p);
+      found = true;
+    }
+  }
+  return found;
+}
+
+void
+SceneGeometry::curveDistances (const Vec3& p, std::uint32_t segment, double max_distance,
+                               double& crease, double& border) const
+{
+  const double inf = std::numeric_limits<double>::infinity ();
+  crease = border = inf;
+  const auto it = curves_of_segment_.find (segment);
+  if (it == curves_of_segment_.end ())
+    return;
+  for (const int c : it->second)
+  {
+    const Aabb& box = curve_boxes_[c];
+    if ((p.array () < box.min.array () - max_distance).any () ||
+        (p.array () > box.max.array () + max_distance).any ())
+      continue;
+    const double d = curves_[c].distance (p);
+    if (d > max_distance)
+      continue;
+    if (curves_[c].kind == GroundTruthCurve::Kind::Crease)
+      crease = std::min (crease, d);
+    else
+      border = std::min (border, d);
+  }
+}
+
+PointClass
+SceneGeometry::classify (const Vec3& p, std::uint32_t segment, double distance) const
+{
+  double crease, border;
+  curveDistances (p, segment, distance, crease, border);
+  if (crease <= distance && crease <= border)
+    return PointClass::Edge;
+  if (border <= distance)
+    return PointClass::Boundary;
+  return PointClass::Surface;
+}
+}  // namespace simulation
+}  // namespace pcl_ext
