@@ -1,0 +1,130 @@
+/*
+ * Tests of atomic output: a failed write never leaves a file, a good one replaces the old.
+ */
+#include <pcl_ext/tools/cloud_io.h>
+#include <pcl_ext/tools/file_output.h>
+
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <dirent.h>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace
+{
+std::string
+freshFolder (const std::string& name)
+{
+  const std::string dir = testing::TempDir () + "/pcl_ext_" + name + "_" +
+                          std::to_string (::getpid ());
+  ::mkdir (dir.c_str (), 0755);
+  return dir;
+}
+
+std::vector<std::string>
+listFolder (const std::string& dir)
+{
+  std::vector<std::string> names;
+  if (DIR* d = ::opendir (dir.c_str ()))
+  {
+    while (dirent* e = ::readdir (d))
+      if (std::string (e->d_name) != "." && std::string (e->d_name) != "..")
+        names.push_back (e->d_name);
+    ::closedir (d);
+  }
+  return names;
+}
+
+std::string
+readAll (const std::string& path)
+{
+  std::ifstream in (path);
+  std::stringstream s;
+  s << in.rdbuf ();
+  return s.str ();
+}
+}  // namespace
+
+TEST (FileOutput, FailedWriteLeavesNothingAndKeepsTheOldFile)
+{
+  const std::string dir = freshFolder ("atomic");
+  const std::string path = dir + "/result.txt";
+  ASSERT_TRUE (pcl_ext::tools::writeTextFile (path, "old"));
+  testing::internal::CaptureStderr ();
+  EXPECT_FALSE (pcl_ext::tools::writeFileAtomically (path, [] (const std::string& tmp) {
+    std::ofstream (tmp) << "half";
+    return false;  // the writer failed midway
+  }));
+  EXPECT_FALSE (pcl_ext::tools::writeFileAtomically (path, [] (const std::string& tmp) -> bool {
+    std::ofstream (tmp) << "half";
+    throw std::runtime_error ("disk on fire");
+  }));
+  testing::internal::GetCapturedStderr ();
+  EXPECT_EQ (readAll (path), "old");
+  EXPECT_EQ (listFolder (dir), std::vector<std::string> {"result.txt"});
+  ASSERT_TRUE (pcl_ext::tools::writeTextFile (path, "new"));
+  EXPECT_EQ (readAll (path), "new");
+  std::remove (path.c_str ());
+  ::rmdir (dir.c_str ());
+}
+
+TEST (FileOutput, UnwritableTargetsAreRefusedUpFront)
+{
+  testing::internal::CaptureStderr ();
+  EXPECT_FALSE (pcl_ext::tools::checkWritable ("/nonexistent-folder/out.pcd"));
+  EXPECT_FALSE (pcl_ext::tools::checkWritable (""));
+  EXPECT_FALSE (pcl_ext::tools::checkWritable (testing::TempDir ()));  // a folder
+  EXPECT_FALSE (pcl_ext::tools::writeTextFile ("/nonexistent-folder/out.txt", "x"));
+  testing::internal::GetCapturedStderr ();
+  EXPECT_EQ (pcl_ext::tools::fileExtension ("a/b.c/scan.PCD"), "pcd");
+  EXPECT_EQ (pcl_ext::tools::fileExtension ("a/b.c/scan"), "");
+}
+
+TEST (CloudIo, RoundTripAndMalformedInput)
+{
+  const std::string dir = freshFolder ("cloud_io");
+  pcl::PointCloud<pcl::PointXYZI> cloud;
+  for (int i = 0; i < 10; ++i)
+  {
+    pcl::PointXYZI p;
+    p.x = i; p.y = 2 * i; p.z = 6000000.0f; p.intensity = 0.5f * i;
+    cloud.push_back (p);
+  }
+  for (const std::string ext : {"pcd", "ply"})
+  {
+    const std::string path = dir + "/c." + ext;
+    ASSERT_TRUE (pcl_ext::tools::saveCloud (path, cloud));
+    pcl::PointCloud<pcl::PointXYZI> back;
+    ASSERT_TRUE (pcl_ext::tools::loadCloud (path, back));
+    ASSERT_EQ (back.size (), cloud.size ());
+    EXPECT_EQ (back[7].y, 14.0f);
+    EXPECT_EQ (back[7].intensity, 3.5f);
+    std::remove (path.c_str ());
+  }
+  testing::internal::CaptureStderr ();
+  pcl::PCLPointCloud2 blob;
+  EXPECT_FALSE (pcl_ext::tools::loadCloud (dir + "/missing.pcd", blob));
+  const std::string garbage = dir + "/garbage.pcd";
+  std::ofstream (garbage) << "VERSION .7\nFIELDS x y z\nSIZE 4 4\nnonsense\n";
+  EXPECT_FALSE (pcl_ext::tools::loadCloud (garbage, blob));
+  const std::string truncated = dir + "/truncated.pcd";
+  std::ofstream (truncated) << "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
+                               "COUNT 1 1 1\nWIDTH 5\nHEIGHT 1\nPOINTS 5\nDATA binary\n\x01\x02";
+  EXPECT_FALSE (pcl_ext::tools::loadCloud (truncated, blob));
+  const std::string no_xyz = dir + "/noxyz.pcd";
+  std::ofstream (no_xyz) << "# .PCD v0.7\nVERSION 0.7\nFIELDS a\nSIZE 4\nTYPE F\nCOUNT 1\n"
+                            "WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1\n";
+  EXPECT_FALSE (pcl_ext::tools::loadCloud (no_xyz, blob));
+  EXPECT_FALSE (pcl_ext::tools::loadCloud (dir + "/c.xyz", blob));
+  EXPECT_FALSE (pcl_ext::tools::saveCloud (dir + "/out.txt", cloud));
+  testing::internal::GetCapturedStderr ();
+  for (const auto& f : {garbage, truncated, no_xyz})
+    std::remove (f.c_str ());
+  EXPECT_TRUE (listFolder (dir).empty ());
+  ::rmdir (dir.c_str ());
+}
