@@ -117,5 +117,5 @@ TEST (ColourMaps, LabelsAreStableAndDistinct)
   EXPECT_EQ (s[1].r, 255);
   EXPECT_EQ (s[2].r, 70);
   const auto c = colourByClass ({2});
-  EXPECT_EQ (c[0].r, 220);
+  EXPECT_EQ (c[0].r, 225);
 }

@@ -107,10 +107,10 @@ colourByClass (const std::vector<std::uint32_t>& classes)
   for (std::size_t i = 0; i < classes.size (); ++i)
     switch (static_cast<PointClass> (classes[i]))
     {
-      case PointClass::Surface: out[i] = {150, 170, 200}; break;
-      case PointClass::Edge: out[i] = {220, 30, 30}; break;
-      case PointClass::Boundary: out[i] = {245, 160, 0}; break;
-      default: out[i] = {60, 60, 60}; break;
+      case PointClass::Surface: out[i] = {60, 110, 230}; break;
+      case PointClass::Edge: out[i] = {225, 30, 30}; break;
+      case PointClass::Boundary: out[i] = {30, 175, 60}; break;
+      default: out[i] = {120, 120, 120}; break;
     }
   return out;
 }

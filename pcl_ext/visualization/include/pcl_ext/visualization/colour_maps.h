@@ -32,8 +32,8 @@ enum class ColourMap
 std::vector<Colour>
 colourByLabel (const std::vector<std::uint32_t>& labels);
 
-/** \brief Fixed colours for pcl_ext::PointClass values: surface light grey-blue, edge red,
-  * boundary orange, unknown dark grey. */
+/** \brief Fixed colours for pcl_ext::PointClass values, as in Belton & Lichti's figures:
+  * surface blue, edge red, boundary green, unknown grey. */
 std::vector<Colour>
 colourByClass (const std::vector<std::uint32_t>& classes);
 
