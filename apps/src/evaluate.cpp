@@ -3,11 +3,14 @@
  *
  *   pcl_ext_evaluate -segments prediction.pcd truth.pcd [-field label] [-truth_field segment]
  *   pcl_ext_evaluate -classes prediction.pcd truth.pcd [-field label] [-truth_field class]
+ *   pcl_ext_evaluate -transform estimated.txt true.txt [-reference X,Y,Z]
  */
 #include <pcl_ext/evaluation/classification_metrics.h>
+#include <pcl_ext/evaluation/registration_metrics.h>
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/io/class_mapping.h>
 #include <pcl_ext/io/cloud_fields.h>
+#include <pcl_ext/io/transform_file.h>
 #include <pcl_ext/point_types.h>
 #include <pcl_ext/tools/cloud_io.h>
 #include <pcl_ext/tools/command_line.h>
@@ -216,13 +219,62 @@ printClassification (const pcl_ext::ClassificationMetrics& m, CsvRows& csv)
     csv.add ("confusion", label, m.classes[i].name, "predicted_0", m.unclassified[i]);
   }
 }
+/** -transform: rotation and translation error of an estimated transform. */
+int
+evaluateTransform (const std::string& estimated_path, const std::string& true_path,
+                   const std::string& reference_text, const std::string& csv_path)
+{
+  Eigen::Vector3d reference = Eigen::Vector3d::Zero ();
+  if (!reference_text.empty ())
+  {
+    double v[3];
+    char tail;
+    if (std::sscanf (reference_text.c_str (), "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &tail) != 3)
+    {
+      std::cerr << "pcl_ext_evaluate: error: invalid -reference '" << reference_text
+                << "' (expected X,Y,Z).\n";
+      return 1;
+    }
+    reference = Eigen::Vector3d (v[0], v[1], v[2]);
+  }
+  Eigen::Matrix4d estimated, truth;
+  try
+  {
+    pcl_ext::io::loadTransform (estimated_path, estimated);
+    pcl_ext::io::loadTransform (true_path, truth);
+  }
+  catch (const pcl_ext::io::ReadError& e)
+  {
+    std::cerr << "Error: " << e.what () << "\n";
+    return 1;
+  }
+  const auto e = pcl_ext::computeTransformationError (estimated, truth, reference);
+  std::cout << "\nTransformation error of " << estimated_path << " against " << true_path << ":\n"
+            << "  rotation error     " << num (e.rotation_deg) << " deg\n"
+            << "  translation error  " << num (e.translation) << " m (at reference point "
+            << reference.x () << ", " << reference.y () << ", " << reference.z () << ")\n"
+            << "  scale ratio        " << num (e.scale_ratio, 6) << "\n";
+  if (csv_path.empty ())
+    return 0;
+  CsvRows csv;
+  csv.add ("input", "", "", "estimated", estimated_path);
+  csv.add ("input", "", "", "truth", true_path);
+  csv.add ("summary", "", "", "rotation_error_deg", e.rotation_deg);
+  csv.add ("summary", "", "", "translation_error", e.translation);
+  csv.add ("summary", "", "", "scale_ratio", e.scale_ratio);
+  if (!pcl_ext::tools::writeTextFile (csv_path, csv.str ()))
+    return 1;
+  std::cout << "\nWrote " << csv_path << "\n";
+  return 0;
+}
 }  // namespace
 
 int
 main (int argc, char** argv)
 {
-  bool segments = false, classes = false;
+  bool segments = false, classes = false, transform = false;
   std::string prediction_path, truth_path, field = "label", truth_field, names_path, csv_path;
+  std::string reference;
   double tolerance = 0.8;
   int rows = 40;
   pcl_ext::tools::CommandLine cl (
@@ -232,11 +284,15 @@ main (int argc, char** argv)
       "Hoover et al. (1996): correct, over-, under-segmented, missed, noise. -classes: confusion\n"
       "matrix, overall accuracy, per-class precision, recall, F1 and IoU, macro F1, mean IoU.\n"
       "Ground-truth label 0 is ignored; predicted 0 means unsegmented / unclassified. Label\n"
-      "fields may have any numeric type; negative and NaN values read as 0.");
+      "fields may have any numeric type; negative and NaN values read as 0. -transform: the\n"
+      "rotation error (degrees) and translation error of an estimated 4 x 4 transform against\n"
+      "the true one, both text files of 16 (or 12) numbers row by row.");
   cl.addPositional ("prediction.pcd", prediction_path, "cloud holding the predicted labels (PCD or PLY)");
   cl.addPositional ("truth.pcd", truth_path, "cloud holding the ground truth (PCD or PLY)");
   cl.addSwitch ("segments", segments, "evaluate a segmentation");
   cl.addSwitch ("classes", classes, "evaluate a classification");
+  cl.addSwitch ("transform", transform,
+                "compare two transforms: the arguments are estimated.txt true.txt");
   cl.addOption ("field", field, "field of prediction.pcd holding the predicted labels");
   cl.addOption ("truth_field", truth_field,
                 "field of truth.pcd holding the ground truth (none: 'segment' with -segments, "
@@ -246,12 +302,15 @@ main (int argc, char** argv)
                 "class names, lines '<id> <name> [: ...]' as in a class mapping file (-classes; "
                 "none: surface/edge/boundary for the 'class' field, else the ids)");
   cl.addOption ("rows", rows, "largest ground-truth segments listed, 0 for none (-segments)");
+  cl.addOption ("reference", reference,
+                "X,Y,Z: point (source frame) where the translation error is measured (-transform; "
+                "none: the origin, i.e. |t_estimated - t_true|)");
   cl.addOption ("csv", csv_path, "also write the metrics to this CSV file (scope,label,name,metric,value)");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (segments == classes)
+  if (int (segments) + int (classes) + int (transform) != 1)
   {
-    std::cerr << "pcl_ext_evaluate: error: give exactly one of -segments and -classes.\n"
+    std::cerr << "pcl_ext_evaluate: error: give exactly one of -segments, -classes and -transform.\n"
               << "Run 'pcl_ext_evaluate -h' for the options.\n";
     return 1;
   }
@@ -269,6 +328,8 @@ main (int argc, char** argv)
     truth_field = segments ? "segment" : "class";
   if (!csv_path.empty () && !pcl_ext::tools::checkWritable (csv_path))
     return 1;
+  if (transform)
+    return evaluateTransform (prediction_path, truth_path, reference, csv_path);
 
   std::map<std::uint32_t, std::string> names;
   if (!names_path.empty ())

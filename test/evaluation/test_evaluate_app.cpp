@@ -120,6 +120,23 @@ TEST_F (EvaluateApp, Classes)
   EXPECT_NE (output_.find ("surface"), std::string::npos) << output_;  // PointClass names
 }
 
+TEST_F (EvaluateApp, Transform)
+{
+  const std::string data = PCL_EXT_TEST_DATA_DIR;
+  // A 90 degree rotation about z with t = (1, 2, 3) against a pure translation (10, 20, 0.5).
+  ASSERT_EQ (run ("-transform " + data + "/transform_3x4.txt " + data +
+                  "/transform_translation.txt -csv " + path ("t.csv")), 0) << output_;
+  EXPECT_NE (output_.find ("rotation error     90.0000 deg"), std::string::npos) << output_;
+  const std::string csv = read ("t.csv");
+  EXPECT_NE (csv.find ("summary,,,rotation_error_deg,90\n"), std::string::npos) << csv;
+  // |(1, 2, 3) - (10, 20, 0.5)| = sqrt(81 + 324 + 6.25)
+  EXPECT_NE (output_.find ("translation error  20.2793 m"), std::string::npos) << output_;
+  EXPECT_EQ (run ("-transform " + data + "/transform_bad.txt " + data + "/transform_3x4.txt"), 1);
+  EXPECT_NE (output_.find ("transform_bad.txt:2:"), std::string::npos) << output_;
+  EXPECT_EQ (run ("-transform " + data + "/transform_3x4.txt " + data +
+                  "/transform_3x4.txt -reference 1,2"), 1);
+}
+
 TEST_F (EvaluateApp, BadUsageAndInputFailWithoutOutput)
 {
   const std::string both = path ("prediction.pcd") + " " + path ("truth.pcd");
