@@ -80,14 +80,16 @@ struct SegmentationMetrics
   * - under-segmentation of m_1..m_x (x >= 2) into n: O(m_i, n) >= T |m_i| for each i and
   *   sum_i O(m_i, n) >= T |n|;
   * - missed: a ground-truth segment in none of these; noise: a predicted segment in none.
-  * As in Hoover's tool, each segment takes part in at most one instance, checked in the order
-  * correct, over-, under-segmentation. With T > 0.5 every instance is unique.
+  * Each segment takes part in at most one instance, checked in the order correct, over-,
+  * under-segmentation: with T > 0.5 each kind of instance is unique for a segment, but a
+  * segment can qualify for two kinds (a correct match plus a small fragment also reads as an
+  * over-segmentation), and the first kind wins (the fragment then counts as noise).
   *
   * \param[in] predicted one predicted label per point
   * \param[in] truth one ground-truth label per point, in the same order
   * \param[out] metrics the result (reset first)
-  * \param[in] tolerance Hoover's T, in (0.5, 1]; default 0.8 (Hoover's recommended range is
-  *            0.51 to 0.95)
+  * \param[in] tolerance Hoover's T, in (0.5, 1]; default 0.8 (an 80 % overlap, the value
+  *            usually reported with these metrics)
   * \return false (and an error printed, empty metrics) when the sizes differ or the tolerance
   *         is out of range
   */
