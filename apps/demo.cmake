@@ -1,0 +1,11 @@
+# pcl_ext_demo: runs each method on generated scenes and writes PNGs and a summary.
+if(TARGET pcl_ext_visualization AND TARGET pcl_ext_simulation)
+  pcl_ext_add_app(demo
+    SOURCES
+      src/demo/demo.cpp
+      src/demo/demo_context.cpp
+      src/demo/step_scenes.cpp
+      src/demo/step_neighbourhoods.cpp
+    DEPENDS
+      pcl_ext::common pcl_ext::tools pcl_ext::simulation pcl_ext::visualization)
+endif()

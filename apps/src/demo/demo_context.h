@@ -1,0 +1,55 @@
+/*
+ * pcl_ext_demo: what the demo steps share.
+ */
+#pragma once
+
+#include <pcl_ext/simulation/scenes.h>
+#include <pcl_ext/visualization/offscreen_renderer.h>
+
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace pcl_ext
+{
+namespace demo
+{
+/** \brief Options, the scenes generated so far, and the summary being written. */
+struct DemoContext
+{
+  std::string out_dir = "out";
+  std::size_t points = 0;       ///< target points per scene; 0: each scene's default
+  std::uint64_t seed = 1;
+  int k = 50;
+  unsigned int threads = 0;
+  std::string shared_data_dir;  ///< real scans, when present (optional steps)
+
+  std::ostringstream summary;   ///< the text summary, written to out/summary.txt at the end
+  std::size_t images = 0;
+
+  /** \brief The scene \a name, generated on first use with the demo's seed and size. */
+  const simulation::SyntheticScene*
+  scene (const std::string& name);
+
+  /** \brief Render views to out/<file>.png; notes the image in the summary. */
+  bool
+  render (const std::vector<visualization::View>& views, const std::string& file,
+          const visualization::RenderOptions& options = visualization::RenderOptions ());
+
+  /** \brief Path of \a file inside the output folder. */
+  std::string
+  path (const std::string& file) const;
+
+private:
+  std::map<std::string, std::unique_ptr<simulation::SyntheticScene>> scenes_;
+};
+
+/** \name Demo steps: each adds its images and a section of the summary. \{ */
+bool
+runScenesStep (DemoContext& context);
+bool
+runNeighbourhoodsStep (DemoContext& context);
+/** \} */
+}  // namespace demo
+}  // namespace pcl_ext
