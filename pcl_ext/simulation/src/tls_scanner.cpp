@@ -296,6 +296,7 @@ struct ScanVisitor
     p.x = static_cast<float> (measured.x ());
     p.y = static_cast<float> (measured.y ());
     p.z = static_cast<float> (measured.z ());
+    p.data[3] = 1.0f;
     p.rgba = 0;
     const Material& m = info.material;
     p.r = toByte (m.rgb[0] + m.rgb_jitter * rng.gaussian ());

@@ -1,0 +1,225 @@
+/*
+ * Tests of the TLS scanner simulator on hand-built scenes.
+ */
+#include <pcl_ext/simulation/scene_builder.h>
+#include <pcl_ext/simulation/tls_scanner.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+using namespace pcl_ext;
+using namespace pcl_ext::simulation;
+
+namespace
+{
+constexpr double kDeg = 0.017453292519943295;
+
+// A 200 x 200 m ground plane and, optionally, a floating 2 m box 6 m in front of the scanner.
+SceneGeometry
+groundAndBox (bool box, std::array<std::uint32_t, 6>* faces = nullptr)
+{
+  SceneBuilder builder;
+  builder.addPolygon (Vec3 (-100, -100, 0), Vec3::UnitX (), Vec3::UnitY (),
+                      {{Vec2 (0, 0), Vec2 (200, 0), Vec2 (200, 200), Vec2 (0, 200)}},
+                      builder.newObject (), 1, Material ());
+  if (box)
+  {
+    const auto f = builder.addBox (Vec3 (6, 0, 1.5), Eigen::Matrix3d::Identity (), Vec3 (1, 1, 1),
+                                   builder.newObject (), 2, Material ());
+    if (faces)
+      *faces = f;
+  }
+  SceneGeometry geometry = std::move (builder.geometry ());
+  geometry.build ();
+  return geometry;
+}
+}  // namespace
+
+TEST (TlsScanSimulation, IdenticalForAnyThreadCount)
+{
+  const SceneGeometry geometry = groundAndBox (true);
+  TlsScanSimulation scanner;
+  scanner.setScanPositions ({Vec3 (0, 0, 1.7), Vec3 (2, 5, 1.5)});
+  scanner.setAngularStep (0.5);
+  scanner.setSeed (99);
+  pcl::PointCloud<SimulatedPoint> one, two;
+  scanner.setNumberOfThreads (1);
+  ASSERT_TRUE (scanner.scan (geometry, one));
+  scanner.setNumberOfThreads (2);
+  ASSERT_TRUE (scanner.scan (geometry, two));
+  ASSERT_GT (one.size (), 1000u);
+  ASSERT_EQ (one.size (), two.size ());
+  // Field by field: the struct's padding bytes are not part of the point.
+  for (std::size_t i = 0; i < one.size (); ++i)
+  {
+    ASSERT_EQ (0, std::memcmp (one[i].data, two[i].data, 3 * sizeof (float))) << i;
+    ASSERT_EQ (one[i].rgba, two[i].rgba);
+    ASSERT_EQ (0, std::memcmp (&one[i].intensity, &two[i].intensity, sizeof (float)));
+    ASSERT_EQ (one[i].segment, two[i].segment);
+    ASSERT_EQ (one[i].object, two[i].object);
+    ASSERT_EQ (one[i].point_class, two[i].point_class);
+    ASSERT_EQ (one[i].label, two[i].label);
+  }
+  scanner.setSeed (100);
+  pcl::PointCloud<SimulatedPoint> other;
+  ASSERT_TRUE (scanner.scan (geometry, other));
+  EXPECT_NE (one[0].x, other[0].x);  // a different seed, different noise
+}
+
+TEST (TlsScanSimulation, DensityFallsWithRange)
+{
+  const SceneGeometry geometry = groundAndBox (false);
+  TlsScanSimulation scanner;
+  scanner.setScanPositions ({Vec3 (0, 0, 1.7)});
+  scanner.setAngularStep (0.2);
+  pcl::PointCloud<SimulatedPoint> cloud;
+  ASSERT_TRUE (scanner.scan (geometry, cloud));
+  // Points per square metre in rings 2-4, 4-8, 8-16 and 16-32 m: strictly decreasing.
+  const double edges[5] = {2, 4, 8, 16, 32};
+  double density[4] = {0, 0, 0, 0};
+  for (const auto& p : cloud)
+  {
+    const double r = std::hypot (p.x, p.y);
+    for (int k = 0; k < 4; ++k)
+      if (r >= edges[k] && r < edges[k + 1])
+        density[k] += 1.0;
+  }
+  for (int k = 0; k < 4; ++k)
+    density[k] /= M_PI * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k]);
+  for (int k = 0; k + 1 < 4; ++k)
+    EXPECT_GT (density[k], 1.5 * density[k + 1]) << "ring " << k;
+}
+
+TEST (TlsScanSimulation, OcclusionAndShadow)
+{
+  const SceneGeometry geometry = groundAndBox (true);
+  TlsScanSimulation scanner;
+  scanner.setScanPositions ({Vec3 (0, 0, 1.7)});
+  scanner.setAngularStep (0.3);
+  scanner.setRangeNoise (0.0);
+  pcl::PointCloud<SimulatedPoint> cloud;
+  ASSERT_TRUE (scanner.scan (geometry, cloud));
+  std::size_t box_points = 0;
+  for (const auto& p : cloud)
+  {
+    // The box hides the ground behind it: no ground point in its shadow, which starts where
+    // rays pass below the box's front bottom edge (x = 5, z = 0.5), at 7.08 m.
+    if (p.label == 1)
+    {
+      const double r = std::hypot (p.x, p.y);
+      const bool behind = p.x > 7.3 && std::abs (p.y) < 0.5 * (p.x / 7.0) && r < 9.0;
+      EXPECT_FALSE (behind) << p.x << " " << p.y;
+    }
+    else
+    {
+      ++box_points;
+      EXPECT_LE (p.x, 5.0 + 1e-4);  // only the front face (x = 5) or the top can be seen
+      if (p.x < 5.0 - 1e-4)
+        EXPECT_NEAR (p.z, 2.5, 1e-4);
+    }
+    // Nothing returns from behind a closer surface along the same ray.
+    const Vec3 q (p.x, p.y, p.z), o (0, 0, 1.7);
+    RayHit hit;
+    ASSERT_TRUE (geometry.intersectBruteForce ({o, (q - o).normalized ()}, 1e9, 0, hit));
+    EXPECT_NEAR (hit.t, (q - o).norm (), 1e-4);
+  }
+  EXPECT_GT (box_points, 100u);
+}
+
+TEST (TlsScanSimulation, NoiseAlongTheRay)
+{
+  SceneBuilder builder;
+  builder.addPolygon (Vec3 (8, -10, -5), Vec3::UnitY (), Vec3::UnitZ (),
+                      {{Vec2 (0, 0), Vec2 (20, 0), Vec2 (20, 15), Vec2 (0, 15)}}, 1, 1, Material ());
+  SceneGeometry geometry = std::move (builder.geometry ());
+  geometry.build ();
+  TlsScanSimulation scanner;
+  scanner.setScanPositions ({Vec3::Zero ()});
+  scanner.setAngularStep (0.25);
+  scanner.setRangeNoise (0.01);
+  pcl::PointCloud<SimulatedPoint> cloud;
+  ASSERT_TRUE (scanner.scan (geometry, cloud));
+  // Residual along the wall normal is noise * cos(incidence): compare its RMS with the model.
+  double sum_r2 = 0, sum_cos2 = 0;
+  for (const auto& p : cloud)
+  {
+    const Vec3 d = Vec3 (p.x, p.y, p.z).normalized ();
+    sum_r2 += (p.x - 8.0) * (p.x - 8.0);
+    sum_cos2 += d.x () * d.x ();
+  }
+  const double rms = std::sqrt (sum_r2 / cloud.size ());
+  const double expected = 0.01 * std::sqrt (sum_cos2 / cloud.size ());
+  EXPECT_NEAR (rms, expected, 0.03 * expected);
+}
+
+TEST (TlsScanSimulation, EdgesOfABox)
+{
+  std::array<std::uint32_t, 6> faces{};
+  const SceneGeometry geometry = groundAndBox (true, &faces);
+  TlsScanSimulation scanner;
+  scanner.setScanPositions ({Vec3 (0, 3, 3.0)});
+  scanner.setAngularStep (0.15);
+  scanner.setElevationRange (-45.0, 10.0);
+  scanner.setRangeNoise (0.0);
+  scanner.setEdgeDistance (0.05);
+  pcl::PointCloud<SimulatedPoint> cloud;
+  ASSERT_TRUE (scanner.scan (geometry, cloud));
+  // Box [5, 7] x [-1, 1] x [0.5, 2.5]: distance of a face point to the nearest box edge.
+  const double lo[3] = {5, -1, 0.5}, hi[3] = {7, 1, 2.5};
+  std::size_t edges = 0, boundaries = 0;
+  for (const auto& p : cloud)
+  {
+    if (p.label != 2)
+    {
+      // The ground's only curves are its far borders.
+      if (p.point_class == static_cast<std::uint32_t> (PointClass::Boundary))
+        ++boundaries;
+      else
+        EXPECT_EQ (p.point_class, static_cast<std::uint32_t> (PointClass::Surface));
+      continue;
+    }
+    const double c[3] = {p.x, p.y, p.z};
+    // On a face one coordinate is at a bound; the distance to an edge is the smallest distance
+    // of another coordinate to its bounds.
+    int on = 0;
+    double best = 1e9;
+    for (int k = 0; k < 3; ++k)
+      if (std::min (std::abs (c[k] - lo[k]), std::abs (c[k] - hi[k])) < 1e-4)
+        on = k;
+    for (int k = 0; k < 3; ++k)
+      if (k != on)
+        best = std::min (best, std::min (std::abs (c[k] - lo[k]), std::abs (c[k] - hi[k])));
+    const bool edge = p.point_class == static_cast<std::uint32_t> (PointClass::Edge);
+    if (std::abs (best - 0.05) > 1e-4)
+      EXPECT_EQ (edge, best < 0.05) << best;
+    edges += edge;
+  }
+  EXPECT_GT (edges, 50u);
+  EXPECT_EQ (boundaries, 0u);  // the ground's borders are 100 m away, out of sight of the box
+}
+
+TEST (TlsScanSimulation, BadParameters)
+{
+  const SceneGeometry geometry = groundAndBox (false);
+  pcl::PointCloud<SimulatedPoint> cloud;
+  TlsScanSimulation scanner;
+  EXPECT_FALSE (scanner.scan (geometry, cloud));  // no position
+  scanner.setScanPositions ({Vec3 (0, 0, 1.7)});
+  scanner.setAngularStep (std::nan (""));
+  EXPECT_FALSE (scanner.scan (geometry, cloud));
+  scanner.setAngularStep (0.0);
+  EXPECT_FALSE (scanner.scan (geometry, cloud));
+  scanner.setAngularStep (1.0);
+  scanner.setRangeNoise (-0.1);
+  EXPECT_FALSE (scanner.scan (geometry, cloud));
+  scanner.setRangeNoise (0.005);
+  scanner.setEdgeDistance (std::nan (""));
+  EXPECT_FALSE (scanner.scan (geometry, cloud));
+  EXPECT_TRUE (cloud.empty ());
+  scanner.setEdgeDistance (0.0);
+  EXPECT_TRUE (scanner.scan (geometry, cloud));
+  EXPECT_FALSE (cloud.empty ());
+  EXPECT_EQ (scanner.stepForPointCount (geometry, 0), 0.0);
+}
