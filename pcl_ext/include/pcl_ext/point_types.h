@@ -60,6 +60,16 @@ struct EIGEN_ALIGN16 CovarianceFeatures
   float verticality;           ///< 1 - |n_z|
   PCL_MAKE_ALIGNED_OPERATOR_NEW
 };
+
+/** \brief Variance of curvature of a neighbourhood (Belton & Lichti 2006, eq. 5).
+  *
+  * Written by pcl_ext::CurvatureVarianceEstimation. NaN when the point has no valid
+  * neighbourhood.
+  */
+struct CurvatureVariance
+{
+  float curvature_variance = 0.f;  ///< var(kappa) over the k neighbours, kappa from eq. 4
+};
 }  // namespace pcl_ext
 
 POINT_CLOUD_REGISTER_POINT_STRUCT (pcl_ext::CovarianceFeatures,
@@ -77,4 +87,8 @@ POINT_CLOUD_REGISTER_POINT_STRUCT (pcl_ext::CovarianceFeatures,
     (float, anisotropy, anisotropy)
     (float, eigenentropy, eigenentropy)
     (float, verticality, verticality)
+)
+
+POINT_CLOUD_REGISTER_POINT_STRUCT (pcl_ext::CurvatureVariance,
+    (float, curvature_variance, curvature_variance)
 )

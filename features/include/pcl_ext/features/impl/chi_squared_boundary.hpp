@@ -1,0 +1,74 @@
+/*
+ * pcl_ext: ChiSquaredBoundaryEstimation implementation.
+ */
+#pragma once
+
+#include <pcl_ext/features/chi_squared_boundary.h>
+#include <pcl_ext/features/local_variance.h>
+
+#include <pcl/common/point_tests.h>
+
+#include <cmath>
+
+template <typename PointInT, typename PointOutT> bool
+pcl_ext::ChiSquaredBoundaryEstimation<PointInT, PointOutT>::checkInputs ()
+{
+  if (!std::isfinite (chiSquaredQuantile2 (confidence_)))
+  {
+    PCL_ERROR ("[pcl_ext::%s::compute] confidence = %g; it must lie strictly between 0 and "
+               "1.\n", this->feature_name_.c_str (), confidence_);
+    return false;
+  }
+  return true;
+}
+
+template <typename PointInT, typename PointOutT> bool
+pcl_ext::ChiSquaredBoundaryEstimation<PointInT, PointOutT>::computePoint (std::size_t row,
+                                                                          double quantile,
+                                                                          PointOutT& out) const
+{
+  const auto nn = (*nb_)[row];
+  LocalCovariance local;
+  out.boundary_point = 0;
+  if (!computeNeighbourhoodCovariance (*input_, nn.begin (), nn.end (), local))
+    return false;
+  const PointInT& p = (*input_)[(*indices_)[row]];
+  const double statistic =
+      centroidOffsetStatistic (Eigen::Vector3d (p.x, p.y, p.z), local, scale_by_size_);
+  out.boundary_point = statistic > quantile ? 1 : 0;
+  return true;
+}
+
+template <typename PointInT, typename PointOutT> void
+pcl_ext::ChiSquaredBoundaryEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
+{
+  const double quantile = chiSquaredQuantile2 (confidence_);
+  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size ());
+  bool dense = true;
+  if (input_->is_dense)
+  {
+#pragma omp parallel for num_threads(this->threadCount ()) schedule(dynamic, 256) \
+    reduction(&& : dense) default(none) shared(output, rows, quantile)
+    for (std::ptrdiff_t r = 0; r < rows; ++r)
+      dense = computePoint (static_cast<std::size_t> (r), quantile, output[r]) && dense;
+  }
+  else
+  {
+#pragma omp parallel for num_threads(this->threadCount ()) schedule(dynamic, 256) \
+    reduction(&& : dense) default(none) shared(output, rows, quantile)
+    for (std::ptrdiff_t r = 0; r < rows; ++r)
+    {
+      if (!pcl::isFinite ((*input_)[(*indices_)[r]]))
+      {
+        output[r].boundary_point = 0;
+        dense = false;
+        continue;
+      }
+      dense = computePoint (static_cast<std::size_t> (r), quantile, output[r]) && dense;
+    }
+  }
+  output.is_dense = dense;
+}
+
+#define PCL_EXT_INSTANTIATE_ChiSquaredBoundaryEstimation(T) \
+  template class pcl_ext::ChiSquaredBoundaryEstimation<T, pcl::Boundary>;

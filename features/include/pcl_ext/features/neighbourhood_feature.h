@@ -1,0 +1,126 @@
+/*
+ * pcl_ext: the part every pcl_ext feature estimator shares: shared neighbourhoods and threads.
+ */
+#pragma once
+
+#include <pcl_ext/common/parallel.h>
+#include <pcl_ext/features/neighbourhood_source.h>
+
+#include <pcl/console/print.h>
+#include <pcl/features/feature.h>
+
+#include <string>
+
+namespace pcl_ext
+{
+/** \brief A pcl::Feature (or pcl::FeatureFromNormals, as \a FeatureBase) whose neighbourhoods
+  * come from a pcl_ext::Neighbourhoods: shared through setNeighbourhoods(), or searched once per
+  * compute() with the k or radius set as for any PCL feature (default search:
+  * pcl_ext::search::NanoflannKdTree; setSearchMethod() replaces it).
+  *
+  * Departs from pcl::Feature in two ways: no FLANN tree is built when it is not needed, and a
+  * search surface other than the input (setSearchSurface) is not supported (PCL_ERROR).
+  */
+template <typename FeatureBase, typename PointInT>
+class NeighbourhoodFeature : public FeatureBase
+{
+public:
+  using NeighbourhoodsConstPtr = typename Neighbourhoods<PointInT>::ConstPtr;
+
+  /** \brief Neighbourhoods computed once for the input cloud and indices and shared by several
+    * classes. Used when isComputedFor(input, indices); then k and radius are theirs.
+    * Default: none (each compute() searches with its own k or radius). */
+  void
+  setNeighbourhoods (const NeighbourhoodsConstPtr& neighbourhoods)
+  {
+    source_.setShared (neighbourhoods);
+  }
+
+  NeighbourhoodsConstPtr
+  getNeighbourhoods () const { return source_.getShared (); }
+
+  /** \brief OpenMP threads, for the search and the features. Default 0: all cores. Results do
+    * not depend on it. */
+  void
+  setNumberOfThreads (unsigned int nr_threads = 0) { threads_ = nr_threads; }
+
+  unsigned int
+  getNumberOfThreads () const { return threads_; }
+
+protected:
+  using FeatureBase::input_;
+  using FeatureBase::indices_;
+  using FeatureBase::fake_indices_;
+  using FeatureBase::surface_;
+  using FeatureBase::fake_surface_;
+  using FeatureBase::tree_;
+  using FeatureBase::k_;
+  using FeatureBase::search_radius_;
+  using FeatureBase::feature_name_;
+
+  /** \brief Checks of the subclass's own inputs (normals, parameters), before any search. */
+  virtual bool
+  checkInputs () { return true; }
+
+  bool
+  initCompute () override
+  {
+    nb_ = nullptr;
+    if (!pcl::PCLBase<PointInT>::initCompute ())
+    {
+      PCL_ERROR ("[pcl_ext::%s::compute] No input cloud.\n", feature_name_.c_str ());
+      return false;
+    }
+    if (input_->empty ())
+    {
+      PCL_ERROR ("[pcl_ext::%s::compute] The input cloud is empty.\n", feature_name_.c_str ());
+      pcl::PCLBase<PointInT>::deinitCompute ();
+      return false;
+    }
+    if (surface_ && surface_ != input_)
+    {
+      PCL_ERROR ("[pcl_ext::%s::compute] A search surface other than the input cloud is not "
+                 "supported.\n", feature_name_.c_str ());
+      pcl::PCLBase<PointInT>::deinitCompute ();
+      return false;
+    }
+    if (!surface_)
+    {
+      fake_surface_ = true;
+      surface_ = input_;
+    }
+    if (!checkInputs ())
+    {
+      deinitCompute ();
+      return false;
+    }
+    nb_ = source_.prepare (feature_name_ + "::compute", input_,
+                           fake_indices_ ? pcl::IndicesConstPtr () : indices_, k_,
+                           search_radius_, tree_, threads_);
+    if (!nb_)
+    {
+      deinitCompute ();
+      return false;
+    }
+    return true;
+  }
+
+  bool
+  deinitCompute () override
+  {
+    source_.release ();
+    return FeatureBase::deinitCompute ();
+  }
+
+  /** \brief Threads to use, 0 resolved to all cores. */
+  unsigned int
+  threadCount () const { return resolveThreadCount (threads_); }
+
+  /** \brief The neighbourhoods of the current compute(); row r belongs to (*indices_)[r]. */
+  const Neighbourhoods<PointInT>* nb_ = nullptr;
+  unsigned int threads_ = 0;
+
+private:
+  NeighbourhoodSource<PointInT> source_;
+};
+}  // namespace pcl_ext
