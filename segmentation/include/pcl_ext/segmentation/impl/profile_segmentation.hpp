@@ -1,0 +1,247 @@
+/*
+ * pcl_ext: profile-intersection segmentation (Sithole & Mapurisa), implementation.
+ */
+#pragma once
+
+#include <pcl_ext/common/parallel.h>
+#include <pcl_ext/segmentation/profile_segmentation.h>
+
+#include <pcl/common/point_tests.h>
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pcl_ext
+{
+template <typename PointT> bool
+ProfileSegmentation<PointT>::prepare (std::vector<Eigen::Vector3f>& xyz)
+{
+  const char* name = "ProfileSegmentation::extract";
+  const auto bad_length = [] (double value) { return !(value >= 0.0) || !std::isfinite (value); };
+  if (user_normals_.empty () && num_stacks_ == 0)
+  {
+    PCL_ERROR ("[pcl_ext::%s] The number of stacks must be at least 1.\n", name);
+    return false;
+  }
+  for (const auto& n : user_normals_)
+    if (!n.allFinite () || n.norm () < 1e-6f)
+    {
+      PCL_ERROR ("[pcl_ext::%s] Stack normals must be finite and non-zero.\n", name);
+      return false;
+    }
+  if (bad_length (width_) || bad_length (threshold_) || bad_length (spacing_) ||
+      bad_length (curve_window_))
+  {
+    PCL_ERROR ("[pcl_ext::%s] Width, threshold, spacing and curve window must be finite and "
+               ">= 0 (0: automatic).\n", name);
+    return false;
+  }
+  if (!(width_factor_ > 0.0) || !std::isfinite (width_factor_) || !(threshold_factor_ > 0.0) ||
+      !std::isfinite (threshold_factor_))
+  {
+    PCL_ERROR ("[pcl_ext::%s] Width and threshold factors must be finite and > 0.\n", name);
+    return false;
+  }
+  if (proximity_k_ == 0 || !(max_turn_ > 0.0) || !(max_turn_ <= M_PI / 2) ||
+      !(residual_factor_ > 0.0) || !std::isfinite (residual_factor_))
+  {
+    PCL_ERROR ("[pcl_ext::%s] Need proximity neighbours >= 1, a maximum turn in (0, pi/2] and "
+               "a residual factor > 0.\n", name);
+    return false;
+  }
+  if (min_size_ < 1 || max_size_ < min_size_)
+  {
+    PCL_ERROR ("[pcl_ext::%s] Need 1 <= minimum cluster size <= maximum cluster size.\n", name);
+    return false;
+  }
+  if (!initCompute ())
+  {
+    PCL_ERROR ("[pcl_ext::%s] No input cloud.\n", name);
+    return false;
+  }
+  if (user_normals_.empty () && num_stacks_ == 1)
+    PCL_WARN ("[pcl_ext::%s] One stack cannot join profiles: every segment is one profile's "
+              "chain.\n", name);
+
+  // Centre in double: the float offsets then keep full precision for georeferenced clouds.
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero ();
+  points_.clear ();
+  points_.reserve (indices_->size ());
+  for (const auto index : *indices_)
+    if (index >= 0 && static_cast<std::size_t> (index) < input_->size () &&
+        pcl::isXYZFinite ((*input_)[index]))
+    {
+      points_.push_back (index);
+      centre += (*input_)[index].getVector3fMap ().template cast<double> ();
+    }
+  if (!points_.empty ())
+    centre /= static_cast<double> (points_.size ());
+  xyz.resize (points_.size ());
+  for (std::size_t i = 0; i < points_.size (); ++i)
+    xyz[i] = ((*input_)[points_[i]].getVector3fMap ().template cast<double> () - centre)
+                 .template cast<float> ();
+  return true;
+}
+
+template <typename PointT> bool
+ProfileSegmentation<PointT>::resolveLengths (const std::vector<Eigen::Vector3f>& xyz,
+                                             profiles::PipelineParameters& p)
+{
+  used_spacing_ = spacing_;
+  const bool need_spacing = width_ == 0.0 || threshold_ == 0.0;
+  if (need_spacing && used_spacing_ == 0.0)
+    used_spacing_ = profiles::estimatePointSpacing (xyz);
+  if (need_spacing && !(used_spacing_ > 0.0))
+  {
+    PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] Cannot estimate the point spacing "
+               "(fewer than two distinct finite points); set the profile width and distance "
+               "threshold.\n");
+    return false;
+  }
+  used_width_ = width_ > 0.0 ? width_ : width_factor_ * used_spacing_;
+  used_threshold_ = threshold_ > 0.0 ? threshold_ : threshold_factor_ * used_spacing_;
+  p.width = used_width_;
+  p.threshold = used_threshold_;
+  p.curve_window = curve_window_ > 0.0 ? curve_window_ : 2.0 * used_threshold_;
+  p.tangent_radius = 0.5 * p.curve_window;
+  p.min_residual = 0.1 * used_threshold_;
+  return true;
+}
+
+template <typename PointT> void
+ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
+{
+  clusters.clear ();
+  clusters_.clear ();
+  stack_edges_.clear ();
+  profile_of_point_.clear ();
+  breakpoints_.clear ();
+  used_normals_.clear ();
+  used_spacing_ = used_width_ = used_threshold_ = 0.0;
+  points_.clear ();
+
+  std::vector<Eigen::Vector3f> xyz;
+  if (!prepare (xyz))
+    return;
+  profiles::PipelineParameters p;
+  p.normals = user_normals_.empty () ? profiles::makeStackNormals (num_stacks_, distribution_)
+                                     : user_normals_;
+  for (auto& n : p.normals)
+    n.normalize ();
+  used_normals_ = p.normals;
+  if (xyz.empty ())
+  {
+    PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] No finite point to segment.\n");
+    deinitCompute ();
+    return;
+  }
+  if (!resolveLengths (xyz, p))
+  {
+    deinitCompute ();
+    return;
+  }
+  p.method = method_;
+  p.proximity_neighbours = proximity_k_;
+  p.max_turn = max_turn_;
+  p.residual_factor = residual_factor_;
+  p.threads = resolveThreadCount (threads_);
+
+  profiles::PipelineResult result;
+  if (!profiles::runProfileSegmentation (xyz, p, result))
+  {
+    PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] Invalid parameters.\n");
+    deinitCompute ();
+    return;
+  }
+
+  // The graph, in cloud indices.
+  stack_edges_.resize (result.edges.size ());
+  profile_of_point_.resize (result.stacks.size ());
+  for (std::size_t s = 0; s < result.edges.size (); ++s)
+  {
+    stack_edges_[s].reserve (result.edges[s].size ());
+    for (const auto& e : result.edges[s])
+      stack_edges_[s].push_back ({points_[e.source], points_[e.target]});
+    profile_of_point_[s] = std::move (result.stacks[s].profile_of_point);
+  }
+  for (std::size_t i = 0; i < result.breakpoints.size (); ++i)
+    if (result.breakpoints[i])
+      breakpoints_.push_back (points_[i]);
+
+  // Segments: the connected components within the size limits, largest first.
+  std::vector<pcl::PointIndices> all (result.num_segments);
+  for (std::size_t i = 0; i < points_.size (); ++i)
+    all[result.labels[i]].indices.push_back (points_[i]);
+  for (auto& segment : all)
+    if (segment.indices.size () >= min_size_ && segment.indices.size () <= max_size_)
+    {
+      std::sort (segment.indices.begin (), segment.indices.end ());
+      clusters_.push_back (std::move (segment));
+    }
+  std::stable_sort (clusters_.begin (), clusters_.end (),
+                    [] (const pcl::PointIndices& a, const pcl::PointIndices& b) {
+                      if (a.indices.size () != b.indices.size ())
+                        return a.indices.size () > b.indices.size ();
+                      return a.indices.front () < b.indices.front ();
+                    });
+  for (auto& segment : clusters_)
+    segment.header = input_->header;
+  clusters = clusters_;
+  deinitCompute ();
+}
+
+template <typename PointT> std::vector<int>
+ProfileSegmentation<PointT>::getProfileOfPoints (std::size_t s) const
+{
+  std::vector<int> profile;
+  if (s >= profile_of_point_.size () || !input_)
+    return profile;
+  profile.assign (input_->size (), -1);
+  for (std::size_t i = 0; i < points_.size (); ++i)
+    profile[points_[i]] = static_cast<int> (profile_of_point_[s][i]);
+  return profile;
+}
+
+template <typename PointT> pcl::PointCloud<pcl::PointXYZRGB>::Ptr
+ProfileSegmentation<PointT>::getColoredCloud () const
+{
+  pcl::PointCloud<pcl::PointXYZRGB>::Ptr coloured (new pcl::PointCloud<pcl::PointXYZRGB>);
+  if (!input_ || clusters_.empty ())
+    return coloured;
+  coloured->resize (input_->size ());
+  coloured->width = input_->width;
+  coloured->height = input_->height;
+  coloured->is_dense = input_->is_dense;
+  for (std::size_t i = 0; i < input_->size (); ++i)
+  {
+    auto& q = (*coloured)[i];
+    q.x = (*input_)[i].x;
+    q.y = (*input_)[i].y;
+    q.z = (*input_)[i].z;
+    q.r = q.g = q.b = 255;
+  }
+  // Hues a golden-ratio step apart: neighbouring segment numbers get distinct colours.
+  for (std::size_t c = 0; c < clusters_.size (); ++c)
+  {
+    const double h = std::fmod (0.11 + 0.618033988749895 * static_cast<double> (c), 1.0) * 6.0;
+    const double v = c % 2 ? 0.75 : 0.95, s = 0.85;
+    const int sector = static_cast<int> (h);
+    const double f = h - sector, lo = v * (1 - s), fall = v * (1 - s * f),
+                 rise = v * (1 - s * (1 - f));
+    const double rgb[6][3] = {{v, rise, lo}, {fall, v, lo}, {lo, v, rise},
+                              {lo, fall, v}, {rise, lo, v}, {v, lo, fall}};
+    for (const auto index : clusters_[c].indices)
+    {
+      auto& q = (*coloured)[index];
+      q.r = static_cast<std::uint8_t> (255 * rgb[sector % 6][0]);
+      q.g = static_cast<std::uint8_t> (255 * rgb[sector % 6][1]);
+      q.b = static_cast<std::uint8_t> (255 * rgb[sector % 6][2]);
+    }
+  }
+  return coloured;
+}
+}  // namespace pcl_ext
+
+#define PCL_EXT_INSTANTIATE_ProfileSegmentation(T) \
+  template class pcl_ext::ProfileSegmentation<T>;

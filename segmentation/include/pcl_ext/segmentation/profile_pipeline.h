@@ -1,0 +1,60 @@
+/*
+ * pcl_ext: the profile-intersection segmentation on plain coordinates (Sithole & Mapurisa).
+ */
+#pragma once
+
+#include <pcl_ext/segmentation/profile_graph.h>
+#include <pcl_ext/segmentation/profile_stacks.h>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace pcl_ext
+{
+namespace profiles
+{
+/** \brief The profile segmenters of section 4.1. */
+enum class ProfileMethod
+{
+  Proximity,            ///< proximity chaining (4.1.1)
+  MinimumSpanningTree,  ///< minimum spanning tree cut at the threshold (section 3)
+  CurveFitting          ///< curve fitting with AIC model selection (4.1.2)
+};
+
+/** \brief Everything the pipeline needs; see ProfileSegmentation for the meaning and defaults. */
+struct PipelineParameters
+{
+  std::vector<Eigen::Vector3f> normals;  ///< unit stack normals
+  double width = 0.0;                    ///< profile width (> 0)
+  double threshold = 0.0;                ///< proximity threshold (>= 0)
+  ProfileMethod method = ProfileMethod::Proximity;
+  unsigned int proximity_neighbours = 4;
+  double curve_window = 0.0;             ///< > 0 for CurveFitting
+  double tangent_radius = 0.0;           ///< > 0 for CurveFitting
+  double max_turn = 0.0;                 ///< radians
+  double residual_factor = 3.0;
+  double min_residual = 0.0;             ///< floor of the residual tolerance
+  unsigned int threads = 1;
+};
+
+/** \brief The data structure of section 2 and the segments it yields. */
+struct PipelineResult
+{
+  std::vector<Stack> stacks;                      ///< one per normal
+  std::vector<std::vector<GraphEdge>> edges;      ///< E_phi: the edges of each stack
+  std::vector<std::uint8_t> breakpoints;          ///< curve ends (CurveFitting only)
+  std::vector<std::uint32_t> labels;              ///< component of each point
+  std::size_t num_segments = 0;
+};
+
+/** \brief Build the stacks, segment every profile (in parallel; the result does not depend on
+  * the thread count), and label the connected components of the union of all edges.
+  * \param[in] xyz finite coordinates, best centred near the origin
+  * \return false when a parameter is invalid (nothing computed) */
+bool
+runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
+                        const PipelineParameters& parameters, PipelineResult& result);
+}  // namespace profiles
+}  // namespace pcl_ext

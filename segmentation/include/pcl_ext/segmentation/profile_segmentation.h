@@ -1,0 +1,278 @@
+/*
+ * pcl_ext: profile-intersection segmentation (Sithole & Mapurisa).
+ */
+#pragma once
+
+#include <pcl_ext/segmentation/profile_graph.h>
+#include <pcl_ext/segmentation/profile_pipeline.h>
+#include <pcl_ext/segmentation/profile_stacks.h>
+
+#include <pcl/PointIndices.h>
+#include <pcl/pcl_base.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace pcl_ext
+{
+/** \brief Segmentation by intersecting profiles: G. Sithole and W.T. Mapurisa, "3D object
+  * segmentation of point clouds using profiling techniques" (extending Sithole 2005).
+  *
+  * The cloud is sliced into thin contiguous profiles along each of several stack normals
+  * (section 2.1, figure 3); every point lies in exactly one profile of every stack (section
+  * 2.2, figure 4). The points of each profile are linked into chains by a profile segmenter
+  * (section 4.1, figure 8): proximity chaining (4.1.1), a minimum spanning tree cut at the
+  * proximity threshold (section 3), or curve fitting with model selection by the Akaike
+  * information criterion and splits where the unit normal turns sharply (4.1.2, figure 9).
+  * The union of the edges of all profiles of all stacks is a graph G(V, E); its connected
+  * components are the segments (section 3, figure 5).
+  *
+  * Nothing searches neighbours over the whole cloud: each stack is a bucket sort of the points
+  * by their coordinate along the stack normal, and each profile is segmented on its own, in
+  * parallel (OpenMP; the result does not depend on the number of threads).
+  *
+  * Where pcl_ext departs from or makes the text precise:
+  * - Stack normals are spread over the hemisphere (the paper's extension, figure 7) as the
+  *   best packings of lines for up to 6 stacks, turned off the coordinate axes; the original
+  *   horizontal half circle and a user list of normals are options.
+  * - Profile width and proximity threshold default to 1.5x and 2x the average point spacing
+  *   (section 5.3: width "at least one and a half times", threshold "slightly larger than the
+  *   average point spacing"). The spacing is the mean distance from a deterministic sample of
+  *   points to their nearest distinct neighbour, found by a sweep along a sort (no tree).
+  *   Points in a profile of width 1.5 s are further apart in the profile plane than s when a
+  *   surface crosses it obliquely, hence 2 s rather than "slightly above" s.
+  * - Proximity chaining links every point to its k nearest points in the profile (k = 4 by
+  *   default: a point of a chain has a predecessor and a successor, and the profile's width
+  *   and noise make the chain a few points thick).
+  * - Curve fitting: instead of fitting a whole chain and splitting it repeatedly, every point
+  *   is tested once: the chain's points within a window on either side of it are fitted with
+  *   polynomials of degree 1 to 3 (plus a term across the profile's width), the model of
+  *   lowest AIC is kept per side, and the point ends a curve when the unit normals of the two
+  *   sides differ by more than the maximum turn, or when a side is not one curve (residual far
+  *   above the noise). Testing every point finds every split the repeated splitting would
+  *   find. The curve ends (breakpoints) of all stacks are removed from the graph before the
+  *   components are taken, and then rejoin the segment of most of their neighbours: a crease
+  *   seen by one stack so also separates the profiles of the stacks that run along it.
+  * - Points with non-finite coordinates are never segmented, whatever \c is_dense says.
+  * - Segments smaller than the minimum size are dropped (as pcl::RegionGrowing does); the
+  *   others are ordered by decreasing size.
+  */
+template <typename PointT>
+class ProfileSegmentation : public pcl::PCLBase<PointT>
+{
+public:
+  using PointCloud = pcl::PointCloud<PointT>;
+  using PointCloudConstPtr = typename PointCloud::ConstPtr;
+  using Ptr = pcl::shared_ptr<ProfileSegmentation<PointT>>;
+  using ConstPtr = pcl::shared_ptr<const ProfileSegmentation<PointT>>;
+  using ProfileMethod = profiles::ProfileMethod;
+  using StackDistribution = profiles::StackDistribution;
+
+  /** \brief An edge of the profile graph, between two cloud indices. */
+  struct Edge
+  {
+    pcl::index_t source;
+    pcl::index_t target;
+  };
+
+  ProfileSegmentation () = default;
+
+  /** \brief Number of stacks (the paper's stack count). Default 4; valid: >= 1 (the paper
+    * uses 3 to 4; 1 stack cannot join profiles, so every segment is one profile's chain).
+    * Ignored when stack normals are given. */
+  void
+  setNumberOfStacks (unsigned int count) { num_stacks_ = count; }
+  unsigned int
+  getNumberOfStacks () const { return num_stacks_; }
+
+  /** \brief How the stack normals (phi) are spread. Default Hemisphere (section 4, figure 7);
+    * HorizontalHalfCircle gives vertical profiles as in Sithole (2005). */
+  void
+  setStackDistribution (StackDistribution distribution) { distribution_ = distribution; }
+  StackDistribution
+  getStackDistribution () const { return distribution_; }
+
+  /** \brief Explicit stack normals phi (normalised here). Default empty (use the number of
+    * stacks and the distribution); each must be finite and non-zero. */
+  void
+  setStackNormals (const std::vector<Eigen::Vector3f>& normals) { user_normals_ = normals; }
+  /** \brief The stack normals used by the last extract() (or given). */
+  const std::vector<Eigen::Vector3f>&
+  getStackNormals () const { return used_normals_.empty () ? user_normals_ : used_normals_; }
+
+  /** \brief Profile width. Default 0: automatic, the width factor times the average point
+    * spacing; valid: 0 or > 0 (finite). Larger than the cloud puts all points in one profile
+    * per stack (valid, but the profiles then hold surfaces rather than curves). */
+  void
+  setProfileWidth (double width) { width_ = width; }
+  double
+  getProfileWidth () const { return width_; }
+
+  /** \brief Automatic width as a multiple of the average point spacing. Default 1.5 (section
+    * 5.3); valid: > 0. Figure 6: 0.5x over-segments, larger widths under-segment. */
+  void
+  setProfileWidthFactor (double factor) { width_factor_ = factor; }
+  double
+  getProfileWidthFactor () const { return width_factor_; }
+
+  /** \brief Proximity threshold: the longest link kept in a profile. Default 0: automatic, the
+    * threshold factor times the average point spacing; valid: 0 or > 0 (finite). */
+  void
+  setDistanceThreshold (double threshold) { threshold_ = threshold; }
+  double
+  getDistanceThreshold () const { return threshold_; }
+
+  /** \brief Automatic threshold as a multiple of the average point spacing. Default 2.0;
+    * valid: > 0. */
+  void
+  setDistanceThresholdFactor (double factor) { threshold_factor_ = factor; }
+  double
+  getDistanceThresholdFactor () const { return threshold_factor_; }
+
+  /** \brief Average point spacing used for the automatic width and threshold. Default 0:
+    * estimated from the cloud; valid: 0 or > 0. */
+  void
+  setPointSpacing (double spacing) { spacing_ = spacing; }
+  double
+  getPointSpacing () const { return spacing_; }
+
+  /** \brief The profile segmenter. Default Proximity. */
+  void
+  setProfileSegmentation (ProfileMethod method) { method_ = method; }
+  ProfileMethod
+  getProfileSegmentation () const { return method_; }
+
+  /** \brief Proximity chaining: links per point to its nearest profile neighbours. Default 4
+    * (2 suffice on a clean curve; 4 keep a surface lying in a profile, or a thick noisy
+    * curve, connected); valid: >= 1. */
+  void
+  setProximityNeighbours (unsigned int k) { proximity_k_ = k; }
+  unsigned int
+  getProximityNeighbours () const { return proximity_k_; }
+
+  /** \brief Curve fitting: half length of the stretch of profile fitted on each side of a
+    * point. Default 0: 2x the proximity threshold; valid: 0 or > 0. */
+  void
+  setCurveWindow (double window) { curve_window_ = window; }
+  double
+  getCurveWindow () const { return curve_window_; }
+
+  /** \brief Curve fitting: the sharpest turn of the unit normal still inside one curve, in
+    * radians. Default pi/6 (30 degrees); valid: (0, pi/2]. */
+  void
+  setMaxTurnAngle (double angle) { max_turn_ = angle; }
+  double
+  getMaxTurnAngle () const { return max_turn_; }
+
+  /** \brief Curve fitting: a side whose residual RMS exceeds this multiple of the stack's
+    * median residual is not one curve (a junction). Default 3; valid: > 0. */
+  void
+  setResidualFactor (double factor) { residual_factor_ = factor; }
+  double
+  getResidualFactor () const { return residual_factor_; }
+
+  /** \brief Smallest segment kept. Default 1; valid: >= 1. */
+  void
+  setMinClusterSize (pcl::uindex_t size) { min_size_ = size; }
+  pcl::uindex_t
+  getMinClusterSize () const { return min_size_; }
+
+  /** \brief Largest segment kept. Default: no limit; valid: >= the minimum. */
+  void
+  setMaxClusterSize (pcl::uindex_t size) { max_size_ = size; }
+  pcl::uindex_t
+  getMaxClusterSize () const { return max_size_; }
+
+  /** \brief OpenMP threads; 0 = all cores (default). Results do not depend on it. */
+  void
+  setNumberOfThreads (unsigned int threads) { threads_ = threads; }
+  unsigned int
+  getNumberOfThreads () const { return threads_; }
+
+  /** \brief Segment the cloud (the indices, if set).
+    * \param[out] clusters one PointIndices per segment, largest first; empty on error (with a
+    * PCL_ERROR). */
+  void
+  extract (std::vector<pcl::PointIndices>& clusters);
+
+  /** \brief The input cloud coloured by segment (unsegmented points white), as
+    * pcl::RegionGrowing::getColoredCloud; empty before a successful extract(). */
+  pcl::PointCloud<pcl::PointXYZRGB>::Ptr
+  getColoredCloud () const;
+
+  /** \brief Spacing, width and threshold used by the last extract(). */
+  double
+  getUsedPointSpacing () const { return used_spacing_; }
+  double
+  getUsedProfileWidth () const { return used_width_; }
+  double
+  getUsedDistanceThreshold () const { return used_threshold_; }
+
+  /** \brief The profile graph of the last extract(): the edges E_phi of each stack (section
+    * 2.1), as cloud indices. */
+  const std::vector<std::vector<Edge>>&
+  getStackEdges () const { return stack_edges_; }
+
+  /** \brief For stack \a s, the profile of every point (cloud order; -1 for points not
+    * segmented: outside the indices or not finite). Empty for an unknown stack. */
+  std::vector<int>
+  getProfileOfPoints (std::size_t s) const;
+
+  /** \brief Curve fitting: the cloud indices of the curve ends (breakpoints). */
+  const pcl::Indices&
+  getBreakpoints () const { return breakpoints_; }
+
+protected:
+  using pcl::PCLBase<PointT>::input_;
+  using pcl::PCLBase<PointT>::indices_;
+  using pcl::PCLBase<PointT>::initCompute;
+  using pcl::PCLBase<PointT>::deinitCompute;
+
+  /** \brief Check parameters and gather the finite points; false (with PCL_ERROR) if bad. */
+  bool
+  prepare (std::vector<Eigen::Vector3f>& xyz);
+
+  /** \brief Resolve spacing, width and threshold into \a parameters. */
+  bool
+  resolveLengths (const std::vector<Eigen::Vector3f>& xyz,
+                  profiles::PipelineParameters& parameters);
+
+  unsigned int num_stacks_ = 4;
+  StackDistribution distribution_ = StackDistribution::Hemisphere;
+  std::vector<Eigen::Vector3f> user_normals_;
+  double width_ = 0.0;
+  double width_factor_ = 1.5;
+  double threshold_ = 0.0;
+  double threshold_factor_ = 2.0;
+  double spacing_ = 0.0;
+  ProfileMethod method_ = ProfileMethod::Proximity;
+  unsigned int proximity_k_ = 4;
+  double curve_window_ = 0.0;
+  double max_turn_ = M_PI / 6.0;
+  double residual_factor_ = 3.0;
+  pcl::uindex_t min_size_ = 1;
+  pcl::uindex_t max_size_ = std::numeric_limits<pcl::uindex_t>::max ();
+  unsigned int threads_ = 0;
+
+  // Results of the last extract().
+  pcl::Indices points_;  ///< cloud index of each segmented (finite) point
+  std::vector<Eigen::Vector3f> used_normals_;
+  std::vector<std::vector<Edge>> stack_edges_;
+  std::vector<std::vector<std::uint32_t>> profile_of_point_;  ///< per stack, per points_ entry
+  pcl::Indices breakpoints_;
+  std::vector<pcl::PointIndices> clusters_;
+  double used_spacing_ = 0.0;
+  double used_width_ = 0.0;
+  double used_threshold_ = 0.0;
+};
+}  // namespace pcl_ext
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl_ext/segmentation/impl/profile_segmentation.hpp>
+#endif

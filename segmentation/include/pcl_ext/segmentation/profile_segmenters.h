@@ -1,0 +1,91 @@
+/*
+ * pcl_ext: segmenters for the points of one profile (Sithole & Mapurisa, section 4.1).
+ */
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace pcl_ext
+{
+namespace profiles
+{
+/** \brief The points of one profile in the profile's own frame. */
+struct ProfilePoints
+{
+  std::vector<Eigen::Vector2f> uv;  ///< coordinates in the profile plane
+  std::vector<float> t;             ///< coordinate across the profile, in [0, width)
+};
+
+/** \brief An edge between two points of a profile (local indices, a < b). */
+struct LocalEdge
+{
+  std::uint32_t a;
+  std::uint32_t b;
+};
+
+/** \brief Proximity chaining (section 4.1.1): every point is linked to its \a neighbours
+  * nearest points in the profile plane; links longer than \a threshold are cut.
+  *
+  * Coincident points are linked to one another first and chain as one point, so duplicates
+  * cannot use up the links. Ties are broken by index: deterministic.
+  * \param[out] edges sorted, without duplicates */
+void
+proximityEdges (const ProfilePoints& profile, double threshold, unsigned int neighbours,
+                std::vector<LocalEdge>& edges);
+
+/** \brief Minimum spanning tree of the profile points with edges longer than \a threshold
+  * cut (section 3: "segmentation of minimum spanning trees"). Its components are the
+  * single-linkage clusters at \a threshold.
+  * \param[out] edges sorted, without duplicates */
+void
+spanningTreeEdges (const ProfilePoints& profile, double threshold,
+                   std::vector<LocalEdge>& edges);
+
+/** \brief Parameters of the curve-fitting profile segmenter. */
+struct CurveFitParameters
+{
+  double threshold = 0.0;   ///< proximity threshold of the chains (the spanning-tree cut)
+  double window = 0.0;      ///< half length of the fitted stretch on each side of a point
+  double tangent_radius = 0.0;  ///< radius of the neighbourhood giving the local direction
+  unsigned int min_side_points = 5;  ///< fewer points on a side: a curve end, not judged
+};
+
+/** \brief What the curve fits say about each point of a profile. */
+struct CurveScores
+{
+  std::vector<std::uint8_t> evaluated;  ///< 1 when both sides could be fitted
+  std::vector<float> turn;              ///< angle between the two sides' normals (rad)
+  std::vector<float> rms;               ///< larger residual RMS of the two sides
+};
+
+/** \brief One polynomial curve fit, chosen by the Akaike information criterion. */
+struct PolynomialFit
+{
+  int degree = -1;     ///< 1, 2 or 3; -1 when no model could be fitted
+  double slope = 0.0;  ///< dy/dx at x = 0
+  double rss = 0.0;    ///< residual sum of squares
+  double aic = 0.0;    ///< n ln(rss / n) + 2 k
+};
+
+/** \brief Fit y = a0 + a1 x + ... + ad x^d + c t for d = 1, 2, 3 and keep the model of lowest
+  * AIC. The t term absorbs the slant of a surface crossing the profile obliquely (the profile
+  * has a width), so the residuals measure the curve, not the profile's thickness.
+  * \param[in] x, y, t sample coordinates (same length)
+  * \param[in] scale a length used to condition the normal equations (e.g. the window) */
+PolynomialFit
+fitPolynomialAic (const std::vector<double>& x, const std::vector<double>& y,
+                  const std::vector<double>& t, double scale);
+
+/** \brief Curve fitting (section 4.1.2), the scoring half: for every point, the points of its
+  * chain within the window are split at the point by the local direction, a polynomial chosen
+  * by AIC is fitted on each side, and the turn of the unit normal between the two sides at
+  * the point is measured, with the worse fit's residual.
+  * \param[in] chain_edges spanning-tree edges: only points of the same chain are fitted */
+void
+scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& chain_edges,
+                 const CurveFitParameters& parameters, CurveScores& scores);
+}  // namespace profiles
+}  // namespace pcl_ext

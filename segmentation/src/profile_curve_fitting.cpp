@@ -1,0 +1,206 @@
+/*
+ * pcl_ext: curve fitting in a profile (Sithole & Mapurisa, section 4.1.2, figure 9).
+ */
+#include <pcl_ext/segmentation/profile_segmenters.h>
+
+#include "profile_grid.h"
+#include "union_find.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pcl_ext
+{
+namespace profiles
+{
+namespace
+{
+/** Normal equations of y = sum a_k phi_k over phi = (1, x, x^2, x^3, t), all scaled. */
+struct Gram
+{
+  Eigen::Matrix<double, 5, 5> g = Eigen::Matrix<double, 5, 5>::Zero ();
+  Eigen::Matrix<double, 5, 1> b = Eigen::Matrix<double, 5, 1>::Zero ();
+  double yy = 0.0;
+  std::size_t n = 0;
+
+  void
+  add (double x, double y, double t)
+  {
+    const double x2 = x * x;
+    const Eigen::Matrix<double, 5, 1> phi (1.0, x, x2, x2 * x, t);
+    g.selfadjointView<Eigen::Upper> ().rankUpdate (phi);
+    b += y * phi;
+    yy += y * y;
+    ++n;
+  }
+};
+
+/** Least squares over the basis functions listed in \a columns; the residual and the AIC. */
+template <int K> bool
+fitModel (const Gram& gram, const Eigen::Matrix<double, 5, 5>& g, const int (&columns)[K],
+          double& slope, double& rss)
+{
+  Eigen::Matrix<double, K, K> gs;
+  Eigen::Matrix<double, K, 1> bs;
+  for (int r = 0; r < K; ++r)
+  {
+    bs[r] = gram.b[columns[r]];
+    for (int c = 0; c < K; ++c)
+      gs (r, c) = g (columns[r], columns[c]);
+  }
+  // A tiny ridge keeps the t column solvable when the points share one t.
+  gs.diagonal ().array () += 1e-10 * (gs.trace () / K + 1e-30);
+  const Eigen::Matrix<double, K, 1> a = gs.ldlt ().solve (bs);
+  if (!a.allFinite ())
+    return false;
+  slope = a[1];
+  rss = std::max (gram.yy - 2.0 * a.dot (bs) + a.dot (gs * a), 0.0);
+  return true;
+}
+
+/** Fits the three models (degrees 1 to 3, each with the t term) and keeps the lowest AIC. */
+PolynomialFit
+selectModel (const Gram& gram)
+{
+  static const int line[3] = {0, 1, 4}, parabola[4] = {0, 1, 2, 4}, cubic[5] = {0, 1, 2, 3, 4};
+  const Eigen::Matrix<double, 5, 5> g = gram.g.selfadjointView<Eigen::Upper> ();
+  PolynomialFit best;
+  const double n = static_cast<double> (gram.n);
+  for (int degree = 1; degree <= 3; ++degree)
+  {
+    const int k = degree + 2;
+    if (gram.n < static_cast<std::size_t> (k + 1))
+      break;
+    double slope = 0.0, rss = 0.0;
+    const bool ok = degree == 1   ? fitModel (gram, g, line, slope, rss)
+                    : degree == 2 ? fitModel (gram, g, parabola, slope, rss)
+                                  : fitModel (gram, g, cubic, slope, rss);
+    if (!ok)
+      continue;
+    const double aic = n * std::log (rss / n + 1e-12) + 2.0 * k;
+    if (best.degree < 0 || aic < best.aic)
+    {
+      best.degree = degree;
+      best.slope = slope;
+      best.rss = rss;
+      best.aic = aic;
+    }
+  }
+  return best;
+}
+}  // namespace
+
+PolynomialFit
+fitPolynomialAic (const std::vector<double>& x, const std::vector<double>& y,
+                  const std::vector<double>& t, double scale)
+{
+  if (!(scale > 0.0) || x.size () != y.size () || x.size () != t.size ())
+    return PolynomialFit ();
+  Gram gram;
+  for (std::size_t i = 0; i < x.size (); ++i)
+    gram.add (x[i] / scale, y[i] / scale, t[i] / scale);
+  PolynomialFit fit = selectModel (gram);
+  fit.rss *= scale * scale;
+  return fit;
+}
+
+void
+scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& chain_edges,
+                 const CurveFitParameters& parameters, CurveScores& scores)
+{
+  const std::size_t n = profile.uv.size ();
+  scores.evaluated.assign (n, 0);
+  scores.turn.assign (n, 0.f);
+  scores.rms.assign (n, 0.f);
+  const double window = parameters.window;
+  const unsigned int min_side = std::max (parameters.min_side_points, 3u);
+  if (n < 2 * min_side || !(window > 0.0) || !(parameters.tangent_radius > 0.0))
+    return;
+
+  // Only points of the same chain are fitted together: a curve never borrows points across a
+  // gap.
+  detail::UnionFind chains (n);
+  for (const LocalEdge& e : chain_edges)
+    chains.unite (e.a, e.b);
+  std::vector<std::uint32_t> chain (n);
+  std::vector<Eigen::Vector2f> lo (n, Eigen::Vector2f::Constant (1e30f)),
+      hi (n, Eigen::Vector2f::Constant (-1e30f));
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    chain[i] = chains.find (i);
+    lo[chain[i]] = lo[chain[i]].cwiseMin (profile.uv[i]);
+    hi[chain[i]] = hi[chain[i]].cwiseMax (profile.uv[i]);
+  }
+
+  detail::ProfileGrid grid;
+  grid.build (profile.uv, static_cast<float> (std::max (parameters.threshold, window / 4)));
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    // A chain shorter than two windows (a small closed curve where the profile grazes a
+    // surface) cannot be judged: a turn within it is its shape, not a crease.
+    if ((hi[chain[i]] - lo[chain[i]]).norm () < 2.0 * window)
+      continue;
+    const Eigen::Vector2f& p = profile.uv[i];
+    // Local direction of the curve: principal axis of the nearby points of the chain.
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero ();
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero ();
+    std::size_t count = 0;
+    grid.forEachWithin (p, static_cast<float> (parameters.tangent_radius),
+                        [&] (std::uint32_t j, float) {
+                          if (chain[j] != chain[i])
+                            return;
+                          const Eigen::Vector2d d = (profile.uv[j] - p).cast<double> ();
+                          mean += d;
+                          cov += d * d.transpose ();
+                          ++count;
+                        });
+    if (count < 3)
+      continue;
+    mean /= static_cast<double> (count);
+    cov = cov / static_cast<double> (count) - mean * mean.transpose ();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig (cov);
+    // A blob rather than a curve (a surface lying in the profile, or a knot): no direction.
+    if (!(eig.eigenvalues ()[1] > 0.0) || eig.eigenvalues ()[0] > 0.3 * eig.eigenvalues ()[1])
+      continue;
+    const Eigen::Vector2d e = eig.eigenvectors ().col (1);
+    const Eigen::Vector2d f (-e[1], e[0]);
+
+    Gram side[2];
+    double reach[2] = {0.0, 0.0};
+    const double scale = window;
+    grid.forEachWithin (p, static_cast<float> (window), [&] (std::uint32_t j, float) {
+      if (chain[j] != chain[i])
+        return;
+      const Eigen::Vector2d d = (profile.uv[j] - p).cast<double> ();
+      const double x = e.dot (d) / scale, y = f.dot (d) / scale;
+      const double t = (static_cast<double> (profile.t[j]) - profile.t[i]) / scale;
+      if (x <= 0.0)
+      {
+        side[0].add (x, y, t);
+        reach[0] = std::max (reach[0], -x);
+      }
+      if (x >= 0.0)
+      {
+        side[1].add (x, y, t);
+        reach[1] = std::max (reach[1], x);
+      }
+    });
+    // A side shorter than 40% of the window is a curve end: nothing to compare with.
+    if (side[0].n < min_side || side[1].n < min_side || reach[0] < 0.4 || reach[1] < 0.4)
+      continue;
+    const PolynomialFit left = selectModel (side[0]), right = selectModel (side[1]);
+    if (left.degree < 0 || right.degree < 0)
+      continue;
+    scores.evaluated[i] = 1;
+    scores.turn[i] = static_cast<float> (std::abs (std::atan (left.slope) -
+                                                   std::atan (right.slope)));
+    scores.rms[i] = static_cast<float> (
+        scale * std::sqrt (std::max (left.rss / side[0].n, right.rss / side[1].n)));
+  }
+}
+}  // namespace profiles
+}  // namespace pcl_ext

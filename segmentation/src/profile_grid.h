@@ -1,0 +1,121 @@
+/*
+ * pcl_ext: a uniform 2D grid over the points of one profile, for fixed-radius queries.
+ */
+#pragma once
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace pcl_ext
+{
+namespace profiles
+{
+namespace detail
+{
+/** \brief Points of a profile bucketed in square cells; only occupied cells are stored.
+  *
+  * Profile points lie on curves, so most cells are empty: cells are kept as a sorted key list
+  * (row-major), and a query walks one key range per row. Cheaper than a tree for the few
+  * hundred points of a profile, and exact. */
+class ProfileGrid
+{
+public:
+  void
+  build (const std::vector<Eigen::Vector2f>& uv, float cell)
+  {
+    uv_ = &uv;
+    const std::size_t n = uv.size ();
+    lo_ = Eigen::Vector2f::Zero ();
+    if (n == 0)
+      return;
+    lo_ = uv[0];
+    Eigen::Vector2f hi = uv[0];
+    for (const auto& p : uv)
+    {
+      lo_ = lo_.cwiseMin (p);
+      hi = hi.cwiseMax (p);
+    }
+    // Cells never so small that their numbers overflow: a larger cell only costs time.
+    cell_ = std::max (cell, (hi - lo_).maxCoeff () / 1e6f);
+    if (!(cell_ > 0.f))
+      cell_ = 1.f;
+    std::vector<std::uint64_t> key (n);
+    for (std::size_t i = 0; i < n; ++i)
+      key[i] = keyOf (cellOf (uv[i][0], 0), cellOf (uv[i][1], 1));
+    order_.resize (n);
+    std::iota (order_.begin (), order_.end (), 0u);
+    std::sort (order_.begin (), order_.end (), [&] (std::uint32_t a, std::uint32_t b) {
+      return key[a] < key[b] || (key[a] == key[b] && a < b);
+    });
+    keys_.clear ();
+    begin_.clear ();
+    for (std::size_t k = 0; k < n; ++k)
+      if (k == 0 || key[order_[k]] != keys_.back ())
+      {
+        keys_.push_back (key[order_[k]]);
+        begin_.push_back (static_cast<std::uint32_t> (k));
+      }
+    begin_.push_back (static_cast<std::uint32_t> (n));
+  }
+
+  /** \brief Calls f(j, squared distance) for every point j within \a radius of \a q. */
+  template <typename Function> void
+  forEachWithin (const Eigen::Vector2f& q, float radius, Function f) const
+  {
+    if (keys_.empty ())
+      return;
+    const float r2 = radius * radius;
+    const std::int64_t reach = static_cast<std::int64_t> (std::ceil (radius / cell_));
+    const std::int64_t cx = cellOf (q[0], 0), cy = cellOf (q[1], 1);
+    for (std::int64_t y = cy - reach; y <= cy + reach; ++y)
+    {
+      if (y < 0 || y > kMaxCell)
+        continue;
+      const std::uint64_t first = keyOf (std::max<std::int64_t> (cx - reach, 0), y);
+      const std::uint64_t last = keyOf (std::min<std::int64_t> (cx + reach, kMaxCell), y);
+      auto it = std::lower_bound (keys_.begin (), keys_.end (), first);
+      for (; it != keys_.end () && *it <= last; ++it)
+      {
+        const std::size_t c = static_cast<std::size_t> (it - keys_.begin ());
+        for (std::uint32_t k = begin_[c]; k < begin_[c + 1]; ++k)
+        {
+          const std::uint32_t j = order_[k];
+          const float d2 = ((*uv_)[j] - q).squaredNorm ();
+          if (d2 <= r2)
+            f (j, d2);
+        }
+      }
+    }
+  }
+
+private:
+  static constexpr std::int64_t kMaxCell = (std::int64_t (1) << 31) - 1;
+
+  std::int64_t
+  cellOf (float value, int axis) const
+  {
+    const double c = std::floor ((value - lo_[axis]) / cell_);
+    return static_cast<std::int64_t> (std::min<double> (std::max (c, -1.0), kMaxCell));
+  }
+
+  static std::uint64_t
+  keyOf (std::int64_t x, std::int64_t y)
+  {
+    return (static_cast<std::uint64_t> (y) << 32) | static_cast<std::uint64_t> (x);
+  }
+
+  const std::vector<Eigen::Vector2f>* uv_ = nullptr;
+  Eigen::Vector2f lo_;
+  float cell_ = 1.f;
+  std::vector<std::uint32_t> order_;
+  std::vector<std::uint64_t> keys_;
+  std::vector<std::uint32_t> begin_;
+};
+}  // namespace detail
+}  // namespace profiles
+}  // namespace pcl_ext

@@ -1,0 +1,171 @@
+/*
+ * pcl_ext: the profile-intersection segmentation on plain coordinates (Sithole & Mapurisa).
+ */
+#include <pcl_ext/segmentation/profile_pipeline.h>
+#include <pcl_ext/segmentation/profile_segmenters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace pcl_ext
+{
+namespace profiles
+{
+namespace
+{
+struct Task
+{
+  std::uint32_t stack;
+  std::uint32_t profile;
+};
+
+bool
+validParameters (const PipelineParameters& p)
+{
+  if (p.normals.empty () || !(p.width > 0.0) || !std::isfinite (p.width) ||
+      !(p.threshold >= 0.0) || !std::isfinite (p.threshold) || p.threads == 0)
+    return false;
+  for (const auto& n : p.normals)
+    if (!n.allFinite () || n.norm () < 1e-6f)
+      return false;
+  if (p.method == ProfileMethod::Proximity && p.proximity_neighbours == 0)
+    return false;
+  if (p.method == ProfileMethod::CurveFitting &&
+      (!(p.curve_window > 0.0) || !(p.tangent_radius > 0.0) || !(p.max_turn > 0.0) ||
+       !(p.residual_factor > 0.0) || !std::isfinite (p.curve_window)))
+    return false;
+  return true;
+}
+
+/** The median of the residuals of the evaluated points: the stack's noise level. */
+double
+medianResidual (const std::vector<std::uint8_t>& evaluated, const std::vector<float>& rms)
+{
+  std::vector<float> values;
+  for (std::size_t i = 0; i < rms.size (); ++i)
+    if (evaluated[i])
+      values.push_back (rms[i]);
+  if (values.empty ())
+    return 0.0;
+  std::nth_element (values.begin (), values.begin () + values.size () / 2, values.end ());
+  return values[values.size () / 2];
+}
+}  // namespace
+
+bool
+runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
+                        const PipelineParameters& parameters, PipelineResult& result)
+{
+  result = PipelineResult ();
+  if (!validParameters (parameters))
+    return false;
+  const std::size_t n = xyz.size ();
+  const std::size_t num_stacks = parameters.normals.size ();
+  result.stacks.resize (num_stacks);
+  result.edges.resize (num_stacks);
+  if (n == 0)
+    return true;
+
+  const int threads = static_cast<int> (parameters.threads);
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+  for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t> (num_stacks); ++s)
+    buildStack (xyz, parameters.normals[s], parameters.width, result.stacks[s]);
+
+  std::vector<Task> tasks;
+  for (std::uint32_t s = 0; s < num_stacks; ++s)
+    for (std::uint32_t p = 0; p < result.stacks[s].numProfiles (); ++p)
+      tasks.push_back ({s, p});
+
+  const bool curves = parameters.method == ProfileMethod::CurveFitting;
+  std::vector<CurveScores> stack_scores (curves ? num_stacks : 0);
+  for (auto& scores : stack_scores)
+  {
+    scores.evaluated.assign (n, 0);
+    scores.turn.assign (n, 0.f);
+    scores.rms.assign (n, 0.f);
+  }
+  CurveFitParameters fit;
+  fit.threshold = parameters.threshold;
+  fit.window = parameters.curve_window;
+  fit.tangent_radius = parameters.tangent_radius;
+
+  // One result slot per profile, concatenated in profile order afterwards: deterministic for
+  // any number of threads.
+  std::vector<std::vector<GraphEdge>> task_edges (tasks.size ());
+#pragma omp parallel num_threads(threads)
+  {
+    ProfilePoints points;
+    std::vector<LocalEdge> local;
+    CurveScores scores;
+#pragma omp for schedule(dynamic, 4)
+    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (tasks.size ()); ++k)
+    {
+      const Stack& stack = result.stacks[tasks[k].stack];
+      const std::uint32_t begin = stack.offsets[tasks[k].profile];
+      const std::uint32_t end = stack.offsets[tasks[k].profile + 1];
+      const std::uint32_t* members = stack.order.data () + begin;
+      const std::size_t m = end - begin;
+      points.uv.resize (m);
+      points.t.resize (m);
+      for (std::size_t i = 0; i < m; ++i)
+      {
+        const Eigen::Vector3f& p = xyz[members[i]];
+        points.uv[i] = Eigen::Vector2f (stack.u.dot (p), stack.v.dot (p));
+        points.t[i] = static_cast<float> (stack.normal.dot (p) - stack.origin);
+      }
+      switch (parameters.method)
+      {
+      case ProfileMethod::Proximity:
+        proximityEdges (points, parameters.threshold, parameters.proximity_neighbours, local);
+        break;
+      case ProfileMethod::MinimumSpanningTree:
+      case ProfileMethod::CurveFitting:
+        spanningTreeEdges (points, parameters.threshold, local);
+        break;
+      }
+      if (curves)
+      {
+        scoreCurveTurns (points, local, fit, scores);
+        CurveScores& out = stack_scores[tasks[k].stack];  // profiles of a stack are disjoint
+        for (std::size_t i = 0; i < m; ++i)
+        {
+          out.evaluated[members[i]] = scores.evaluated[i];
+          out.turn[members[i]] = scores.turn[i];
+          out.rms[members[i]] = scores.rms[i];
+        }
+      }
+      auto& edges = task_edges[k];
+      edges.reserve (local.size ());
+      for (const LocalEdge& e : local)
+        edges.push_back ({members[e.a], members[e.b]});
+    }
+  }
+  for (std::size_t k = 0; k < tasks.size (); ++k)
+  {
+    auto& edges = result.edges[tasks[k].stack];
+    edges.insert (edges.end (), task_edges[k].begin (), task_edges[k].end ());
+  }
+  task_edges.clear ();
+
+  if (curves)
+  {
+    // A point ends a curve in some stack when the normal turns sharply there, or when its
+    // stretch of profile is not one curve (a junction): residual far above the stack's noise.
+    result.breakpoints.assign (n, 0);
+    for (const CurveScores& scores : stack_scores)
+    {
+      const double tolerance = std::max (parameters.residual_factor *
+                                             medianResidual (scores.evaluated, scores.rms),
+                                         parameters.min_residual);
+      for (std::size_t i = 0; i < n; ++i)
+        if (scores.evaluated[i] &&
+            (scores.turn[i] > parameters.max_turn || scores.rms[i] > tolerance))
+          result.breakpoints[i] = 1;
+    }
+  }
+  result.num_segments = labelSegments (n, result.edges, result.breakpoints, result.labels);
+  return true;
+}
+}  // namespace profiles
+}  // namespace pcl_ext

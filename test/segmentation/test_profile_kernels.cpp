@@ -1,0 +1,256 @@
+/*
+ * Tests of the profile segmentation kernels: stack normals, stacks, spacing, profile
+ * segmenters, AIC curve fits and the graph.
+ */
+#include <pcl_ext/segmentation/profile_graph.h>
+#include <pcl_ext/segmentation/profile_segmenters.h>
+#include <pcl_ext/segmentation/profile_stacks.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+
+using namespace pcl_ext::profiles;
+
+namespace
+{
+double
+lineAngleDeg (const Eigen::Vector3f& a, const Eigen::Vector3f& b)
+{
+  return std::acos (std::min (1.0f, std::abs (a.dot (b)))) * 180.0 / M_PI;
+}
+
+double
+minPairAngle (const std::vector<Eigen::Vector3f>& normals)
+{
+  double best = 180;
+  for (std::size_t i = 0; i < normals.size (); ++i)
+    for (std::size_t j = i + 1; j < normals.size (); ++j)
+      best = std::min (best, lineAngleDeg (normals[i], normals[j]));
+  return best;
+}
+}  // namespace
+
+TEST (StackNormals, HemisphereSpreadsAsFarAsPossible)
+{
+  // Best line packings: 3 orthogonal axes (90), 4 cube diagonals (70.53), 6 icosahedron axes
+  // (63.43).
+  const double expected[7] = {0, 0, 90.0, 90.0, 70.5288, 63.4349, 63.4349};
+  for (unsigned int k = 2; k <= 6; ++k)
+  {
+    const auto normals = makeStackNormals (k, StackDistribution::Hemisphere);
+    ASSERT_EQ (normals.size (), k);
+    for (const auto& n : normals)
+    {
+      EXPECT_NEAR (n.norm (), 1.0f, 1e-5f);
+      EXPECT_GE (n.z (), -1e-6f);
+      for (int axis = 0; axis < 3; ++axis)  // never along a coordinate axis
+        EXPECT_LT (std::abs (n[axis]), 0.999f);
+    }
+    EXPECT_NEAR (minPairAngle (normals), expected[k], 0.01) << k << " stacks";
+  }
+  const auto many = makeStackNormals (12, StackDistribution::Hemisphere);
+  ASSERT_EQ (many.size (), 12u);
+  EXPECT_GT (minPairAngle (many), 25.0);
+  EXPECT_TRUE (makeStackNormals (0, StackDistribution::Hemisphere).empty ());
+}
+
+TEST (StackNormals, HorizontalHalfCircle)
+{
+  const auto normals = makeStackNormals (3, StackDistribution::HorizontalHalfCircle);
+  ASSERT_EQ (normals.size (), 3u);
+  for (const auto& n : normals)
+    EXPECT_NEAR (n.z (), 0.0f, 1e-6f);
+  EXPECT_NEAR (minPairAngle (normals), 60.0, 1e-3);
+}
+
+TEST (Stacks, EveryPointInExactlyOneContiguousProfile)
+{
+  std::mt19937 rng (3);
+  std::uniform_real_distribution<float> u (-1.f, 1.f);
+  std::vector<Eigen::Vector3f> xyz (5000);
+  for (auto& p : xyz)
+    p = Eigen::Vector3f (u (rng), 2 * u (rng), 0.5f * u (rng));
+  const Eigen::Vector3f normal = Eigen::Vector3f (1, 2, 3).normalized ();
+  const double width = 0.05;
+  Stack stack;
+  ASSERT_TRUE (buildStack (xyz, normal, width, stack));
+  ASSERT_EQ (stack.order.size (), xyz.size ());
+  std::set<std::uint32_t> seen (stack.order.begin (), stack.order.end ());
+  EXPECT_EQ (seen.size (), xyz.size ());  // every point exactly once
+  double last_max = -1e30;
+  for (std::size_t p = 0; p < stack.numProfiles (); ++p)
+  {
+    ASSERT_LT (stack.offsets[p], stack.offsets[p + 1]);  // no empty profile kept
+    double lo = 1e30, hi = -1e30;
+    for (std::uint32_t k = stack.offsets[p]; k < stack.offsets[p + 1]; ++k)
+    {
+      const double t = normal.dot (xyz[stack.order[k]]);
+      lo = std::min (lo, t);
+      hi = std::max (hi, t);
+      EXPECT_EQ (stack.profile_of_point[stack.order[k]], p);
+    }
+    EXPECT_LT (hi - lo, width + 1e-6);  // a slab no wider than the width
+    EXPECT_GT (lo, last_max - 1e-9);    // slabs ordered along the normal
+    last_max = hi;
+  }
+  // A comparison sort takes over when the width is tiny: same partition, still no empty slab.
+  Stack fine;
+  ASSERT_TRUE (buildStack (xyz, normal, 1e-9, fine));
+  EXPECT_EQ (fine.order.size (), xyz.size ());
+  EXPECT_LE (fine.numProfiles (), xyz.size ());
+  // Width larger than the cloud: one profile.
+  Stack wide;
+  ASSERT_TRUE (buildStack (xyz, normal, 100.0, wide));
+  EXPECT_EQ (wide.numProfiles (), 1u);
+  EXPECT_FALSE (buildStack (xyz, normal, 0.0, wide));
+  EXPECT_FALSE (buildStack (xyz, normal, -1.0, wide));
+  EXPECT_FALSE (buildStack (xyz, Eigen::Vector3f::Zero (), 0.1, wide));
+  EXPECT_FALSE (buildStack ({}, normal, 0.1, wide));
+}
+
+TEST (Spacing, GridSpacingIsRecovered)
+{
+  std::vector<Eigen::Vector3f> xyz;
+  for (int i = 0; i < 200; ++i)
+    for (int j = 0; j < 100; ++j)
+      xyz.emplace_back (0.02f * i, 0.02f * j, 0.f);
+  EXPECT_NEAR (estimatePointSpacing (xyz), 0.02, 1e-4);
+  // Duplicates do not make the spacing zero.
+  const auto copy = xyz;
+  xyz.insert (xyz.end (), copy.begin (), copy.end ());
+  EXPECT_NEAR (estimatePointSpacing (xyz), 0.02, 1e-4);
+  EXPECT_EQ (estimatePointSpacing (std::vector<Eigen::Vector3f> (10, Eigen::Vector3f::Ones ())),
+             0.0);
+  EXPECT_EQ (estimatePointSpacing ({Eigen::Vector3f::Zero ()}), 0.0);
+}
+
+TEST (ProfileSegmenters, ProximityAndSpanningTreeCutLongLinks)
+{
+  // Two collinear chains, spacing 1, separated by a gap of 3; threshold 1.5.
+  ProfilePoints profile;
+  for (int i = 0; i < 10; ++i)
+    profile.uv.emplace_back (static_cast<float> (i), 0.f);
+  for (int i = 0; i < 10; ++i)
+    profile.uv.emplace_back (12.f + i, 0.f);
+  profile.uv.emplace_back (3.f, 0.f);  // a duplicate of point 3
+  profile.t.assign (profile.uv.size (), 0.f);
+  std::vector<LocalEdge> edges;
+  for (int method = 0; method < 2; ++method)
+  {
+    if (method == 0)
+      proximityEdges (profile, 1.5, 2, edges);
+    else
+      spanningTreeEdges (profile, 1.5, edges);
+    std::vector<int> comp (profile.uv.size ());
+    for (std::size_t i = 0; i < comp.size (); ++i)
+      comp[i] = static_cast<int> (i);
+    // Tiny label propagation to find components.
+    for (int pass = 0; pass < 30; ++pass)
+      for (const auto& e : edges)
+      {
+        EXPECT_LT (e.a, e.b);
+        EXPECT_LE ((profile.uv[e.a] - profile.uv[e.b]).norm (), 1.5f);
+        comp[e.a] = comp[e.b] = std::min (comp[e.a], comp[e.b]);
+      }
+    for (int i = 1; i < 10; ++i)
+      EXPECT_EQ (comp[i], comp[0]) << "method " << method;
+    for (int i = 11; i < 20; ++i)
+      EXPECT_EQ (comp[i], comp[10]) << "method " << method;
+    EXPECT_NE (comp[0], comp[10]);
+    EXPECT_EQ (comp[20], comp[0]);  // the duplicate joins its twin
+  }
+  // A spanning forest: n - components edges.
+  spanningTreeEdges (profile, 1.5, edges);
+  EXPECT_EQ (edges.size (), profile.uv.size () - 2);
+}
+
+TEST (CurveFit, AicSelectsTheModel)
+{
+  std::mt19937 rng (5);
+  std::normal_distribution<double> noise (0.0, 0.001);
+  std::vector<double> x, line, parabola, cubic, t;
+  for (int i = 0; i < 40; ++i)
+  {
+    const double xi = -1.0 + 2.0 * i / 39.0;
+    x.push_back (xi);
+    t.push_back (0.0);
+    line.push_back (0.3 + 0.5 * xi + noise (rng));
+    parabola.push_back (0.1 - 0.2 * xi + 0.8 * xi * xi + noise (rng));
+    cubic.push_back (0.1 + 0.3 * xi - 0.5 * xi * xi + 1.2 * xi * xi * xi + noise (rng));
+  }
+  const PolynomialFit a = fitPolynomialAic (x, line, t, 1.0);
+  EXPECT_EQ (a.degree, 1);
+  EXPECT_NEAR (a.slope, 0.5, 0.01);
+  const PolynomialFit b = fitPolynomialAic (x, parabola, t, 1.0);
+  EXPECT_EQ (b.degree, 2);
+  EXPECT_NEAR (b.slope, -0.2, 0.01);
+  const PolynomialFit c = fitPolynomialAic (x, cubic, t, 1.0);
+  EXPECT_EQ (c.degree, 3);
+  EXPECT_NEAR (c.slope, 0.3, 0.01);
+  // The t term absorbs a slant across the profile: y = 0.5 x + 2 t leaves only the noise.
+  std::vector<double> slanted;
+  for (std::size_t i = 0; i < x.size (); ++i)
+  {
+    t[i] = (i % 3) * 0.01;
+    slanted.push_back (0.5 * x[i] + 2.0 * t[i] + noise (rng));
+  }
+  const PolynomialFit d = fitPolynomialAic (x, slanted, t, 1.0);
+  EXPECT_EQ (d.degree, 1);
+  EXPECT_LT (d.rss, 2.0 * 40 * 0.001 * 0.001);
+  EXPECT_EQ (fitPolynomialAic ({0.0}, {0.0}, {0.0}, 1.0).degree, -1);
+}
+
+TEST (CurveFit, CornerPointsTurnSharply)
+{
+  // An L in the profile plane: arm along x, then arm along y; spacing 0.01.
+  ProfilePoints profile;
+  for (int i = 0; i <= 100; ++i)
+    profile.uv.emplace_back (0.01f * i, 0.f);
+  for (int i = 1; i <= 100; ++i)
+    profile.uv.emplace_back (1.f, 0.01f * i);
+  profile.t.assign (profile.uv.size (), 0.f);
+  std::vector<LocalEdge> chain;
+  spanningTreeEdges (profile, 0.02, chain);
+  CurveFitParameters p;
+  p.threshold = 0.02;
+  p.window = 0.08;
+  p.tangent_radius = 0.04;
+  CurveScores scores;
+  scoreCurveTurns (profile, chain, p, scores);
+  // Far from the corner: evaluated, straight, tiny residual.
+  for (int i : {30, 50, 150, 170})
+  {
+    EXPECT_TRUE (scores.evaluated[i]) << i;
+    EXPECT_LT (scores.turn[i], 0.05f) << i;
+    EXPECT_LT (scores.rms[i], 1e-3f) << i;
+  }
+  // Near the corner (index 100) something flags: a sharp turn or a side that is not one curve.
+  int flagged = 0;
+  for (int i = 94; i <= 106; ++i)
+    if (scores.evaluated[i] && (scores.turn[i] > M_PI / 6 || scores.rms[i] > 3e-3f))
+      ++flagged;
+  EXPECT_GE (flagged, 3);
+}
+
+TEST (Graph, ComponentsAndBreakpoints)
+{
+  // Chain 0-1-2-3-4-5 with 2 and 3 breakpoints; a second stack links 3-4 only.
+  std::vector<std::vector<GraphEdge>> edges = {{{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}},
+                                               {{3, 4}}};
+  std::vector<std::uint32_t> labels;
+  EXPECT_EQ (labelSegments (7, edges, {}, labels), 2u);  // point 6 is alone
+  EXPECT_EQ (labels, (std::vector<std::uint32_t>{0, 0, 0, 0, 0, 0, 1}));
+  const std::vector<std::uint8_t> breaks = {0, 0, 1, 1, 0, 0, 0};
+  EXPECT_EQ (labelSegments (7, edges, breaks, labels), 3u);
+  // 2 rejoins the segment of 1; 3 that of 4 (two edges to it, none to a labelled 2 yet).
+  EXPECT_EQ (labels[0], labels[2]);
+  EXPECT_EQ (labels[3], labels[5]);
+  EXPECT_NE (labels[0], labels[5]);
+  // Breakpoints no wave reaches form their own component.
+  EXPECT_EQ (labelSegments (3, {{{0, 1}}}, {1, 1, 0}, labels), 2u);
+  EXPECT_EQ (labels[0], labels[1]);
+  EXPECT_NE (labels[0], labels[2]);
+}
