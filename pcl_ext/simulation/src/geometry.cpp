@@ -10,26 +10,6 @@ namespace pcl_ext
 {
 namespace simulation
 {
-bool
-Aabb::clip (const Vec3& origin, const Vec3& inv_direction, double& t0, double& t1) const
-{
-  for (int k = 0; k < 3; ++k)
-  {
-    double ta = (min[k] - origin[k]) * inv_direction[k];
-    double tb = (max[k] - origin[k]) * inv_direction[k];
-    if (ta > tb)
-      std::swap (ta, tb);
-    // NaN (0 * inf, ray in the slab plane) compares false and leaves the interval unchanged.
-    if (ta > t0)
-      t0 = ta;
-    if (tb < t1)
-      t1 = tb;
-    if (t0 > t1)
-      return false;
-  }
-  return true;
-}
-
 double
 GroundTruthCurve::distance (const Vec3& p) const
 {

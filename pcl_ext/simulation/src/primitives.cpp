@@ -384,6 +384,17 @@ HeightField::HeightField (double x0, double y0, double cell, int nx, int ny,
   const auto mm = std::minmax_element (heights_.begin (), heights_.end ());
   zmin_ = *mm.first;
   zmax_ = *mm.second;
+  cell_min_.resize (static_cast<std::size_t> (nx_) * ny_);
+  cell_max_.resize (cell_min_.size ());
+  for (int j = 0; j < ny_; ++j)
+    for (int i = 0; i < nx_; ++i)
+    {
+      const double h[4] = {at (i, j), at (i + 1, j), at (i, j + 1), at (i + 1, j + 1)};
+      const std::size_t c = static_cast<std::size_t> (j) * nx_ + i;
+      // Rounded outwards so that the float range always contains the double heights.
+      cell_min_[c] = std::nextafter (static_cast<float> (*std::min_element (h, h + 4)), -1e30f);
+      cell_max_[c] = std::nextafter (static_cast<float> (*std::max_element (h, h + 4)), 1e30f);
+    }
 }
 
 void
@@ -509,7 +520,12 @@ HeightField::intersect (const Ray& ray, double t_min, double t_max, double& t,
   while (true)
   {
     const double t_exit = std::min ({tx, ty, t1});
-    if (intersectCell (ray, i, j, std::max (t_min, t0 - eps), std::min (t_max, t_exit + eps), t,
+    // The ray's height over the cell spans [za, zb]; skip cells whose surface it cannot meet.
+    const double za = ray.origin.z () + (t0 - eps) * ray.direction.z ();
+    const double zb = ray.origin.z () + (t_exit + eps) * ray.direction.z ();
+    const std::size_t c = static_cast<std::size_t> (j) * nx_ + i;
+    if (std::max (za, zb) >= cell_min_[c] && std::min (za, zb) <= cell_max_[c] &&
+        intersectCell (ray, i, j, std::max (t_min, t0 - eps), std::min (t_max, t_exit + eps), t,
                        normal))
       return true;
     if (t_exit >= t1)

@@ -44,12 +44,19 @@ SceneGeometry::build ()
 
   curve_boxes_.resize (curves_.size ());
   curves_of_segment_.clear ();
+  auto append = [this] (std::uint32_t segment, int curve) {
+    auto& chunks = curves_of_segment_[segment];
+    if (chunks.empty () || chunks.back ().curves.size () >= kCurveChunk)
+      chunks.emplace_back ();
+    chunks.back ().curves.push_back (curve);
+    chunks.back ().box.extend (curve_boxes_[curve]);
+  };
   for (std::size_t i = 0; i < curves_.size (); ++i)
   {
     curve_boxes_[i] = curves_[i].bounds ();
-    curves_of_segment_[curves_[i].segment_a].push_back (static_cast<int> (i));
+    append (curves_[i].segment_a, static_cast<int> (i));
     if (curves_[i].segment_b != 0 && curves_[i].segment_b != curves_[i].segment_a)
-      curves_of_segment_[curves_[i].segment_b].push_back (static_cast<int> (i));
+      append (curves_[i].segment_b, static_cast<int> (i));
   }
 }
 
@@ -71,15 +78,79 @@ SceneGeometry::buildNode (int first, int count, const std::vector<Aabb>& boxes)
     nodes_[index].count = count;
     return index;
   }
-  // Median split along the widest extent of the centres.
-  int axis = 0;
-  (centres.max - centres.min).maxCoeff (&axis);
-  const int mid = first + count / 2;
-  std::nth_element (order_.begin () + first, order_.begin () + mid, order_.begin () + first + count,
-                    [&] (int a, int b) {
-                      const double ca = boxes[a].centre ()[axis], cb = boxes[b].centre ()[axis];
-                      return ca < cb || (ca == cb && a < b);
-                    });
+  // Surface area heuristic over 16 bins of the centres along each axis; median split when
+  // the centres coincide.
+  auto area = [] (const Aabb& b) {
+    if (b.empty ())
+      return 0.0;
+    const Vec3 e = b.max - b.min;
+    return e.x () * e.y () + e.y () * e.z () + e.z () * e.x ();
+  };
+  constexpr int kBins = 16;
+  int best_axis = -1, best_split = 0;
+  double best_cost = std::numeric_limits<double>::infinity ();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double lo = centres.min[axis], extent = centres.max[axis] - lo;
+    if (!(extent > 0.0))
+      continue;
+    Aabb bin_box[kBins];
+    int bin_count[kBins] = {};
+    for (int i = first; i < first + count; ++i)
+    {
+      const int b = std::min (kBins - 1, static_cast<int> (kBins * (boxes[order_[i]].centre ()[axis] - lo) / extent));
+      bin_box[b].extend (boxes[order_[i]]);
+      ++bin_count[b];
+    }
+    // Cost of splitting after bin s: area-weighted counts of both sides.
+    Aabb right_box[kBins];
+    int right_count[kBins] = {};
+    Aabb acc;
+    int n = 0;
+    for (int b = kBins - 1; b > 0; --b)
+    {
+      acc.extend (bin_box[b]);
+      n += bin_count[b];
+      right_box[b] = acc;
+      right_count[b] = n;
+    }
+    acc = Aabb ();
+    n = 0;
+    for (int b = 0; b + 1 < kBins; ++b)
+    {
+      acc.extend (bin_box[b]);
+      n += bin_count[b];
+      if (n == 0 || right_count[b + 1] == 0)
+        continue;
+      const double cost = area (acc) * n + area (right_box[b + 1]) * right_count[b + 1];
+      if (cost < best_cost)
+      {
+        best_cost = cost;
+        best_axis = axis;
+        best_split = b;
+      }
+    }
+  }
+  int mid = first + count / 2;
+  if (best_axis >= 0)
+  {
+    const double lo = centres.min[best_axis], extent = centres.max[best_axis] - lo;
+    const auto middle = std::stable_partition (
+        order_.begin () + first, order_.begin () + first + count, [&] (int p) {
+          return std::min (kBins - 1, static_cast<int> (kBins * (boxes[p].centre ()[best_axis] - lo) / extent)) <= best_split;
+        });
+    mid = static_cast<int> (middle - order_.begin ());
+  }
+  else
+  {
+    int axis = 0;
+    (centres.max - centres.min).maxCoeff (&axis);
+    std::nth_element (order_.begin () + first, order_.begin () + mid, order_.begin () + first + count,
+                      [&] (int a, int b) {
+                        const double ca = boxes[a].centre ()[axis], cb = boxes[b].centre ()[axis];
+                        return ca < cb || (ca == cb && a < b);
+                      });
+  }
   const int left = buildNode (first, mid - first, boxes);
   const int right = buildNode (mid, first + count - mid, boxes);
   nodes_[index].left = left;
@@ -106,15 +177,27 @@ SceneGeometry::intersect (const Ray& ray, double t_max, std::uint64_t ray_key,
   const Vec3 inv = ray.direction.cwiseInverse ();
   double best = t_max;
   bool found = false;
-  int stack[128];
+  // Each stack entry carries the distance at which the ray enters the node's box, so a node
+  // farther than the best hit so far is skipped without testing its box again.
+  struct Entry
+  {
+    int node;
+    double t_enter;
+  };
+  Entry stack[128];
   int top = 0;
-  stack[top++] = 0;
+  {
+    double t0 = 0.0, t1 = best;
+    if (!nodes_[0].box.clip (ray.origin, inv, t0, t1))
+      return false;
+    stack[top++] = {0, t0};
+  }
   while (top > 0)
   {
-    const Node& node = nodes_[stack[--top]];
-    double t0 = 0.0, t1 = best;
-    if (!node.box.clip (ray.origin, inv, t0, t1))
+    const Entry entry = stack[--top];
+    if (entry.t_enter > best)
       continue;
+    const Node& node = nodes_[entry.node];
     if (node.left < 0)
     {
       for (int k = node.first; k < node.first + node.count; ++k)
@@ -133,7 +216,7 @@ SceneGeometry::intersect (const Ray& ray, double t_max, std::uint64_t ray_key,
       }
       continue;
     }
-    // Visit the nearer child first so that `best` shrinks early.
+    // Push the farther child first so that the nearer one is visited first.
     double la0 = 0.0, la1 = best, ra0 = 0.0, ra1 = best;
     const bool hl = nodes_[node.left].box.clip (ray.origin, inv, la0, la1);
     const bool hr = nodes_[node.right].box.clip (ray.origin, inv, ra0, ra1);
@@ -141,19 +224,19 @@ SceneGeometry::intersect (const Ray& ray, double t_max, std::uint64_t ray_key,
     {
       if (la0 <= ra0)
       {
-        stack[top++] = node.right;
-        stack[top++] = node.left;
+        stack[top++] = {node.right, ra0};
+        stack[top++] = {node.left, la0};
       }
       else
       {
-        stack[top++] = node.left;
-        stack[top++] = node.right;
+        stack[top++] = {node.left, la0};
+        stack[top++] = {node.right, ra0};
       }
     }
     else if (hl)
-      stack[top++] = node.left;
+      stack[top++] = {node.left, la0};
     else if (hr)
-      stack[top++] = node.right;
+      stack[top++] = {node.right, ra0};
   }
   return found;
 }
@@ -190,19 +273,26 @@ SceneGeometry::curveDistances (const Vec3& p, std::uint32_t segment, double max_
   const auto it = curves_of_segment_.find (segment);
   if (it == curves_of_segment_.end ())
     return;
-  for (const int c : it->second)
+  auto far = [&] (const Aabb& box) {
+    return (p.array () < box.min.array () - max_distance).any () ||
+           (p.array () > box.max.array () + max_distance).any ();
+  };
+  for (const CurveChunk& chunk : it->second)
   {
-    const Aabb& box = curve_boxes_[c];
-    if ((p.array () < box.min.array () - max_distance).any () ||
-        (p.array () > box.max.array () + max_distance).any ())
+    if (far (chunk.box))
       continue;
-    const double d = curves_[c].distance (p);
-    if (d > max_distance)
-      continue;
-    if (curves_[c].kind == GroundTruthCurve::Kind::Crease)
-      crease = std::min (crease, d);
-    else
-      border = std::min (border, d);
+    for (const int c : chunk.curves)
+    {
+      if (far (curve_boxes_[c]))
+        continue;
+      const double d = curves_[c].distance (p);
+      if (d > max_distance)
+        continue;
+      if (curves_[c].kind == GroundTruthCurve::Kind::Crease)
+        crease = std::min (crease, d);
+      else
+        border = std::min (border, d);
+    }
   }
 }
 

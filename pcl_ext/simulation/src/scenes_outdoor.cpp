@@ -93,10 +93,10 @@ describeTreeScene (const SceneParameters& parameters, SceneDescription& d)
 {
   SceneBuilder builder;
   RandomStream rng = detail::layoutStream (parameters.seed, 0x7ee0ULL);
-  auto ground = std::make_shared<Annulus> (Vec3::Zero (), Vec3::UnitZ (), 0.0, 8.0);
+  auto ground = std::make_shared<Annulus> (Vec3::Zero (), Vec3::UnitZ (), 0.0, 6.0);
   const std::uint32_t ground_segment =
       builder.add (ground, builder.newObject (), kTerrain, material (90, 140, 60, 0.35, 12.f));
-  builder.addCircle (Vec3::Zero (), Vec3::UnitZ (), 8.0, ground_segment, 0);
+  builder.addCircle (Vec3::Zero (), Vec3::UnitZ (), 6.0, ground_segment, 0);
   detail::addTree (builder, rng, Vec3::Zero (), *ground, ground_segment, 8.0, 8);
   d.geometry = std::move (builder.geometry ());
   d.scan_positions = detail::choosePositions (

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 namespace pcl_ext
 {
@@ -62,7 +63,24 @@ struct Aabb
   }
   /** \brief Slab test: clips [t0, t1] to the box; false when the ray misses it. */
   bool
-  clip (const Vec3& origin, const Vec3& inv_direction, double& t0, double& t1) const;
+  clip (const Vec3& origin, const Vec3& inv_direction, double& t0, double& t1) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      double ta = (min[k] - origin[k]) * inv_direction[k];
+      double tb = (max[k] - origin[k]) * inv_direction[k];
+      if (ta > tb)
+        std::swap (ta, tb);
+      // NaN (0 * inf, a ray in the slab's plane) compares false: the interval is unchanged.
+      if (ta > t0)
+        t0 = ta;
+      if (tb < t1)
+        t1 = tb;
+      if (t0 > t1)
+        return false;
+    }
+    return true;
+  }
 };
 
 /** \brief A curve of the true geometry along which the class ground truth changes.

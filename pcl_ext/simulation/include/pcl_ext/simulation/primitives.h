@@ -296,6 +296,7 @@ private:
   double x0_, y0_, cell_;
   int nx_, ny_;
   std::vector<double> heights_;
+  std::vector<float> cell_min_, cell_max_;  ///< height range of each cell, to skip cells fast
   double zmin_, zmax_;
   std::function<int (double, double)> region_;
   std::vector<SurfaceInfo> region_infos_;

@@ -99,7 +99,16 @@ private:
   std::vector<Primitive::Ptr> primitives_;
   std::vector<GroundTruthCurve> curves_;
   std::vector<Aabb> curve_boxes_;
-  std::map<std::uint32_t, std::vector<int>> curves_of_segment_;
+  /** \brief A run of up to kCurveChunk curves of one segment with their common box: curves
+    * are added along their polylines, so consecutive curves are close and most points skip
+    * whole chunks. */
+  struct CurveChunk
+  {
+    Aabb box;
+    std::vector<int> curves;
+  };
+  static constexpr std::size_t kCurveChunk = 16;
+  std::map<std::uint32_t, std::vector<CurveChunk>> curves_of_segment_;
   std::vector<Node> nodes_;
   std::vector<int> order_;
   Aabb bounds_;
