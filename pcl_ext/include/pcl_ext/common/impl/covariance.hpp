@@ -15,7 +15,7 @@ pcl_ext::computeLocalCovariance (const pcl::PointCloud<PointT>& cloud,
 {
   // Shift by the first finite point: sums of squares of small numbers keep full precision even
   // for georeferenced coordinates, where a single-pass float formula cancels catastrophically.
-  Eigen::Vector3d centre;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero ();
   bool have_centre = false;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
   double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
