@@ -1,0 +1,602 @@
+/*
+ * pcl_ext: initiate-and-extend plane matching (Khoshelham & Gorte 2009, section 3.3).
+ */
+#include <pcl_ext/registration/plane_matching.h>
+
+#include <pcl/console/print.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace pcl_ext
+{
+namespace
+{
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+constexpr int kMaxInitial = 64;  // map positions in use are kept in a 64-bit mask
+constexpr int kMaxK = 8;
+
+enum PlaneClass { Other = -1, Vertical = 0, Horizontal = 1 };
+
+int
+classify (const Eigen::Vector3d& n, double tolerance_deg)
+{
+  const double z = std::abs (n.z ());
+  if (z <= std::sin (tolerance_deg * kDegree))
+    return Vertical;
+  if (z >= std::cos (tolerance_deg * kDegree))
+    return Horizontal;
+  return Other;
+}
+
+// Largest first: support, then extent, then input order (a stable, total order).
+std::vector<int>
+bySize (const std::vector<RegistrationPlane>& planes)
+{
+  std::vector<int> order (planes.size ());
+  std::iota (order.begin (), order.end (), 0);
+  auto size = [&] (int i) {
+    return planes[i].extent.isEmpty () ? 0.0 : planes[i].extent.diagonal ().norm ();
+  };
+  std::stable_sort (order.begin (), order.end (), [&] (int a, int b) {
+    if (planes[a].support != planes[b].support)
+      return planes[a].support > planes[b].support;
+    return size (a) > size (b);
+  });
+  return order;
+}
+
+double
+binomial (int n, int k)
+{
+  if (k < 0 || k > n)
+    return 0.0;
+  double r = 1.0;
+  for (int i = 1; i <= k; ++i)
+    r = r * (n - k + i) / i;
+  return std::round (r);
+}
+
+double
+permutations (int n, int k)
+{
+  if (k < 0 || k > n)
+    return 0.0;
+  double r = 1.0;
+  for (int i = 0; i < k; ++i)
+    r *= n - i;
+  return r;
+}
+
+std::uint64_t
+saturate (double x)
+{
+  return x >= 1.8e19 ? std::numeric_limits<std::uint64_t>::max () : static_cast<std::uint64_t> (x);
+}
+
+bool
+extentsOverlap (const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double margin)
+{
+  if (a.isEmpty () || b.isEmpty ())
+    return true;
+  const Eigen::Vector3d m = Eigen::Vector3d::Constant (margin);
+  return (a.min ().array () - m.array () <= b.max ().array ()).all () &&
+         (b.min ().array () - m.array () <= a.max ().array ()).all ();
+}
+
+struct Candidate
+{
+  bool valid = false;
+  std::vector<PlanePair> matches;
+  PlaneTransformationResult estimate;
+  std::uint64_t order = 0;
+};
+
+bool
+better (const Candidate& a, const Candidate& b)
+{
+  if (!a.valid || !b.valid)
+    return a.valid && !b.valid;
+  if (a.matches.size () != b.matches.size ())
+    return a.matches.size () > b.matches.size ();
+  if (a.estimate.residual_norm != b.estimate.residual_norm)
+    return a.estimate.residual_norm < b.estimate.residual_norm;
+  return a.order < b.order;
+}
+
+// What every worker shares: the planes, the initial sets and their angle tables.
+struct Context
+{
+  const std::vector<RegistrationPlane>& scan;
+  const std::vector<RegistrationPlane>& map;
+  const PlaneMatchingParameters& p;
+  std::vector<int> scan_order;          // all scan planes, largest first (extension order)
+  std::vector<int> scan_init, map_init;  // the m and n initial planes
+  std::vector<int> scan_class, map_class;
+  std::vector<double> scan_angle, map_angle;  // angle between normals, row-major m x m, n x n
+  double angle_tol, cos_angle_tol, distance_tol, orientation_tol, cos_up_tol;
+
+  Context (const std::vector<RegistrationPlane>& s, const std::vector<RegistrationPlane>& m,
+           const PlaneMatchingParameters& params)
+    : scan (s), map (m), p (params)
+  {
+    angle_tol = p.angle_tolerance_deg * kDegree;
+    cos_angle_tol = std::cos (angle_tol);
+    distance_tol = p.distance_tolerance;
+    orientation_tol = p.orientation_tolerance_deg * kDegree;
+    cos_up_tol = std::cos (p.vertical_tolerance_deg * kDegree);
+  }
+};
+
+class Worker
+{
+public:
+  explicit Worker (const Context& c) : c_ (c) {}
+
+  // All combinations whose first pair is (scan_init[s0], map_init[m0]).
+  void
+  run (int s0, int m0, std::uint64_t task)
+  {
+    order_ = task << 40;
+    if (c_.p.vertical_constraint && c_.scan_class[s0] != c_.map_class[m0])
+      return;
+    if (c_.p.vertical_constraint && c_.scan_class[s0] == Other)
+      return;
+    s_[0] = s0;
+    m_[0] = m0;
+    search (1, std::uint64_t (1) << m0);
+  }
+
+  PlaneMatchingStatistics stats;
+  Candidate best;
+
+private:
+  double
+  scanAngle (int a, int b) const { return c_.scan_angle[a * c_.scan_init.size () + b]; }
+  double
+  mapAngle (int a, int b) const { return c_.map_angle[a * c_.map_init.size () + b]; }
+
+  void
+  search (int depth, std::uint64_t used)
+  {
+    const int k = c_.p.k, m = static_cast<int> (c_.scan_init.size ()), n = static_cast<int> (c_.map_init.size ());
+    if (depth == k)
+    {
+      leaf ();
+      return;
+    }
+    for (int sp = s_[depth - 1] + 1; sp <= m - (k - depth); ++sp)
+    {
+      if (c_.p.vertical_constraint && c_.scan_class[sp] == Other)
+        continue;
+      for (int mp = 0; mp < n; ++mp)
+      {
+        if (used & (std::uint64_t (1) << mp))
+          continue;
+        if (c_.p.vertical_constraint && c_.scan_class[sp] != c_.map_class[mp])
+          continue;
+        if (c_.p.orientation_constraint && !orientationAgrees (depth, sp, mp))
+          continue;
+        s_[depth] = sp;
+        m_[depth] = mp;
+        search (depth + 1, used | (std::uint64_t (1) << mp));
+      }
+    }
+  }
+
+  // Constraint 2; without oriented normals the angle of two lines, in [0, 90] degrees.
+  bool
+  orientationAgrees (int depth, int sp, int mp) const
+  {
+    for (int i = 0; i < depth; ++i)
+    {
+      double a = scanAngle (s_[i], sp), b = mapAngle (m_[i], mp);
+      if (!c_.p.oriented_normals)
+      {
+        a = std::min (a, M_PI - a);
+        b = std::min (b, M_PI - b);
+      }
+      if (std::abs (a - b) > c_.orientation_tol)
+        return false;
+    }
+    return true;
+  }
+
+  // Signed orientation agreement of a sign pattern (bit i set: pair i flipped).
+  bool
+  signsAgree (unsigned mask) const
+  {
+    for (int i = 0; i < c_.p.k; ++i)
+      for (int j = i + 1; j < c_.p.k; ++j)
+      {
+        double a = scanAngle (s_[i], s_[j]);
+        if (((mask >> i) ^ (mask >> j)) & 1u)
+          a = M_PI - a;
+        if (std::abs (a - mapAngle (m_[i], m_[j])) > c_.orientation_tol)
+          return false;
+      }
+    return true;
+  }
+
+  bool
+  estimate (const int* signs, int count, PlaneTransformationResult& result)
+  {
+    ++stats.estimations;
+    return estimatePlaneTransformation (scan_ptr_.data (), map_ptr_.data (), signs, count, c_.p.model,
+                                        result, c_.p.min_conditioning);
+  }
+
+  bool
+  withinTolerance (const PlaneTransformationResult& r) const
+  {
+    return r.valid && r.max_angle <= c_.angle_tol && r.max_distance <= c_.distance_tol &&
+           (!c_.p.vertical_constraint || r.transformation (2, 2) >= c_.cos_up_tol * r.scale);
+  }
+
+  bool
+  extentsAgree (const std::vector<PlanePair>& pairs, const Eigen::Matrix4d& t) const
+  {
+    if (!c_.p.check_extents)
+      return true;
+    for (const auto& pair : pairs)
+      if (!extentsOverlap (transformPlane (c_.scan[pair.scan], t).extent, c_.map[pair.map].extent,
+                           c_.p.extent_margin))
+        return false;
+    return true;
+  }
+
+  void
+  leaf ()
+  {
+    const int k = c_.p.k;
+    ++stats.orientation;
+    const std::uint64_t order = order_++;
+    scan_ptr_.resize (k);
+    map_ptr_.resize (k);
+    for (int i = 0; i < k; ++i)
+    {
+      scan_ptr_[i] = &c_.scan[c_.scan_init[s_[i]]];
+      map_ptr_[i] = &c_.map[c_.map_init[m_[i]]];
+    }
+    // Degenerate sets (map normals not spanning 3D) are reported, not solved.
+    Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero ();
+    for (int i = 0; i < k; ++i)
+      normal_matrix.noalias () += map_ptr_[i]->normal * map_ptr_[i]->normal.transpose ();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+    eigen.computeDirect (normal_matrix, Eigen::EigenvaluesOnly);
+    if (!(std::max (0.0, eigen.eigenvalues ()[0]) >= c_.p.min_conditioning * eigen.eigenvalues ()[2]))
+    {
+      ++stats.degenerate;
+      return;
+    }
+
+    // Handedness: a rotation keeps the sign of det(n_i, n_j, n_l) of well-spread triples, so of
+    // a sign pattern and its mirror image only one can fit.
+    int triples = 0;
+    unsigned triple_mask[kMaxK * kMaxK * kMaxK];
+    bool triple_sign[kMaxK * kMaxK * kMaxK];
+    if (!c_.p.oriented_normals)
+      for (int i = 0; i < k; ++i)
+        for (int j = i + 1; j < k; ++j)
+          for (int l = j + 1; l < k; ++l)
+          {
+            const double dm = map_ptr_[i]->normal.dot (map_ptr_[j]->normal.cross (map_ptr_[l]->normal));
+            const double ds = scan_ptr_[i]->normal.dot (scan_ptr_[j]->normal.cross (scan_ptr_[l]->normal));
+            if (std::abs (dm) < 0.3 || std::abs (ds) < 0.3)
+              continue;
+            triple_mask[triples] = (1u << i) | (1u << j) | (1u << l);
+            triple_sign[triples++] = (dm > 0.0) == (ds > 0.0);
+          }
+
+    bool found = false;
+    const unsigned patterns = c_.p.oriented_normals ? 1u : (1u << k);
+    for (unsigned mask = 0; mask < patterns; ++mask)
+    {
+      if (!c_.p.oriented_normals && c_.p.orientation_constraint && !signsAgree (mask))
+        continue;
+      bool mirrored = false;
+      for (int t = 0; t < triples && !mirrored; ++t)
+        mirrored = ((__builtin_popcount (mask & triple_mask[t]) % 2 == 0) != triple_sign[t]);
+      if (mirrored)
+        continue;
+      int signs[kMaxK];
+      for (int i = 0; i < k; ++i)
+        signs[i] = (mask >> i) & 1u ? -1 : 1;
+      if (!estimate (signs, k, trial_))
+        continue;
+      if (!c_.p.oriented_normals && trial_.affine.leftCols<3> ().determinant () < 0.0)
+      {
+        // A mirror image: the pattern with every sign flipped is the rotation.
+        for (int i = 0; i < k; ++i)
+          signs[i] = -signs[i];
+        if (!estimate (signs, k, trial_))
+          continue;
+      }
+      if (c_.p.residual_constraint && !withinTolerance (trial_))
+        continue;
+      if (!found || trial_.residual_norm < initial_.residual_norm)
+      {
+        initial_ = trial_;
+        std::copy (signs, signs + k, initial_signs_);
+        found = true;
+      }
+    }
+    if (!found)
+      return;
+    pairs_.clear ();
+    for (int i = 0; i < k; ++i)
+      pairs_.push_back ({c_.scan_init[s_[i]], c_.map_init[m_[i]], initial_signs_[i]});
+    if (c_.p.residual_constraint && !extentsAgree (pairs_, initial_.transformation))
+      return;
+    ++stats.residual;
+    extend (order);
+  }
+
+  void
+  extend (std::uint64_t order)
+  {
+    used_scan_.assign (c_.scan.size (), 0);
+    used_map_.assign (c_.map.size (), 0);
+    for (const auto& pair : pairs_)
+    {
+      used_scan_[pair.scan] = 1;
+      used_map_[pair.map] = 1;
+    }
+    PlaneTransformationResult current = initial_;
+    bool changed = true;
+    while (changed)
+    {
+      changed = false;
+      for (const int j : c_.scan_order)
+      {
+        if (used_scan_[j])
+          continue;
+        const RegistrationPlane moved = transformPlane (c_.scan[j], current.transformation);
+        int best_map = -1, best_sign = 1;
+        double best_score = std::numeric_limits<double>::infinity ();
+        for (std::size_t i = 0; i < c_.map.size (); ++i)
+        {
+          if (used_map_[i])
+            continue;
+          const double dot = moved.normal.dot (c_.map[i].normal);
+          const int sign = c_.p.oriented_normals || dot >= 0.0 ? 1 : -1;
+          const double cosine = sign * dot;
+          if (cosine < c_.cos_angle_tol)
+            continue;
+          const double distance = std::abs (c_.map[i].signedDistance (moved.centroid));
+          if (distance > c_.distance_tol)
+            continue;
+          if (c_.p.check_extents && !extentsOverlap (moved.extent, c_.map[i].extent, c_.p.extent_margin))
+            continue;
+          const double score = std::acos (std::min (1.0, cosine)) / c_.angle_tol + distance / c_.distance_tol;
+          if (score < best_score)
+          {
+            best_score = score;
+            best_map = static_cast<int> (i);
+            best_sign = sign;
+          }
+        }
+        if (best_map < 0)
+          continue;
+        pairs_.push_back ({j, best_map, best_sign});
+        scan_ptr_.clear ();
+        map_ptr_.clear ();
+        signs_.clear ();
+        for (const auto& pair : pairs_)
+        {
+          scan_ptr_.push_back (&c_.scan[pair.scan]);
+          map_ptr_.push_back (&c_.map[pair.map]);
+          signs_.push_back (pair.sign);
+        }
+        if (estimate (signs_.data (), static_cast<int> (pairs_.size ()), trial_) && withinTolerance (trial_))
+        {
+          current = trial_;
+          used_scan_[j] = 1;
+          used_map_[best_map] = 1;
+          changed = true;
+        }
+        else
+          pairs_.pop_back ();
+      }
+    }
+    Candidate candidate;
+    candidate.valid = true;
+    candidate.order = order;
+    candidate.estimate = current;
+    candidate.matches = pairs_;
+    if (better (candidate, best))
+      best = std::move (candidate);
+  }
+
+  const Context& c_;
+  int s_[kMaxK] = {}, m_[kMaxK] = {};
+  int initial_signs_[kMaxK] = {};
+  std::uint64_t order_ = 0;
+  std::vector<const RegistrationPlane*> scan_ptr_, map_ptr_;
+  std::vector<int> signs_;
+  std::vector<PlanePair> pairs_;
+  std::vector<char> used_scan_, used_map_;
+  PlaneTransformationResult trial_, initial_;
+};
+
+bool
+checkPlanes (const std::vector<RegistrationPlane>& planes, const char* which)
+{
+  for (std::size_t i = 0; i < planes.size (); ++i)
+    if (!planes[i].normal.allFinite () || !std::isfinite (planes[i].d) ||
+        std::abs (planes[i].normal.norm () - 1.0) > 1e-6)
+    {
+      PCL_ERROR ("[pcl_ext::matchPlanes] %s plane %zu is not finite or its normal is not of unit "
+                 "length.\n", which, i);
+      return false;
+    }
+  return true;
+}
+}  // namespace
+
+std::uint64_t
+countInitialCombinations (int m, int n, int k)
+{
+  return saturate (binomial (m, k) * permutations (n, k));
+}
+
+bool
+checkPlaneMatchingParameters (const PlaneMatchingParameters& p)
+{
+  const char* bad = nullptr;
+  if (p.k < 3 || p.k > kMaxK)
+    bad = "k must be in [3, 8]";
+  else if (p.scan_initial < p.k || p.scan_initial > kMaxInitial)
+    bad = "m (scan planes to initiate) must be in [k, 64]";
+  else if (p.map_initial < p.k || p.map_initial > kMaxInitial)
+    bad = "n (map planes to initiate) must be in [k, 64]";
+  else if (!(p.vertical_tolerance_deg > 0.0 && p.vertical_tolerance_deg < 45.0))
+    bad = "the vertical tolerance must be in (0, 45) degrees";
+  else if (!(p.orientation_tolerance_deg > 0.0 && p.orientation_tolerance_deg < 90.0))
+    bad = "the orientation tolerance must be in (0, 90) degrees";
+  else if (!(p.angle_tolerance_deg > 0.0 && p.angle_tolerance_deg < 90.0))
+    bad = "the angle tolerance must be in (0, 90) degrees";
+  else if (!(p.distance_tolerance > 0.0) || !std::isfinite (p.distance_tolerance))
+    bad = "the distance tolerance must be positive and finite";
+  else if (!(p.extent_margin >= 0.0) || !std::isfinite (p.extent_margin))
+    bad = "the extent margin must be >= 0 and finite";
+  else if (p.min_matches < 0)
+    bad = "the minimum number of matches must be >= 0";
+  else if (!(p.min_conditioning > 0.0 && p.min_conditioning < 1.0))
+    bad = "the minimum conditioning must be in (0, 1)";
+  if (bad)
+  {
+    PCL_ERROR ("[pcl_ext::matchPlanes] Invalid parameters: %s.\n", bad);
+    return false;
+  }
+  return true;
+}
+
+bool
+matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<RegistrationPlane>& map,
+             const PlaneMatchingParameters& parameters, PlaneMatchingResult& result)
+{
+  const auto start = std::chrono::steady_clock::now ();
+  result = PlaneMatchingResult ();
+  if (!checkPlaneMatchingParameters (parameters) || !checkPlanes (scan, "scan") ||
+      !checkPlanes (map, "map"))
+    return false;
+  const int k = parameters.k;
+  Context c (scan, map, parameters);
+  c.scan_order = bySize (scan);
+
+  // The initial planes: the largest, among the near-vertical/horizontal ones under constraint 1.
+  auto initial = [&] (const std::vector<RegistrationPlane>& planes, int count, std::vector<int>& init,
+                      std::vector<int>& classes) {
+    for (const int i : bySize (planes))
+    {
+      const int cls = classify (planes[i].normal, parameters.vertical_tolerance_deg);
+      if (parameters.vertical_constraint && cls == Other)
+        continue;
+      if (static_cast<int> (init.size ()) == count)
+        break;
+      init.push_back (i);
+      classes.push_back (cls);
+    }
+  };
+  initial (scan, parameters.scan_initial, c.scan_init, c.scan_class);
+  initial (map, parameters.map_initial, c.map_init, c.map_class);
+  const int m = static_cast<int> (c.scan_init.size ()), n = static_cast<int> (c.map_init.size ());
+  auto& stats = result.statistics;
+  stats.m = m;
+  stats.n = n;
+  stats.k = k;
+  if (m < k || n < k)
+  {
+    PCL_ERROR ("[pcl_ext::matchPlanes] %d scan and %d map planes%s: at least k = %d of each are "
+               "needed.\n", m, n, parameters.vertical_constraint ? " (near-vertical or horizontal)" : "",
+               k);
+    return false;
+  }
+  auto angles = [] (const std::vector<RegistrationPlane>& planes, const std::vector<int>& init) {
+    std::vector<double> table (init.size () * init.size ());
+    for (std::size_t a = 0; a < init.size (); ++a)
+      for (std::size_t b = 0; b < init.size (); ++b)
+        table[a * init.size () + b] =
+            std::acos (std::clamp (planes[init[a]].normal.dot (planes[init[b]].normal), -1.0, 1.0));
+    return table;
+  };
+  c.scan_angle = angles (scan, c.scan_init);
+  c.map_angle = angles (map, c.map_init);
+
+  stats.unconstrained = countInitialCombinations (m, n, k);
+  if (parameters.vertical_constraint)
+  {
+    const int mv = static_cast<int> (std::count (c.scan_class.begin (), c.scan_class.end (), Vertical));
+    const int nv = static_cast<int> (std::count (c.map_class.begin (), c.map_class.end (), Vertical));
+    double count = 0.0;
+    for (int v = 0; v <= k; ++v)
+      count += binomial (mv, v) * binomial (m - mv, k - v) * permutations (nv, v) * permutations (n - nv, k - v);
+    stats.vertical = saturate (count);
+  }
+  else
+    stats.vertical = stats.unconstrained;
+
+  // Tasks: the first pair of each combination. Dynamic scheduling balances them; the best match
+  // set is chosen by a total order that includes the enumeration order, so threads do not matter.
+  std::vector<std::pair<int, int>> tasks;
+  for (int s0 = 0; s0 <= m - k; ++s0)
+    for (int m0 = 0; m0 < n; ++m0)
+      tasks.emplace_back (s0, m0);
+  int threads = 1;
+#ifdef _OPENMP
+  threads = parameters.threads == 0 ? omp_get_max_threads () : static_cast<int> (parameters.threads);
+#endif
+  threads = std::max (1, std::min<int> (threads, static_cast<int> (tasks.size ())));
+  std::vector<Worker> workers (threads, Worker (c));
+#pragma omp parallel for num_threads (threads) schedule (dynamic, 1)
+  for (std::ptrdiff_t t = 0; t < static_cast<std::ptrdiff_t> (tasks.size ()); ++t)
+  {
+    int id = 0;
+#ifdef _OPENMP
+    id = omp_get_thread_num ();
+#endif
+    workers[id].run (tasks[t].first, tasks[t].second, static_cast<std::uint64_t> (t));
+  }
+
+  Candidate best;
+  for (auto& w : workers)
+  {
+    stats.orientation += w.stats.orientation;
+    stats.degenerate += w.stats.degenerate;
+    stats.residual += w.stats.residual;
+    stats.estimations += w.stats.estimations;
+    if (better (w.best, best))
+      best = std::move (w.best);
+  }
+  stats.seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+  const std::size_t needed = parameters.min_matches > 0 ? parameters.min_matches : k;
+  if (!best.valid)
+  {
+    PCL_ERROR ("[pcl_ext::matchPlanes] No combination of %d pairs gave a valid transform (%llu "
+               "combinations after the constraints, %llu degenerate).\n", k,
+               static_cast<unsigned long long> (stats.orientation),
+               static_cast<unsigned long long> (stats.degenerate));
+    return false;
+  }
+  result.matches = best.matches;
+  result.estimate = best.estimate;
+  if (best.matches.size () < needed)
+  {
+    PCL_ERROR ("[pcl_ext::matchPlanes] The best match set has %zu pairs, fewer than the %zu "
+               "required.\n", best.matches.size (), needed);
+    return false;
+  }
+  result.converged = true;
+  return true;
+}
+}  // namespace pcl_ext

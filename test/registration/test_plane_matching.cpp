@@ -1,0 +1,252 @@
+/*
+ * Tests of the initiate-and-extend plane matching (Khoshelham & Gorte 2009, section 3.3) on
+ * analytic plane sets of the H-shaped building.
+ */
+#include "plane_fixtures.h"
+
+#include <pcl_ext/evaluation/registration_metrics.h>
+#include <pcl_ext/registration/plane_matching.h>
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+using namespace pcl_ext;
+
+namespace
+{
+const double kPi = 3.14159265358979323846;
+
+// Every pair is right when the truth maps the scan plane onto its map plane.
+int
+wrongPairs (const std::vector<RegistrationPlane>& scan, const std::vector<RegistrationPlane>& map,
+            const std::vector<PlanePair>& matches, const Eigen::Matrix4d& truth)
+{
+  int wrong = 0;
+  for (const auto& pair : matches)
+  {
+    const RegistrationPlane moved = transformPlane (scan[pair.scan], truth);
+    const double cosine = pair.sign * moved.normal.dot (map[pair.map].normal);
+    if (cosine < std::cos (2.0 * kPi / 180.0) || std::abs (pair.sign * moved.d - map[pair.map].d) > 0.5)
+      ++wrong;
+  }
+  return wrong;
+}
+
+// The asymmetric plan: a rotation maps it onto itself only as the identity.
+std::vector<MapPlane>
+hMapPlanes ()
+{
+  std::vector<MapPlane> map;
+  EXPECT_TRUE (computeMapPlanes (test::asymmetricH (), MapPlaneParameters (), map));
+  return map;
+}
+}  // namespace
+
+TEST (PlaneMatching, InitialCombinationCountsAreEquation13)
+{
+  // Table 3, k = 3, "without constraints", m = n = 7..12.
+  const std::uint64_t table3[] = {7350, 18816, 42336, 86400, 163350, 290400};
+  for (int m = 7; m <= 12; ++m)
+    EXPECT_EQ (countInitialCombinations (m, m, 3), table3[m - 7]);
+  EXPECT_EQ (countInitialCombinations (10, 10, 4), 210u * 5040u);  // "in the order of 10^6"
+  EXPECT_EQ (countInitialCombinations (3, 10, 4), 0u);
+
+  // With every constraint off the search enumerates exactly that many combinations.
+  const auto map = hMapPlanes ();
+  std::mt19937 rng (4);
+  const auto scan = test::scanPlanes (map, test::randomPose (rng), rng, 0.0, 0.0);
+  PlaneMatchingParameters p;
+  p.k = 3;
+  p.scan_initial = p.map_initial = 6;
+  p.vertical_constraint = p.orientation_constraint = p.residual_constraint = false;
+  PlaneMatchingResult r;
+  ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, r));
+  EXPECT_EQ (r.statistics.unconstrained, countInitialCombinations (6, 6, 3));
+  EXPECT_EQ (r.statistics.orientation, r.statistics.unconstrained);
+  EXPECT_EQ (r.statistics.degenerate + r.statistics.residual, r.statistics.orientation);
+}
+
+TEST (PlaneMatching, ExactPlanesGiveTheTruth)
+{
+  const auto map = hMapPlanes ();
+  for (unsigned seed = 1; seed <= 5; ++seed)
+  {
+    std::mt19937 rng (seed);
+    const Eigen::Matrix4d truth = test::randomPose (rng);
+    const auto scan = test::scanPlanes (map, truth, rng, 0.0, 0.0);
+    for (const bool oriented : {false, true})
+    {
+      PlaneMatchingParameters p;
+      p.oriented_normals = oriented;
+      PlaneMatchingResult r;
+      ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, r));
+      EXPECT_EQ (r.matches.size (), scan.size ());  // 9 distinct planes, all matched
+      EXPECT_EQ (wrongPairs (scan, test::slice (map), r.matches, truth), 0);
+      const auto error = computeTransformationError (r.estimate.transformation, truth);
+      EXPECT_LT (error.rotation_deg, 1e-6);
+      EXPECT_LT (error.translation, 1e-6);
+    }
+  }
+}
+
+// The robustness anchor on analytic planes: 100 random poses (yaw any, tilt <= 3 deg,
+// shift <= 100 m), 30 % superfluous and 20 % missing planes, plane noise of a 20 cm scan.
+TEST (PlaneMatching, RightMatchOverRandomPosesWithOutliersAndMissingPlanes)
+{
+  const auto map = hMapPlanes ();
+  double worst_rotation = 0.0, worst_translation = 0.0;
+  std::size_t fewest = 100;
+  for (unsigned seed = 1; seed <= 100; ++seed)
+  {
+    std::mt19937 rng (1000 + seed);
+    const Eigen::Matrix4d truth = test::randomPose (rng);
+    // 9 distinct planes: 2 missing walls (20 %), 3 superfluous (30 % of 10).
+    const auto scan = test::scanPlanes (map, truth, rng, 0.2 * kPi / 180.0, 0.05, 2, 3);
+    PlaneMatchingParameters p;
+    PlaneMatchingResult r;
+    ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, r)) << "seed " << seed;
+    EXPECT_EQ (wrongPairs (scan, test::slice (map), r.matches, truth), 0) << "seed " << seed;
+    // Translation error at the building's centre, in scan coordinates.
+    const Eigen::Vector3d centre = (truth.inverse () * Eigen::Vector4d (20, 15, 5, 1)).head<3> ();
+    const auto error = computeTransformationError (r.estimate.transformation, truth, centre);
+    worst_rotation = std::max (worst_rotation, error.rotation_deg);
+    worst_translation = std::max (worst_translation, error.translation);
+    fewest = std::min (fewest, r.matches.size ());
+  }
+  EXPECT_LE (worst_rotation, 0.5);
+  EXPECT_LE (worst_translation, 0.2);
+  EXPECT_GE (fewest, 7u);  // every present building plane
+  std::printf ("100 poses: worst rotation %.3f deg, worst translation %.3f m, fewest matches %zu\n",
+               worst_rotation, worst_translation, fewest);
+}
+
+TEST (PlaneMatching, ConstraintsCutCombinationsByOrdersOfMagnitude)
+{
+  const auto map = hMapPlanes ();
+  std::mt19937 rng (17);
+  const Eigen::Matrix4d truth = test::randomPose (rng);
+  const auto scan = test::scanPlanes (map, truth, rng, 0.2 * kPi / 180.0, 0.05, 0, 3);
+  PlaneMatchingParameters p;
+  p.scan_initial = p.map_initial = 12;
+  PlaneMatchingResult r;
+  ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, r));
+  const auto& s = r.statistics;
+  EXPECT_EQ (s.unconstrained, countInitialCombinations (12, 12, 4));
+  EXPECT_LE (s.vertical, s.unconstrained);
+  EXPECT_LE (s.orientation, s.vertical);
+  EXPECT_LT (s.orientation, s.unconstrained / 10);
+  EXPECT_LT (s.residual, s.unconstrained / 1000);
+  EXPECT_GT (s.residual, 0u);
+  std::printf ("m = n = 12, k = 4: %llu unconstrained, %llu vertical, %llu orientation (%llu "
+               "degenerate), %llu residual, %.4f s\n",
+               (unsigned long long) s.unconstrained, (unsigned long long) s.vertical,
+               (unsigned long long) s.orientation, (unsigned long long) s.degenerate,
+               (unsigned long long) s.residual, s.seconds);
+}
+
+TEST (PlaneMatching, ResultDoesNotDependOnThreadsOrSigns)
+{
+  const auto map = hMapPlanes ();
+  std::mt19937 rng (23);
+  const Eigen::Matrix4d truth = test::randomPose (rng);
+  auto scan = test::scanPlanes (map, truth, rng, 0.2 * kPi / 180.0, 0.05, 1, 3);
+  PlaneMatchingParameters p;
+  PlaneMatchingResult one, two;
+  p.threads = 1;
+  ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, one));
+  p.threads = 2;
+  ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, two));
+  ASSERT_EQ (one.matches.size (), two.matches.size ());
+  for (std::size_t i = 0; i < one.matches.size (); ++i)
+    EXPECT_TRUE (one.matches[i].scan == two.matches[i].scan && one.matches[i].map == two.matches[i].map);
+  EXPECT_EQ (one.estimate.transformation, two.estimate.transformation);
+
+  // Flip every other scan plane: without oriented normals the match is the same.
+  for (std::size_t i = 0; i < scan.size (); i += 2)
+  {
+    scan[i].normal = -scan[i].normal;
+    scan[i].d = -scan[i].d;
+  }
+  PlaneMatchingResult flipped;
+  ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, flipped));
+  EXPECT_EQ (flipped.matches.size (), one.matches.size ());
+  EXPECT_EQ (wrongPairs (scan, test::slice (map), flipped.matches, truth), 0);
+  EXPECT_LT ((flipped.estimate.transformation - one.estimate.transformation).cwiseAbs ().maxCoeff (), 1e-9);
+}
+
+TEST (PlaneMatching, BadInputDoesNotConverge)
+{
+  const auto map = hMapPlanes ();
+  std::mt19937 rng (5);
+  const Eigen::Matrix4d truth = test::randomPose (rng);
+  const auto scan = test::scanPlanes (map, truth, rng, 0.0, 0.0);
+  PlaneMatchingParameters p;
+  PlaneMatchingResult r;
+  // Fewer than k planes, or none.
+  EXPECT_FALSE (matchPlanes (std::vector<RegistrationPlane> (scan.begin (), scan.begin () + 2), test::slice (map), p, r));
+  EXPECT_FALSE (r.converged);
+  EXPECT_FALSE (matchPlanes ({}, test::slice (map), p, r));
+  EXPECT_FALSE (matchPlanes (scan, {}, p, r));
+  // All walls parallel: the floor and walls facing +-y only.
+  std::vector<RegistrationPlane> parallel_map, parallel_scan;
+  for (const auto& plane : test::slice (map))
+    if (std::abs (plane.normal.x ()) < 0.5)
+      parallel_map.push_back (plane);
+  for (const auto& plane : scan)
+    if (std::abs (transformPlane (plane, truth).normal.x ()) < 0.5)
+      parallel_scan.push_back (plane);
+  EXPECT_FALSE (matchPlanes (parallel_scan, parallel_map, p, r));
+  EXPECT_FALSE (r.converged);
+  EXPECT_GT (r.statistics.degenerate, 0u);
+  // Non-finite planes.
+  auto nan_scan = scan;
+  nan_scan[3].normal.x () = std::numeric_limits<double>::quiet_NaN ();
+  EXPECT_FALSE (matchPlanes (nan_scan, test::slice (map), p, r));
+  // Nonsense parameters.
+  for (int which = 0; which < 6; ++which)
+  {
+    PlaneMatchingParameters bad;
+    switch (which)
+    {
+      case 0: bad.k = 2; break;
+      case 1: bad.scan_initial = 3; break;
+      case 2: bad.map_initial = 1000; break;
+      case 3: bad.distance_tolerance = -1.0; break;
+      case 4: bad.angle_tolerance_deg = std::numeric_limits<double>::quiet_NaN (); break;
+      default: bad.vertical_tolerance_deg = 90.0; break;
+    }
+    EXPECT_FALSE (matchPlanes (scan, test::slice (map), bad, r)) << which;
+    EXPECT_FALSE (r.converged);
+  }
+}
+
+// The building scene's default H is symmetric under a half turn about its centre (20, 15): the
+// map cannot tell the true pose from the turned one, and both fit every plane equally well.
+TEST (PlaneMatching, SymmetricPlanIsMatchedUpToItsHalfTurn)
+{
+  std::vector<MapPlane> map;
+  ASSERT_TRUE (computeMapPlanes (test::hShape (), MapPlaneParameters (), map));
+  Eigen::Matrix4d half_turn = Eigen::Matrix4d::Identity ();
+  half_turn.topLeftCorner<3, 3> () = Eigen::AngleAxisd (kPi, Eigen::Vector3d::UnitZ ()).toRotationMatrix ();
+  half_turn.topRightCorner<3, 1> () = Eigen::Vector3d (40, 30, 0);
+  int turned = 0;
+  for (unsigned seed = 1; seed <= 20; ++seed)
+  {
+    std::mt19937 rng (seed);
+    const Eigen::Matrix4d truth = test::randomPose (rng);
+    const auto scan = test::scanPlanes (map, truth, rng, 0.2 * kPi / 180.0, 0.05, 2, 3);
+    PlaneMatchingResult r;
+    ASSERT_TRUE (matchPlanes (scan, test::slice (map), PlaneMatchingParameters (), r));
+    const Eigen::Vector3d centre = (truth.inverse () * Eigen::Vector4d (20, 15, 5, 1)).head<3> ();
+    const auto direct = computeTransformationError (r.estimate.transformation, truth, centre);
+    const auto mirrored = computeTransformationError (r.estimate.transformation, half_turn * truth, centre);
+    const bool is_turned = mirrored.rotation_deg < direct.rotation_deg;
+    turned += is_turned;
+    const auto& error = is_turned ? mirrored : direct;
+    EXPECT_LT (error.rotation_deg, 0.5) << "seed " << seed;
+    EXPECT_LT (error.translation, 0.2) << "seed " << seed;
+    EXPECT_EQ (wrongPairs (scan, test::slice (map), r.matches, is_turned ? half_turn * truth : truth), 0);
+  }
+  std::printf ("symmetric H: %d of 20 poses matched the half-turned way\n", turned);
+}
