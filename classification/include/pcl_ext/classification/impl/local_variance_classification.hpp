@@ -1,0 +1,233 @@
+/*
+ * pcl_ext: LocalVarianceClassification implementation.
+ */
+#pragma once
+
+#include <pcl_ext/classification/local_variance_classification.h>
+#include <pcl_ext/common/parallel.h>
+#include <pcl_ext/features/local_variance.h>
+
+#include <pcl/common/point_tests.h>
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+template <typename PointT> bool
+pcl_ext::LocalVarianceClassification<PointT>::checkParameters () const
+{
+  const char* const name = "[pcl_ext::LocalVarianceClassification::classify]";
+  if ((tests_ & ALL_TESTS) == 0 || (tests_ & ~static_cast<unsigned int> (ALL_TESTS)) != 0)
+  {
+    PCL_ERROR ("%s tests = %u; give a non-empty combination of CURVATURE_TEST, VARIANCE_TEST "
+               "and BOUNDARY_TEST.\n", name, tests_);
+    return false;
+  }
+  if (!(curvature_threshold_ >= 0.0) || !std::isfinite (curvature_threshold_))
+  {
+    PCL_ERROR ("%s curvature threshold = %g; it must be finite and >= 0 (0: derived).\n", name,
+               curvature_threshold_);
+    return false;
+  }
+  if (!(curvature_factor_ > 0.0) || !std::isfinite (curvature_factor_))
+  {
+    PCL_ERROR ("%s curvature threshold factor = %g; it must be finite and > 0.\n", name,
+               curvature_factor_);
+    return false;
+  }
+  if (!(variance_threshold_ >= 0.0) || !std::isfinite (variance_threshold_))
+  {
+    PCL_ERROR ("%s variance threshold = %g; it must be finite and >= 0.\n", name,
+               variance_threshold_);
+    return false;
+  }
+  if ((tests_ & BOUNDARY_TEST) && !std::isfinite (chiSquaredQuantile2 (confidence_)))
+  {
+    PCL_ERROR ("%s confidence = %g; it must lie strictly between 0 and 1.\n", name,
+               confidence_);
+    return false;
+  }
+  if (k_ != 0 && k_ < static_cast<int> (kMinNeighbours))
+  {
+    PCL_ERROR ("%s k = %d; a tangent plane needs at least %zu neighbours.\n", name, k_,
+               kMinNeighbours);
+    return false;
+  }
+  return true;
+}
+
+template <typename PointT>
+template <bool dense>
+void
+pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (const Neighbourhoods<PointT>& nb)
+{
+  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size ());
+  const bool boundary = (tests_ & BOUNDARY_TEST) != 0;
+  const float nan = std::numeric_limits<float>::quiet_NaN ();
+#pragma omp parallel for num_threads(resolveThreadCount (threads_)) schedule(dynamic, 256) \
+    default(none) shared(nb, rows, boundary, nan)
+  for (std::ptrdiff_t r = 0; r < rows; ++r)
+  {
+    const pcl::index_t idx = (*indices_)[r];
+    const PointT& p = (*input_)[idx];
+    // The dense loop skips this check: a non-finite point has an empty row anyway.
+    if (!dense && !pcl::isFinite (p))
+    {
+      statistic_[r] = nan;
+      continue;
+    }
+    const auto nn = nb[static_cast<std::size_t> (r)];
+    LocalCovariance local;
+    if (!computeNeighbourhoodCovariance (*input_, nn.begin (), nn.end (), local))
+    {
+      statistic_[r] = nan;
+      continue;
+    }
+    kappa_[idx] = static_cast<float> (surfaceVariance (local.eigen.values));
+    statistic_[r] = boundary ? static_cast<float> (centroidOffsetStatistic (
+                                   Eigen::Vector3d (p.x, p.y, p.z), local, scale_by_size_))
+                             : 0.f;
+  }
+}
+
+template <typename PointT> double
+pcl_ext::LocalVarianceClassification<PointT>::deriveCurvatureThreshold () const
+{
+  std::vector<float> values;
+  values.reserve (indices_->size ());
+  for (const auto idx : *indices_)
+    if (std::isfinite (kappa_[idx]))
+      values.push_back (kappa_[idx]);
+  if (values.empty ())
+    return 0.0;
+  auto middle = values.begin () + values.size () / 2;
+  std::nth_element (values.begin (), middle, values.end ());
+  return curvature_factor_ * static_cast<double> (*middle);
+}
+
+template <typename PointT> void
+pcl_ext::LocalVarianceClassification<PointT>::label (const Neighbourhoods<PointT>& nb,
+                                                     pcl::PointCloud<pcl::Label>& labels) const
+{
+  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size ());
+  const bool curvature = (tests_ & CURVATURE_TEST) != 0;
+  const bool variance = (tests_ & VARIANCE_TEST) != 0;
+  const bool boundary = (tests_ & BOUNDARY_TEST) != 0;
+  const double threshold = curvature_threshold_used_;
+  const double quantile = boundary ? chiSquaredQuantile2 (confidence_) : 0.0;
+  const float* const kappa = kappa_.data ();
+#pragma omp parallel for num_threads(resolveThreadCount (threads_)) schedule(dynamic, 1024) \
+    default(none) shared(nb, labels, rows, curvature, variance, boundary, threshold, quantile, \
+                         kappa)
+  for (std::ptrdiff_t r = 0; r < rows; ++r)
+  {
+    auto& out = labels[r].label;
+    const float k = kappa[(*indices_)[r]];
+    if (!std::isfinite (k))
+    {
+      out = static_cast<std::uint32_t> (PointClass::Unknown);
+      continue;
+    }
+    bool edge = false;
+    if (curvature && !variance)
+      edge = k > threshold;
+    else if (variance && (!curvature || k > threshold))
+    {
+      // Section 2.2: only points the curvature test calls edges are re-checked by eq. 5.
+      const auto nn = nb[static_cast<std::size_t> (r)];
+      std::size_t count = 0;
+      const double var = curvatureVariance (
+          nn.begin (), nn.end (), [kappa] (pcl::index_t j) { return kappa[j]; }, count);
+      if (!std::isfinite (var))
+      {
+        out = static_cast<std::uint32_t> (PointClass::Unknown);
+        continue;
+      }
+      edge = var > variance_threshold_;
+    }
+    if (edge)
+      out = static_cast<std::uint32_t> (PointClass::Edge);
+    else if (boundary && statistic_[r] > quantile)
+      out = static_cast<std::uint32_t> (PointClass::Boundary);
+    else
+      out = static_cast<std::uint32_t> (PointClass::Surface);
+  }
+}
+
+template <typename PointT> void
+pcl_ext::LocalVarianceClassification<PointT>::classify (pcl::PointCloud<pcl::Label>& labels)
+{
+  labels.clear ();
+  labels.width = labels.height = 0;
+  if (!initCompute ())
+  {
+    PCL_ERROR ("[pcl_ext::LocalVarianceClassification::classify] No input cloud.\n");
+    return;
+  }
+  if (input_->empty ())
+  {
+    PCL_ERROR ("[pcl_ext::LocalVarianceClassification::classify] The input cloud is empty.\n");
+    deinitCompute ();
+    return;
+  }
+  if (!checkParameters ())
+  {
+    deinitCompute ();
+    return;
+  }
+  const Neighbourhoods<PointT>* nb =
+      source_.prepare ("LocalVarianceClassification::classify", input_,
+                       fake_indices_ ? pcl::IndicesConstPtr () : indices_, k_, radius_, search_,
+                       threads_);
+  if (!nb)
+  {
+    deinitCompute ();
+    return;
+  }
+
+  kappa_.assign (input_->size (), std::numeric_limits<float>::quiet_NaN ());
+  statistic_.resize (indices_->size ());
+  if (input_->is_dense)
+    computeCovariances<true> (*nb);
+  else
+    computeCovariances<false> (*nb);
+  curvature_threshold_used_ = curvature_threshold_;
+  if ((tests_ & CURVATURE_TEST) && curvature_threshold_ == 0.0)
+    curvature_threshold_used_ = deriveCurvatureThreshold ();
+
+  labels.resize (indices_->size ());
+  if (fake_indices_ && input_->height > 1 && input_->width * input_->height == labels.size ())
+  {
+    labels.width = input_->width;
+    labels.height = input_->height;
+  }
+  label (*nb, labels);
+  labels.header = input_->header;
+  labels.is_dense = true;
+  source_.release ();
+  deinitCompute ();
+}
+
+template <typename PointT> void
+pcl_ext::LocalVarianceClassification<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
+{
+  clusters.clear ();
+  pcl::PointCloud<pcl::Label> labels;
+  classify (labels);
+  if (labels.empty ())
+    return;
+  clusters.resize (kNumPointClasses);
+  for (auto& c : clusters)
+    c.header = input_->header;
+  // classify() released the indices; the labels are in the order of getIndices().
+  const auto indices = this->getIndices ();
+  for (std::size_t r = 0; r < labels.size (); ++r)
+  {
+    const auto c = std::min<std::size_t> (labels[r].label, kNumPointClasses - 1);
+    clusters[c].indices.push_back (indices ? (*indices)[r] : static_cast<pcl::index_t> (r));
+  }
+}
+
+#define PCL_EXT_INSTANTIATE_LocalVarianceClassification(T) \
+  template class pcl_ext::LocalVarianceClassification<T>;

@@ -1,0 +1,224 @@
+/*
+ * pcl_ext: surface / edge / boundary classification by local variance (Belton & Lichti 2006,
+ * section 2).
+ */
+#pragma once
+
+#include <pcl_ext/features/neighbourhood_source.h>
+#include <pcl_ext/point_types.h>
+
+#include <pcl/PointIndices.h>
+#include <pcl/pcl_base.h>
+#include <pcl/point_types.h>
+
+#include <vector>
+
+namespace pcl_ext
+{
+/** \brief Labels every point surface, edge or boundary from the covariance of its
+  * neighbourhood (Belton & Lichti 2006, section 2, eq. 1-8).
+  *
+  * The paper's workflow, in one pass over one neighbourhood search:
+  * 1. curvature kappa = l0 / (l0 + l1 + l2) of each neighbourhood (eq. 4); points with
+  *    kappa <= the curvature threshold are surface (the cheap test of section 2.2);
+  * 2. points above it are re-checked by the variance of kappa over their neighbourhood
+  *    (eq. 5): var(kappa) > the variance threshold makes an edge, otherwise they are surface
+  *    (curved but smooth, e.g. a pipe, section 2.2 and figure 1);
+  * 3. surface points whose position is far from their neighbourhood's centroid are boundary
+  *    points (section 2.3, eq. 6-8; see pcl_ext::centroidOffsetStatistic).
+  * Each test can run alone or in any combination (setTests): the curvature test alone calls
+  * every point above the threshold an edge; the variance test alone checks every point; the
+  * boundary test alone splits all points into boundary and surface.
+  *
+  * The covariance of each neighbourhood is computed once and used for kappa, the boundary
+  * test and (through kappa) the variance test; the loops are OpenMP-parallel
+  * (setNumberOfThreads) and the labels do not depend on the thread count.
+  *
+  * Output: classify() gives one pcl::Label per index with a pcl_ext::PointClass value
+  * (1 surface, 2 edge, 3 boundary); extract() gives the indices of each class. Points without a
+  * valid neighbourhood (non-finite, fewer than 3 neighbours, coincident or collinear
+  * neighbours, fewer than 3 valid curvatures for eq. 5) are 0, "unknown".
+  *
+  * Departures from the text: eq. 6 is scaled by the neighbourhood size (see
+  * pcl_ext::ChiSquaredBoundaryEstimation, setScaleByNeighbourhoodSize); with indices, eq. 5
+  * averages over the neighbours that are among the indices (only their kappa is computed); the
+  * curvature threshold, which the paper leaves to the user, is derived from the data by
+  * default (setCurvatureThreshold).
+  *
+  * \code
+  * pcl_ext::LocalVarianceClassification<pcl::PointXYZ> lvc;
+  * lvc.setInputCloud (cloud);
+  * lvc.setKSearch (50);
+  * pcl::PointCloud<pcl::Label> labels;
+  * lvc.classify (labels);
+  * \endcode
+  */
+template <typename PointT>
+class LocalVarianceClassification : public pcl::PCLBase<PointT>
+{
+public:
+  using Ptr = pcl::shared_ptr<LocalVarianceClassification<PointT>>;
+  using ConstPtr = pcl::shared_ptr<const LocalVarianceClassification<PointT>>;
+  using PointCloud = pcl::PointCloud<PointT>;
+  using NeighbourhoodsConstPtr = typename Neighbourhoods<PointT>::ConstPtr;
+  using SearchPtr = typename Neighbourhoods<PointT>::SearchPtr;
+
+  /** \brief The tests of the workflow, combined with |. */
+  enum Test : unsigned int
+  {
+    CURVATURE_TEST = 1,  ///< kappa > curvature threshold (eq. 4)
+    VARIANCE_TEST = 2,   ///< var(kappa) > variance threshold (eq. 5)
+    BOUNDARY_TEST = 4,   ///< chi-squared centroid test (eq. 6-8)
+    ALL_TESTS = 7
+  };
+
+  LocalVarianceClassification () = default;
+
+  /** \brief Number of neighbours k, the point included. Default 50 (the paper's); valid:
+    * 3 .. number of finite points. Clears the radius. */
+  void
+  setKSearch (int k) { k_ = k; radius_ = 0.0; }
+
+  int
+  getKSearch () const { return k_; }
+
+  /** \brief Neighbourhood radius instead of k, in the cloud's units. Default 0 (k is used);
+    * valid: > 0. Clears k. */
+  void
+  setRadiusSearch (double radius) { radius_ = radius; k_ = 0; }
+
+  double
+  getRadiusSearch () const { return radius_; }
+
+  /** \brief Search for the neighbourhoods. Default null: pcl_ext::search::NanoflannKdTree. */
+  void
+  setSearchMethod (const SearchPtr& search) { search_ = search; }
+
+  /** \brief Shared neighbourhoods, computed for the same cloud and indices (then k and radius
+    * are theirs). Default: none, classify() searches itself. */
+  void
+  setNeighbourhoods (const NeighbourhoodsConstPtr& neighbourhoods)
+  {
+    source_.setShared (neighbourhoods);
+  }
+
+  /** \brief Curvature threshold (the cheap test of section 2.2, on kappa of eq. 4).
+    * Valid: >= 0. Default 0: derived from the data as factor * median(kappa)
+    * (setCurvatureThresholdFactor). Most points of a TLS scene lie on smooth surfaces, so the
+    * median kappa is the noise level of a smooth surface at the scene's typical spacing: for a
+    * plane with range noise sigma and neighbourhood radius r (k = pi r^2 / s^2 at spacing s),
+    * kappa ~= 2 sigma^2 / r^2, which is also a way to set it by hand. Points below it are never
+    * re-checked, so a low value costs time, not accuracy. getCurvatureThresholdUsed() gives
+    * the value of the last classify(). */
+  void
+  setCurvatureThreshold (double threshold) { curvature_threshold_ = threshold; }
+
+  double
+  getCurvatureThreshold () const { return curvature_threshold_; }
+
+  /** \brief Multiple of the median kappa used when the curvature threshold is 0. Default 3;
+    * valid: > 0. */
+  void
+  setCurvatureThresholdFactor (double factor) { curvature_factor_ = factor; }
+
+  double
+  getCurvatureThresholdFactor () const { return curvature_factor_; }
+
+  /** \brief The curvature threshold the last classify() used (derived or set). */
+  double
+  getCurvatureThresholdUsed () const { return curvature_threshold_used_; }
+
+  /** \brief Variance-of-curvature tolerance (eq. 5): above it a point is an edge. Default 1e-4
+    * (the paper's, from user trials); valid: >= 0. */
+  void
+  setVarianceThreshold (double threshold) { variance_threshold_ = threshold; }
+
+  double
+  getVarianceThreshold () const { return variance_threshold_; }
+
+  /** \brief Confidence level of the boundary test (alpha of chi2_2(alpha), eq. 6). Default
+    * 0.95; valid: 0 < confidence < 1. */
+  void
+  setConfidence (double confidence) { confidence_ = confidence; }
+
+  double
+  getConfidence () const { return confidence_; }
+
+  /** \brief Scale eq. 6 by the neighbourhood size (default true; false: the printed form, see
+    * pcl_ext::centroidOffsetStatistic). */
+  void
+  setScaleByNeighbourhoodSize (bool scale) { scale_by_size_ = scale; }
+
+  bool
+  getScaleByNeighbourhoodSize () const { return scale_by_size_; }
+
+  /** \brief Which tests run, a combination of Test flags. Default ALL_TESTS (the paper's
+    * workflow); valid: any non-empty combination. */
+  void
+  setTests (unsigned int tests) { tests_ = tests; }
+
+  unsigned int
+  getTests () const { return tests_; }
+
+  /** \brief OpenMP threads. Default 0: all cores. */
+  void
+  setNumberOfThreads (unsigned int nr_threads = 0) { threads_ = nr_threads; }
+
+  unsigned int
+  getNumberOfThreads () const { return threads_; }
+
+  /** \brief One label per index: a pcl_ext::PointClass value (0 unknown, 1 surface, 2 edge,
+    * 3 boundary). Empty after a PCL_ERROR on bad input or parameters. */
+  void
+  classify (pcl::PointCloud<pcl::Label>& labels);
+
+  /** \brief The indices of each class: \a clusters[c] lists the points of PointClass c, so
+    * there are always kNumPointClasses lists (unknown first), some maybe empty. Empty after a
+    * PCL_ERROR. */
+  void
+  extract (std::vector<pcl::PointIndices>& clusters);
+
+protected:
+  using pcl::PCLBase<PointT>::input_;
+  using pcl::PCLBase<PointT>::indices_;
+  using pcl::PCLBase<PointT>::fake_indices_;
+  using pcl::PCLBase<PointT>::initCompute;
+  using pcl::PCLBase<PointT>::deinitCompute;
+
+  /** \brief Parameter checks; PCL_ERROR and false on the first bad one. */
+  bool
+  checkParameters () const;
+
+  /** \brief Pass 1: kappa per point (NaN without a tangent plane) and the eq. 6 statistic per
+    * row. */
+  template <bool dense> void
+  computeCovariances (const Neighbourhoods<PointT>& nb);
+
+  /** \brief Pass 2: the label of each row from kappa, var(kappa) and the statistic. */
+  void
+  label (const Neighbourhoods<PointT>& nb, pcl::PointCloud<pcl::Label>& labels) const;
+
+  double
+  deriveCurvatureThreshold () const;
+
+  int k_ = 50;
+  double radius_ = 0.0;
+  SearchPtr search_;
+  NeighbourhoodSource<PointT> source_;
+  double curvature_threshold_ = 0.0;
+  double curvature_factor_ = 3.0;
+  double curvature_threshold_used_ = 0.0;
+  double variance_threshold_ = 1e-4;
+  double confidence_ = 0.95;
+  bool scale_by_size_ = true;
+  unsigned int tests_ = ALL_TESTS;
+  unsigned int threads_ = 0;
+
+  std::vector<float> kappa_;      ///< per point of the cloud; NaN when not computed
+  std::vector<float> statistic_;  ///< eq. 6 per row
+};
+}  // namespace pcl_ext
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl_ext/classification/impl/local_variance_classification.hpp>
+#endif

@@ -1,0 +1,296 @@
+/*
+ * LocalVarianceClassification on analytic clouds (cube, plane, cylinder), each test alone,
+ * determinism, shared neighbourhoods, indices, extract(), bad input.
+ */
+#include "../features/analytic_clouds.h"
+
+#include <pcl_ext/classification/local_variance_classification.h>
+#include <pcl_ext/evaluation/classification_metrics.h>
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+using pcl_ext::PointClass;
+using pcl_ext::test::Cloud;
+using Classifier = pcl_ext::LocalVarianceClassification<pcl::PointXYZ>;
+using Labels = pcl::PointCloud<pcl::Label>;
+
+namespace
+{
+Labels
+classify (const Cloud::ConstPtr& cloud, int k = 50, unsigned tests = Classifier::ALL_TESTS,
+          double curvature_threshold = 0.0)
+{
+  Classifier c;
+  c.setInputCloud (cloud);
+  c.setKSearch (k);
+  c.setTests (tests);
+  c.setCurvatureThreshold (curvature_threshold);
+  Labels labels;
+  c.classify (labels);
+  return labels;
+}
+
+std::vector<std::uint32_t>
+values (const Labels& labels)
+{
+  std::vector<std::uint32_t> v;
+  for (const auto& l : labels)
+    v.push_back (l.label);
+  return v;
+}
+
+std::uint32_t
+id (PointClass c)
+{
+  return static_cast<std::uint32_t> (c);
+}
+}  // namespace
+
+TEST (LocalVarianceClassification, CubeCreasesAreEdgesFacesAreSurface)
+{
+  const auto cube = pcl_ext::test::makeCube (1.0, 0.02, 0.0005);
+  const Labels labels = classify (cube.cloud);
+  ASSERT_EQ (labels.size (), cube.cloud->size ());
+  // k = 50 reaches r ~ 4 spacings: points within a spacing of a crease must be edges, points
+  // farther than r from every crease see one face only and must be surface.
+  const double r = cube.spacing * std::sqrt (50 / M_PI);
+  std::size_t near = 0, near_edge = 0, far = 0, far_surface = 0;
+  for (std::size_t i = 0; i < labels.size (); ++i)
+  {
+    if (cube.crease_distance[i] <= cube.spacing)
+    {
+      ++near;
+      near_edge += labels[i].label == id (PointClass::Edge);
+    }
+    else if (cube.crease_distance[i] > 1.2 * r)
+    {
+      ++far;
+      far_surface += labels[i].label == id (PointClass::Surface);
+    }
+  }
+  EXPECT_EQ (near_edge, near);
+  EXPECT_GE (far_surface, static_cast<std::size_t> (0.99 * far));
+
+  // "Near an edge" at the neighbourhood scale (a crease within the neighbourhood radius, as in
+  // the scene tests): F1 on edges and surface is high.
+  pcl_ext::ClassificationMetrics m;
+  ASSERT_TRUE (pcl_ext::evaluateClassification (values (labels), cube.truth (r), m));
+  for (const auto& c : m.classes)
+  {
+    std::cout << pcl_ext::pointClassName (static_cast<PointClass> (c.label)) << " F1 " << c.f1
+              << " (precision " << c.precision << ", recall " << c.recall << ")\n";
+    if (c.label == id (PointClass::Edge))
+      EXPECT_GT (c.f1, 0.85);
+    if (c.label == id (PointClass::Surface))
+      EXPECT_GT (c.f1, 0.95);
+  }
+}
+
+TEST (LocalVarianceClassification, PlaneBordersAreBoundaries)
+{
+  const auto plane = pcl_ext::test::makePlane (1.0, 0.01, 0.6, 0.0005);
+  const Labels labels = classify (plane.cloud);
+  std::size_t border = 0, border_found = 0, edges = 0;
+  for (std::size_t i = 0; i < labels.size (); ++i)
+  {
+    edges += labels[i].label == id (PointClass::Edge);
+    if (plane.border_distance[i] <= 0.5 * plane.spacing)
+    {
+      ++border;
+      border_found += labels[i].label == id (PointClass::Boundary);
+    }
+  }
+  EXPECT_EQ (border_found, border);
+  EXPECT_EQ (edges, 0u);
+  pcl_ext::ClassificationMetrics m;
+  ASSERT_TRUE (pcl_ext::evaluateClassification (values (labels), plane.truth (2 * plane.spacing),
+                                                m));
+  for (const auto& c : m.classes)
+    if (c.label == id (PointClass::Boundary))
+      EXPECT_GT (c.f1, 0.8);
+}
+
+TEST (LocalVarianceClassification, VarianceKeepsACylinderSurfaceWhereCurvatureCallsItEdge)
+{
+  // Section 2.2 and figure 1: a pipe's curvature is high but constant.
+  const auto cyl = pcl_ext::test::makeCylinder (0.1, 0.6, 0.01, 0.0002);
+  const double threshold = 1e-3;  // below the cylinder's kappa ~ r^2 / (32 R^2) ~ 5e-3
+  const Labels curvature_only = classify (cyl.cloud, 50, Classifier::CURVATURE_TEST, threshold);
+  const Labels workflow = classify (cyl.cloud, 50,
+                                    Classifier::CURVATURE_TEST | Classifier::VARIANCE_TEST,
+                                    threshold);
+  std::size_t n = 0, edge_curvature = 0, edge_workflow = 0;
+  for (std::size_t i = 0; i < cyl.cloud->size (); ++i)
+  {
+    if (cyl.border_distance[i] < 0.1)
+      continue;
+    ++n;
+    edge_curvature += curvature_only[i].label == id (PointClass::Edge);
+    edge_workflow += workflow[i].label == id (PointClass::Edge);
+  }
+  EXPECT_EQ (edge_curvature, n);
+  EXPECT_EQ (edge_workflow, 0u);
+}
+
+TEST (LocalVarianceClassification, EachTestRunsAlone)
+{
+  const auto cube = pcl_ext::test::makeCube (1.0, 0.04);
+  auto count = [] (const Labels& labels, PointClass c) {
+    return std::count_if (labels.begin (), labels.end (),
+                          [c] (const pcl::Label& l) { return l.label == id (c); });
+  };
+  const Labels boundary = classify (cube.cloud, 30, Classifier::BOUNDARY_TEST);
+  EXPECT_EQ (count (boundary, PointClass::Edge), 0);
+  EXPECT_GT (count (boundary, PointClass::Surface), 0);
+  const Labels curvature = classify (cube.cloud, 30, Classifier::CURVATURE_TEST);
+  EXPECT_EQ (count (curvature, PointClass::Boundary), 0);
+  EXPECT_GT (count (curvature, PointClass::Edge), 0);
+  const Labels variance = classify (cube.cloud, 30, Classifier::VARIANCE_TEST);
+  EXPECT_EQ (count (variance, PointClass::Boundary), 0);
+  EXPECT_GT (count (variance, PointClass::Edge), 0);
+}
+
+TEST (LocalVarianceClassification, CurvatureThresholdIsDerivedFromTheMedian)
+{
+  const auto plane = pcl_ext::test::makePlane (1.0, 0.01, 0.5, 0.001);
+  Classifier c;
+  c.setInputCloud (plane.cloud);
+  Labels labels;
+  c.classify (labels);
+  // kappa of a noisy plane ~ 2 sigma^2 / r^2 with r^2 = k s^2 / pi.
+  const double r2 = 50 * 0.01 * 0.01 / M_PI;
+  const double expected = 3.0 * 2.0 * 0.001 * 0.001 / r2;
+  EXPECT_GT (c.getCurvatureThresholdUsed (), 0.5 * expected);
+  EXPECT_LT (c.getCurvatureThresholdUsed (), 1.5 * expected);
+  c.setCurvatureThreshold (0.25);
+  c.classify (labels);
+  EXPECT_EQ (c.getCurvatureThresholdUsed (), 0.25);
+}
+
+TEST (LocalVarianceClassification, ThreadsAndSharedNeighbourhoodsDoNotChangeLabels)
+{
+  const auto cube = pcl_ext::test::makeCube (1.0, 0.03, 0.0005);
+  Classifier c;
+  c.setInputCloud (cube.cloud);
+  c.setNumberOfThreads (1);
+  Labels one, two, shared;
+  c.classify (one);
+  c.setNumberOfThreads (2);
+  c.classify (two);
+  auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>> ();
+  nb->setInputCloud (cube.cloud);
+  nb->setKSearch (50);
+  ASSERT_TRUE (nb->compute ());
+  c.setNeighbourhoods (nb);
+  c.setKSearch (7);  // ignored: the shared neighbourhoods fit this cloud
+  c.classify (shared);
+  EXPECT_EQ (values (one), values (two));
+  EXPECT_EQ (values (one), values (shared));
+}
+
+TEST (LocalVarianceClassification, ExtractListsEveryClassAndHonoursIndices)
+{
+  const auto cube = pcl_ext::test::makeCube (1.0, 0.04);
+  Classifier c;
+  c.setInputCloud (cube.cloud);
+  c.setKSearch (20);
+  Labels labels;
+  c.classify (labels);
+  std::vector<pcl::PointIndices> clusters;
+  c.extract (clusters);
+  ASSERT_EQ (clusters.size (), pcl_ext::kNumPointClasses);
+  std::size_t total = 0;
+  for (std::size_t k = 0; k < clusters.size (); ++k)
+  {
+    total += clusters[k].indices.size ();
+    for (const auto i : clusters[k].indices)
+      EXPECT_EQ (labels[i].label, k);
+  }
+  EXPECT_EQ (total, cube.cloud->size ());
+
+  auto indices = pcl::make_shared<pcl::Indices> ();
+  for (std::size_t i = 0; i < cube.cloud->size (); i += 3)
+    indices->push_back (static_cast<pcl::index_t> (i));
+  c.setIndices (indices);
+  c.classify (labels);
+  ASSERT_EQ (labels.size (), indices->size ());
+  c.extract (clusters);
+  total = 0;
+  for (const auto& cl : clusters)
+    for (const auto i : cl.indices)
+    {
+      EXPECT_EQ (i % 3, 0);
+      ++total;
+    }
+  EXPECT_EQ (total, indices->size ());
+}
+
+TEST (LocalVarianceClassificationBadInput, EmptyOrMissingCloudGivesEmptyOutput)
+{
+  Classifier c;
+  Labels labels;
+  c.classify (labels);
+  EXPECT_TRUE (labels.empty ());
+  c.setInputCloud (pcl::make_shared<Cloud> ());
+  c.classify (labels);
+  EXPECT_TRUE (labels.empty ());
+  std::vector<pcl::PointIndices> clusters;
+  c.extract (clusters);
+  EXPECT_TRUE (clusters.empty ());
+}
+
+TEST (LocalVarianceClassificationBadInput, BadParametersGiveEmptyOutput)
+{
+  const auto plane = pcl_ext::test::makePlane (1.0, 0.05);
+  Classifier c;
+  c.setInputCloud (plane.cloud);
+  Labels labels;
+  const auto expectEmpty = [&] (const char* what) {
+    c.classify (labels);
+    EXPECT_TRUE (labels.empty ()) << what;
+    c = Classifier ();
+    c.setInputCloud (plane.cloud);
+  };
+  c.setCurvatureThreshold (-1.0);
+  expectEmpty ("negative curvature threshold");
+  c.setVarianceThreshold (-1e-4);
+  expectEmpty ("negative variance threshold");
+  c.setCurvatureThresholdFactor (0.0);
+  expectEmpty ("zero factor");
+  c.setConfidence (1.0);
+  expectEmpty ("confidence 1");
+  c.setTests (0);
+  expectEmpty ("no test");
+  c.setTests (8);
+  expectEmpty ("unknown test");
+  c.setKSearch (2);
+  expectEmpty ("k = 2");
+  c.setKSearch (plane.cloud->size () + 1);
+  expectEmpty ("k larger than the cloud");
+  c.setRadiusSearch (-0.1);
+  expectEmpty ("negative radius");
+}
+
+TEST (LocalVarianceClassificationBadInput, NonFiniteDuplicateAndCollinearPointsAreUnknown)
+{
+  auto plane = pcl_ext::test::makePlane (1.0, 0.02);
+  const std::size_t n = plane.cloud->size ();
+  for (int i = 0; i < 60; ++i)
+    plane.cloud->push_back (pcl::PointXYZ (5.f, 5.f, 5.f));  // duplicates, far away
+  for (int i = 0; i < 60; ++i)
+    plane.cloud->push_back (pcl::PointXYZ (-5.f - 0.01f * i, 0.f, 0.f));  // a line
+  plane.cloud->push_back (pcl::PointXYZ (std::numeric_limits<float>::quiet_NaN (), 0.f, 0.f));
+  plane.cloud->push_back (pcl::PointXYZ (0.f, std::numeric_limits<float>::infinity (), 0.f));
+  for (const bool dense : {false, true})  // true: a cloud wrongly claiming to be dense
+  {
+    plane.cloud->is_dense = dense;
+    const Labels labels = classify (plane.cloud);
+    ASSERT_EQ (labels.size (), plane.cloud->size ());
+    for (std::size_t i = n; i < labels.size (); ++i)
+      EXPECT_EQ (labels[i].label, id (PointClass::Unknown)) << i;
+    for (std::size_t i = 0; i < n; ++i)
+      EXPECT_NE (labels[i].label, id (PointClass::Unknown)) << i;
+  }
+}
