@@ -7,6 +7,7 @@
 #include <pcl_ext/tools/command_line.h>
 #include <pcl_ext/tools/file_output.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -136,6 +137,12 @@ main (int argc, char** argv)
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
 
+  const auto known = simulation::sceneNames ();
+  if (std::find (known.begin (), known.end (), scene_name) == known.end ())
+  {
+    std::cerr << "Error: unknown scene '" << scene_name << "' (known: " << names << ").\n";
+    return 1;
+  }
   simulation::SceneParameters parameters;
   parameters.seed = seed;
   parameters.noise = noise;

@@ -86,7 +86,8 @@ describeBuildingScene (const SceneParameters& parameters, SceneDescription& d)
       builder.addPolygon (Vec3 (pa.x (), pa.y (), 0.0), Vec3 (dir.x (), dir.y (), 0), Vec3::UnitZ (),
                           {{Vec2 (0, 0), Vec2 ((pb - pa).norm (), 0), Vec2 ((pb - pa).norm (), 0.8 * height),
                             Vec2 (0, 0.8 * height)}},
-                          builder.newObject (), Superfluous, material (230, 230, 225, 0.7));
+                          builder.newObject (), Superfluous, material (230, 230, 225, 0.7),
+                          {{ground, 0, 0, 0}});  // stands on the ground; other edges are free
     }
   }
 

@@ -31,6 +31,9 @@ registry ()
   return scenes;
 }
 
+// 100 million simulated points take about 5 GB: more is certainly a typing error.
+constexpr std::size_t kMaxPoints = 100000000;
+
 bool
 finiteNonNegative (double v)
 {
@@ -57,10 +60,16 @@ checkSceneParameters (const SceneParameters& p)
                p.noise_per_metre);
     return false;
   }
-  if (!finiteNonNegative (p.angular_step_deg) || p.angular_step_deg > 10.0)
+  if (!finiteNonNegative (p.angular_step_deg) || p.angular_step_deg > 10.0 ||
+      (p.angular_step_deg > 0.0 && p.angular_step_deg < 1e-3))
   {
-    PCL_ERROR ("%s Angular step must be in (0, 10] degrees (0 = default), got %g.\n", fn,
+    PCL_ERROR ("%s Angular step must be in [0.001, 10] degrees (0 = default), got %g.\n", fn,
                p.angular_step_deg);
+    return false;
+  }
+  if (p.points > kMaxPoints)
+  {
+    PCL_ERROR ("%s At most %zu points can be asked for, got %zu.\n", fn, kMaxPoints, p.points);
     return false;
   }
   if (!finiteNonNegative (p.edge_distance) || !finiteNonNegative (p.max_range))
@@ -195,7 +204,9 @@ scanScene (const std::shared_ptr<const SceneDescription>& description,
     {
       RandomStream rng = detail::layoutStream (parameters.seed, 0x9053ULL);
       const double yaw = 6.283185307179586 * rng.uniform ();
-      const double pitch = (rng.uniform () - 0.5) * 0.35, roll = (rng.uniform () - 0.5) * 0.35;
+      const double ten_degrees = 0.17453292519943295;
+      const double pitch = (2.0 * rng.uniform () - 1.0) * ten_degrees;
+      const double roll = (2.0 * rng.uniform () - 1.0) * ten_degrees;
       cloud_from_scene.linear () = detail::rotationYpr (yaw, pitch, roll);
       cloud_from_scene.translation () =
           Vec3 ((rng.uniform () - 0.5) * 200.0, (rng.uniform () - 0.5) * 200.0,

@@ -44,9 +44,9 @@ toByte (double v)
 bool
 TlsScanSimulation::checkParameters () const
 {
-  if (!(step_deg_ > 0.0 && step_deg_ <= 10.0))
+  if (!(step_deg_ >= 1e-3 && step_deg_ <= 10.0))
   {
-    PCL_ERROR ("[pcl_ext::TlsScanSimulation::scan] Angular step must be in (0, 10] degrees, got %g.\n",
+    PCL_ERROR ("[pcl_ext::TlsScanSimulation::scan] Angular step must be in [0.001, 10] degrees, got %g.\n",
                step_deg_);
     return false;
   }

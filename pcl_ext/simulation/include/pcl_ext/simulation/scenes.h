@@ -35,15 +35,18 @@ enum class OutdoorLabel : std::uint32_t
 struct SceneParameters
 {
   std::uint64_t seed = 1;         ///< noise, porosity and layout variations
-  std::size_t points = 0;         ///< target point count (chooses the angular step)
-  double angular_step_deg = 0.0;  ///< angular step; overrides \a points
+  std::size_t points = 0;         ///< target point count (chooses the angular step), <= 1e8
+  double angular_step_deg = 0.0;  ///< angular step in [0.001, 10] degrees; overrides \a points
   double noise = 0.005;           ///< range noise sigma at zero range (m), >= 0
   double noise_per_metre = 0.0;   ///< added range noise sigma per metre of range, >= 0
   double edge_distance = 0.0;     ///< class distance (m); 0 = local scan spacing
   int num_scanners = 0;           ///< number of scan positions (scene default when 0)
   std::vector<Eigen::Vector3d> scan_positions;  ///< explicit positions (scene frame)
   double max_range = 0.0;         ///< maximum range (m)
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero ();  ///< added to the coordinates
+  /** \brief Added to the coordinates (building: to the map frame, i.e. the footprint and the
+    * transform). Points are stored as floats, so a large offset costs precision (3 cm steps at
+    * 445 km), as in georeferenced scans loaded without a local origin: that is the point. */
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero ();
   unsigned int threads = 0;       ///< 0 = all cores
 
   // building only (Khoshelham & Gorte section 4)
@@ -51,8 +54,12 @@ struct SceneParameters
   double building_height = 10.0;  ///< wall height (m)
   int superfluous_planes = 0;     ///< neighbouring buildings and interior walls seen through windows
   int missing_walls = 0;          ///< walls hidden behind a row of dense vegetation
-  bool random_pose = true;        ///< scan frame in a random pose drawn from the seed
-  bool has_pose = false;          ///< use \a pose (scan-from-map) instead
+  /** \brief Scan frame in a random pose drawn from the seed: yaw uniform in [0, 360) deg,
+    * pitch and roll uniform in [-10, 10] deg, translation uniform in [-100, 100] m
+    * horizontally and [-10, 10] m vertically; otherwise the scan frame is the map frame. */
+  bool random_pose = true;
+  bool has_pose = false;          ///< use \a pose instead of a random one
+  /** \brief Scan-from-map pose: scan = pose * map; the saved transform is its inverse. */
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity ();
 };
 
@@ -135,26 +142,27 @@ void
 describeIndoorScene (const SceneParameters& parameters, SceneDescription& description);
 
 /** \brief Eight disjoint floating cubes of different sizes and orientations (Sithole &
-  * Mapurisa, figure 10), about 41,500 points by default; no labels. */
+  * Mapurisa, figure 10), about 41,500 points by default (2 positions); no labels. */
 void
 describeCubesScene (const SceneParameters& parameters, SceneDescription& description);
 
 /** \brief Spheres nested in spheres (Sithole & Mapurisa, figure 11): outer spheres are cut open
   * towards the scanners so that the inner ones are seen through the opening (whose rim is a
-  * border). About 155,000 points by default; no labels. */
+  * border). About 155,000 points by default (2 positions); no labels. */
 void
 describeSpheresScene (const SceneParameters& parameters, SceneDescription& description);
 
 /** \brief Coaxial pipes whose surfaces touch (Sithole & Mapurisa, figures 9 and 13): a pipe
   * sticking out of a wider open pipe, an annular step joining them, and a flange; every
-  * junction is a crease. No labels. */
+  * junction is a crease. No labels. Default 2 positions, step 0.1 deg. */
 void
 describeCoaxialScene (const SceneParameters& parameters, SceneDescription& description);
 
 /** \brief A pipe rack (Sithole & Mapurisa, figure 12): portal frames, pipes of several radii
   * resting on the beams, elbows turning down to the ground or sideways, on a ground plane.
-  * Pipes touch the beams tangentially, which is not a crease. Labels: 1 ground, 2 support,
-  * 3 pipe. */
+  * Pipes touch the beams tangentially, which is not a crease; elbows join their straight parts
+  * tangentially (separate segments, no crease). Labels: 1 ground, 2 support, 3 pipe. Default 3
+  * positions, step 0.3 deg. */
 void
 describePipesScene (const SceneParameters& parameters, SceneDescription& description);
 
@@ -167,13 +175,18 @@ describeTreeScene (const SceneParameters& parameters, SceneDescription& descript
 /** \brief The exterior of a polyhedral building (Khoshelham & Gorte 2009, section 4 and
   * figure 3): walls with windows on the footprint (an H-shaped plan by default), a flat roof
   * and the ground, scanned from positions around it; options add superfluous planes and hide
-  * walls behind vegetation. Labels: 1 wall, 2 ground, 3 roof, 4 superfluous, 5 vegetation. */
+  * walls behind vegetation. Labels: 1 wall, 2 ground, 3 roof, 4 superfluous, 5 vegetation.
+  * Default 6 positions 12 m out from the middle of walls (farthest-first), step 0.4 deg; the
+  * scan frame is posed arbitrarily (SceneParameters::random_pose). */
 void
 describeBuildingScene (const SceneParameters& parameters, SceneDescription& description);
 
 /** \brief A street (Lim & Suter 2008, figures 6-8): undulating grass terrain, a paved road and
   * walkways, building facades with windows, trees (trunks and porous crowns), shrubs, poles
-  * and sagging wires, with colour and intensity per class. Labels are OutdoorLabel. */
+  * and sagging wires, with colour and intensity per class. Labels are OutdoorLabel. The road,
+  * walkways and grass are regions of one terrain surface (separate segments, no crease between
+  * them); shrubs and wires carry no crease where they touch the ground or a pole. Default 3
+  * positions along the road, step 0.3 deg. */
 void
 describeStreetScene (const SceneParameters& parameters, SceneDescription& description);
 /** \} */

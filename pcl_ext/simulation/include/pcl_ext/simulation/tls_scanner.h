@@ -55,7 +55,7 @@ public:
   }
 
   /** \brief Angular step between adjacent rays in degrees, both in azimuth and elevation
-    * (default 0.1, range (0, 10]). */
+    * (default 0.1, range [0.001, 10]). */
   void
   setAngularStep (double degrees)
   {
