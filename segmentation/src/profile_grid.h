@@ -21,7 +21,8 @@ namespace detail
   *
   * Profile points lie on curves, so most cells are empty: cells are kept as a sorted key list
   * (row-major), and a query walks one key range per row. Cheaper than a tree for the few
-  * hundred points of a profile, and exact. */
+  * hundred points of a profile, and exact. A row table finds a row's cells without searching
+  * the whole key list. */
 class ProfileGrid
 {
 public:
@@ -41,7 +42,7 @@ public:
       hi = hi.cwiseMax (p);
     }
     // Cells never so small that their numbers overflow: a larger cell only costs time.
-    cell_ = std::max (cell, (hi - lo_).maxCoeff () / 1e6f);
+    cell_ = std::max (cell, (hi - lo_).maxCoeff () / 65536.f);
     if (!(cell_ > 0.f))
       cell_ = 1.f;
     std::vector<std::uint64_t> key (n);
@@ -61,6 +62,13 @@ public:
         begin_.push_back (static_cast<std::uint32_t> (k));
       }
     begin_.push_back (static_cast<std::uint32_t> (n));
+    // Row table: the occupied cells of row y are keys_[rows_[y] .. rows_[y + 1]).
+    const std::int64_t num_rows = (keys_.back () >> 32) + 1;
+    rows_.assign (static_cast<std::size_t> (num_rows) + 1, 0);
+    for (const std::uint64_t key : keys_)
+      ++rows_[(key >> 32) + 1];
+    for (std::size_t y = 1; y < rows_.size (); ++y)
+      rows_[y] += rows_[y - 1];
   }
 
   /** \brief Calls f(j, squared distance) for every point j within \a radius of \a q. */
@@ -76,10 +84,13 @@ public:
     {
       if (y < 0 || y > kMaxCell)
         continue;
+      if (y + 1 >= static_cast<std::int64_t> (rows_.size ()))
+        break;
       const std::uint64_t first = keyOf (std::max<std::int64_t> (cx - reach, 0), y);
       const std::uint64_t last = keyOf (std::min<std::int64_t> (cx + reach, kMaxCell), y);
-      auto it = std::lower_bound (keys_.begin (), keys_.end (), first);
-      for (; it != keys_.end () && *it <= last; ++it)
+      const auto row_end = keys_.begin () + rows_[y + 1];
+      auto it = std::lower_bound (keys_.begin () + rows_[y], row_end, first);
+      for (; it != row_end && *it <= last; ++it)
       {
         const std::size_t c = static_cast<std::size_t> (it - keys_.begin ());
         for (std::uint32_t k = begin_[c]; k < begin_[c + 1]; ++k)
@@ -92,6 +103,49 @@ public:
       }
     }
   }
+
+  /** \brief Calls f(j, squared distance) for every point j in the cells at Chebyshev distance
+    * exactly \a ring from the cell of \a q. Every point farther out is at least
+    * ring * cellSize() from \a q, which lets a nearest-neighbour search stop early. */
+  template <typename Function> void
+  forEachInRing (const Eigen::Vector2f& q, std::int64_t ring, Function f) const
+  {
+    if (keys_.empty ())
+      return;
+    const std::int64_t cx = cellOf (q[0], 0), cy = cellOf (q[1], 1);
+    const auto visit_row = [&] (std::int64_t y, std::int64_t x0, std::int64_t x1) {
+      if (y < 0 || y + 1 >= static_cast<std::int64_t> (rows_.size ()) || x1 < 0)
+        return;
+      const std::uint64_t first = keyOf (std::max<std::int64_t> (x0, 0), y);
+      const std::uint64_t last = keyOf (std::min<std::int64_t> (x1, kMaxCell), y);
+      const auto row_end = keys_.begin () + rows_[y + 1];
+      for (auto it = std::lower_bound (keys_.begin () + rows_[y], row_end, first);
+           it != row_end && *it <= last; ++it)
+      {
+        const std::size_t c = static_cast<std::size_t> (it - keys_.begin ());
+        for (std::uint32_t k = begin_[c]; k < begin_[c + 1]; ++k)
+        {
+          const std::uint32_t j = order_[k];
+          f (j, ((*uv_)[j] - q).squaredNorm ());
+        }
+      }
+    };
+    if (ring == 0)
+    {
+      visit_row (cy, cx, cx);
+      return;
+    }
+    visit_row (cy - ring, cx - ring, cx + ring);
+    visit_row (cy + ring, cx - ring, cx + ring);
+    for (std::int64_t y = cy - ring + 1; y < cy + ring; ++y)
+    {
+      visit_row (y, cx - ring, cx - ring);
+      visit_row (y, cx + ring, cx + ring);
+    }
+  }
+
+  float
+  cellSize () const { return cell_; }
 
 private:
   static constexpr std::int64_t kMaxCell = (std::int64_t (1) << 31) - 1;
@@ -115,6 +169,7 @@ private:
   std::vector<std::uint32_t> order_;
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint32_t> begin_;
+  std::vector<std::uint32_t> rows_;
 };
 }  // namespace detail
 }  // namespace profiles

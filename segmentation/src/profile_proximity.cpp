@@ -7,6 +7,7 @@
 #include "union_find.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace pcl_ext
@@ -22,9 +23,51 @@ proximityEdges (const ProfilePoints& profile, double threshold, unsigned int nei
   if (n < 2 || !(threshold >= 0.0) || neighbours == 0)
     return;
   const std::vector<std::uint32_t> rep = detail::coincidentRepresentatives (profile.uv);
+  // Small cells searched ring by ring: in dense parts of a profile the k nearest are found in
+  // the first rings, and the threshold only bounds the search in sparse parts.
+  const float radius = static_cast<float> (threshold);
   detail::ProfileGrid grid;
-  grid.build (profile.uv, static_cast<float> (threshold));
-  std::vector<std::pair<float, std::uint32_t>> near;
+  grid.build (profile.uv, radius / 3.f);
+  const float r2 = radius * radius;
+  const std::int64_t max_ring =
+      static_cast<std::int64_t> (std::ceil (radius / grid.cellSize ())) + 1;
+  const std::size_t k = neighbours;
+  // The k nearest of each point (ties by index), kept sorted by insertion.
+  std::vector<std::uint32_t> lists (n * k);
+  std::vector<std::uint32_t> sizes (n, 0);
+  std::vector<std::pair<float, std::uint32_t>> best;
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    if (rep[i] != i)
+      continue;
+    best.clear ();
+    const auto consider = [&] (std::uint32_t j, float d2) {
+      if (j == i || rep[j] != j || d2 > r2)
+        return;
+      const std::pair<float, std::uint32_t> c (d2, j);
+      if (best.size () == k && !(c < best.back ()))
+        return;
+      best.insert (std::upper_bound (best.begin (), best.end (), c), c);
+      if (best.size () > k)
+        best.pop_back ();
+    };
+    for (std::int64_t ring = 0; ring <= max_ring; ++ring)
+    {
+      grid.forEachInRing (profile.uv[i], ring, consider);
+      const float reach = ring * grid.cellSize ();
+      if (reach >= radius || (best.size () == k && best.back ().first <= reach * reach))
+        break;
+    }
+    sizes[i] = static_cast<std::uint32_t> (best.size ());
+    for (std::size_t m = 0; m < best.size (); ++m)
+      lists[i * k + m] = best[m].second;
+  }
+  // Each link once: i-j is emitted by the smaller index, or by the larger when the smaller
+  // did not choose it. Coincident points hang on their representative.
+  const auto chose = [&] (std::uint32_t a, std::uint32_t b) {
+    return std::find (lists.begin () + a * k, lists.begin () + a * k + sizes[a], b) !=
+           lists.begin () + a * k + sizes[a];
+  };
   for (std::uint32_t i = 0; i < n; ++i)
   {
     if (rep[i] != i)
@@ -32,25 +75,15 @@ proximityEdges (const ProfilePoints& profile, double threshold, unsigned int nei
       edges.push_back ({rep[i], i});
       continue;
     }
-    near.clear ();
-    grid.forEachWithin (profile.uv[i], static_cast<float> (threshold),
-                        [&] (std::uint32_t j, float d2) {
-                          if (rep[j] == j && j != i)
-                            near.emplace_back (d2, j);
-                        });
-    const std::size_t k = std::min<std::size_t> (neighbours, near.size ());
-    std::partial_sort (near.begin (), near.begin () + k, near.end ());
-    for (std::size_t m = 0; m < k; ++m)
-      edges.push_back ({std::min (i, near[m].second), std::max (i, near[m].second)});
+    for (std::uint32_t m = 0; m < sizes[i]; ++m)
+    {
+      const std::uint32_t j = lists[i * k + m];
+      if (j > i)
+        edges.push_back ({i, j});
+      else if (!chose (j, i))
+        edges.push_back ({j, i});
+    }
   }
-  std::sort (edges.begin (), edges.end (), [] (const LocalEdge& x, const LocalEdge& y) {
-    return x.a < y.a || (x.a == y.a && x.b < y.b);
-  });
-  edges.erase (std::unique (edges.begin (), edges.end (),
-                            [] (const LocalEdge& x, const LocalEdge& y) {
-                              return x.a == y.a && x.b == y.b;
-                            }),
-               edges.end ());
 }
 }  // namespace profiles
 }  // namespace pcl_ext

@@ -114,37 +114,47 @@ estimatePointSpacing (const std::vector<Eigen::Vector3f>& xyz, std::size_t sampl
   // matters for pathological clouds (everything at one coordinate), where it gives an upper
   // bound instead of a quadratic run time.
   const std::size_t max_steps = 8192;
+  constexpr std::size_t k = 6;
   const std::size_t m = std::min (samples, n);
   double sum = 0.0;
   std::size_t found = 0;
+  std::vector<float> nearest;  // the k smallest squared distances, ascending
   for (std::size_t s = 0; s < m; ++s)
   {
     const std::size_t r = s * n / m;
     const Eigen::Vector3f& p = xyz[sorted[r].second];
     const float c = sorted[r].first;
-    float best = std::numeric_limits<float>::infinity ();
+    nearest.clear ();
+    const auto bound = [&] {
+      return nearest.size () < k ? std::numeric_limits<float>::infinity () : nearest.back ();
+    };
     const auto visit = [&] (std::size_t q) {
       const float d2 = (xyz[sorted[q].second] - p).squaredNorm ();
-      if (d2 > 0.f && d2 < best)
-        best = d2;
+      if (d2 > 0.f && d2 < bound ())
+      {
+        nearest.insert (std::upper_bound (nearest.begin (), nearest.end (), d2), d2);
+        if (nearest.size () > k)
+          nearest.pop_back ();
+      }
     };
     for (std::size_t q = r + 1, steps = 0; q < n && steps < max_steps; ++q, ++steps)
     {
       const float dc = sorted[q].first - c;
-      if (dc * dc >= best)
+      if (dc * dc >= bound ())
         break;
       visit (q);
     }
     for (std::size_t q = r, steps = 0; q-- > 0 && steps < max_steps; ++steps)
     {
       const float dc = c - sorted[q].first;
-      if (dc * dc >= best)
+      if (dc * dc >= bound ())
         break;
       visit (q);
     }
-    if (std::isfinite (best))
+    if (nearest.size () == k)
     {
-      sum += std::sqrt (static_cast<double> (best));
+      // k points within r on a surface: pi r^2 / k of surface per point.
+      sum += std::sqrt (static_cast<double> (nearest.back ()) * M_PI / k);
       ++found;
     }
   }

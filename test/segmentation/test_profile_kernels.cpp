@@ -117,11 +117,19 @@ TEST (Spacing, GridSpacingIsRecovered)
   for (int i = 0; i < 200; ++i)
     for (int j = 0; j < 100; ++j)
       xyz.emplace_back (0.02f * i, 0.02f * j, 0.f);
-  EXPECT_NEAR (estimatePointSpacing (xyz), 0.02, 1e-4);
-  // Duplicates do not make the spacing zero.
+  // Square grid of step s: the 6th neighbour is at s sqrt(2), so sqrt(pi 2 s^2 / 6) = 1.023 s.
+  EXPECT_NEAR (estimatePointSpacing (xyz), 0.02 * std::sqrt (M_PI / 3.0), 5e-4);  // borders
+  // Anisotropic grid (0.01 along x, 0.04 along y): area per point 0.0004, spacing 0.02 within
+  // 10%, where the nearest-neighbour distance would say 0.01.
+  std::vector<Eigen::Vector3f> lines;
+  for (int i = 0; i < 400; ++i)
+    for (int j = 0; j < 50; ++j)
+      lines.emplace_back (0.01f * i, 0.04f * j, 0.f);
+  EXPECT_NEAR (estimatePointSpacing (lines), 0.02, 0.002);
+  // Duplicates do not make the spacing zero; they double the density (spacing / sqrt(2)).
   const auto copy = xyz;
   xyz.insert (xyz.end (), copy.begin (), copy.end ());
-  EXPECT_NEAR (estimatePointSpacing (xyz), 0.02, 1e-4);
+  EXPECT_NEAR (estimatePointSpacing (xyz), 0.02 / std::sqrt (2.0), 0.002);
   EXPECT_EQ (estimatePointSpacing (std::vector<Eigen::Vector3f> (10, Eigen::Vector3f::Ones ())),
              0.0);
   EXPECT_EQ (estimatePointSpacing ({Eigen::Vector3f::Zero ()}), 0.0);

@@ -41,12 +41,13 @@ namespace pcl_ext
   * - Stack normals are spread over the hemisphere (the paper's extension, figure 7) as the
   *   best packings of lines for up to 6 stacks, turned off the coordinate axes; the original
   *   horizontal half circle and a user list of normals are options.
-  * - Profile width and proximity threshold default to 1.5x and 2x the average point spacing
+  * - Profile width and proximity threshold default to 1.5x and 3x the average point spacing
   *   (section 5.3: width "at least one and a half times", threshold "slightly larger than the
-  *   average point spacing"). The spacing is the mean distance from a deterministic sample of
-  *   points to their nearest distinct neighbour, found by a sweep along a sort (no tree).
-  *   Points in a profile of width 1.5 s are further apart in the profile plane than s when a
-  *   surface crosses it obliquely, hence 2 s rather than "slightly above" s.
+  *   average point spacing"). The spacing is the square root of the surface area per point,
+  *   from the 6th-neighbour distance of a deterministic sample of points found by a sweep
+  *   along a sort (no tree; see profiles::estimatePointSpacing). TLS density varies with range
+  *   and scan lines are denser along than across: on the simulated scans a threshold of 2x
+  *   over-segments the far, sparse surfaces (cubes: 447 segments for 8 cubes), 3x does not.
   * - Proximity chaining links every point to its k nearest points in the profile (k = 4 by
   *   default: a point of a chain has a predecessor and a successor, and the profile's width
   *   and noise make the chain a few points thick).
@@ -128,7 +129,7 @@ public:
   double
   getDistanceThreshold () const { return threshold_; }
 
-  /** \brief Automatic threshold as a multiple of the average point spacing. Default 2.0;
+  /** \brief Automatic threshold as a multiple of the average point spacing. Default 3.0;
     * valid: > 0. */
   void
   setDistanceThresholdFactor (double factor) { threshold_factor_ = factor; }
@@ -249,7 +250,7 @@ protected:
   double width_ = 0.0;
   double width_factor_ = 1.5;
   double threshold_ = 0.0;
-  double threshold_factor_ = 2.0;
+  double threshold_factor_ = 3.0;
   double spacing_ = 0.0;
   ProfileMethod method_ = ProfileMethod::Proximity;
   unsigned int proximity_k_ = 4;

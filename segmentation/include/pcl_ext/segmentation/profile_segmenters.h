@@ -31,7 +31,7 @@ struct LocalEdge
   *
   * Coincident points are linked to one another first and chain as one point, so duplicates
   * cannot use up the links. Ties are broken by index: deterministic.
-  * \param[out] edges sorted, without duplicates */
+  * \param[out] edges without duplicates */
 void
 proximityEdges (const ProfilePoints& profile, double threshold, unsigned int neighbours,
                 std::vector<LocalEdge>& edges);

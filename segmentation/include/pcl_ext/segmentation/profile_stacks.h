@@ -31,14 +31,18 @@ enum class StackDistribution
 std::vector<Eigen::Vector3f>
 makeStackNormals (unsigned int count, StackDistribution distribution);
 
-/** \brief Mean distance from a sample of points to their nearest distinct neighbour.
+/** \brief Average point spacing of a surface cloud: the square root of the surface area per
+  * point, sqrt(pi r6^2 / 6) with r6 the distance to the 6th nearest distinct neighbour,
+  * averaged over a sample of points.
   *
-  * The points are sorted along the axis of largest extent and each sampled point sweeps
-  * outwards in that order until the sweep distance exceeds its best distance, so no tree and
+  * Unlike the nearest-neighbour distance this does not shrink on anisotropic scan patterns
+  * (close points along a scan line, wide gaps between lines) and is the grid step on a square
+  * grid. The points are sorted along the axis of largest extent and each sampled point sweeps
+  * outwards in that order until the sweep distance exceeds its 6th distance, so no tree and
   * no whole-cloud kNN is built. Up to \a samples points, evenly spread over the array, are
   * sampled (deterministic). Coincident points are skipped: duplicates do not make the spacing
   * zero.
-  * \return the spacing, or 0 when fewer than two distinct points exist */
+  * \return the spacing, or 0 when no sampled point has 6 distinct neighbours */
 double
 estimatePointSpacing (const std::vector<Eigen::Vector3f>& xyz, std::size_t samples = 2048);
 

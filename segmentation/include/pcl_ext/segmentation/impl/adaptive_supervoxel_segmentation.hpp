@@ -6,7 +6,7 @@
 #include <pcl_ext/segmentation/adaptive_supervoxel_segmentation.h>
 
 #include <pcl/console/print.h>
-#include <pcl/point_traits.h>
+#include <pcl/point_types.h>
 
 #include <limits>
 
