@@ -17,12 +17,14 @@ namespace
 {
 enum : std::uint32_t { WallLabel = 1, GroundLabel, RoofLabel, Superfluous, VegetationLabel };
 
-// The Logistics building of the paper is H-shaped: 40 x 30 m with two 16 x 10 m courtyards.
+// The Logistics building of the paper is H-shaped: 40 x 30 m with two 16 m wide courtyards.
+// Their depths differ (10 and 8 m) so that the plan has no rotational symmetry: a symmetric
+// plan would make any registration to the map ambiguous.
 std::vector<Vec2>
 hShape ()
 {
   return {Vec2 (0, 0),   Vec2 (12, 0),  Vec2 (12, 10), Vec2 (28, 10), Vec2 (28, 0),  Vec2 (40, 0),
-          Vec2 (40, 30), Vec2 (28, 30), Vec2 (28, 20), Vec2 (12, 20), Vec2 (12, 30), Vec2 (0, 30)};
+          Vec2 (40, 30), Vec2 (28, 30), Vec2 (28, 22), Vec2 (12, 22), Vec2 (12, 30), Vec2 (0, 30)};
 }
 }  // namespace
 

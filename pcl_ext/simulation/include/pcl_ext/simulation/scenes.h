@@ -50,7 +50,9 @@ struct SceneParameters
   unsigned int threads = 0;       ///< 0 = all cores
 
   // building only (Khoshelham & Gorte section 4)
-  std::vector<Eigen::Vector2d> footprint;  ///< map polygon (m); empty = H-shaped 40 x 30 m plan
+  /** \brief Map polygon (m, either orientation); empty = the H-shaped 40 x 30 m plan with
+    * courtyards 10 and 8 m deep (no rotational symmetry, so registration is unambiguous). */
+  std::vector<Eigen::Vector2d> footprint;
   double building_height = 10.0;  ///< wall height (m)
   int superfluous_planes = 0;     ///< neighbouring buildings and interior walls seen through windows
   int missing_walls = 0;          ///< walls hidden behind a row of dense vegetation
