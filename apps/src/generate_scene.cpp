@@ -223,6 +223,13 @@ main (int argc, char** argv)
   std::cout << "  " << scene.scan_positions.size () << " scan positions, angular step "
             << std::setprecision (4)
             << scene.angular_step_deg << " deg, range noise " << scene.noise << " m\n";
+  if (scene.has_label)
+  {
+    std::cout << "  labels:";
+    for (std::size_t l = 1; l < scene.label_names.size (); ++l)
+      std::cout << (l > 1 ? "," : "") << ' ' << l << ' ' << scene.label_names[l];
+    std::cout << '\n';
+  }
   {
     tools::StageTimer timer ("Saving " + output);
     if (!simulation::saveScene (output, scene, ascii))

@@ -206,6 +206,24 @@ TEST (Scenes, TargetPointCount)
   EXPECT_NEAR (static_cast<double> (scene.cloud.size ()), 200000.0, 0.03 * 200000.0);
 }
 
+TEST (Scenes, OffsetShiftsEveryPoint)
+{
+  SceneParameters parameters;
+  parameters.angular_step_deg = 0.5;
+  SyntheticScene local, shifted;
+  ASSERT_TRUE (generateScene ("cubes", parameters, local));
+  parameters.offset = Vec3 (1000.0, -2000.0, 30.0);
+  ASSERT_TRUE (generateScene ("cubes", parameters, shifted));
+  ASSERT_EQ (local.cloud.size (), shifted.cloud.size ());
+  for (std::size_t i = 0; i < local.cloud.size (); ++i)
+  {
+    EXPECT_NEAR (shifted.cloud[i].x, local.cloud[i].x + 1000.0, 1e-3);
+    EXPECT_NEAR (shifted.cloud[i].y, local.cloud[i].y - 2000.0, 1e-3);
+    EXPECT_NEAR (shifted.cloud[i].z, local.cloud[i].z + 30.0, 1e-3);
+    EXPECT_EQ (shifted.cloud[i].segment, local.cloud[i].segment);
+  }
+}
+
 TEST (Scenes, BuildingTransformMapsWallsOntoTheFootprint)
 {
   SceneParameters parameters;
