@@ -1,0 +1,147 @@
+/*
+ * pcl_ext_classify_variance: labels every point surface (1), edge (2), boundary (3) or unknown
+ * (0) by local variance (Belton & Lichti 2006, section 2) and writes the input points with a
+ * `label` field.
+ */
+#include <pcl_ext/classification/local_variance_classification.h>
+#include <pcl_ext/tools/cloud_io.h>
+#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/tools/file_output.h>
+#ifdef PCL_EXT_HAVE_VISUALIZATION
+#include <pcl_ext/visualization/colour_maps.h>
+#include <pcl_ext/visualization/offscreen_renderer.h>
+#endif
+
+#include <pcl/common/io.h>
+#include <pcl/conversions.h>
+
+#include <cstring>
+#include <iostream>
+
+namespace
+{
+/** Write \a labels into the cloud: into its `label` field when it has a 32-bit one (a scene's
+  * own labels are replaced), else as a new field. */
+bool
+attachLabels (const pcl::PCLPointCloud2& input, const pcl::PointCloud<pcl::Label>& labels,
+              pcl::PCLPointCloud2& output)
+{
+  const int field = pcl_ext::tools::findField (input, "label");
+  if (field < 0)
+  {
+    pcl::PCLPointCloud2 label_cloud;
+    pcl::toPCLPointCloud2 (labels, label_cloud);
+    label_cloud.width = input.width;
+    label_cloud.height = input.height;
+    return pcl::concatenateFields (input, label_cloud, output);
+  }
+  const auto& f = input.fields[field];
+  if (f.datatype != pcl::PCLPointField::UINT32 && f.datatype != pcl::PCLPointField::INT32)
+  {
+    std::cerr << "Error: the input has a 'label' field that is not a 32-bit integer.\n";
+    return false;
+  }
+  output = input;
+  for (std::size_t i = 0; i < labels.size (); ++i)
+    std::memcpy (&output.data[i * output.point_step + f.offset], &labels[i].label, 4);
+  return true;
+}
+}  // namespace
+
+int
+main (int argc, char** argv)
+{
+  std::string input_path, output_path, png_path;
+  int k = 50;
+  double radius = 0.0, curvature_threshold = 0.0, curvature_factor = 3.0;
+  double variance_threshold = 1e-4, confidence = 0.95;
+  unsigned int threads = 0;
+  pcl_ext::tools::CommandLine cl (
+      "pcl_ext_classify_variance",
+      "Labels every point 1 surface, 2 edge, 3 boundary or 0 unknown from the covariance of its "
+      "neighbourhood (Belton & Lichti 2006, section 2) and writes the input points with a "
+      "'label' field.");
+  cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
+  cl.addPositional ("output.pcd", output_path, "output cloud with a 'label' field");
+  cl.addOption ("k", k, "neighbours per point (the paper's k)");
+  cl.addOption ("radius", radius, "neighbourhood radius instead of k (0: use k)");
+  cl.addOption ("curvature_threshold", curvature_threshold,
+                "curvature (eq. 4) threshold; 0: factor * median curvature");
+  cl.addOption ("curvature_factor", curvature_factor,
+                "multiple of the median curvature when the threshold is 0");
+  cl.addOption ("variance_threshold", variance_threshold, "variance of curvature tolerance (eq. 5)");
+  cl.addOption ("confidence", confidence, "confidence of the chi-squared boundary test (eq. 6)");
+  cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
+  cl.addOption ("png", png_path, "also render the labels to this PNG (blue surface, red edge, "
+                                 "green boundary); needs an X display");
+  if (const int code = cl.parse (argc, argv); code >= 0)
+    return code;
+  if (!pcl_ext::tools::checkWritable (output_path) ||
+      (!png_path.empty () && !pcl_ext::tools::checkWritable (png_path)))
+    return 1;
+
+  pcl::PCLPointCloud2 input;
+  pcl_ext::tools::StageTimer load ("Loading " + input_path);
+  if (!pcl_ext::tools::loadCloud (input_path, input))
+    return 1;
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  pcl::fromPCLPointCloud2 (input, *cloud);
+  load.done (cloud->size ());
+
+  pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
+  classifier.setInputCloud (cloud);
+  if (cl.given ("radius"))
+    classifier.setRadiusSearch (radius);
+  else
+    classifier.setKSearch (k);
+  classifier.setCurvatureThreshold (curvature_threshold);
+  classifier.setCurvatureThresholdFactor (curvature_factor);
+  classifier.setVarianceThreshold (variance_threshold);
+  classifier.setConfidence (confidence);
+  classifier.setNumberOfThreads (threads);
+  pcl::PointCloud<pcl::Label> labels;
+  pcl_ext::tools::StageTimer classify ("Classifying");
+  classifier.classify (labels);
+  if (labels.size () != cloud->size ())
+  {
+    std::cerr << "Error: classification failed (see the message above).\n";
+    return 1;
+  }
+  classify.done (labels.size ());
+  std::size_t counts[pcl_ext::kNumPointClasses] = {};
+  for (const auto& l : labels)
+    ++counts[std::min<std::size_t> (l.label, pcl_ext::kNumPointClasses - 1)];
+  std::cout << "curvature threshold " << classifier.getCurvatureThresholdUsed () << "; surface "
+            << counts[1] << ", edge " << counts[2] << ", boundary " << counts[3] << ", unknown "
+            << counts[0] << "\n";
+
+  pcl::PCLPointCloud2 output;
+  pcl_ext::tools::StageTimer save ("Saving " + output_path);
+  if (!attachLabels (input, labels, output) || !pcl_ext::tools::saveCloud (output_path, output))
+    return 1;
+  save.done (labels.size ());
+
+  if (!png_path.empty ())
+  {
+#ifdef PCL_EXT_HAVE_VISUALIZATION
+    pcl_ext::tools::StageTimer render ("Rendering " + png_path);
+    std::vector<std::uint32_t> classes;
+    classes.reserve (labels.size ());
+    for (const auto& l : labels)
+      classes.push_back (l.label);
+    pcl_ext::visualization::View view;
+    view.title = "Belton & Lichti: surface (blue), edge (red), boundary (green)";
+    view.layers.push_back (
+        {pcl_ext::visualization::makeColouredCloud (
+             *cloud, pcl_ext::visualization::colourByClass (classes)),
+         2.0});
+    if (!pcl_ext::visualization::renderToPng ({view}, png_path))
+      return 1;
+    render.done (labels.size ());
+#else
+    std::cerr << "Error: built without the renderer; -png is not available.\n";
+    return 1;
+#endif
+  }
+  return 0;
+}
