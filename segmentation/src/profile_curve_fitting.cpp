@@ -42,7 +42,7 @@ struct Gram
 /** Least squares over the basis functions listed in \a columns; the residual and the AIC. */
 template <int K> bool
 fitModel (const Gram& gram, const Eigen::Matrix<double, 5, 5>& g, const int (&columns)[K],
-          double& slope, double& rss)
+          Eigen::Vector3d& terms, double& rss)
 {
   Eigen::Matrix<double, K, K> gs;
   Eigen::Matrix<double, K, 1> bs;
@@ -57,7 +57,8 @@ fitModel (const Gram& gram, const Eigen::Matrix<double, 5, 5>& g, const int (&co
   const Eigen::Matrix<double, K, 1> a = gs.ldlt ().solve (bs);
   if (!a.allFinite ())
     return false;
-  slope = a[1];
+  terms = Eigen::Vector3d (a[1], K > 3 && columns[2] == 2 ? a[2] : 0.0,
+                           K > 4 ? a[3] : 0.0);
   rss = std::max (gram.yy - 2.0 * a.dot (bs) + a.dot (gs * a), 0.0);
   return true;
 }
@@ -75,17 +76,19 @@ selectModel (const Gram& gram)
     const int k = degree + 2;
     if (gram.n < static_cast<std::size_t> (k + 1))
       break;
-    double slope = 0.0, rss = 0.0;
-    const bool ok = degree == 1   ? fitModel (gram, g, line, slope, rss)
-                    : degree == 2 ? fitModel (gram, g, parabola, slope, rss)
-                                  : fitModel (gram, g, cubic, slope, rss);
+    Eigen::Vector3d terms;
+    double rss = 0.0;
+    const bool ok = degree == 1   ? fitModel (gram, g, line, terms, rss)
+                    : degree == 2 ? fitModel (gram, g, parabola, terms, rss)
+                                  : fitModel (gram, g, cubic, terms, rss);
     if (!ok)
       continue;
     const double aic = n * std::log (rss / n + 1e-12) + 2.0 * k;
     if (best.degree < 0 || aic < best.aic)
     {
       best.degree = degree;
-      best.slope = slope;
+      best.slope = terms[0];
+      best.terms = terms;
       best.rss = rss;
       best.aic = aic;
     }
@@ -105,6 +108,8 @@ fitPolynomialAic (const std::vector<double>& x, const std::vector<double>& y,
     gram.add (x[i] / scale, y[i] / scale, t[i] / scale);
   PolynomialFit fit = selectModel (gram);
   fit.rss *= scale * scale;
+  fit.terms[1] /= scale;
+  fit.terms[2] /= scale * scale;
   return fit;
 }
 
@@ -195,9 +200,16 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
     const PolynomialFit left = selectModel (side[0]), right = selectModel (side[1]);
     if (left.degree < 0 || right.degree < 0)
       continue;
+    // Normals compared at the middle of each side: a fitted polynomial's derivative is
+    // steady there and wild at the ends of its range, where noise decides the slope. The turn
+    // a smooth curve makes between the two middles (its curvature, dtheta/dx = y'' / (1 +
+    // y'^2), times their distance) is not a crease and is taken off.
+    const double xl = -0.5 * reach[0], xr = 0.5 * reach[1];
+    const double sl = left.slopeAt (xl), sr = right.slopeAt (xr);
+    const double bend = 0.5 * (left.secondDerivativeAt (xl) / (1.0 + sl * sl) +
+                               right.secondDerivativeAt (xr) / (1.0 + sr * sr)) * (xr - xl);
     scores.evaluated[i] = 1;
-    scores.turn[i] = static_cast<float> (std::abs (std::atan (left.slope) -
-                                                   std::atan (right.slope)));
+    scores.turn[i] = static_cast<float> (std::abs (std::atan (sr) - std::atan (sl) - bend));
     scores.rms[i] = static_cast<float> (
         scale * std::sqrt (std::max (left.rss / side[0].n, right.rss / side[1].n)));
   }

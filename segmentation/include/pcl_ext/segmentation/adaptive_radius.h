@@ -23,6 +23,12 @@ namespace pcl_ext
   * r_new = (1 - damp) r + damp [ (1 / kappa) (c1 sigma / sqrt(eps rho) + c2 sigma^2) ]^(1/3)
   *         (1 - w max(var R, var G, var B)),
   * rho = k / (pi r^2), kappa = 2 d / mu^2, k = pi rho r^2.
+  *
+  * The paper gives no values for c1, c2 and eps. On a noisy plane d is of the order of sigma, so
+  * kappa ~ 2 sigma / mu^2 with mu ~ 0.6 r, and eq. 3 settles where k ~ pi (0.18 c1)^2 / eps,
+  * whatever sigma: the defaults (c1 = 4, eps = 0.01) put that above the k threshold, so flat
+  * regions grow to it (the large super-voxels on building and terrain of figure 6a) while
+  * curvature, scatter and colour variance shrink the others.
   */
 struct AdaptiveRadiusParameters
 {
@@ -32,9 +38,9 @@ struct AdaptiveRadiusParameters
   int max_k = 60;              ///< stop when k = pi rho r^2 passes this threshold; > initial_k
   double saturation = 0.5;     ///< stop when k changes by less than this ("k saturates"); >= 0
   double noise = 0.0;          ///< sigma, the noise constant (m); 0 = estimate from the cloud
-  double c1 = 1.0;             ///< c1 (Mitra et al.'s constant); > 0
+  double c1 = 4.0;             ///< c1 (Mitra et al.'s constant); > 0
   double c2 = 1.0;             ///< c2 (Mitra et al.'s constant); >= 0
-  double epsilon = 0.05;       ///< eps, "a very small number"; in (0, 1]
+  double epsilon = 0.01;       ///< eps, "a very small number"; in (0, 1]
   double colour_weight = 1.0;  ///< w, weight of the colour factor (paper: 1); in [0, 1 / max var]
   double min_radius = 0.0;     ///< lower bound on r (m); >= 0
   double max_radius = std::numeric_limits<double>::infinity ();  ///< upper bound on r (m)

@@ -66,8 +66,17 @@ struct PolynomialFit
 {
   int degree = -1;     ///< 1, 2 or 3; -1 when no model could be fitted
   double slope = 0.0;  ///< dy/dx at x = 0
+  Eigen::Vector3d terms = Eigen::Vector3d::Zero ();  ///< a1, a2, a3 (0 beyond the degree)
   double rss = 0.0;    ///< residual sum of squares
   double aic = 0.0;    ///< n ln(rss / n) + 2 k
+
+  /** \brief dy/dx at \a x. */
+  double
+  slopeAt (double x) const { return terms[0] + x * (2.0 * terms[1] + 3.0 * x * terms[2]); }
+
+  /** \brief d2y/dx2 at \a x. */
+  double
+  secondDerivativeAt (double x) const { return 2.0 * terms[1] + 6.0 * x * terms[2]; }
 };
 
 /** \brief Fit y = a0 + a1 x + ... + ad x^d + c t for d = 1, 2, 3 and keep the model of lowest
@@ -81,8 +90,9 @@ fitPolynomialAic (const std::vector<double>& x, const std::vector<double>& y,
 
 /** \brief Curve fitting (section 4.1.2), the scoring half: for every point, the points of its
   * chain within the window are split at the point by the local direction, a polynomial chosen
-  * by AIC is fitted on each side, and the turn of the unit normal between the two sides at
-  * the point is measured, with the worse fit's residual.
+  * by AIC is fitted on each side, and the turn of the unit normal between the middles of the
+  * two sides, less the turn the fitted curvature explains, is measured, with the worse fit's
+  * residual.
   * \param[in] chain_edges spanning-tree edges: only points of the same chain are fitted */
 void
 scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& chain_edges,

@@ -1,0 +1,258 @@
+/*
+ * pcl_ext_segment_profiles: segments a cloud by intersecting profiles (Sithole & Mapurisa) and
+ * writes the input points with a `label` field (segment 1, 2, ... by decreasing size; 0 for
+ * points in no segment).
+ */
+#include <pcl_ext/segmentation/profile_segmentation.h>
+#include <pcl_ext/tools/cloud_io.h>
+#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/tools/file_output.h>
+#ifdef PCL_EXT_HAVE_VISUALIZATION
+#include <pcl_ext/visualization/colour_maps.h>
+#include <pcl_ext/visualization/offscreen_renderer.h>
+#endif
+
+#include <pcl/common/io.h>
+#include <pcl/conversions.h>
+
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <numeric>
+
+namespace
+{
+using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
+
+/** Write \a labels into the cloud: into its `label` field when it has a 32-bit one (a scene's
+  * own labels are replaced), else as a new field. */
+bool
+attachLabels (const pcl::PCLPointCloud2& input, const pcl::PointCloud<pcl::Label>& labels,
+              pcl::PCLPointCloud2& output)
+{
+  const int field = pcl_ext::tools::findField (input, "label");
+  if (field < 0)
+  {
+    pcl::PCLPointCloud2 label_cloud;
+    pcl::toPCLPointCloud2 (labels, label_cloud);
+    label_cloud.width = input.width;
+    label_cloud.height = input.height;
+    return pcl::concatenateFields (input, label_cloud, output);
+  }
+  const auto& f = input.fields[field];
+  if (f.datatype != pcl::PCLPointField::UINT32 && f.datatype != pcl::PCLPointField::INT32)
+  {
+    std::cerr << "Error: the input has a 'label' field that is not a 32-bit integer.\n";
+    return false;
+  }
+  output = input;
+  for (std::size_t i = 0; i < labels.size (); ++i)
+    std::memcpy (&output.data[i * output.point_step + f.offset], &labels[i].label, 4);
+  return true;
+}
+
+bool
+parseMethod (const std::string& name, Segmentation::ProfileMethod& method)
+{
+  if (name == "proximity")
+    method = Segmentation::ProfileMethod::Proximity;
+  else if (name == "mst")
+    method = Segmentation::ProfileMethod::MinimumSpanningTree;
+  else if (name == "curve")
+    method = Segmentation::ProfileMethod::CurveFitting;
+  else
+    return false;
+  return true;
+}
+
+#ifdef PCL_EXT_HAVE_VISUALIZATION
+/** Figure 3 and 5 of the paper for the first stack: points coloured by profile, and by chain
+  * (connected run of profile edges). */
+bool
+renderProfiles (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Segmentation& seg,
+                const std::string& path)
+{
+  const std::vector<int> profile = seg.getProfileOfPoints (0);
+  if (profile.size () != cloud.size () || seg.getStackEdges ().empty ())
+    return false;
+  std::vector<std::uint32_t> parent (cloud.size ());
+  std::iota (parent.begin (), parent.end (), 0u);
+  const auto find = [&] (std::uint32_t x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& e : seg.getStackEdges ()[0])
+  {
+    const std::uint32_t a = find (e.source), b = find (e.target);
+    parent[std::max (a, b)] = std::min (a, b);
+  }
+  std::vector<std::uint32_t> by_profile (cloud.size ()), by_chain (cloud.size ());
+  for (std::size_t i = 0; i < cloud.size (); ++i)
+  {
+    by_profile[i] = profile[i] < 0 ? 0 : 1 + static_cast<std::uint32_t> (profile[i]);
+    by_chain[i] = profile[i] < 0 ? 0 : 1 + find (static_cast<std::uint32_t> (i));
+  }
+  const Eigen::Vector3f phi = seg.getStackNormals ()[0];
+  pcl_ext::visualization::View profiles, chains;
+  char title[160];
+  std::snprintf (title, sizeof (title), "Stack 1 (normal %.2f %.2f %.2f): profiles, width %.4g",
+                 phi.x (), phi.y (), phi.z (), seg.getUsedProfileWidth ());
+  profiles.title = title;
+  profiles.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
+                                  cloud, pcl_ext::visualization::colourByLabel (by_profile)),
+                              2.0});
+  chains.title = "Stack 1: chains after profile segmentation";
+  chains.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
+                                cloud, pcl_ext::visualization::colourByLabel (by_chain)),
+                            2.0});
+  pcl_ext::visualization::RenderOptions options;
+  options.width = 1600;
+  options.height = 800;
+  return pcl_ext::visualization::renderToPng ({profiles, chains}, path, options);
+}
+#endif
+}  // namespace
+
+int
+main (int argc, char** argv)
+{
+  std::string input_path, output_path, png_path, png_profiles_path;
+  std::string method_name = "proximity", distribution = "hemisphere";
+  unsigned int stacks = 4, threads = 0, neighbours = 4;
+  double width = 0.0, width_factor = 1.5, threshold = 0.0, threshold_factor = 3.0;
+  double max_turn_deg = 30.0;
+  int min_size = 1;
+  pcl_ext::tools::CommandLine cl (
+      "pcl_ext_segment_profiles",
+      "Segments a cloud by intersecting profiles (Sithole & Mapurisa): stacks of thin profiles "
+      "along several normals, chains in every profile, segments = connected components of all "
+      "chains. Writes the input points with a 'label' field (1.. by decreasing size, 0: none).");
+  cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
+  cl.addPositional ("output.pcd", output_path, "output cloud with a 'label' field");
+  cl.addOption ("stacks", stacks, "number of stacks (stack normals spread evenly)");
+  cl.addOption ("distribution", distribution,
+                "stack normals over the 'hemisphere' or a 'horizontal' half circle");
+  cl.addOption ("width", width, "profile width (0: width_factor * average point spacing)");
+  cl.addOption ("width_factor", width_factor, "profile width as a multiple of the spacing");
+  cl.addOption ("method", method_name, "profile segmenter: proximity, mst or curve");
+  cl.addOption ("threshold", threshold,
+                "proximity threshold (0: threshold_factor * average point spacing)");
+  cl.addOption ("threshold_factor", threshold_factor, "threshold as a multiple of the spacing");
+  cl.addOption ("k", neighbours, "proximity chaining: links per point");
+  cl.addOption ("max_turn", max_turn_deg, "curve fitting: sharpest turn within a curve (deg)");
+  cl.addOption ("min_size", min_size, "smallest segment kept");
+  cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
+  cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
+  cl.addOption ("png_profiles", png_profiles_path,
+                "also render the first stack's profiles and chains to this PNG");
+  if (const int code = cl.parse (argc, argv); code >= 0)
+    return code;
+  Segmentation::ProfileMethod method;
+  if (!parseMethod (method_name, method))
+  {
+    std::cerr << "Error: -method must be proximity, mst or curve (got '" << method_name
+              << "').\n";
+    return 1;
+  }
+  if (distribution != "hemisphere" && distribution != "horizontal")
+  {
+    std::cerr << "Error: -distribution must be hemisphere or horizontal.\n";
+    return 1;
+  }
+  if (min_size < 1)
+  {
+    std::cerr << "Error: -min_size must be at least 1.\n";
+    return 1;
+  }
+  if (!pcl_ext::tools::checkWritable (output_path) ||
+      (!png_path.empty () && !pcl_ext::tools::checkWritable (png_path)) ||
+      (!png_profiles_path.empty () && !pcl_ext::tools::checkWritable (png_profiles_path)))
+    return 1;
+
+  pcl::PCLPointCloud2 input;
+  pcl_ext::tools::StageTimer load ("Loading " + input_path);
+  if (!pcl_ext::tools::loadCloud (input_path, input))
+    return 1;
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  pcl::fromPCLPointCloud2 (input, *cloud);
+  load.done (cloud->size ());
+
+  Segmentation seg;
+  seg.setInputCloud (cloud);
+  seg.setNumberOfStacks (stacks);
+  seg.setStackDistribution (distribution == "hemisphere"
+                                ? Segmentation::StackDistribution::Hemisphere
+                                : Segmentation::StackDistribution::HorizontalHalfCircle);
+  seg.setProfileWidth (width);
+  seg.setProfileWidthFactor (width_factor);
+  seg.setDistanceThreshold (threshold);
+  seg.setDistanceThresholdFactor (threshold_factor);
+  seg.setProfileSegmentation (method);
+  seg.setProximityNeighbours (neighbours);
+  seg.setMaxTurnAngle (max_turn_deg * M_PI / 180.0);
+  seg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
+  seg.setNumberOfThreads (threads);
+  std::vector<pcl::PointIndices> clusters;
+  pcl_ext::tools::StageTimer segment ("Segmenting");
+  seg.extract (clusters);
+  if (clusters.empty ())
+  {
+    std::cerr << "Error: segmentation failed (see the message above).\n";
+    return 1;
+  }
+  segment.done (cloud->size ());
+  std::size_t edges = 0;
+  for (const auto& stack : seg.getStackEdges ())
+    edges += stack.size ();
+  std::cout << "spacing " << seg.getUsedPointSpacing () << ", width "
+            << seg.getUsedProfileWidth () << ", threshold " << seg.getUsedDistanceThreshold ()
+            << "; " << seg.getStackEdges ().size () << " stacks, " << edges << " edges, "
+            << clusters.size () << " segments\n";
+
+  pcl::PointCloud<pcl::Label> labels;
+  labels.resize (cloud->size ());
+  for (auto& l : labels)
+    l.label = 0;
+  for (std::size_t c = 0; c < clusters.size (); ++c)
+    for (const auto i : clusters[c].indices)
+      labels[i].label = static_cast<std::uint32_t> (c + 1);
+  pcl::PCLPointCloud2 output;
+  pcl_ext::tools::StageTimer save ("Saving " + output_path);
+  if (!attachLabels (input, labels, output) || !pcl_ext::tools::saveCloud (output_path, output))
+    return 1;
+  save.done (labels.size ());
+
+  if (!png_path.empty () || !png_profiles_path.empty ())
+  {
+#ifdef PCL_EXT_HAVE_VISUALIZATION
+    if (!png_path.empty ())
+    {
+      pcl_ext::tools::StageTimer render ("Rendering " + png_path);
+      std::vector<std::uint32_t> ids;
+      for (const auto& l : labels)
+        ids.push_back (l.label);
+      pcl_ext::visualization::View view;
+      view.title = "Sithole & Mapurisa: " + std::to_string (clusters.size ()) +
+                   " segments (" + method_name + ")";
+      view.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
+                                  *cloud, pcl_ext::visualization::colourByLabel (ids)),
+                              2.0});
+      if (!pcl_ext::visualization::renderToPng ({view}, png_path))
+        return 1;
+      render.done (labels.size ());
+    }
+    if (!png_profiles_path.empty ())
+    {
+      pcl_ext::tools::StageTimer render ("Rendering " + png_profiles_path);
+      if (!renderProfiles (*cloud, seg, png_profiles_path))
+        return 1;
+      render.done (labels.size ());
+    }
+#else
+    std::cerr << "Error: built without the renderer; -png is not available.\n";
+    return 1;
+#endif
+  }
+  return 0;
+}
