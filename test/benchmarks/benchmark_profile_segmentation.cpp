@@ -47,6 +47,7 @@ timeIt (int repeats, const std::vector<std::uint32_t>& truth,
   std::vector<pcl::PointIndices> clusters;
   for (int r = 0; r < repeats; ++r)
   {
+    clusters.clear ();  // pcl::EuclideanClusterExtraction appends to what it is given
     const auto t0 = std::chrono::steady_clock::now ();
     segment (clusters);
     run.seconds = std::min (
@@ -94,7 +95,7 @@ benchmarkScene (const std::string& scene_name, std::size_t points, unsigned int 
   ours.setInputCloud (cloud);
   ours.setNumberOfThreads (threads);
   const Run profile = timeIt (repeats, truth, [&] (auto& c) { ours.extract (c); });
-  std::cout << "  (spacing " << ours.getUsedPointSpacing () << ", width "
+  std::cout << std::defaultfloat << "  (spacing " << ours.getUsedPointSpacing () << ", width "
             << ours.getUsedProfileWidth () << ", threshold " << ours.getUsedDistanceThreshold ()
             << ")\n";
   print ("pcl_ext::ProfileSegmentation (proximity)", profile, nullptr);
