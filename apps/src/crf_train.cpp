@@ -1,0 +1,128 @@
+/*
+ * pcl_ext_crf_train: train Lim & Suter's multi-scale CRF on labelled clouds.
+ */
+#include "crf/crf_inputs.h"
+
+#include <pcl_ext/tools/command_line.h>
+
+#include <pcl/console/print.h>
+
+#include <cstdio>
+#include <iostream>
+
+int
+main (int argc, char** argv)
+{
+  std::string output, classes_file, mode_text = "mcrf";
+  double sigma = 1.0, noise = 0.0;
+  int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200;
+  unsigned int threads = 0, seed = 1;
+  bool no_balance = false;
+  pcl_ext::tools::CommandLine cl (
+      "pcl_ext_crf_train",
+      "Trains the multi-scale CRF over adaptive super-voxels (Lim & Suter 2008) on labelled "
+      "clouds: PCD/PLY with a 'label' field, or Oakland .xyz_label_conf files with -classes.\n"
+      "Usage: pcl_ext_crf_train -o model.txt [options] train1 [train2 ...]");
+  cl.addOption ("o", output, "the model file to write (required)");
+  cl.addOption ("classes", classes_file, "class file: 'id name : source labels' per line");
+  cl.addOption ("mode", mode_text, "node | crf | mcrf (node-only, local CRF, multi-scale CRF)");
+  cl.addOption ("sigma", sigma, "sigma of the Gaussian prior on the weights (eq. 9)");
+  cl.addOption ("noise", noise, "noise constant sigma of eq. 3 in metres (0: estimate)");
+  cl.addOption ("max_k", max_k, "k threshold that stops the super-voxel radius growing");
+  cl.addOption ("m", local_edges, "local edges per super-voxel");
+  cl.addOption ("l", regional_edges, "regional edges per super-voxel");
+  cl.addOption ("iterations", iterations, "maximum L-BFGS iterations");
+  cl.addOption ("seed", seed, "seed of the super-voxel mid-points and local points");
+  cl.addOption ("threads", threads, "threads (0: all cores)");
+  cl.addSwitch ("no_balance", no_balance, "do not weight training nodes by class frequency");
+  // Inputs are every argument that is not an option: take them out before parsing.
+  std::vector<std::string> inputs;
+  std::vector<const char*> args {argv[0]};
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (!a.empty () && a[0] == '-')
+    {
+      args.push_back (argv[i]);
+      const bool is_switch = a == "-no_balance" || a == "-h" || a == "-help" || a == "--help";
+      if (!is_switch && i + 1 < argc)
+        args.push_back (argv[++i]);
+    }
+    else
+      inputs.push_back (a);
+  }
+  if (const int code = cl.parse (static_cast<int> (args.size ()), args.data ()); code >= 0)
+    return code;
+  pcl_ext::CrfMode mode;
+  if (output.empty () || inputs.empty () || !pcl_ext::parseCrfMode (mode_text, mode))
+  {
+    std::cerr << "pcl_ext_crf_train: need -o model.txt, at least one training cloud and a mode "
+                 "among node, crf, mcrf (see -h)\n";
+    return 1;
+  }
+  pcl_ext::io::ClassMapping mapping;
+  if (!classes_file.empty ())
+  {
+    try
+    {
+      mapping.load (classes_file);
+    }
+    catch (const std::exception& e)
+    {
+      std::cerr << "pcl_ext_crf_train: " << e.what () << '\n';
+      return 1;
+    }
+  }
+  std::vector<pcl_ext::CrfInput> clouds;
+  std::vector<std::vector<std::uint32_t>> labels;
+  for (const auto& path : inputs)
+  {
+    pcl_ext::tools::StageTimer timer ("Loading " + path);
+    pcl_ext::apps::CrfCloud c;
+    std::string error;
+    if (!pcl_ext::apps::loadCrfCloud (path, &mapping, c, error))
+    {
+      std::cerr << "\npcl_ext_crf_train: " << error << '\n';
+      return 1;
+    }
+    if (c.labels.empty ())
+    {
+      std::cerr << "\npcl_ext_crf_train: " << path << " has no labels to train on\n";
+      return 1;
+    }
+    timer.done (c.input.xyz->size ());
+    clouds.push_back (c.input);
+    labels.push_back (c.labels);
+  }
+  pcl_ext::MultiscaleCrfModel model;
+  auto& s = model.settings ();
+  s.mode = mode;
+  s.sigma = sigma;
+  s.supervoxels.radius.noise = noise;
+  s.supervoxels.radius.max_k = max_k;
+  s.supervoxels.adjacency = regional_edges;
+  s.supervoxels.seed = seed;
+  s.local_edges = local_edges;
+  s.max_training_iterations = iterations;
+  s.threads = threads;
+  s.balance_classes = !no_balance;
+  if (!mapping.empty ())
+    model.setClassNames (mapping.names ());
+  pcl_ext::tools::StageTimer timer ("Training the " + std::string (pcl_ext::crfModeName (mode)) + " model");
+  if (!model.train (clouds, labels))
+  {
+    std::cerr << "\npcl_ext_crf_train: training failed (see above)\n";
+    return 1;
+  }
+  const auto& st = model.getStatistics ();
+  timer.done (st.points);
+  std::printf ("  super-voxels %.0f ms, features %.0f ms, optimisation %.0f ms (%d L-BFGS "
+               "iterations%s); %zu super-voxels, %zu local points, %zu local and %zu regional "
+               "edges\n", st.supervoxels_ms, st.features_ms, st.training_ms, st.iterations,
+               st.converged ? ", converged" : "", st.supervoxels, st.local_points, st.local_edges,
+               st.regional_edges);
+  if (!model.saveModel (output))
+    return 1;
+  std::printf ("Model written to %s\n", output.c_str ());
+  return 0;
+}

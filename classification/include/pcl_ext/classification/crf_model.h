@@ -1,0 +1,202 @@
+/*
+ * pcl_ext: Lim & Suter's multi-scale CRF over adaptive super-voxels, without the point type.
+ */
+#pragma once
+
+#include <pcl_ext/features/saliency_features.h>
+#include <pcl_ext/segmentation/supervoxel_set.h>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pcl_ext
+{
+/** \brief The three models of Lim & Suter's comparison (section 5). */
+enum class CrfMode
+{
+  NodeOnly,      ///< node potentials only: multinomial logistic regression per super-voxel
+  LocalCrf,      ///< plus local edges to m member points (P_l of eq. 5; the paper's "CRF")
+  MultiscaleCrf  ///< plus regional edges to l super-voxels (eq. 5: P_r * P_l; "mCRF")
+};
+
+/** \brief "node", "crf", "mcrf". */
+const char*
+crfModeName (CrfMode mode);
+
+/** \brief Parses "node", "crf", "mcrf"; false for anything else. */
+bool
+parseCrfMode (const std::string& text, CrfMode& mode);
+
+/** \brief A cloud as the CRF sees it: xyz (non-finite points are skipped), normalised RGB and
+  * intensity per point (each empty when absent). */
+struct CrfInput
+{
+  pcl::PointCloud<pcl::PointXYZ>::ConstPtr xyz;
+  std::vector<Eigen::Vector3f> colours;
+  std::vector<float> intensity;
+};
+
+/** \brief Everything the model needs besides its weights; saved with them. */
+struct CrfSettings
+{
+  CrfMode mode = CrfMode::MultiscaleCrf;
+  SupervoxelParameters supervoxels;  ///< section 3.1 (l is supervoxels.adjacency)
+  int local_edges = 4;               ///< m, local edges per super-voxel (paper: 4); >= 0
+  SaliencyFeatureOptions features;   ///< colour / intensity are decided at training
+  double sigma = 1.0;                ///< sigma_C of the Gaussian prior, eq. 9; > 0
+  bool balance_classes = true;       ///< weight training nodes by 1 / sqrt(class frequency)
+  int max_training_iterations = 200; ///< L-BFGS iterations; >= 1
+  double bp_damping = 0.5;           ///< message damping of loopy BP; [0, 1)
+  int bp_iterations = 100;           ///< at most this many BP sweeps; >= 1
+  double bp_tolerance = 1e-4;        ///< converged when no message moves more; > 0
+  unsigned int threads = 0;          ///< 0 = all cores; results do not depend on it
+};
+
+/** \brief Checks the settings; PCL_ERROR naming \a caller and false when one is invalid. */
+bool
+checkCrfSettings (const CrfSettings& settings, const char* caller);
+
+/** \brief Timings (ms) and sizes of the last train() or classify(). */
+struct CrfStatistics
+{
+  double supervoxels_ms = 0, features_ms = 0, training_ms = 0, inference_ms = 0;
+  std::size_t points = 0, supervoxels = 0, local_points = 0;
+  std::size_t local_edges = 0, regional_edges = 0;
+  int iterations = 0;      ///< L-BFGS iterations (train) or BP sweeps (classify)
+  bool converged = false;  ///< BP converged (classify) or the optimiser did (train)
+  double objective = 0.0;  ///< final penalised negative pseudo-log-likelihood per node (train)
+};
+
+/** \brief The multi-scale CRF of Lim & Suter ("Multi-scale conditional random fields for
+  * over-segmented irregular 3D point clouds classification", CVPR workshops 2008, section 3.2).
+  *
+  * Graph. Each super-voxel (section 3.1) is a node described by features s at its mid-point
+  * with its radius; m random member points are nodes described by features x at their own
+  * adaptive radius (section 3.1, last paragraph), joined to the super-voxel node by local
+  * edges; each super-voxel is joined to its l nearest super-voxels by regional edges (figure 3).
+  * The super-voxel's label is shared by P_l and P_r, so P(c | s, x) = P_r(c | s) P_l(c | x)
+  * (eq. 5) is one pairwise model over that graph, up to normalisation.
+  *
+  * Potentials (log-linear, as eq. 6-8): node psi_i(c) = exp(lambda_i^c . [1, s_i]) for
+  * super-voxels and exp(lambda_x^c . [1, x_j]) for local points (multinomial logistic
+  * regression); edges psi_ij(c_i, c_j) = exp([c_i = c_j] lambda_e^c . [1, z_i (.) z_j]) with
+  * (.) the element-wise product of the standardised features (eq. 6 local, eq. 7 regional,
+  * each with its own weights). The constant 1 is pcl_ext's addition (a per-class bias).
+  *
+  * Training (eq. 9) maximises the pseudo-likelihood, not the likelihood, whose partition
+  * function over a loopy graph is intractable: sum over labelled nodes of
+  * log P(c_i | c_neighbours, features), minus |lambda|^2 / (2 sigma^2), by L-BFGS (a
+  * quasi-Newton method; the paper used scaled conjugate gradients). In NodeOnly mode this is
+  * exactly the penalised likelihood of logistic regression. A super-voxel's training label is
+  * the majority label of its members; unlabelled nodes only condition their neighbours out.
+  * With balance_classes, each node is weighted by 1/sqrt(frequency of its class) (pcl_ext
+  * addition: rare classes such as wires would otherwise be given up).
+  *
+  * Inference: sum-product loopy belief propagation with damped, synchronous message updates
+  * (so the result does not depend on the thread count), stopped when no message changes by
+  * more than the tolerance. Each point takes the label maximising the product of the marginals
+  * of the super-voxels that hold it (eq. 11).
+  *
+  * Errors never throw: PCL_ERROR and false (or empty output).
+  */
+class MultiscaleCrfModel
+{
+public:
+  MultiscaleCrfModel ();
+  ~MultiscaleCrfModel ();
+  MultiscaleCrfModel (const MultiscaleCrfModel&);
+  MultiscaleCrfModel&
+  operator= (const MultiscaleCrfModel&);
+
+  CrfSettings&
+  settings () { return settings_; }
+
+  const CrfSettings&
+  settings () const { return settings_; }
+
+  /** \brief Class ids (> 0) and names. When set before train(), every named class must have
+    * training points; otherwise the classes are the non-zero labels found. */
+  void
+  setClassNames (const std::map<std::uint32_t, std::string>& names) { names_ = names; }
+
+  /** \brief Train on labelled clouds: \a labels[c][i] is point i's class id (0 = unlabelled).
+    * Uses colour / intensity when every input has them.
+    * \return false (model unchanged) on bad input: no cloud, sizes that differ, fewer than two
+    *         classes, a named class without points, no labelled super-voxel */
+  bool
+  train (const std::vector<CrfInput>& inputs,
+         const std::vector<std::vector<std::uint32_t>>& labels);
+
+  /** \brief Classify one cloud.
+    * \param[out] labels class id per point (0 for non-finite points)
+    * \param[out] probabilities per point and class (rows: points, columns: getClassLabels());
+    *             rows of non-finite points are 0
+    * \return false (outputs empty) with an untrained model or bad input */
+  bool
+  classify (const CrfInput& input, std::vector<std::uint32_t>& labels,
+            Eigen::MatrixXf& probabilities);
+
+  bool
+  isTrained () const { return trained_; }
+
+  /** \brief Class ids in column order of the probabilities. */
+  const std::vector<std::uint32_t>&
+  getClassLabels () const { return class_ids_; }
+
+  /** \brief Class names by id. */
+  const std::map<std::uint32_t, std::string>&
+  getClassNames () const { return names_; }
+
+  /** \brief Feature names of the trained model (see saliencyFeatureNames). */
+  std::vector<std::string>
+  getFeatureNames () const;
+
+  /** \brief The super-voxels of the last train() (its last input) or classify(). */
+  const SupervoxelSet&
+  getSupervoxels () const { return last_supervoxels_; }
+
+  /** \brief Super-voxel marginals of the last classify() (rows: super-voxels). */
+  const Eigen::MatrixXf&
+  getSupervoxelProbabilities () const { return last_marginals_; }
+
+  const CrfStatistics&
+  getStatistics () const { return statistics_; }
+
+  /** \brief Write the model as versioned text (format "pcl_ext_crf_model 1": settings,
+    * classes, feature names and scaling, weights), atomically.
+    * \return false with an untrained model or when the file cannot be written */
+  bool
+  saveModel (const std::string& path) const;
+
+  /** \brief Read a model; the current one is kept when the file is missing, malformed,
+    * of another version or inconsistent (PCL_ERROR names the file, line and problem). */
+  bool
+  loadModel (const std::string& path);
+
+  /** \brief Same, from text (\a source names it in errors). */
+  bool
+  parseModel (const std::string& text, const std::string& source);
+
+  /** \brief The model as text (what saveModel writes). */
+  std::string
+  toText () const;
+
+  /** \brief The weights and feature scaling (opaque outside the implementation). */
+  struct Weights;
+
+private:
+  CrfSettings settings_;
+  std::map<std::uint32_t, std::string> names_;
+  std::vector<std::uint32_t> class_ids_;
+  std::unique_ptr<Weights> weights_;
+  bool trained_ = false;
+  SupervoxelSet last_supervoxels_;
+  Eigen::MatrixXf last_marginals_;
+  CrfStatistics statistics_;
+};
+}  // namespace pcl_ext

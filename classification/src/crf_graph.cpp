@@ -1,0 +1,178 @@
+/*
+ * pcl_ext: the multi-scale CRF graph of one cloud (Lim & Suter 2008, section 3.2, figure 3).
+ */
+#include "crf_internal.h"
+
+#include <pcl_ext/common/parallel.h>
+
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+
+namespace pcl_ext
+{
+namespace crf
+{
+namespace
+{
+double
+msSince (std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ();
+}
+
+/** m members of \a sv other than its mid-point, drawn with a generator seeded per super-voxel
+  * so that the choice does not depend on the order super-voxels are processed in. */
+void
+pickLocalPoints (const Supervoxel& sv, std::size_t v, std::uint64_t seed, int m,
+                 std::vector<pcl::index_t>& out)
+{
+  out.clear ();
+  std::vector<pcl::index_t> pool;
+  for (const auto i : sv.members)
+    if (i != sv.seed)
+      pool.push_back (i);
+  std::mt19937_64 rng (seed ^ (0x9E3779B97F4A7C15ull * (v + 1)));
+  const std::size_t take = std::min (pool.size (), static_cast<std::size_t> (m));
+  for (std::size_t j = 0; j < take; ++j)
+  {
+    std::swap (pool[j], pool[j + rng () % (pool.size () - j)]);
+    out.push_back (pool[j]);
+  }
+}
+}  // namespace
+
+bool
+buildGraph (const CrfInput& input, const CrfSettings& settings, SupervoxelSet& supervoxels,
+            Eigen::MatrixXf& raw, Graph& graph, CrfStatistics& statistics)
+{
+  graph = Graph ();
+  auto t0 = std::chrono::steady_clock::now ();
+  AdaptiveRadiusEstimator estimator;
+  SupervoxelParameters sv_parameters = settings.supervoxels;
+  sv_parameters.threads = settings.threads;
+  if (!computeAdaptiveSupervoxels (input.xyz, settings.features.colour ? input.colours
+                                                                       : std::vector<Eigen::Vector3f> (),
+                                   sv_parameters, supervoxels, &estimator))
+    return false;
+  const std::size_t S = supervoxels.size ();
+  const bool local = settings.mode != CrfMode::NodeOnly;
+  // Local points and their own radii (section 3.1, last paragraph).
+  std::vector<std::vector<pcl::index_t>> picked (S);
+  if (local)
+    for (std::size_t v = 0; v < S; ++v)
+      pickLocalPoints (supervoxels.supervoxels[v], v, settings.supervoxels.seed,
+                       settings.local_edges, picked[v]);
+  graph.num_supervoxels = S;
+  std::vector<float> radii;
+  for (std::size_t v = 0; v < S; ++v)
+  {
+    graph.node_point.push_back (supervoxels.supervoxels[v].seed);
+    radii.push_back (supervoxels.supervoxels[v].radius);
+  }
+  for (std::size_t v = 0; v < S; ++v)
+    for (const auto i : picked[v])
+    {
+      graph.edge_a.push_back (static_cast<std::uint32_t> (v));
+      graph.edge_b.push_back (static_cast<std::uint32_t> (graph.node_point.size ()));
+      graph.edge_regional.push_back (0);
+      graph.node_point.push_back (i);
+      radii.push_back (0.f);
+    }
+  const int threads = static_cast<int> (resolveThreadCount (settings.threads));
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 16)
+  for (std::ptrdiff_t n = static_cast<std::ptrdiff_t> (S);
+       n < static_cast<std::ptrdiff_t> (graph.node_point.size ()); ++n)
+    radii[n] = estimator.estimate (graph.node_point[n]);
+  statistics.supervoxels_ms = msSince (t0);
+
+  t0 = std::chrono::steady_clock::now ();
+  LocalGround ground;
+  ground.build (*input.xyz, settings.features.up, settings.features.ground_cell,
+                settings.features.ground_reach);
+  if (!computeSaliencyFeatures (*input.xyz, estimator.tree (), input.colours, input.intensity,
+                                ground, graph.node_point, radii, settings.features, raw,
+                                settings.threads))
+    return false;
+  if (settings.mode == CrfMode::MultiscaleCrf)
+    for (std::size_t v = 0; v < S; ++v)
+      for (const auto k : supervoxels.adjacency[v])
+      {
+        // Regional edges are undirected: keep one of each pair that names the other.
+        const auto& back = supervoxels.adjacency[k];
+        if (k < v && std::find (back.begin (), back.end (), v) != back.end ())
+          continue;
+        graph.edge_a.push_back (static_cast<std::uint32_t> (v));
+        graph.edge_b.push_back (k);
+        graph.edge_regional.push_back (1);
+      }
+  statistics.features_ms = msSince (t0);
+  statistics.supervoxels = S;
+  statistics.local_points = graph.node_point.size () - S;
+  statistics.regional_edges = static_cast<std::size_t> (
+      std::count (graph.edge_regional.begin (), graph.edge_regional.end (), 1));
+  statistics.local_edges = graph.edge_regional.size () - statistics.regional_edges;
+  graph.labels.assign (graph.node_point.size (), -1);
+  return true;
+}
+
+void
+finishGraph (const Eigen::MatrixXf& raw, const Eigen::VectorXd& mean,
+             const Eigen::VectorXd& scale, Graph& graph)
+{
+  graph.z.resize (raw.rows (), raw.cols ());
+  for (Eigen::Index n = 0; n < raw.rows (); ++n)
+    for (Eigen::Index d = 0; d < raw.cols (); ++d)
+    {
+      const double z = (raw (n, d) - mean (d)) / scale (d);
+      graph.z (n, d) = std::isfinite (z) ? static_cast<float> (std::max (-5.0, std::min (5.0, z)))
+                                         : 0.f;
+    }
+  const std::size_t N = graph.size ();
+  std::vector<std::size_t> counts (N + 1, 0);
+  for (std::size_t e = 0; e < graph.edge_a.size (); ++e)
+  {
+    ++counts[graph.edge_a[e] + 1];
+    ++counts[graph.edge_b[e] + 1];
+  }
+  for (std::size_t n = 0; n < N; ++n)
+    counts[n + 1] += counts[n];
+  graph.adj_offsets = counts;
+  graph.adj_edge.resize (counts.back ());
+  std::vector<std::size_t> fill (counts.begin (), counts.end () - 1);
+  for (std::size_t e = 0; e < graph.edge_a.size (); ++e)
+  {
+    graph.adj_edge[fill[graph.edge_a[e]]++] = static_cast<std::uint32_t> (e);
+    graph.adj_edge[fill[graph.edge_b[e]]++] = static_cast<std::uint32_t> (e);
+  }
+}
+
+Eigen::VectorXd
+packWeights (const MultiscaleCrfModel::Weights& w)
+{
+  const Eigen::Index block = w.node_s.size ();
+  Eigen::VectorXd theta (4 * block);
+  theta.segment (0, block) = Eigen::Map<const Eigen::VectorXd> (w.node_s.data (), block);
+  theta.segment (block, block) = Eigen::Map<const Eigen::VectorXd> (w.node_x.data (), block);
+  theta.segment (2 * block, block) = Eigen::Map<const Eigen::VectorXd> (w.local_edge.data (), block);
+  theta.segment (3 * block, block) =
+      Eigen::Map<const Eigen::VectorXd> (w.regional_edge.data (), block);
+  return theta;
+}
+
+void
+unpackWeights (const Eigen::VectorXd& theta, std::size_t classes, std::size_t dims,
+               MultiscaleCrfModel::Weights& w)
+{
+  const Eigen::Index C = static_cast<Eigen::Index> (classes);
+  const Eigen::Index D1 = static_cast<Eigen::Index> (dims) + 1;
+  const Eigen::Index block = C * D1;
+  w.node_s = Eigen::Map<const Eigen::MatrixXd> (theta.data (), C, D1);
+  w.node_x = Eigen::Map<const Eigen::MatrixXd> (theta.data () + block, C, D1);
+  w.local_edge = Eigen::Map<const Eigen::MatrixXd> (theta.data () + 2 * block, C, D1);
+  w.regional_edge = Eigen::Map<const Eigen::MatrixXd> (theta.data () + 3 * block, C, D1);
+}
+}  // namespace crf
+}  // namespace pcl_ext

@@ -1,0 +1,129 @@
+/*
+ * pcl_ext: loopy belief propagation over the multi-scale CRF (Lim & Suter 2008, eq. 10).
+ */
+#include "crf_internal.h"
+
+#include <pcl_ext/common/parallel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pcl_ext
+{
+namespace crf
+{
+namespace
+{
+void
+normaliseLog (double* v, std::size_t n)
+{
+  const double m = *std::max_element (v, v + n);
+  double s = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    s += std::exp (v[i] - m);
+  const double lse = m + std::log (s);
+  for (std::size_t i = 0; i < n; ++i)
+    v[i] -= lse;
+}
+}  // namespace
+
+void
+beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
+                   const CrfSettings& settings, Eigen::MatrixXf& marginals, int& iterations,
+                   bool& converged)
+{
+  const std::size_t C = static_cast<std::size_t> (w.node_s.rows ());
+  const std::size_t N = graph.size ();
+  const std::size_t E = graph.edge_a.size ();
+  const Eigen::Index D = graph.z.cols ();
+  const int threads = static_cast<int> (resolveThreadCount (settings.threads));
+  // Log node potentials (eq. 8) and the diagonal of each log edge potential (eq. 6-7).
+  Eigen::MatrixXd unary (C, N), diag (C, E);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n)
+  {
+    const Eigen::MatrixXd& W = static_cast<std::size_t> (n) < graph.num_supervoxels ? w.node_s : w.node_x;
+    const Eigen::VectorXd z = graph.z.row (n).transpose ().cast<double> ();
+    unary.col (n) = W.col (0) + W.rightCols (D) * z;
+  }
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::ptrdiff_t e = 0; e < static_cast<std::ptrdiff_t> (E); ++e)
+  {
+    const Eigen::MatrixXd& W = graph.edge_regional[e] ? w.regional_edge : w.local_edge;
+    const Eigen::VectorXd g = (graph.z.row (graph.edge_a[e]).array ()
+                               * graph.z.row (graph.edge_b[e]).array ()).matrix ().transpose ().cast<double> ();
+    diag.col (e) = W.col (0) + W.rightCols (D) * g;
+  }
+  // Messages in log space: column 2e goes a -> b, 2e + 1 goes b -> a.
+  Eigen::MatrixXd msg = Eigen::MatrixXd::Zero (C, 2 * E), next (C, 2 * E), incoming (C, N);
+  const double damping = settings.bp_damping;
+  converged = E == 0;
+  iterations = 0;
+  for (int it = 0; it < settings.bp_iterations && !converged; ++it)
+  {
+    // Synchronous sweep: every new message is computed from the previous sweep's messages.
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n)
+    {
+      Eigen::VectorXd sum = Eigen::VectorXd::Zero (C);
+      for (std::size_t a = graph.adj_offsets[n]; a < graph.adj_offsets[n + 1]; ++a)
+      {
+        const std::uint32_t e = graph.adj_edge[a];
+        sum += msg.col (2 * e + (graph.edge_a[e] == static_cast<std::uint32_t> (n) ? 1 : 0));
+      }
+      incoming.col (n) = sum;
+    }
+    double change = 0.0;
+#pragma omp parallel for num_threads(threads) schedule(static) reduction(max : change)
+    for (std::ptrdiff_t m = 0; m < static_cast<std::ptrdiff_t> (2 * E); ++m)
+    {
+      const std::size_t e = static_cast<std::size_t> (m) / 2;
+      const bool forward = (m % 2) == 0;
+      const std::uint32_t from = forward ? graph.edge_a[e] : graph.edge_b[e];
+      // Cavity: the sender's belief without what the receiver told it.
+      const Eigen::VectorXd h = unary.col (from) + incoming.col (from) - msg.col (m ^ 1);
+      std::vector<double> out (C);
+      for (std::size_t cb = 0; cb < C; ++cb)
+      {
+        double mx = -std::numeric_limits<double>::infinity ();
+        for (std::size_t ca = 0; ca < C; ++ca)
+          mx = std::max (mx, h[ca] + (ca == cb ? diag (cb, e) : 0.0));
+        double s = 0.0;
+        for (std::size_t ca = 0; ca < C; ++ca)
+          s += std::exp (h[ca] + (ca == cb ? diag (cb, e) : 0.0) - mx);
+        out[cb] = mx + std::log (s);
+      }
+      normaliseLog (out.data (), C);
+      for (std::size_t c = 0; c < C; ++c)
+      {
+        const double v = (1.0 - damping) * out[c] + damping * msg (c, m);
+        next (c, m) = v;
+        change = std::max (change, std::abs (v - msg (c, m)));
+      }
+    }
+    msg.swap (next);
+    iterations = it + 1;
+    converged = change < settings.bp_tolerance;
+  }
+  marginals.resize (static_cast<Eigen::Index> (graph.num_supervoxels), static_cast<Eigen::Index> (C));
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (graph.num_supervoxels); ++n)
+  {
+    std::vector<double> b (C);
+    for (std::size_t c = 0; c < C; ++c)
+      b[c] = unary (c, n);
+    for (std::size_t a = graph.adj_offsets[n]; a < graph.adj_offsets[n + 1]; ++a)
+    {
+      const std::uint32_t e = graph.adj_edge[a];
+      const auto col = msg.col (2 * e + (graph.edge_a[e] == static_cast<std::uint32_t> (n) ? 1 : 0));
+      for (std::size_t c = 0; c < C; ++c)
+        b[c] += col[c];
+    }
+    normaliseLog (b.data (), C);
+    for (std::size_t c = 0; c < C; ++c)
+      marginals (n, c) = static_cast<float> (std::exp (b[c]));
+  }
+}
+}  // namespace crf
+}  // namespace pcl_ext

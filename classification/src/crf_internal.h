@@ -1,0 +1,85 @@
+/*
+ * pcl_ext: internals of MultiscaleCrfModel shared by its source files.
+ */
+#pragma once
+
+#include <pcl_ext/classification/crf_model.h>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pcl_ext
+{
+/** Standardisation and the four weight blocks, each C x (D + 1) (column 0: the bias). */
+struct MultiscaleCrfModel::Weights
+{
+  std::vector<std::string> feature_names;
+  Eigen::VectorXd mean, scale;  // z = clamp((f - mean) / scale, -kClamp, kClamp)
+  Eigen::MatrixXd node_s, node_x, local_edge, regional_edge;
+};
+
+namespace crf
+{
+constexpr float kClamp = 5.f;
+
+/** The graph: super-voxel nodes 0 .. S-1, then local point nodes; undirected edges. */
+struct Graph
+{
+  std::size_t num_supervoxels = 0;
+  Eigen::MatrixXf z;                      // one standardised feature row per node
+  std::vector<pcl::index_t> node_point;   // the point each node describes
+  std::vector<std::uint32_t> edge_a, edge_b;
+  std::vector<char> edge_regional;        // 1: regional (eq. 7), 0: local (eq. 6)
+  std::vector<int> labels;                // class index per node, -1 unknown
+  // adjacency in CSR: for node n, entries [adj_offsets[n], adj_offsets[n+1]) of adj_edge
+  std::vector<std::size_t> adj_offsets;
+  std::vector<std::uint32_t> adj_edge;
+
+  std::size_t
+  size () const { return node_point.size (); }
+
+  std::uint32_t
+  other (std::uint32_t e, std::uint32_t n) const { return edge_a[e] == n ? edge_b[e] : edge_a[e]; }
+};
+
+/** Super-voxels, local points, raw features and edges of one cloud (mode decides which). */
+bool
+buildGraph (const CrfInput& input, const CrfSettings& settings, SupervoxelSet& supervoxels,
+            Eigen::MatrixXf& raw_features, Graph& graph, CrfStatistics& statistics);
+
+/** Standardise raw features into graph.z and build the adjacency. */
+void
+finishGraph (const Eigen::MatrixXf& raw, const Eigen::VectorXd& mean,
+             const Eigen::VectorXd& scale, Graph& graph);
+
+/** Parameter vector layout: [node_s, node_x, local_edge, regional_edge], each C x (D+1). */
+Eigen::VectorXd
+packWeights (const MultiscaleCrfModel::Weights& w);
+
+void
+unpackWeights (const Eigen::VectorXd& theta, std::size_t classes, std::size_t dims,
+               MultiscaleCrfModel::Weights& w);
+
+/** Penalised negative pseudo-log-likelihood and its gradient (see crf_model.h). */
+double
+pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
+                  const Eigen::VectorXd& theta, std::size_t classes, double sigma,
+                  Eigen::VectorXd& gradient, unsigned int threads);
+
+/** Minimise the penalised negative pseudo-log-likelihood by L-BFGS from \a theta; returns
+  * the iterations done. */
+int
+trainWeights (const Graph& graph, const std::vector<double>& node_weights, std::size_t classes,
+              const CrfSettings& settings, Eigen::VectorXd& theta, bool& converged,
+              double& value);
+
+/** Loopy BP marginals of the super-voxel nodes (rows) over classes. */
+void
+beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
+                   const CrfSettings& settings, Eigen::MatrixXf& marginals, int& iterations,
+                   bool& converged);
+}  // namespace crf
+}  // namespace pcl_ext

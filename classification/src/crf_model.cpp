@@ -1,0 +1,396 @@
+/*
+ * pcl_ext: training and classification of the multi-scale CRF (Lim & Suter 2008, section 3.2).
+ */
+#include "crf_internal.h"
+
+#include <pcl_ext/common/parallel.h>
+
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+
+namespace pcl_ext
+{
+const char*
+crfModeName (CrfMode mode)
+{
+  switch (mode)
+  {
+    case CrfMode::NodeOnly: return "node";
+    case CrfMode::LocalCrf: return "crf";
+    default: return "mcrf";
+  }
+}
+
+bool
+parseCrfMode (const std::string& text, CrfMode& mode)
+{
+  for (const CrfMode m : {CrfMode::NodeOnly, CrfMode::LocalCrf, CrfMode::MultiscaleCrf})
+    if (text == crfModeName (m))
+    {
+      mode = m;
+      return true;
+    }
+  return false;
+}
+
+bool
+checkCrfSettings (const CrfSettings& s, const char* caller)
+{
+  const char* bad = nullptr;
+  if (s.supervoxels.adjacency < 0)
+    bad = "the number of regional neighbours l must be >= 0";
+  else if (s.local_edges < 0)
+    bad = "the number of local edges m must be >= 0";
+  else if (!(s.sigma > 0.0) || !std::isfinite (s.sigma))
+    bad = "the prior's sigma must be positive and finite";
+  else if (s.max_training_iterations < 1 || s.bp_iterations < 1)
+    bad = "iteration limits must be at least 1";
+  else if (!(s.bp_damping >= 0.0 && s.bp_damping < 1.0))
+    bad = "the BP damping must be in [0, 1)";
+  else if (!(s.bp_tolerance > 0.0) || !std::isfinite (s.bp_tolerance))
+    bad = "the BP tolerance must be positive and finite";
+  else if (!(s.features.ground_cell > 0.f) || !std::isfinite (s.features.ground_cell)
+           || s.features.ground_reach < 0 || !s.features.up.allFinite ()
+           || s.features.up.norm () == 0.f)
+    bad = "the ground grid needs a positive cell, a reach >= 0 and a non-zero up axis";
+  if (bad)
+  {
+    PCL_ERROR ("[pcl_ext::%s] Invalid CRF settings: %s.\n", caller, bad);
+    return false;
+  }
+  return checkAdaptiveRadiusParameters (s.supervoxels.radius, caller);
+}
+
+MultiscaleCrfModel::MultiscaleCrfModel () : weights_ (new Weights) {}
+MultiscaleCrfModel::~MultiscaleCrfModel () = default;
+MultiscaleCrfModel::MultiscaleCrfModel (const MultiscaleCrfModel& o)
+  : settings_ (o.settings_), names_ (o.names_), class_ids_ (o.class_ids_),
+    weights_ (new Weights (*o.weights_)), trained_ (o.trained_)
+{}
+
+MultiscaleCrfModel&
+MultiscaleCrfModel::operator= (const MultiscaleCrfModel& o)
+{
+  if (this != &o)
+  {
+    settings_ = o.settings_;
+    names_ = o.names_;
+    class_ids_ = o.class_ids_;
+    *weights_ = *o.weights_;
+    trained_ = o.trained_;
+  }
+  return *this;
+}
+
+std::vector<std::string>
+MultiscaleCrfModel::getFeatureNames () const
+{
+  return weights_->feature_names;
+}
+
+namespace
+{
+double
+msSince (std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ();
+}
+
+bool
+checkInput (const CrfInput& in, const char* caller)
+{
+  if (!in.xyz || in.xyz->empty ())
+  {
+    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::%s] Empty input cloud.\n", caller);
+    return false;
+  }
+  if ((!in.colours.empty () && in.colours.size () != in.xyz->size ())
+      || (!in.intensity.empty () && in.intensity.size () != in.xyz->size ()))
+  {
+    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::%s] Colours or intensities do not match the "
+               "cloud.\n", caller);
+    return false;
+  }
+  return true;
+}
+}  // namespace
+
+bool
+MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
+                           const std::vector<std::vector<std::uint32_t>>& labels)
+{
+  if (!checkCrfSettings (settings_, "MultiscaleCrfModel::train"))
+    return false;
+  if (inputs.empty () || inputs.size () != labels.size ())
+  {
+    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] Need at least one cloud and one label "
+               "list per cloud.\n");
+    return false;
+  }
+  CrfSettings settings = settings_;
+  settings.features.colour = settings.features.intensity = true;
+  std::set<std::uint32_t> found;
+  for (std::size_t c = 0; c < inputs.size (); ++c)
+  {
+    if (!checkInput (inputs[c], "train"))
+      return false;
+    if (labels[c].size () != inputs[c].xyz->size ())
+    {
+      PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] Cloud %zu has %zu points but %zu "
+                 "labels.\n", c, inputs[c].xyz->size (), labels[c].size ());
+      return false;
+    }
+    settings.features.colour = settings.features.colour && !inputs[c].colours.empty ();
+    settings.features.intensity = settings.features.intensity && !inputs[c].intensity.empty ();
+    for (const auto l : labels[c])
+      if (l != 0)
+        found.insert (l);
+  }
+  // The classes: the named ones (each must occur), else those found.
+  std::vector<std::uint32_t> ids;
+  if (!names_.empty ())
+  {
+    for (const auto& [id, name] : names_)
+    {
+      if (id == 0 || !found.count (id))
+      {
+        PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] Class %u (%s) has no training "
+                   "points.\n", id, name.c_str ());
+        return false;
+      }
+      ids.push_back (id);
+    }
+  }
+  else
+    ids.assign (found.begin (), found.end ());
+  if (ids.size () < 2)
+  {
+    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] Need at least two classes with labelled "
+               "points (found %zu); is the input labelled?\n", ids.size ());
+    return false;
+  }
+  auto class_index = [&] (std::uint32_t l) -> int {
+    const auto it = std::lower_bound (ids.begin (), ids.end (), l);
+    return it != ids.end () && *it == l ? static_cast<int> (it - ids.begin ()) : -1;
+  };
+  const std::size_t C = ids.size ();
+
+  // One graph per cloud, merged into one (features are standardised after all are known).
+  CrfStatistics stats;
+  crf::Graph graph;
+  Eigen::MatrixXf raw;
+  SupervoxelSet last;
+  for (std::size_t c = 0; c < inputs.size (); ++c)
+  {
+    crf::Graph g;
+    Eigen::MatrixXf r;
+    CrfStatistics s;
+    if (!crf::buildGraph (inputs[c], settings, last, r, g, s))
+      return false;
+    stats.supervoxels_ms += s.supervoxels_ms;
+    stats.features_ms += s.features_ms;
+    stats.points += inputs[c].xyz->size ();
+    stats.supervoxels += s.supervoxels;
+    stats.local_points += s.local_points;
+    stats.local_edges += s.local_edges;
+    stats.regional_edges += s.regional_edges;
+    // Labels: super-voxels by majority of their members, local points their own.
+    for (std::size_t v = 0; v < g.num_supervoxels; ++v)
+    {
+      std::vector<std::size_t> votes (C, 0);
+      for (const auto i : last.supervoxels[v].members)
+      {
+        const int k = class_index (labels[c][i]);
+        if (k >= 0)
+          ++votes[k];
+      }
+      const auto best = std::max_element (votes.begin (), votes.end ());
+      g.labels[v] = *best > 0 ? static_cast<int> (best - votes.begin ()) : -1;
+    }
+    for (std::size_t n = g.num_supervoxels; n < g.size (); ++n)
+      g.labels[n] = class_index (labels[c][g.node_point[n]]);
+    // Append: super-voxel nodes stay first so that node type is "index < num_supervoxels".
+    const std::size_t S0 = graph.num_supervoxels, L0 = graph.size () - S0;
+    const std::size_t S1 = g.num_supervoxels;
+    auto remap_old = [&] (std::uint32_t n) { return n < S0 ? n : static_cast<std::uint32_t> (n + S1); };
+    auto remap_new = [&] (std::uint32_t n) {
+      return n < S1 ? static_cast<std::uint32_t> (S0 + n) : static_cast<std::uint32_t> (S0 + S1 + L0 + (n - S1));
+    };
+    crf::Graph merged;
+    merged.num_supervoxels = S0 + S1;
+    Eigen::MatrixXf mraw (raw.rows () + r.rows (), r.cols ());
+    auto put = [&] (std::size_t at, const Eigen::MatrixXf& src, std::size_t from, std::size_t count,
+                    const crf::Graph& gsrc) {
+      for (std::size_t k = 0; k < count; ++k)
+      {
+        mraw.row (at + k) = src.row (from + k);
+        merged.node_point[at + k] = gsrc.node_point[from + k];
+        merged.labels[at + k] = gsrc.labels[from + k];
+      }
+    };
+    merged.node_point.resize (mraw.rows ());
+    merged.labels.resize (mraw.rows ());
+    put (0, raw, 0, S0, graph);
+    put (S0, r, 0, S1, g);
+    put (S0 + S1, raw, S0, L0, graph);
+    put (S0 + S1 + L0, r, S1, g.size () - S1, g);
+    for (std::size_t e = 0; e < graph.edge_a.size (); ++e)
+    {
+      merged.edge_a.push_back (remap_old (graph.edge_a[e]));
+      merged.edge_b.push_back (remap_old (graph.edge_b[e]));
+      merged.edge_regional.push_back (graph.edge_regional[e]);
+    }
+    for (std::size_t e = 0; e < g.edge_a.size (); ++e)
+    {
+      merged.edge_a.push_back (remap_new (g.edge_a[e]));
+      merged.edge_b.push_back (remap_new (g.edge_b[e]));
+      merged.edge_regional.push_back (g.edge_regional[e]);
+    }
+    graph = std::move (merged);
+    raw = std::move (mraw);
+  }
+
+  // Feature scaling from every node's features.
+  const Eigen::Index D = raw.cols ();
+  Eigen::VectorXd mean = Eigen::VectorXd::Zero (D), scale = Eigen::VectorXd::Ones (D);
+  for (Eigen::Index d = 0; d < D; ++d)
+  {
+    double s = 0, ss = 0;
+    for (Eigen::Index n = 0; n < raw.rows (); ++n)
+    {
+      s += raw (n, d);
+      ss += static_cast<double> (raw (n, d)) * raw (n, d);
+    }
+    mean (d) = s / raw.rows ();
+    const double var = ss / raw.rows () - mean (d) * mean (d);
+    scale (d) = var > 1e-12 ? std::sqrt (var) : 1.0;
+  }
+  crf::finishGraph (raw, mean, scale, graph);
+
+  // Node weights: nodes that take part in this mode, balanced by class frequency.
+  std::vector<double> node_weights (graph.size (), 0.0);
+  std::vector<double> count (C, 0.0);
+  const bool use_local = settings.mode != CrfMode::NodeOnly;
+  for (std::size_t n = 0; n < graph.size (); ++n)
+    if (graph.labels[n] >= 0 && (n < graph.num_supervoxels || use_local))
+    {
+      node_weights[n] = 1.0;
+      count[graph.labels[n]] += 1.0;
+    }
+  double total = 0.0;
+  for (const double c : count)
+    total += c;
+  if (total == 0.0)
+  {
+    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] No labelled super-voxel.\n");
+    return false;
+  }
+  for (std::size_t k = 0; k < C; ++k)
+    if (count[k] == 0.0)
+    {
+      PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] Class %u has no labelled super-voxel "
+                 "or point in the graph.\n", ids[k]);
+      return false;
+    }
+  if (settings.balance_classes)
+    for (std::size_t n = 0; n < graph.size (); ++n)
+      if (node_weights[n] > 0.0)
+        node_weights[n] = std::sqrt (total / (C * count[graph.labels[n]]));
+
+  auto t0 = std::chrono::steady_clock::now ();
+  Eigen::VectorXd theta = Eigen::VectorXd::Zero (static_cast<Eigen::Index> (4 * C * (D + 1)));
+  bool converged = false;
+  double value = 0.0;
+  const int iterations = crf::trainWeights (graph, node_weights, C, settings, theta, converged, value);
+  stats.training_ms = msSince (t0);
+  stats.iterations = iterations;
+  stats.converged = converged;
+  stats.objective = value / total;
+
+  Weights w;
+  w.feature_names = saliencyFeatureNames (settings.features);
+  w.mean = mean;
+  w.scale = scale;
+  crf::unpackWeights (theta, C, static_cast<std::size_t> (D), w);
+  *weights_ = std::move (w);
+  class_ids_ = ids;
+  for (const auto id : ids)
+    if (!names_.count (id))
+      names_[id] = std::to_string (id);
+  settings_.features.colour = settings.features.colour;
+  settings_.features.intensity = settings.features.intensity;
+  trained_ = true;
+  last_supervoxels_ = std::move (last);
+  statistics_ = stats;
+  return true;
+}
+
+bool
+MultiscaleCrfModel::classify (const CrfInput& input, std::vector<std::uint32_t>& labels,
+                              Eigen::MatrixXf& probabilities)
+{
+  labels.clear ();
+  probabilities.resize (0, 0);
+  last_supervoxels_.clear ();
+  last_marginals_.resize (0, 0);
+  if (!trained_)
+  {
+    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::classify] The model is not trained (train or "
+               "loadModel first).\n");
+    return false;
+  }
+  if (!checkCrfSettings (settings_, "MultiscaleCrfModel::classify") || !checkInput (input, "classify"))
+    return false;
+  if ((settings_.features.colour && input.colours.empty ())
+      || (settings_.features.intensity && input.intensity.empty ()))
+  {
+    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::classify] The model uses %s%s%s, which the input "
+               "does not have.\n", settings_.features.colour ? "colour" : "",
+               settings_.features.colour && settings_.features.intensity ? " and " : "",
+               settings_.features.intensity ? "intensity" : "");
+    return false;
+  }
+  CrfStatistics stats;
+  crf::Graph graph;
+  Eigen::MatrixXf raw;
+  SupervoxelSet svs;
+  if (!crf::buildGraph (input, settings_, svs, raw, graph, stats))
+    return false;
+  crf::finishGraph (raw, weights_->mean, weights_->scale, graph);
+  auto t0 = std::chrono::steady_clock::now ();
+  Eigen::MatrixXf marginals;
+  crf::beliefPropagation (graph, *weights_, settings_, marginals, stats.iterations, stats.converged);
+  // Eq. 11: a point in several super-voxels takes the label maximising the product of their
+  // probabilities (summed logs, normalised into per-point probabilities).
+  const std::size_t N = input.xyz->size ();
+  const Eigen::Index C = static_cast<Eigen::Index> (class_ids_.size ());
+  probabilities = Eigen::MatrixXf::Zero (static_cast<Eigen::Index> (N), C);
+  labels.assign (N, 0);
+#pragma omp parallel for num_threads(static_cast<int> (resolveThreadCount (settings_.threads))) schedule(static)
+  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t> (N); ++i)
+  {
+    const std::size_t b = svs.membership_offsets[i], e = svs.membership_offsets[i + 1];
+    if (b == e)
+      continue;
+    Eigen::VectorXd logp = Eigen::VectorXd::Zero (C);
+    for (std::size_t k = b; k < e; ++k)
+      logp += marginals.row (svs.membership[k]).transpose ().cast<double> ()
+                  .cwiseMax (1e-30).array ().log ().matrix ();
+    Eigen::Index best;
+    const double mx = logp.maxCoeff (&best);
+    const Eigen::VectorXd p = (logp.array () - mx).exp ().matrix ();
+    probabilities.row (i) = (p / p.sum ()).transpose ().cast<float> ();
+    labels[i] = class_ids_[best];
+  }
+  stats.inference_ms = msSince (t0);
+  stats.points = N;
+  statistics_ = stats;
+  last_supervoxels_ = std::move (svs);
+  last_marginals_ = std::move (marginals);
+  return true;
+}
+}  // namespace pcl_ext

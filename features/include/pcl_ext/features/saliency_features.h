@@ -1,0 +1,90 @@
+/*
+ * pcl_ext: Lim & Suter's saliency features (eq. 12) and the other per-region features of their
+ * section 4.1, without the point type.
+ */
+#pragma once
+
+#include <pcl_ext/search/kdtree_3f.h>
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace pcl_ext
+{
+/** \brief Height of the local ground under any position: the lowest point of the cells around
+  * it in a horizontal grid (pcl_ext's estimate; Lim & Suter list "height" without saying how).
+  *
+  * The plane perpendicular to the up axis is cut into square cells; the ground under a position
+  * is the lowest height among the points of the (2 reach + 1)^2 cells around its cell. Where no
+  * point lies near (an isolated roof, say) the position is its own ground (height 0).
+  */
+class LocalGround
+{
+public:
+  /** \param[in] up the up axis (normalised inside), the scanner's vertical
+    * \param[in] cell cell size (m), > 0; \param[in] reach cells searched on each side, >= 0 */
+  void
+  build (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Vector3f& up, float cell,
+         int reach);
+
+  /** \brief Height of \a p above the local ground (>= 0 up to the noise). */
+  float
+  heightAbove (const Eigen::Vector3f& p) const;
+
+private:
+  Eigen::Vector3f u_, v_, up_;
+  float cell_ = 1.f;
+  int reach_ = 0;
+  Eigen::Vector2i origin_, size_;
+  std::vector<float> lowest_;  // per cell after the block minimum; +inf when empty
+};
+
+/** \brief What goes into a feature vector (Lim & Suter 2008, section 4.1). */
+struct SaliencyFeatureOptions
+{
+  Eigen::Vector3f up = Eigen::Vector3f::UnitZ ();  ///< the scanner's up axis
+  bool colour = false;     ///< normalised RGB (needs rgb)
+  bool intensity = false;  ///< intensity (needs intensity)
+  float ground_cell = 1.f; ///< LocalGround cell (m)
+  int ground_reach = 3;    ///< LocalGround cells on each side
+};
+
+/** \brief Column names of the feature vectors for \a options, in order:
+  * clutterness, surfaceness, curveness (eq. 12), normal_angle (eq. 10), tangent_angle,
+  * height, log_radius, then red green blue and intensity when asked for. */
+std::vector<std::string>
+saliencyFeatureNames (const SaliencyFeatureOptions& options);
+
+/** \brief Feature vectors of points, each over the sphere of its own radius.
+  *
+  * With ascending eigenvalues l1 <= l2 <= l3 of the covariance of the points within r (eq. 12):
+  * clutterness = log(l1), surfaceness = log(l2 / r - l1), curveness = log(l3 / r - l2 / r);
+  * arguments are clamped to 1e-12 (they are negative when r > 1 m and the region is isotropic).
+  * normal_angle = acos |n . up| with n the eigenvector of l1 (the text's "largest" is a slip,
+  * see papers/README.md; the absolute value because a normal has no sign); tangent_angle =
+  * acos |e3 . up| with e3 the eigenvector of l3 (pcl_ext addition: tells poles from wires);
+  * height above LocalGround; log_radius = log r (pcl_ext addition: the super-voxel size is
+  * itself telling, large on flat ground); colour and intensity are neighbourhood means.
+  * Regions of fewer than 5 points use the 5 nearest points instead.
+  *
+  * \param[in] tree a KdTree3f over the finite points of \a cloud (point indices as given)
+  * \param[in] colours normalised RGB per point (empty unless options.colour)
+  * \param[in] intensity per point (empty unless options.intensity)
+  * \param[in] centres finite point indices; \param[in] radii one radius per centre, > 0
+  * \param[out] features one row per centre, saliencyFeatureNames(options).size () columns
+  * \return false with a PCL_ERROR when sizes disagree or something asked for is missing
+  */
+bool
+computeSaliencyFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                         const search::KdTree3f& tree,
+                         const std::vector<Eigen::Vector3f>& colours,
+                         const std::vector<float>& intensity, const LocalGround& ground,
+                         const std::vector<pcl::index_t>& centres,
+                         const std::vector<float>& radii, const SaliencyFeatureOptions& options,
+                         Eigen::MatrixXf& features, unsigned int threads = 0);
+}  // namespace pcl_ext

@@ -1,0 +1,185 @@
+/*
+ * pcl_ext: Lim & Suter's saliency features (eq. 12) and section 4.1's other features.
+ */
+#include <pcl_ext/common/covariance.h>
+#include <pcl_ext/common/parallel.h>
+#include <pcl_ext/features/saliency_features.h>
+
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pcl_ext
+{
+namespace
+{
+constexpr double kTiny = 1e-12;
+constexpr std::size_t kMinRegion = 5;
+}  // namespace
+
+void
+LocalGround::build (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Vector3f& up,
+                    float cell, int reach)
+{
+  up_ = up.normalized ();
+  u_ = up_.unitOrthogonal ();
+  v_ = up_.cross (u_);
+  cell_ = cell > 0.f ? cell : 1.f;
+  reach_ = std::max (0, reach);
+  Eigen::Vector2f lo = Eigen::Vector2f::Constant (std::numeric_limits<float>::max ());
+  Eigen::Vector2f hi = -lo;
+  for (const auto& p : cloud)
+    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
+    {
+      const Eigen::Vector2f q (p.getVector3fMap ().dot (u_), p.getVector3fMap ().dot (v_));
+      lo = lo.cwiseMin (q);
+      hi = hi.cwiseMax (q);
+    }
+  lowest_.clear ();
+  size_ = Eigen::Vector2i::Zero ();
+  if (lo.x () > hi.x ())
+    return;
+  origin_ = (lo / cell_).array ().floor ().cast<int> ().matrix ();
+  size_ = (hi / cell_).array ().floor ().cast<int> ().matrix () - origin_ + Eigen::Vector2i::Ones ();
+  const float inf = std::numeric_limits<float>::infinity ();
+  std::vector<float> cells (static_cast<std::size_t> (size_.x ()) * size_.y (), inf);
+  for (const auto& p : cloud)
+    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
+    {
+      const Eigen::Vector3f q = p.getVector3fMap ();
+      const int cx = static_cast<int> (std::floor (q.dot (u_) / cell_)) - origin_.x ();
+      const int cy = static_cast<int> (std::floor (q.dot (v_) / cell_)) - origin_.y ();
+      float& c = cells[static_cast<std::size_t> (cy) * size_.x () + cx];
+      c = std::min (c, q.dot (up_));
+    }
+  // Separable block minimum: rows, then columns.
+  std::vector<float> rows (cells.size (), inf);
+  for (int y = 0; y < size_.y (); ++y)
+    for (int x = 0; x < size_.x (); ++x)
+    {
+      float m = inf;
+      for (int dx = std::max (0, x - reach_); dx <= std::min (size_.x () - 1, x + reach_); ++dx)
+        m = std::min (m, cells[static_cast<std::size_t> (y) * size_.x () + dx]);
+      rows[static_cast<std::size_t> (y) * size_.x () + x] = m;
+    }
+  lowest_.assign (cells.size (), inf);
+  for (int y = 0; y < size_.y (); ++y)
+    for (int x = 0; x < size_.x (); ++x)
+    {
+      float m = inf;
+      for (int dy = std::max (0, y - reach_); dy <= std::min (size_.y () - 1, y + reach_); ++dy)
+        m = std::min (m, rows[static_cast<std::size_t> (dy) * size_.x () + x]);
+      lowest_[static_cast<std::size_t> (y) * size_.x () + x] = m;
+    }
+}
+
+float
+LocalGround::heightAbove (const Eigen::Vector3f& p) const
+{
+  const float h = p.dot (up_);
+  if (lowest_.empty ())
+    return 0.f;
+  const int cx = static_cast<int> (std::floor (p.dot (u_) / cell_)) - origin_.x ();
+  const int cy = static_cast<int> (std::floor (p.dot (v_) / cell_)) - origin_.y ();
+  if (cx < 0 || cy < 0 || cx >= size_.x () || cy >= size_.y ())
+    return 0.f;
+  const float g = lowest_[static_cast<std::size_t> (cy) * size_.x () + cx];
+  return std::isfinite (g) ? h - g : 0.f;
+}
+
+std::vector<std::string>
+saliencyFeatureNames (const SaliencyFeatureOptions& options)
+{
+  std::vector<std::string> names {"clutterness", "surfaceness", "curveness", "normal_angle",
+                                  "tangent_angle", "height", "log_radius"};
+  if (options.colour)
+    names.insert (names.end (), {"red", "green", "blue"});
+  if (options.intensity)
+    names.emplace_back ("intensity");
+  return names;
+}
+
+bool
+computeSaliencyFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                         const search::KdTree3f& tree,
+                         const std::vector<Eigen::Vector3f>& colours,
+                         const std::vector<float>& intensity, const LocalGround& ground,
+                         const std::vector<pcl::index_t>& centres,
+                         const std::vector<float>& radii, const SaliencyFeatureOptions& options,
+                         Eigen::MatrixXf& features, unsigned int threads)
+{
+  features.resize (0, 0);
+  const char* bad = nullptr;
+  if (centres.size () != radii.size ())
+    bad = "one radius per centre is needed";
+  else if (options.colour && colours.size () != cloud.size ())
+    bad = "colour features need one colour per point";
+  else if (options.intensity && intensity.size () != cloud.size ())
+    bad = "intensity features need one intensity per point";
+  else if (tree.size () == 0)
+    bad = "the search tree is empty";
+  if (bad)
+  {
+    PCL_ERROR ("[pcl_ext::computeSaliencyFeatures] %s.\n", bad);
+    return false;
+  }
+  const Eigen::Vector3f up = options.up.normalized ();
+  const std::size_t dims = saliencyFeatureNames (options).size ();
+  features.resize (static_cast<Eigen::Index> (centres.size ()), static_cast<Eigen::Index> (dims));
+  const int nthreads = static_cast<int> (resolveThreadCount (threads));
+#pragma omp parallel num_threads(nthreads)
+  {
+    pcl::Indices nn;
+    std::vector<float> d2;
+#pragma omp for schedule(dynamic, 64)
+    for (std::ptrdiff_t row = 0; row < static_cast<std::ptrdiff_t> (centres.size ()); ++row)
+    {
+      const auto& p = cloud[static_cast<std::size_t> (centres[row])];
+      const double r = std::max (static_cast<double> (radii[row]), 1e-6);
+      tree.radiusSearch (p.data, r, nn, d2);
+      if (nn.size () < kMinRegion)
+      {
+        const std::size_t k = std::min (kMinRegion, tree.size ());
+        nn.resize (k);
+        d2.resize (k);
+        nn.resize (tree.nearestKSearch (p.data, k, nn.data (), d2.data ()));
+      }
+      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
+      Eigen::Vector3d centroid;
+      EigenDecomposition eig;
+      computeLocalCovariance (cloud, nn, cov, centroid);
+      computeEigenDecomposition (cov, eig);
+      const Eigen::Vector3d& l = eig.values;
+      auto out = features.row (row);
+      out (0) = static_cast<float> (std::log (std::max (l (0), kTiny)));
+      out (1) = static_cast<float> (std::log (std::max (l (1) / r - l (0), kTiny)));
+      out (2) = static_cast<float> (std::log (std::max (l (2) / r - l (1) / r, kTiny)));
+      const double cn = std::min (1.0, std::abs (eig.vectors.col (0).dot (up.cast<double> ())));
+      const double ct = std::min (1.0, std::abs (eig.vectors.col (2).dot (up.cast<double> ())));
+      out (3) = static_cast<float> (std::acos (cn));
+      out (4) = static_cast<float> (std::acos (ct));
+      out (5) = ground.heightAbove (p.getVector3fMap ());
+      out (6) = static_cast<float> (std::log (r));
+      Eigen::Index col = 7;
+      if (options.colour)
+      {
+        Eigen::Vector3f sum = Eigen::Vector3f::Zero ();
+        for (const auto i : nn)
+          sum += colours[static_cast<std::size_t> (i)];
+        out.segment<3> (col) = sum / static_cast<float> (std::max<std::size_t> (1, nn.size ()));
+        col += 3;
+      }
+      if (options.intensity)
+      {
+        double sum = 0.0;
+        for (const auto i : nn)
+          sum += intensity[static_cast<std::size_t> (i)];
+        out (col) = static_cast<float> (sum / std::max<std::size_t> (1, nn.size ()));
+      }
+    }
+  }
+  return true;
+}
+}  // namespace pcl_ext

@@ -1,0 +1,272 @@
+/*
+ * Tests of the multi-scale CRF (Lim & Suter 2008, section 3.2) on generated street scenes.
+ */
+#include "crf_test_clouds.h"
+
+#include <pcl_ext/classification/multiscale_crf_classification.h>
+#include <pcl_ext/evaluation/classification_metrics.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <limits>
+
+using pcl_ext::CrfMode;
+using pcl_ext::MultiscaleCrfModel;
+
+namespace
+{
+constexpr std::size_t kPoints = 40000;
+
+struct Street
+{
+  pcl_ext::CrfInput input;
+  std::vector<std::uint32_t> labels;
+};
+
+const Street&
+street (std::uint64_t seed)
+{
+  static std::map<std::uint64_t, Street> cache;
+  auto it = cache.find (seed);
+  if (it == cache.end ())
+  {
+    Street s;
+    crf_test::streetScene (seed, kPoints, s.input, s.labels);
+    it = cache.emplace (seed, std::move (s)).first;
+  }
+  return it->second;
+}
+
+/** A model trained on street seed 1, one per mode, trained once. */
+MultiscaleCrfModel&
+trained (CrfMode mode)
+{
+  static std::map<CrfMode, MultiscaleCrfModel> models;
+  auto it = models.find (mode);
+  if (it == models.end ())
+  {
+    MultiscaleCrfModel m;
+    m.settings ().mode = mode;
+    EXPECT_TRUE (m.train ({street (1).input}, {street (1).labels}));
+    it = models.emplace (mode, m).first;
+  }
+  return it->second;
+}
+
+double
+accuracy (MultiscaleCrfModel& m, const Street& s, pcl_ext::ClassificationMetrics* out = nullptr)
+{
+  std::vector<std::uint32_t> labels;
+  Eigen::MatrixXf prob;
+  if (!m.classify (s.input, labels, prob))
+    return 0.0;
+  pcl_ext::ClassificationMetrics metrics;
+  pcl_ext::evaluateClassification (labels, s.labels, metrics);
+  if (out)
+    *out = metrics;
+  return metrics.overall_accuracy;
+}
+
+std::string
+tempPath (const char* name)
+{
+  return std::string (::testing::TempDir ()) + name;
+}
+}  // namespace
+
+TEST (MultiscaleCrf, StreetTrainOnOneSeedTestOnAnother)
+{
+  for (const CrfMode mode : {CrfMode::NodeOnly, CrfMode::LocalCrf, CrfMode::MultiscaleCrf})
+  {
+    MultiscaleCrfModel& m = trained (mode);
+    ASSERT_TRUE (m.isTrained ());
+    pcl_ext::ClassificationMetrics metrics;
+    const double oa = accuracy (m, street (2), &metrics);
+    const auto& st = m.getStatistics ();
+    std::printf ("street %-4s: overall accuracy %.4f, macro F1 %.4f (%zu super-voxels, "
+                 "BP %d sweeps%s)\n", pcl_ext::crfModeName (mode), oa, metrics.macro_f1,
+                 st.supervoxels, st.iterations, st.converged ? ", converged" : "");
+    if (mode == CrfMode::MultiscaleCrf)
+    {
+      EXPECT_GE (oa, 0.95);
+      EXPECT_TRUE (st.converged);
+    }
+    else
+      EXPECT_GE (oa, 0.85);
+  }
+}
+
+TEST (MultiscaleCrf, ProbabilitiesFollowEquation11)
+{
+  MultiscaleCrfModel& m = trained (CrfMode::MultiscaleCrf);
+  std::vector<std::uint32_t> labels;
+  Eigen::MatrixXf prob;
+  ASSERT_TRUE (m.classify (street (2).input, labels, prob));
+  ASSERT_EQ (prob.rows (), static_cast<Eigen::Index> (labels.size ()));
+  ASSERT_EQ (prob.cols (), 5);
+  const auto& svs = m.getSupervoxels ();
+  const Eigen::MatrixXf& marg = m.getSupervoxelProbabilities ();
+  for (std::size_t i = 0; i < labels.size (); i += 97)
+  {
+    EXPECT_NEAR (prob.row (i).sum (), 1.f, 1e-4f);
+    Eigen::VectorXd logp = Eigen::VectorXd::Zero (5);
+    for (std::size_t k = svs.membership_offsets[i]; k < svs.membership_offsets[i + 1]; ++k)
+      logp += marg.row (svs.membership[k]).transpose ().cast<double> ().array ().max (1e-30).log ().matrix ();
+    Eigen::Index best;
+    logp.maxCoeff (&best);
+    EXPECT_EQ (labels[i], m.getClassLabels ()[best]);
+  }
+}
+
+TEST (MultiscaleCrf, DeterministicForAnyThreadCount)
+{
+  MultiscaleCrfModel a, b;
+  a.settings ().threads = 1;
+  b.settings ().threads = 2;
+  ASSERT_TRUE (a.train ({street (1).input}, {street (1).labels}));
+  ASSERT_TRUE (b.train ({street (1).input}, {street (1).labels}));
+  EXPECT_EQ (a.toText (), b.toText ());
+  std::vector<std::uint32_t> la, lb;
+  Eigen::MatrixXf pa, pb;
+  ASSERT_TRUE (a.classify (street (2).input, la, pa));
+  ASSERT_TRUE (b.classify (street (2).input, lb, pb));
+  EXPECT_EQ (la, lb);
+  EXPECT_TRUE (pa == pb);
+}
+
+TEST (MultiscaleCrf, SaveAndLoadGiveTheSameLabels)
+{
+  MultiscaleCrfModel& m = trained (CrfMode::MultiscaleCrf);
+  const std::string path = tempPath ("crf_model.txt");
+  ASSERT_TRUE (m.saveModel (path));
+  MultiscaleCrfModel loaded;
+  ASSERT_TRUE (loaded.loadModel (path));
+  EXPECT_EQ (loaded.toText (), m.toText ());
+  std::vector<std::uint32_t> la, lb;
+  Eigen::MatrixXf pa, pb;
+  ASSERT_TRUE (m.classify (street (2).input, la, pa));
+  ASSERT_TRUE (loaded.classify (street (2).input, lb, pb));
+  EXPECT_EQ (la, lb);
+}
+
+TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
+{
+  const std::string good = trained (CrfMode::MultiscaleCrf).toText ();
+  auto replaced = [&] (const std::string& from, const std::string& to) {
+    std::string t = good;
+    const auto at = t.find (from);
+    EXPECT_NE (at, std::string::npos) << from;
+    return at == std::string::npos ? t : t.replace (at, from.size (), to);
+  };
+  const std::vector<std::pair<const char*, std::string>> cases = {
+      {"empty", ""},
+      {"not a model", "hello world\n"},
+      {"other version", replaced ("pcl_ext_crf_model 1", "pcl_ext_crf_model 2")},
+      {"unknown mode", replaced ("mode mcrf", "mode best")},
+      {"truncated", good.substr (0, good.size () / 2)},
+      {"no end", replaced ("end\n", "")},
+      {"bad number", replaced ("prior_sigma 1", "prior_sigma one")},
+      {"negative sigma", replaced ("prior_sigma 1", "prior_sigma -1")},
+      {"other feature set", replaced ("feature clutterness", "feature spin_image")},
+      {"too few classes", replaced ("classes 5", "classes 4")},
+      {"wrong matrix size", replaced ("weights local_edge 5", "weights local_edge 4")},
+      {"NaN weight", replaced ("weights regional_edge 5 12\n", "weights regional_edge 5 12\nnan ")},
+  };
+  for (const auto& [name, text] : cases)
+  {
+    MultiscaleCrfModel m;
+    EXPECT_FALSE (m.parseModel (text, name)) << name;
+    EXPECT_FALSE (m.isTrained ()) << name;
+  }
+  MultiscaleCrfModel m;
+  EXPECT_FALSE (m.loadModel (tempPath ("no_such_model.txt")));
+  // A good model stays when a bad one is loaded over it.
+  MultiscaleCrfModel kept;
+  ASSERT_TRUE (kept.parseModel (good, "good"));
+  EXPECT_FALSE (kept.parseModel (cases[4].second, "truncated"));
+  EXPECT_EQ (kept.toText (), good);
+}
+
+TEST (MultiscaleCrf, BadTrainingInput)
+{
+  const Street& s = street (1);
+  MultiscaleCrfModel m;
+  EXPECT_FALSE (m.train ({}, {}));
+  EXPECT_FALSE (m.train ({s.input}, {}));
+  EXPECT_FALSE (m.train ({s.input}, {std::vector<std::uint32_t> (10, 1)}));  // size mismatch
+  EXPECT_FALSE (m.train ({s.input}, {std::vector<std::uint32_t> (s.labels.size (), 0)}));  // unlabelled
+  EXPECT_FALSE (m.train ({s.input}, {std::vector<std::uint32_t> (s.labels.size (), 3)}));  // one class
+  MultiscaleCrfModel named;
+  named.setClassNames ({{1, "vegetation"}, {2, "trunk"}, {9, "water"}});  // water has no points
+  EXPECT_FALSE (named.train ({s.input}, {s.labels}));
+  pcl_ext::CrfInput empty;
+  empty.xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  EXPECT_FALSE (m.train ({empty}, {{}}));
+  MultiscaleCrfModel bad_sigma;
+  bad_sigma.settings ().sigma = -1.0;
+  EXPECT_FALSE (bad_sigma.train ({s.input}, {s.labels}));
+  EXPECT_FALSE (m.isTrained ());
+  EXPECT_FALSE (m.saveModel (tempPath ("untrained.txt")));
+  std::ifstream none (tempPath ("untrained.txt"));
+  EXPECT_FALSE (none.good ()) << "no partial model file";
+}
+
+TEST (MultiscaleCrf, BadClassificationInput)
+{
+  std::vector<std::uint32_t> labels;
+  Eigen::MatrixXf prob;
+  MultiscaleCrfModel untrained;
+  EXPECT_FALSE (untrained.classify (street (2).input, labels, prob));
+  EXPECT_TRUE (labels.empty ());
+  MultiscaleCrfModel& m = trained (CrfMode::MultiscaleCrf);
+  pcl_ext::CrfInput no_colour = street (2).input;
+  no_colour.colours.clear ();  // the model was trained with colour
+  EXPECT_FALSE (m.classify (no_colour, labels, prob));
+  EXPECT_TRUE (labels.empty ());
+  pcl_ext::CrfInput empty;
+  EXPECT_FALSE (m.classify (empty, labels, prob));
+  // NaN points get label 0; the others are classified.
+  pcl_ext::CrfInput with_nan = street (2).input;
+  auto xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (*with_nan.xyz);
+  (*xyz)[10].x = std::numeric_limits<float>::quiet_NaN ();
+  with_nan.xyz = xyz;
+  ASSERT_TRUE (m.classify (with_nan, labels, prob));
+  EXPECT_EQ (labels[10], 0u);
+  EXPECT_NE (labels[11], 0u);
+}
+
+TEST (MultiscaleCrf, PclClassOnPointTypes)
+{
+  // Two classes on the floor-and-wall cloud, through the PCL wrapper.
+  std::vector<std::uint32_t> truth;
+  const auto xyz = crf_test::floorAndWall (0.05, 0.003, &truth);
+  pcl_ext::MultiscaleCrfClassification<pcl::PointXYZ> crf;
+  crf.setClassNames ({{1, "floor"}, {2, "wall"}});
+  crf.setNumberOfThreads (2);
+  ASSERT_TRUE (crf.train ({xyz}, {truth}));
+  const auto test = crf_test::floorAndWall (0.05, 0.003, nullptr, 99);
+  crf.setInputCloud (test);
+  pcl::PointCloud<pcl::Label> labels;
+  crf.classify (labels);
+  ASSERT_EQ (labels.size (), test->size ());
+  std::size_t correct = 0;
+  for (std::size_t i = 0; i < labels.size (); ++i)
+    correct += labels[i].label == truth[i];
+  EXPECT_GT (static_cast<double> (correct) / labels.size (), 0.97);
+  std::vector<pcl::PointIndices> classes;
+  crf.extract (classes);
+  ASSERT_EQ (classes.size (), 2u);
+  EXPECT_EQ (classes[0].indices.size () + classes[1].indices.size (), test->size ());
+  EXPECT_EQ (crf.getProbabilities ().rows (), static_cast<Eigen::Index> (test->size ()));
+  // Indices: only the indexed points are labelled.
+  crf.setIndices (pcl::make_shared<pcl::Indices> (pcl::Indices {0, 1, 2, 3, 4000}));
+  crf.classify (labels);
+  EXPECT_EQ (labels.size (), 0u) << "five points are too few for super-voxels";
+  // A model trained on xyz refuses nothing on a colour type; a colour model needs colour.
+  pcl_ext::MultiscaleCrfClassification<pcl::PointXYZ> untrained;
+  untrained.setInputCloud (test);
+  untrained.classify (labels);
+  EXPECT_TRUE (labels.empty ());
+}

@@ -1,0 +1,158 @@
+/*
+ * Tests of Lim & Suter's saliency features (eq. 12) and the other section 4.1 features.
+ */
+#include "crf_test_clouds.h"
+
+#include <pcl_ext/common/covariance.h>
+#include <pcl_ext/features/saliency_feature_estimation.h>
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+using pcl_ext::SaliencyFeatureEstimation;
+
+namespace
+{
+enum Column { kClutter, kSurface, kCurve, kNormalAngle, kTangentAngle, kHeight, kLogRadius };
+
+Eigen::MatrixXf
+features (const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud, const pcl::Indices& indices, float r)
+{
+  SaliencyFeatureEstimation<pcl::PointXYZ> est;
+  est.setInputCloud (cloud);
+  est.setIndices (pcl::make_shared<pcl::Indices> (indices));
+  est.setRadius (r);
+  Eigen::MatrixXf f;
+  est.compute (f);
+  return f;
+}
+}  // namespace
+
+TEST (SaliencyFeatures, Equation12FromTheEigenvalues)
+{
+  const auto cloud = crf_test::floorAndWall (0.05, 0.004);
+  const pcl::index_t centre = 40 * 80 + 40;  // (2.05, 2.0, 0) on the floor
+  const float r = 0.3f;
+  const Eigen::MatrixXf f = features (cloud, {centre}, r);
+  ASSERT_EQ (f.rows (), 1);
+  ASSERT_EQ (f.cols (), 7);
+  pcl::Indices inside;
+  for (std::size_t i = 0; i < cloud->size (); ++i)
+    if (((*cloud)[i].getVector3fMap () - (*cloud)[centre].getVector3fMap ()).norm () <= r)
+      inside.push_back (static_cast<pcl::index_t> (i));
+  Eigen::Matrix3d cov;
+  Eigen::Vector3d c;
+  pcl_ext::EigenDecomposition eig;
+  pcl_ext::computeLocalCovariance (*cloud, inside, cov, c);
+  pcl_ext::computeEigenDecomposition (cov, eig);
+  const Eigen::Vector3d l = eig.values;
+  EXPECT_NEAR (f (0, kClutter), std::log (l (0)), 1e-3);
+  EXPECT_NEAR (f (0, kSurface), std::log (l (1) / r - l (0)), 1e-3);
+  EXPECT_NEAR (f (0, kCurve), std::log (l (2) / r - l (1) / r), 2e-2);
+  // A disc of radius r has in-plane variance r^2 / 4 and the noise variance across it.
+  EXPECT_NEAR (l (1), r * r / 4, 0.15 * r * r / 4);
+  EXPECT_NEAR (std::sqrt (l (0)), 0.004, 0.001);
+  EXPECT_NEAR (f (0, kNormalAngle), 0.f, 0.05f);         // horizontal floor
+  EXPECT_NEAR (f (0, kTangentAngle), M_PI / 2, 0.05);   // its directions are horizontal
+  EXPECT_NEAR (f (0, kHeight), 0.f, 0.02f);
+  EXPECT_NEAR (f (0, kLogRadius), std::log (r), 1e-5);
+}
+
+TEST (SaliencyFeatures, WallAnglesAndHeight)
+{
+  const auto cloud = crf_test::floorAndWall (0.05, 0.002);
+  const std::size_t floor_points = 79 * 80;
+  const pcl::index_t wall = static_cast<pcl::index_t> (floor_points + 59 * 80 + 40);  // z = 3
+  const Eigen::MatrixXf f = features (cloud, {wall}, 0.3f);
+  ASSERT_EQ (f.rows (), 1);
+  EXPECT_NEAR (f (0, kNormalAngle), M_PI / 2, 0.05);  // vertical wall
+  EXPECT_NEAR (f (0, kHeight), 3.f, 0.02f);            // above the floor beside it
+}
+
+TEST (SaliencyFeatures, LinesTellPolesFromWires)
+{
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  for (int i = 0; i < 200; ++i)
+    cloud->push_back (pcl::PointXYZ (0, 0, 0.02f * i));   // a pole
+  for (int i = 0; i < 200; ++i)
+    cloud->push_back (pcl::PointXYZ (5.f + 0.02f * i, 0, 6));  // a wire
+  const Eigen::MatrixXf f = features (cloud, {100, 300}, 0.2f);
+  ASSERT_EQ (f.rows (), 2);
+  EXPECT_NEAR (f (0, kTangentAngle), 0.f, 0.01f);
+  EXPECT_NEAR (f (1, kTangentAngle), M_PI / 2, 0.01);
+  // A line is all curveness: the two smaller eigenvalues vanish.
+  EXPECT_GT (f (0, kCurve), f (0, kSurface) + 5.f);
+}
+
+TEST (SaliencyFeatures, ColourAndIntensityWhenThePointTypeHasThem)
+{
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>> ();
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j)
+    {
+      pcl::PointXYZRGB p;
+      p.r = 200;
+      p.g = 50;
+      p.b = 0;
+      p.x = 0.05f * i;
+      p.y = 0.05f * j;
+      cloud->push_back (p);
+    }
+  SaliencyFeatureEstimation<pcl::PointXYZRGB> est;
+  est.setInputCloud (cloud);
+  est.setRadius (0.2f);
+  Eigen::MatrixXf f;
+  est.compute (f);
+  ASSERT_EQ (f.rows (), 400);
+  ASSERT_EQ (est.getFeatureNames ().size (), 10u);
+  EXPECT_EQ (est.getFeatureNames ()[7], "red");
+  EXPECT_NEAR (f (0, 7), 0.8f, 1e-5f);
+  EXPECT_NEAR (f (0, 8), 0.2f, 1e-5f);
+  EXPECT_NEAR (f (0, 9), 0.0f, 1e-5f);
+  auto ic = pcl::make_shared<pcl::PointCloud<pcl::PointXYZI>> ();
+  for (int i = 0; i < 50; ++i)
+  {
+    pcl::PointXYZI p;
+    p.x = 0.1f * i; p.y = 0.f; p.z = 0.f; p.intensity = 0.25f;
+    ic->push_back (p);
+  }
+  SaliencyFeatureEstimation<pcl::PointXYZI> ei;
+  ei.setInputCloud (ic);
+  ei.setRadius (0.5f);
+  ei.compute (f);
+  ASSERT_EQ (est.getFeatureNames ().size (), 10u);
+  ASSERT_EQ (ei.getFeatureNames ().back (), "intensity");
+  EXPECT_NEAR (f (10, 7), 0.25f, 1e-6f);
+}
+
+TEST (SaliencyFeatures, BadInputGivesEmptyOutput)
+{
+  Eigen::MatrixXf f;
+  SaliencyFeatureEstimation<pcl::PointXYZ> est;
+  est.compute (f);  // no input
+  EXPECT_EQ (f.size (), 0);
+  auto empty = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  est.setInputCloud (empty);
+  est.setRadius (1.f);
+  est.compute (f);
+  EXPECT_EQ (f.size (), 0);
+  const auto cloud = crf_test::floorAndWall (0.1, 0.002);
+  EXPECT_EQ (features (cloud, {0}, 0.f).size (), 0);                // no radius
+  EXPECT_EQ (features (cloud, {0}, std::nanf ("")).size (), 0);     // NaN radius
+  (*cloud)[3].z = std::numeric_limits<float>::quiet_NaN ();
+  EXPECT_EQ (features (cloud, {3}, 0.3f).size (), 0);               // a NaN centre
+  const Eigen::MatrixXf ok = features (cloud, {4}, 0.3f);           // NaN neighbours skipped
+  ASSERT_EQ (ok.rows (), 1);
+  EXPECT_TRUE (ok.allFinite ());
+  auto one = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  one->push_back (pcl::PointXYZ (0, 0, 0));
+  const Eigen::MatrixXf single = features (one, {0}, 1.f);  // degenerate but finite
+  ASSERT_EQ (single.rows (), 1);
+  EXPECT_TRUE (single.allFinite ());
+  SaliencyFeatureEstimation<pcl::PointXYZ> mismatch;
+  mismatch.setInputCloud (cloud);
+  mismatch.setRadii ({0.1f, 0.2f});  // two radii, all points indexed
+  mismatch.compute (f);
+  EXPECT_EQ (f.size (), 0);
+}
