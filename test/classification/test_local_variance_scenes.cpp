@@ -139,9 +139,12 @@ TEST_P (LocalVarianceScenes, SurfaceF1MeetsTheGoal)
 // Goals not met yet (k = 50, the paper's 1e-4, confidence 0.95; 300,000 points): edge F1
 // 0.62 (indoor) and 0.70 (pipes), boundary F1 0.25 and 0.39. Of the false edges 87% (indoor)
 // and 97% (pipes), and of the false boundaries over 90%, lie farther than 5 neighbourhood radii
-// from any true crease or border of their surface, i.e. where the ground truth sees no curve
-// (depth jumps, occlusion shadows, scan-coverage limits, contacts between separate objects;
-// not yet checked case by case). Run with --gtest_also_run_disabled_tests.
+// from any true crease or border of their surface. On indoor, 99.7% of those false edges are
+// within 2 m of a scanner, where 50 neighbours span only a few centimetres and the 5 mm range
+// noise alone makes the curvature vary by more than the tolerance (the paper's remark on
+// density changes; it suggests thinning). On pipes they are at long range, where the
+// neighbourhoods grow to the pipes' radius, and at tangential pipe-beam contacts (45%).
+// Variance tolerance 3e-4 gives edge F1 0.75 / 0.74. Run with --gtest_also_run_disabled_tests.
 TEST_P (LocalVarianceScenes, DISABLED_EdgeAndBoundaryF1MeetTheGoal)
 {
   const Scene& s = scene (GetParam ());
