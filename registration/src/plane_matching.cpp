@@ -98,6 +98,7 @@ struct Candidate
   bool valid = false;
   std::vector<PlanePair> matches;
   PlaneTransformationResult estimate;
+  std::size_t support = 0;  // inliers of the matched scan planes
   std::uint64_t order = 0;
 };
 
@@ -413,6 +414,8 @@ private:
     candidate.order = order;
     candidate.estimate = current;
     candidate.matches = pairs_;
+    for (const auto& pair : pairs_)
+      candidate.support += c_.scan[pair.scan].support;
     if (better (candidate, best))
       best = std::move (candidate);
   }

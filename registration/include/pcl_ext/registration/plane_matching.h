@@ -81,7 +81,9 @@ struct PlaneMatchingResult
   * first) is transformed to the map and paired with the most similar unused map plane; the pair
   * is kept if the transform re-estimated with it keeps every residual within the tolerances.
   * Passes repeat until nothing is added. Best = most matches, then least residual norm, then
-  * first in enumeration order (so the result does not depend on the thread count).
+  * first in enumeration order (so the result does not depend on the thread count). With one
+  * floor in the map, the ground and a ceiling seen through the windows give match sets of equal
+  * size: oriented normals (scanner side: the ceiling faces down) tell them apart.
   *
   * Sign handling (papers/README.md): without \a oriented_normals, each initial combination is
   * tried with every sign pattern consistent with constraint 2 and with the handedness of its

@@ -1,0 +1,231 @@
+/*
+ * pcl_ext_register_to_map: register a building scan to its 2D footprint by plane matching
+ * (Khoshelham & Gorte 2009).
+ */
+#include <pcl_ext/io/footprints.h>
+#include <pcl_ext/registration/plane_matching_registration.h>
+#include <pcl_ext/tools/cloud_io.h>
+#include <pcl_ext/tools/command_line.h>
+#ifdef PCL_EXT_HAVE_VISUALIZATION
+#include <pcl_ext/visualization/offscreen_renderer.h>
+#endif
+
+#include <pcl/point_types.h>
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+namespace
+{
+using Point = pcl::PointXYZ;
+
+#ifdef PCL_EXT_HAVE_VISUALIZATION
+// Top view (figures 3 and 5): footprint outline in black, scan in grey, matched planes in colour.
+bool
+renderTopView (const pcl::PointCloud<Point>& scan, const std::vector<pcl_ext::ScanPlane>& planes,
+               const pcl_ext::PlaneMatchingResult& result, const Eigen::Matrix4d& transform,
+               const std::vector<pcl_ext::MapPlane>& map, const std::string& title,
+               pcl_ext::visualization::View& view)
+{
+  pcl::PointCloud<pcl::PointXYZRGB>::Ptr outline (new pcl::PointCloud<pcl::PointXYZRGB>);
+  for (const auto& wall : map)
+  {
+    if (wall.isFloor ())
+      continue;
+    const int steps = std::max (2, static_cast<int> (wall.length () / 0.1));
+    for (int i = 0; i <= steps; ++i)
+    {
+      const Eigen::Vector2d q = wall.start + (wall.end - wall.start) * (double (i) / steps);
+      pcl::PointXYZRGB p (std::uint8_t (0), std::uint8_t (0), std::uint8_t (0));
+      p.x = static_cast<float> (q.x ());
+      p.y = static_cast<float> (q.y ());
+      p.z = 50.f;
+      outline->push_back (p);
+    }
+  }
+  std::vector<int> colour (scan.size (), -1);
+  for (std::size_t m = 0; m < result.matches.size (); ++m)
+    for (const auto i : planes[result.matches[m].scan].inliers.indices)
+      colour[i] = static_cast<int> (m);
+  static const std::uint8_t palette[8][3] = {{228, 26, 28}, {55, 126, 184}, {77, 175, 74}, {152, 78, 163},
+                                             {255, 127, 0}, {166, 86, 40}, {247, 129, 191}, {0, 150, 150}};
+  pcl::PointCloud<pcl::PointXYZRGB>::Ptr moved (new pcl::PointCloud<pcl::PointXYZRGB>);
+  for (std::size_t i = 0; i < scan.size (); ++i)
+  {
+    const Eigen::Vector4d q = transform * Eigen::Vector4d (scan[i].x, scan[i].y, scan[i].z, 1.0);
+    const std::uint8_t* c = colour[i] < 0 ? nullptr : palette[colour[i] % 8];
+    pcl::PointXYZRGB p (std::uint8_t (c ? c[0] : 170), std::uint8_t (c ? c[1] : 170), std::uint8_t (c ? c[2] : 170));
+    p.x = static_cast<float> (q.x ());
+    p.y = static_cast<float> (q.y ());
+    p.z = static_cast<float> (q.z ());
+    moved->push_back (p);
+  }
+  view.title = title;
+  view.layers = {{moved, 1.0}, {outline, 2.0}};
+  return true;
+}
+#endif
+}  // namespace
+
+int
+main (int argc, char** argv)
+{
+  std::string input, footprint_path, output, png, png_before, no_constraint, id;
+  int k = 4, m = 10, n = 10, max_planes = 30, min_inliers = 200;
+  unsigned int threads = 0;
+  double threshold = 0.4, angle = 3.0, distance = 0.5, floor_height = 0.0;
+  bool similarity = false, oriented = false;
+  pcl_ext::tools::CommandLine cl ("pcl_ext_register_to_map",
+                                  "Registers a building scan to its 2D footprint by plane matching "
+                                  "(Khoshelham & Gorte 2009). The output is in the map's local frame "
+                                  "(map coordinates minus the printed origin).");
+  cl.addPositional ("scan.pcd", input, "the building scan (PCD or PLY)");
+  cl.addPositional ("footprint.(wkt|geojson|txt)", footprint_path, "footprint polygon file");
+  cl.addPositional ("output.pcd", output, "the registered scan");
+  cl.addOption ("k", k, "initial pairs per combination (paper: k)");
+  cl.addOption ("m", m, "scan planes used to initiate (paper: m)");
+  cl.addOption ("n", n, "map planes used to initiate (paper: n)");
+  cl.addSwitch ("similarity", similarity, "estimate a similarity (with scale) instead of a rigid transform");
+  cl.addOption ("no_constraint", no_constraint, "switch a constraint off: vertical, orientation or residual (comma separated)");
+  cl.addOption ("angle", angle, "residual and extension tolerance on normals (degrees)");
+  cl.addOption ("distance", distance, "residual and extension tolerance on plane offsets (m)");
+  cl.addSwitch ("oriented", oriented, "use plane signs (scan normals to the scanner, walls outward)");
+  cl.addOption ("threshold", threshold, "plane extraction: RANSAC inlier distance (m)");
+  cl.addOption ("min_inliers", min_inliers, "plane extraction: least points of a plane");
+  cl.addOption ("max_planes", max_planes, "plane extraction: most planes");
+  cl.addOption ("floor", floor_height, "floor height in map coordinates (m)");
+  cl.addOption ("id", id, "use only the footprint with this id (default: all)");
+  cl.addOption ("threads", threads, "threads of the search (0 = all cores)");
+  cl.addOption ("png", png, "top view of the registered scan over the footprint");
+  cl.addOption ("png_before", png_before, "top view before registration");
+  if (const int code = cl.parse (argc, argv); code >= 0)
+    return code;
+
+  pcl_ext::PlaneMatchingRegistration<Point, Point> reg;
+  for (std::stringstream list (no_constraint); list.good ();)
+  {
+    std::string name;
+    std::getline (list, name, ',');
+    if (name == "vertical")
+      reg.setVerticalConstraint (false);
+    else if (name == "orientation")
+      reg.setOrientationConstraint (false);
+    else if (name == "residual")
+      reg.setResidualConstraint (false);
+    else if (!name.empty ())
+    {
+      std::cerr << "Error: unknown constraint '" << name << "' (vertical, orientation, residual).\n";
+      return 1;
+    }
+  }
+
+  pcl::PointCloud<Point>::Ptr scan (new pcl::PointCloud<Point>);
+  {
+    pcl_ext::tools::StageTimer timer ("Loading " + input);
+    if (!pcl_ext::tools::loadCloud (input, *scan))
+      return 1;
+    timer.done (scan->size ());
+  }
+  std::vector<pcl_ext::io::Footprint> footprints;
+  try
+  {
+    pcl_ext::io::loadFootprints (footprint_path, footprints);
+  }
+  catch (const pcl_ext::io::ReadError& e)
+  {
+    std::cerr << "Error: " << e.what () << "\n";
+    return 1;
+  }
+  if (!id.empty ())
+  {
+    std::vector<pcl_ext::io::Footprint> chosen;
+    for (const auto& f : footprints)
+      if (f.id == id)
+        chosen.push_back (f);
+    if (chosen.empty ())
+    {
+      std::cerr << "Error: no footprint with id '" << id << "' in " << footprint_path << ".\n";
+      return 1;
+    }
+    footprints.swap (chosen);
+  }
+  pcl_ext::MapPlaneParameters map_parameters;
+  map_parameters.floor_height = floor_height;
+  if (!reg.setFootprints (footprints, map_parameters))
+    return 1;
+
+  pcl_ext::SACPlaneExtraction<Point> extraction;
+  extraction.setDistanceThreshold (threshold);
+  extraction.setMinInliers (min_inliers);
+  extraction.setMaxPlanes (max_planes);
+  reg.setPlaneExtractor (extraction.asExtractor ());
+  reg.setInitialPairs (k);
+  reg.setInitialScanPlanes (m);
+  reg.setInitialMapPlanes (n);
+  reg.setSimilarity (similarity);
+  reg.setTolerances (angle, distance);
+  reg.setOrientedNormals (oriented);
+  reg.setNumberOfThreads (threads);
+  reg.setInputSource (scan);
+
+  pcl::PointCloud<Point> registered;
+  {
+    pcl_ext::tools::StageTimer timer ("Extracting and matching planes");
+    reg.align (registered);
+    timer.done (reg.getMatchingResult ().matches.size ());
+  }
+  const auto& result = reg.getMatchingResult ();
+  const auto& s = result.statistics;
+  std::printf ("Planes: %zu scan, %zu map; local origin (%.3f, %.3f, %.3f)\n", reg.getSourcePlanes ().size (),
+               reg.getMapPlanes ().size (), reg.getLocalOrigin ().x (), reg.getLocalOrigin ().y (),
+               reg.getLocalOrigin ().z ());
+  std::printf ("Initial combinations (m = %d, n = %d, k = %d): %llu without constraints, %llu vertical, "
+               "%llu + orientation (%llu degenerate), %llu + residual; search %.3f s\n",
+               s.m, s.n, s.k, (unsigned long long) s.unconstrained, (unsigned long long) s.vertical,
+               (unsigned long long) s.orientation, (unsigned long long) s.degenerate,
+               (unsigned long long) s.residual, s.seconds);
+  if (!reg.hasConverged ())
+  {
+    std::cerr << "Error: the registration did not converge (see the messages above).\n";
+    return 1;
+  }
+  const Eigen::Matrix4d& t = reg.getFinalTransformationDouble ();
+  std::printf ("Transformation (scan to map - origin):\n");
+  for (int r = 0; r < 4; ++r)
+    std::printf ("  %12.6f %12.6f %12.6f %12.4f\n", t (r, 0), t (r, 1), t (r, 2), t (r, 3));
+  std::printf ("Match set (%zu pairs): scan plane -> map plane [angle deg, distance m]\n", result.matches.size ());
+  for (std::size_t i = 0; i < result.matches.size (); ++i)
+  {
+    const auto& pair = result.matches[i];
+    const auto& map = reg.getMapPlanes ()[pair.map];
+    std::printf ("  %3d (%6zu pts) -> %3d (%s) [%.2f, %.3f]\n", pair.scan, reg.getSourcePlanes ()[pair.scan].support,
+                 pair.map, map.isFloor () ? "floor" : ("wall, edge " + std::to_string (map.edge)).c_str (),
+                 result.estimate.angle_residuals[i] * 180.0 / M_PI, result.estimate.distance_residuals[i]);
+  }
+  const auto& d = reg.getPlaneDistances ();
+  std::printf ("Plane distances (Tables 1-2): mean %.3f m, max %.3f m, rms %.3f m over %zu points\n", d.mean,
+               d.max, d.rms, d.points);
+  if (!pcl_ext::tools::saveCloud (output, registered))
+    return 1;
+#ifdef PCL_EXT_HAVE_VISUALIZATION
+  pcl_ext::visualization::RenderOptions options;
+  options.view_direction = Eigen::Vector3d (0, 0, -1);
+  options.up = Eigen::Vector3d::UnitY ();
+  options.zoom_out = 1.6;
+  for (const auto& [path, before] : {std::make_pair (png, false), std::make_pair (png_before, true)})
+  {
+    if (path.empty ())
+      continue;
+    pcl_ext::visualization::View view;
+    renderTopView (*scan, reg.getSourcePlanes (), result, before ? Eigen::Matrix4d::Identity () : t,
+                   reg.getMapPlanes (), before ? "before registration" : "registered to the footprint", view);
+    if (!pcl_ext::visualization::renderToPng ({view}, path, options))
+      return 1;
+  }
+#else
+  if (!png.empty () || !png_before.empty ())
+    std::cerr << "Warning: built without visualization, no PNG written.\n";
+#endif
+  return 0;
+}

@@ -1,0 +1,190 @@
+/*
+ * pcl_ext: registering a building scan to its 2D map, or to another scan, by plane matching
+ * (Khoshelham & Gorte 2009).
+ */
+#pragma once
+
+#include <pcl_ext/evaluation/registration_metrics.h>
+#include <pcl_ext/io/footprints.h>
+#include <pcl_ext/registration/map_planes.h>
+#include <pcl_ext/registration/plane_extraction.h>
+#include <pcl_ext/registration/plane_matching.h>
+
+#include <pcl/registration/registration.h>
+
+#include <string>
+#include <vector>
+
+namespace pcl_ext
+{
+/** \brief Registration of a building scan to a 2D map by plane matching (Khoshelham & Gorte,
+  * "Registering pointclouds of polyhedral buildings to 2D maps", 3D-ARCH 2009).
+  *
+  * - Map planes (section 3.1): a wall on every footprint edge (eqs. 1-2, signed d) and a floor,
+  *   see computeMapPlanes; set with setFootprints() or setMapPlanes().
+  * - Scan planes: any PlaneExtractor (default SACPlaneExtraction), fitted and turned to the
+  *   scanner side by fitScanPlanes(), or given with setSourcePlanes().
+  * - Estimation (section 3.2, eqs. 8-12) projected onto a rigid (default) or similarity
+  *   transform, see estimatePlaneTransformation; search (section 3.3) by initiate and extend
+  *   with the three constraints, see matchPlanes.
+  * - Scan to scan (the paper's future work): without map planes, the target cloud's planes are
+  *   extracted the same way and play the map's part.
+  *
+  * Departures from the text are listed with each function (signed d, projection, offsets at
+  * the data, sign handling, up-axis and extent checks). align() works as for any
+  * pcl::Registration; getFinalTransformation() maps the scan into the map's local frame (map
+  * coordinates minus getLocalOrigin()), in float as PCL's interface has it, and
+  * getFinalTransformationDouble() gives it in double. Deterministic for any thread count.
+  */
+template <typename PointSource, typename PointTarget>
+class PlaneMatchingRegistration : public pcl::Registration<PointSource, PointTarget, float>
+{
+public:
+  using Base = pcl::Registration<PointSource, PointTarget, float>;
+  using typename Base::PointCloudSource;
+  using typename Base::PointCloudTarget;
+  using typename Base::Matrix4;
+  using Ptr = pcl::shared_ptr<PlaneMatchingRegistration<PointSource, PointTarget>>;
+  using ConstPtr = pcl::shared_ptr<const PlaneMatchingRegistration<PointSource, PointTarget>>;
+
+  PlaneMatchingRegistration ();
+
+  /** \brief Map planes from footprints (section 3.1). The local origin is \a parameters.origin,
+    * or when it is zero and \a choose_origin is true, chooseLocalOrigin() (bounding-box centre
+    * rounded to metres); getLocalOrigin() reports it. Sets a target cloud of the walls' corners
+    * so that pcl::Registration's checks pass.
+    * \return false (PCL_ERROR, no map) on invalid footprints, see computeMapPlanes */
+  bool
+  setFootprints (const std::vector<io::Footprint>& footprints,
+                 const MapPlaneParameters& parameters = MapPlaneParameters (), bool choose_origin = true);
+
+  /** \brief Map planes given directly (local frame); also sets the corner target cloud. */
+  void
+  setMapPlanes (const std::vector<MapPlane>& planes, const Eigen::Vector3d& origin = Eigen::Vector3d::Zero ());
+
+  /** \brief Forget the map: register to the target cloud's planes (scan to scan). */
+  void
+  clearMap ();
+
+  /** \brief Scan planes given directly, skipping extraction (their inliers index the source). */
+  void
+  setSourcePlanes (const std::vector<ScanPlane>& planes) { source_planes_ = planes; source_planes_given_ = true; }
+
+  /** \brief The plane extractor for the source (and, scan to scan, the target). Default:
+    * SACPlaneExtraction with its defaults. */
+  void
+  setPlaneExtractor (const PlaneExtractor<PointSource>& extractor) { source_extractor_ = extractor; }
+  void
+  setTargetPlaneExtractor (const PlaneExtractor<PointTarget>& extractor) { target_extractor_ = extractor; }
+
+  /** \brief Scanner positions of the source (and target) cloud, to orient scan normals; default:
+    * each cloud's sensor origin. */
+  void
+  setSourceViewpoints (const ScanViewpoints& viewpoints) { source_viewpoints_ = viewpoints; }
+  void
+  setTargetViewpoints (const ScanViewpoints& viewpoints) { target_viewpoints_ = viewpoints; }
+
+  /** \brief All search parameters at once (see PlaneMatchingParameters for defaults and ranges). */
+  void
+  setMatchingParameters (const PlaneMatchingParameters& parameters) { parameters_ = parameters; }
+  const PlaneMatchingParameters&
+  getMatchingParameters () const { return parameters_; }
+
+  /** \brief k, the pairs of an initial combination; default 4, range [3, 8] (paper: k). */
+  void
+  setInitialPairs (int k) { parameters_.k = k; }
+  /** \brief m, the scan planes used to initiate; default 10, range [k, 64] (paper: m). */
+  void
+  setInitialScanPlanes (int m) { parameters_.scan_initial = m; }
+  /** \brief n, the map planes used to initiate; default 10, range [k, 64] (paper: n). */
+  void
+  setInitialMapPlanes (int n) { parameters_.map_initial = n; }
+  /** \brief Constraint 1, near-vertical/horizontal planes only; default on (section 3.3). */
+  void
+  setVerticalConstraint (bool on) { parameters_.vertical_constraint = on; }
+  /** \brief Constraint 2, relative orientation of the normals; default on (section 3.3). */
+  void
+  setOrientationConstraint (bool on) { parameters_.orientation_constraint = on; }
+  /** \brief Constraint 3, transformation residual of the initial pairs; default on. */
+  void
+  setResidualConstraint (bool on) { parameters_.residual_constraint = on; }
+  /** \brief Estimate a similarity (eq. 5 with free s) instead of a rigid transform; default off. */
+  void
+  setSimilarity (bool on)
+  {
+    parameters_.model = on ? PlaneTransformationModel::Similarity : PlaneTransformationModel::Rigid;
+  }
+  /** \brief Residual and extension tolerances: normal angle in degrees, (0, 90), default 3;
+    * plane offset in metres, > 0, default 0.5 (the paper gives none; 2.5 x its 20 cm noise). */
+  void
+  setTolerances (double angle_deg, double distance)
+  {
+    parameters_.angle_tolerance_deg = angle_deg;
+    parameters_.distance_tolerance = distance;
+  }
+  /** \brief Use scan normals as oriented (scanner side) against outward walls; default off. */
+  void
+  setOrientedNormals (bool on) { parameters_.oriented_normals = on; }
+  /** \brief Threads of the search, 0 = all cores (default); the result does not depend on it. */
+  void
+  setNumberOfThreads (unsigned int threads) { parameters_.threads = threads; }
+
+  /** \name Reports of the last align()
+    * \{ */
+  const std::vector<ScanPlane>&
+  getSourcePlanes () const { return source_planes_; }
+  /** \brief Map planes, or the target cloud's planes scan to scan. */
+  const std::vector<RegistrationPlane>&
+  getTargetPlanes () const { return target_planes_; }
+  const std::vector<MapPlane>&
+  getMapPlanes () const { return map_planes_; }
+  /** \brief Match set, its transform and residuals, and the Table 3 / figure 6 counts. */
+  const PlaneMatchingResult&
+  getMatchingResult () const { return result_; }
+  /** \brief Mean and maximum distance between matched planes (Tables 1-2), measured on the
+    * transformed inlier points of each matched scan plane. */
+  const PlaneDistanceMetrics&
+  getPlaneDistances () const { return distances_; }
+  /** \brief The final transform in double (scan to map - origin). */
+  const Eigen::Matrix4d&
+  getFinalTransformationDouble () const { return final_double_; }
+  /** \brief The map's local origin (map coordinates = local + origin). */
+  const Eigen::Vector3d&
+  getLocalOrigin () const { return origin_; }
+  /** \} */
+
+protected:
+  using Base::converged_;
+  using Base::final_transformation_;
+  using Base::input_;
+  using Base::reg_name_;
+  using Base::target_;
+  using Base::transformation_;
+
+  void
+  computeTransformation (PointCloudSource& output, const Matrix4& guess) override;
+
+private:
+  void
+  setCornerTarget ();
+
+  PlaneMatchingParameters parameters_;
+  PlaneExtractor<PointSource> source_extractor_;
+  PlaneExtractor<PointTarget> target_extractor_;
+  ScanViewpoints source_viewpoints_, target_viewpoints_;
+  std::vector<MapPlane> map_planes_;
+  bool has_map_ = false;
+  std::vector<ScanPlane> source_planes_;
+  bool source_planes_given_ = false;
+  std::vector<ScanPlane> target_scan_planes_;
+  std::vector<RegistrationPlane> target_planes_;
+  PlaneMatchingResult result_;
+  PlaneDistanceMetrics distances_;
+  Eigen::Matrix4d final_double_ = Eigen::Matrix4d::Identity ();
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero ();
+};
+}  // namespace pcl_ext
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl_ext/registration/impl/plane_matching_registration.hpp>
+#endif
