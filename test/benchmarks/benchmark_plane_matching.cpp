@@ -33,6 +33,11 @@ main (int argc, char** argv)
   p.angular_step_deg = step;
   p.superfluous_planes = 4;
   p.missing_walls = 2;
+  // A levelled scanner (tilt 2 degrees, as the vertical constraint assumes), any heading.
+  p.random_pose = false;
+  p.has_pose = true;
+  p.pose = Eigen::Translation3d (30.0, -20.0, 1.0) * Eigen::AngleAxisd (0.7, Eigen::Vector3d::UnitZ ()) *
+           Eigen::AngleAxisd (2.0 * M_PI / 180.0, Eigen::Vector3d (1.0, 1.0, 0.0).normalized ());
   pcl_ext::simulation::SyntheticScene scene;
   if (!pcl_ext::simulation::generateScene ("building", p, scene))
     return 1;
