@@ -199,3 +199,83 @@ TEST (BuildingRegistration, TwoCentimetreNoise)
   EXPECT_LE (o.error.rotation_deg, 0.1);
   EXPECT_LE (o.error.translation, 0.03);
 }
+
+// Scan to scan (the paper's future work): the scans of every other position, moved by a known
+// transform, against the scans of all positions; the target's planes play the map's part.
+TEST (BuildingRegistration, ScanToScan)
+{
+  const Building b = scanBuilding (7, 0.02, 0, 0);
+  const std::size_t scanners = b.viewpoints.positions.size ();
+  ASSERT_GE (scanners, 4u);
+  std::mt19937 rng (7);
+  const Eigen::Matrix4d truth = test::randomPose (rng, 3.0, 20.0);  // source to target
+  pcl::PointCloud<pcl::PointXYZ>::Ptr source (new pcl::PointCloud<pcl::PointXYZ>), target (new pcl::PointCloud<pcl::PointXYZ>);
+  ScanViewpoints source_views, target_views;
+  source_views.positions = target_views.positions = b.viewpoints.positions;
+  for (auto& position : source_views.positions)
+    position = (truth.inverse () * position.homogeneous ()).head<3> ();
+  for (std::size_t i = 0; i < b.cloud->size (); ++i)
+  {
+    const std::uint16_t s = b.viewpoints.scanner_of_point[i];
+    if (s % 2 == 0)
+    {
+      const Eigen::Vector4d q = truth.inverse () * (*b.cloud)[i].getVector4fMap ().cast<double> ();
+      source->emplace_back (float (q.x ()), float (q.y ()), float (q.z ()));
+      source_views.scanner_of_point.push_back (s);
+    }
+    target->push_back ((*b.cloud)[i]);
+    target_views.scanner_of_point.push_back (s);
+  }
+  PlaneMatchingRegistration<pcl::PointXYZ, pcl::PointXYZ> reg;
+  reg.setInputSource (source);
+  reg.setInputTarget (target);
+  reg.setSourceViewpoints (source_views);
+  reg.setTargetViewpoints (target_views);
+  reg.setOrientedNormals (true);
+  pcl::PointCloud<pcl::PointXYZ> aligned;
+  reg.align (aligned);
+  ASSERT_TRUE (reg.hasConverged ());
+  const auto error = computeTransformationError (reg.getFinalTransformationDouble (), truth, centroidOf (*source));
+  std::printf ("scan to scan: %zu source planes, %zu target planes, %zu matched, rotation %.4f deg, "
+               "translation %.4f m, mean plane distance %.3f m\n", reg.getSourcePlanes ().size (),
+               reg.getTargetPlanes ().size (), reg.getMatchingResult ().matches.size (), error.rotation_deg,
+               error.translation, reg.getPlaneDistances ().mean);
+  EXPECT_GE (reg.getMatchingResult ().matches.size (), 5u);
+  EXPECT_LE (error.rotation_deg, 0.1);
+  EXPECT_LE (error.translation, 0.03);
+}
+
+TEST (BuildingRegistration, BadInputDoesNotConverge)
+{
+  PlaneMatchingRegistration<pcl::PointXYZ, pcl::PointXYZ> reg;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr empty (new pcl::PointCloud<pcl::PointXYZ>);
+  io::Footprint footprint;
+  footprint.polygons.resize (1);
+  footprint.polygons[0].outer = test::asymmetricH ();
+  ASSERT_TRUE (reg.setFootprints ({footprint}));
+  pcl::PointCloud<pcl::PointXYZ> out;
+  reg.setInputSource (empty);
+  reg.align (out);
+  EXPECT_FALSE (reg.hasConverged ());
+  // A cloud of NaN points and one without planes (a random blob).
+  pcl::PointCloud<pcl::PointXYZ>::Ptr nan (new pcl::PointCloud<pcl::PointXYZ>);
+  nan->resize (500, pcl::PointXYZ (NAN, NAN, NAN));
+  reg.setInputSource (nan);
+  reg.align (out);
+  EXPECT_FALSE (reg.hasConverged ());
+  pcl::PointCloud<pcl::PointXYZ>::Ptr blob (new pcl::PointCloud<pcl::PointXYZ>);
+  std::mt19937 rng (1);
+  std::normal_distribution<float> g (0.f, 5.f);
+  for (int i = 0; i < 2000; ++i)
+    blob->emplace_back (g (rng), g (rng), g (rng));
+  reg.setInputSource (blob);
+  reg.align (out);
+  EXPECT_FALSE (reg.hasConverged ());
+  // Bad footprints: empty, self-intersecting.
+  EXPECT_FALSE (reg.setFootprints ({}));
+  footprint.polygons[0].outer = {{0, 0}, {4, 4}, {4, 0}, {0, 4}};
+  EXPECT_FALSE (reg.setFootprints ({footprint}));
+  reg.setInputSource (blob);
+  reg.align (out);  // no map and no target: pcl::Registration refuses
+  EXPECT_FALSE (reg.hasConverged ());
+}
