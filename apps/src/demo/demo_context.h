@@ -50,6 +50,8 @@ bool
 runScenesStep (DemoContext& context);
 bool
 runNeighbourhoodsStep (DemoContext& context);
+bool
+runProfilesStep (DemoContext& context);
 /** \} */
 }  // namespace demo
 }  // namespace pcl_ext
