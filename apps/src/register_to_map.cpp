@@ -40,14 +40,15 @@ renderTopView (const pcl::PointCloud<Point>& scan, const std::vector<pcl_ext::Sc
       pcl::PointXYZRGB p (std::uint8_t (0), std::uint8_t (0), std::uint8_t (0));
       p.x = static_cast<float> (q.x ());
       p.y = static_cast<float> (q.y ());
-      p.z = 50.f;
+      p.z = 0.05f;  // a flat top view: a perspective camera would magnify anything higher
       outline->push_back (p);
     }
   }
   std::vector<int> colour (scan.size (), -1);
   for (std::size_t m = 0; m < result.matches.size (); ++m)
-    for (const auto i : planes[result.matches[m].scan].inliers.indices)
-      colour[i] = static_cast<int> (m);
+    if (map[result.matches[m].map].isFloor () == false)  // the floor would cover the view
+      for (const auto i : planes[result.matches[m].scan].inliers.indices)
+        colour[i] = static_cast<int> (m);
   static const std::uint8_t palette[8][3] = {{228, 26, 28}, {55, 126, 184}, {77, 175, 74}, {152, 78, 163},
                                              {255, 127, 0}, {166, 86, 40}, {247, 129, 191}, {0, 150, 150}};
   pcl::PointCloud<pcl::PointXYZRGB>::Ptr moved (new pcl::PointCloud<pcl::PointXYZRGB>);
@@ -58,7 +59,7 @@ renderTopView (const pcl::PointCloud<Point>& scan, const std::vector<pcl_ext::Sc
     pcl::PointXYZRGB p (std::uint8_t (c ? c[0] : 170), std::uint8_t (c ? c[1] : 170), std::uint8_t (c ? c[2] : 170));
     p.x = static_cast<float> (q.x ());
     p.y = static_cast<float> (q.y ());
-    p.z = static_cast<float> (q.z ());
+    p.z = 0.f;
     moved->push_back (p);
   }
   view.title = title;
