@@ -7,7 +7,8 @@ if(TARGET pcl_ext_visualization AND TARGET pcl_ext_simulation)
       src/demo/step_scenes.cpp
       src/demo/step_neighbourhoods.cpp
       src/demo/step_profiles.cpp
+      src/demo/step_classification.cpp
     DEPENDS
       pcl_ext::common pcl_ext::tools pcl_ext::simulation pcl_ext::visualization
-      pcl_ext::evaluation pcl_ext::segmentation)
+      pcl_ext::evaluation pcl_ext::segmentation pcl_ext::classification)
 endif()

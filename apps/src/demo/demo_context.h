@@ -52,6 +52,8 @@ bool
 runNeighbourhoodsStep (DemoContext& context);
 bool
 runProfilesStep (DemoContext& context);
+bool
+runClassificationStep (DemoContext& context);
 /** \} */
 }  // namespace demo
 }  // namespace pcl_ext
