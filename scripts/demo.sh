@@ -22,6 +22,9 @@ cmake --build "$build_dir" -j "$(pcl_ext_jobs)" --target pcl_ext_demo
 trap pcl_ext_stop_display EXIT
 pcl_ext_start_display
 mkdir -p "$out_dir"
-"$build_dir/apps/pcl_ext_demo" "$out_dir" "$@"
+# Real scans next to the project, if any, add optional steps; nothing is downloaded.
+data_args=()
+[ -d "${PCL_EXT_DATA_DIR:-$root/../shared/data}" ] && data_args=(-data "${PCL_EXT_DATA_DIR:-$root/../shared/data}")
+"$build_dir/apps/pcl_ext_demo" "$out_dir" "${data_args[@]}" "$@"
 echo "Results in $out_dir:"
 ls -1 "$out_dir"
