@@ -229,11 +229,11 @@ private:
   }
 
   bool
-  estimate (const int* signs, int count, PlaneTransformationResult& result)
+  estimate (const int* signs, int count, PlaneTransformationResult& result, bool per_pair = false)
   {
     ++stats.estimations;
     return estimatePlaneTransformation (scan_ptr_.data (), map_ptr_.data (), signs, count, c_.p.model,
-                                        result, c_.p.min_conditioning);
+                                        result, c_.p.min_conditioning, per_pair);
   }
 
   bool
@@ -414,6 +414,20 @@ private:
     candidate.order = order;
     candidate.estimate = current;
     candidate.matches = pairs_;
+    if (better (candidate, best))
+    {
+      // Per-pair residuals for the report: only for a new best.
+      scan_ptr_.clear ();
+      map_ptr_.clear ();
+      signs_.clear ();
+      for (const auto& pair : pairs_)
+      {
+        scan_ptr_.push_back (&c_.scan[pair.scan]);
+        map_ptr_.push_back (&c_.map[pair.map]);
+        signs_.push_back (pair.sign);
+      }
+      estimate (signs_.data (), static_cast<int> (pairs_.size ()), candidate.estimate, true);
+    }
     for (const auto& pair : pairs_)
       candidate.support += c_.scan[pair.scan].support;
     if (better (candidate, best))

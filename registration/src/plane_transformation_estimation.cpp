@@ -25,7 +25,7 @@ anchor (const RegistrationPlane& p)
 bool
 estimatePlaneTransformation (const RegistrationPlane* const* scan, const RegistrationPlane* const* map,
                              const int* signs, int count, PlaneTransformationModel model,
-                             PlaneTransformationResult& result, double min_conditioning)
+                             PlaneTransformationResult& result, double min_conditioning, bool per_pair)
 {
   result.valid = false;
   result.degenerate = false;
@@ -138,19 +138,23 @@ estimatePlaneTransformation (const RegistrationPlane* const* scan, const Registr
     return false;
 
   // Residuals of the projected transform, the offsets measured at the same points.
-  double sum = 0.0;
+  double sum = 0.0, min_cosine = 1.0;
   for (int i = 0; i < count; ++i)
   {
     const Eigen::Vector3d ns = signs[i] * scan[i]->normal;
     const Eigen::Vector3d& nm = map[i]->normal;
-    const double angle = std::acos (std::clamp ((rotation * ns).dot (nm), -1.0, 1.0));
+    const double cosine = std::clamp ((rotation * ns).dot (nm), -1.0, 1.0);
     const double distance = std::abs (nm.dot (scale * (rotation * anchor (*scan[i])) + t) - map[i]->d);
-    result.angle_residuals.push_back (angle);
-    result.distance_residuals.push_back (distance);
-    result.max_angle = std::max (result.max_angle, angle);
+    if (per_pair)
+    {
+      result.angle_residuals.push_back (std::acos (cosine));
+      result.distance_residuals.push_back (distance);
+    }
+    min_cosine = std::min (min_cosine, cosine);
     result.max_distance = std::max (result.max_distance, distance);
     sum += (ns - rotation.transpose () * nm).squaredNorm () + distance * distance;
   }
+  result.max_angle = std::acos (min_cosine);
   result.residual_norm = std::sqrt (sum / count);
   result.valid = true;
   return true;

@@ -88,9 +88,12 @@ estimatePlaneTransformation (const std::vector<RegistrationPlane>& scan,
                              const std::vector<PlanePair>& pairs, PlaneTransformationModel model,
                              PlaneTransformationResult& result, double min_conditioning = 1e-3);
 
-/** \brief The same without per-pair residual vectors: the matcher's inner loop. */
+/** \brief The same on arrays of pointers: the matcher's inner loop, which asks for the per-pair
+  * residual vectors (\a per_pair) only for the final match set; the maxima and the norm are
+  * always computed. */
 bool
 estimatePlaneTransformation (const RegistrationPlane* const* scan, const RegistrationPlane* const* map,
                              const int* signs, int count, PlaneTransformationModel model,
-                             PlaneTransformationResult& result, double min_conditioning);
+                             PlaneTransformationResult& result, double min_conditioning,
+                             bool per_pair = true);
 }  // namespace pcl_ext
