@@ -51,9 +51,12 @@ beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
   for (std::ptrdiff_t e = 0; e < static_cast<std::ptrdiff_t> (E); ++e)
   {
     const Eigen::MatrixXd& W = graph.edge_regional[e] ? w.regional_edge : w.local_edge;
-    const Eigen::VectorXd g = (graph.z.row (graph.edge_a[e]).array ()
-                               * graph.z.row (graph.edge_b[e]).array ()).matrix ().transpose ().cast<double> ();
-    diag.col (e) = W.col (0) + W.rightCols (D) * g;
+    Eigen::VectorXd g (D);
+    for (Eigen::Index d = 0; d < D; ++d)
+      g (d) = edgeFeature (graph.z (graph.edge_a[e], d), graph.z (graph.edge_b[e], d));
+    const Eigen::VectorXd u = W.col (0) + W.rightCols (D) * g;
+    for (Eigen::Index c = 0; c < u.size (); ++c)
+      diag (c, e) = softplus (u (c));
   }
   // Messages in log space: column 2e goes a -> b, 2e + 1 goes b -> a.
   Eigen::MatrixXd msg = Eigen::MatrixXd::Zero (C, 2 * E), next (C, 2 * E), incoming (C, N);

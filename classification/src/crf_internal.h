@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -24,6 +25,24 @@ struct MultiscaleCrfModel::Weights
 namespace crf
 {
 constexpr float kClamp = 5.f;
+/** Edge features z_i z_j are clamped to [-kEdgeClamp, kEdgeClamp]. */
+constexpr double kEdgeClamp = 3.0;
+
+/** Edge potentials are kept associative: log psi(c, c) = softplus(lambda^c . g) >= 0, so that an
+  * edge can only favour agreement (unbounded linear potentials turned repulsive on unseen
+  * feature combinations and made loopy BP oscillate). */
+inline double
+softplus (double u) { return u > 30.0 ? u : std::log1p (std::exp (u)); }
+
+inline double
+sigmoid (double u) { return 1.0 / (1.0 + std::exp (-u)); }
+
+inline double
+edgeFeature (float a, float b)
+{
+  const double g = static_cast<double> (a) * b;
+  return g < -kEdgeClamp ? -kEdgeClamp : (g > kEdgeClamp ? kEdgeClamp : g);
+}
 
 /** The graph: super-voxel nodes 0 .. S-1, then local point nodes; undirected edges. */
 struct Graph
@@ -63,16 +82,19 @@ void
 unpackWeights (const Eigen::VectorXd& theta, std::size_t classes, std::size_t dims,
                MultiscaleCrfModel::Weights& w);
 
-/** Penalised negative pseudo-log-likelihood and its gradient (see crf_model.h). */
+/** Penalised negative pseudo-log-likelihood and its gradient (see crf_model.h); each node's
+  * neighbours are conditioned on at \a context_labels (-1: not at all). */
 double
 pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
-                  const Eigen::VectorXd& theta, std::size_t classes, double sigma,
-                  Eigen::VectorXd& gradient, unsigned int threads);
+                  const std::vector<int>& context_labels, const Eigen::VectorXd& theta,
+                  std::size_t classes, double sigma, Eigen::VectorXd& gradient,
+                  unsigned int threads);
 
 /** Minimise the penalised negative pseudo-log-likelihood by L-BFGS from \a theta; returns
   * the iterations done. */
 int
-trainWeights (const Graph& graph, const std::vector<double>& node_weights, std::size_t classes,
+trainWeights (const Graph& graph, const std::vector<double>& node_weights,
+              const std::vector<int>& context_labels, std::size_t classes,
               const CrfSettings& settings, Eigen::VectorXd& theta, bool& converged,
               double& value);
 

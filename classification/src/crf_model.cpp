@@ -305,7 +305,28 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
   Eigen::VectorXd theta = Eigen::VectorXd::Zero (static_cast<Eigen::Index> (4 * C * (D + 1)));
   bool converged = false;
   double value = 0.0;
-  const int iterations = crf::trainWeights (graph, node_weights, C, settings, theta, converged, value);
+  // Stage 1: node potentials alone (multinomial logistic regression; all of NodeOnly).
+  std::vector<int> context (graph.size (), -1);
+  int iterations = crf::trainWeights (graph, node_weights, context, C, settings, theta, converged, value);
+  if (settings.mode != CrfMode::NodeOnly)
+  {
+    // Stage 2: all weights, each node conditioned on its neighbours' stage-1 predictions rather
+    // than their true labels (stacked pseudo-likelihood): with true labels, neighbours nearly
+    // always agree and the edges learnt overwhelm the node potentials at inference.
+    const Eigen::Index D1 = D + 1;
+    const Eigen::Map<const Eigen::MatrixXd> ws (theta.data (), static_cast<Eigen::Index> (C), D1);
+    const Eigen::Map<const Eigen::MatrixXd> wx (theta.data () + C * D1, static_cast<Eigen::Index> (C), D1);
+    for (std::size_t n = 0; n < graph.size (); ++n)
+    {
+      const auto& W = n < graph.num_supervoxels ? ws : wx;
+      const Eigen::VectorXd score =
+          W.col (0) + W.rightCols (D) * graph.z.row (static_cast<Eigen::Index> (n)).transpose ().cast<double> ();
+      Eigen::Index best;
+      score.maxCoeff (&best);
+      context[n] = static_cast<int> (best);
+    }
+    iterations += crf::trainWeights (graph, node_weights, context, C, settings, theta, converged, value);
+  }
   stats.training_ms = msSince (t0);
   stats.iterations = iterations;
   stats.converged = converged;

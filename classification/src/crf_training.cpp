@@ -32,8 +32,9 @@ logSumExp (const double* v, std::size_t n)
 
 double
 pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
-                  const Eigen::VectorXd& theta, std::size_t classes, double sigma,
-                  Eigen::VectorXd& gradient, unsigned int threads)
+                  const std::vector<int>& context_labels, const Eigen::VectorXd& theta,
+                  std::size_t classes, double sigma, Eigen::VectorXd& gradient,
+                  unsigned int threads)
 {
   const std::size_t C = classes;
   const std::size_t D = static_cast<std::size_t> (graph.z.cols ());
@@ -72,15 +73,15 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
       {
         const std::uint32_t e = graph.adj_edge[a];
         const std::uint32_t o = graph.other (e, static_cast<std::uint32_t> (n));
-        const int yo = graph.labels[o];
+        const int yo = context_labels[o];
         if (yo < 0)
           continue;
         const std::size_t eb = graph.edge_regional[e] ? 3 : 2;
         const auto zo = graph.z.row (o);
         double s = theta[at (eb, yo, 0)];
         for (std::size_t d = 0; d < D; ++d)
-          s += theta[at (eb, yo, d + 1)] * z (d) * zo (d);
-        score[yo] += s;
+          s += theta[at (eb, yo, d + 1)] * edgeFeature (z (d), zo (d));
+        score[yo] += softplus (s);
       }
       const double lse = logSumExp (score.data (), C);
       loss += w * (lse - score[y]);
@@ -97,15 +98,18 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
       {
         const std::uint32_t e = graph.adj_edge[a];
         const std::uint32_t o = graph.other (e, static_cast<std::uint32_t> (n));
-        const int yo = graph.labels[o];
+        const int yo = context_labels[o];
         if (yo < 0)
           continue;
         const std::size_t eb = graph.edge_regional[e] ? 3 : 2;
         const auto zo = graph.z.row (o);
-        const double r = w * p[yo];
+        double u = theta[at (eb, yo, 0)];
+        for (std::size_t d = 0; d < D; ++d)
+          u += theta[at (eb, yo, d + 1)] * edgeFeature (z (d), zo (d));
+        const double r = w * p[yo] * sigmoid (u);
         g[at (eb, yo, 0)] += r;
         for (std::size_t d = 0; d < D; ++d)
-          g[at (eb, yo, d + 1)] += r * z (d) * zo (d);
+          g[at (eb, yo, d + 1)] += r * edgeFeature (z (d), zo (d));
       }
     }
     partial_grad[ch] = std::move (g);
@@ -211,12 +215,14 @@ minimiseLbfgs (Objective&& f, Eigen::VectorXd& x, int max_iterations, bool& conv
 
 /** Train: returns iterations; fills theta. */
 int
-trainWeights (const Graph& graph, const std::vector<double>& node_weights, std::size_t classes,
+trainWeights (const Graph& graph, const std::vector<double>& node_weights,
+              const std::vector<int>& context_labels, std::size_t classes,
               const CrfSettings& settings, Eigen::VectorXd& theta, bool& converged,
               double& value)
 {
   auto objective = [&] (const Eigen::VectorXd& x, Eigen::VectorXd& g) {
-    return pseudoLikelihood (graph, node_weights, x, classes, settings.sigma, g, settings.threads);
+    return pseudoLikelihood (graph, node_weights, context_labels, x, classes, settings.sigma, g,
+                             settings.threads);
   };
   return minimiseLbfgs (objective, theta, settings.max_training_iterations, converged, value);
 }

@@ -82,20 +82,26 @@ struct CrfStatistics
   * The super-voxel's label is shared by P_l and P_r, so P(c | s, x) = P_r(c | s) P_l(c | x)
   * (eq. 5) is one pairwise model over that graph, up to normalisation.
   *
-  * Potentials (log-linear, as eq. 6-8): node psi_i(c) = exp(lambda_i^c . [1, s_i]) for
-  * super-voxels and exp(lambda_x^c . [1, x_j]) for local points (multinomial logistic
-  * regression); edges psi_ij(c_i, c_j) = exp([c_i = c_j] lambda_e^c . [1, z_i (.) z_j]) with
-  * (.) the element-wise product of the standardised features (eq. 6 local, eq. 7 regional,
-  * each with its own weights). The constant 1 is pcl_ext's addition (a per-class bias).
+  * Potentials (as eq. 6-8): node psi_i(c) = exp(lambda_i^c . [1, s_i]) for super-voxels and
+  * exp(lambda_x^c . [1, x_j]) for local points (multinomial logistic regression); edges
+  * psi_ij(c_i, c_j) = exp([c_i = c_j] softplus(lambda_e^c . [1, z_i (.) z_j])) with (.) the
+  * element-wise product of the standardised features, clamped to [-3, 3] (eq. 6 local, eq. 7
+  * regional, each with its own weights). Departures: the constant 1 (a per-class bias), the
+  * clamp and the softplus, which keeps every edge associative: the text's linear form let
+  * edges turn repulsive on feature combinations unseen in training, and loopy BP then
+  * collapsed whole classes on real data.
   *
-  * Training (eq. 9) maximises the pseudo-likelihood, not the likelihood, whose partition
-  * function over a loopy graph is intractable: sum over labelled nodes of
-  * log P(c_i | c_neighbours, features), minus |lambda|^2 / (2 sigma^2), by L-BFGS (a
-  * quasi-Newton method; the paper used scaled conjugate gradients). In NodeOnly mode this is
-  * exactly the penalised likelihood of logistic regression. A super-voxel's training label is
-  * the majority label of its members; unlabelled nodes only condition their neighbours out.
-  * With balance_classes, each node is weighted by 1/sqrt(frequency of its class) (pcl_ext
-  * addition: rare classes such as wires would otherwise be given up).
+  * Training (eq. 9) maximises a pseudo-likelihood, not the likelihood, whose partition
+  * function over a loopy graph is intractable, minus |lambda|^2 / (2 sigma^2), by L-BFGS (a
+  * quasi-Newton method; the paper used scaled conjugate gradients). Stage 1 fits the node
+  * potentials alone (exactly penalised logistic regression; all of NodeOnly). Stage 2 fits all
+  * weights by the pseudo-likelihood with each node conditioned on its neighbours' stage-1
+  * predictions instead of their true labels (stacked pseudo-likelihood): with true labels the
+  * neighbours nearly always agree, and the edges learnt then overwhelm the node potentials at
+  * inference. A super-voxel's training label is the majority label of its members; unlabelled
+  * nodes are not scored. With balance_classes, each node is weighted by
+  * 1/sqrt(frequency of its class) (pcl_ext addition: rare classes such as wires would
+  * otherwise be given up).
   *
   * Inference: sum-product loopy belief propagation with damped, synchronous message updates
   * (so the result does not depend on the thread count), stopped when no message changes by
