@@ -54,6 +54,12 @@ bool
 runProfilesStep (DemoContext& context);
 bool
 runClassificationStep (DemoContext& context);
+bool
+runRegistrationStep (DemoContext& context);
+/** \brief Lim & Suter's multi-scale CRF: train on one street scene, classify another. */
+bool
+runCrfStep (DemoContext& context);
+
 /** \} */
 }  // namespace demo
 }  // namespace pcl_ext
