@@ -4,6 +4,7 @@
  * points in no segment).
  */
 #include <pcl_ext/segmentation/profile_segmentation.h>
+#include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/tools/cloud_io.h>
 #include <pcl_ext/tools/command_line.h>
 #include <pcl_ext/tools/file_output.h>
@@ -24,31 +25,17 @@ namespace
 {
 using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
 
-/** Write \a labels into the cloud: into its `label` field when it has a 32-bit one (a scene's
-  * own labels are replaced), else as a new field. */
+/** Write \a labels into the cloud's `label` field (a scene's own labels are replaced; the
+  * field is appended when absent). */
 bool
 attachLabels (const pcl::PCLPointCloud2& input, const pcl::PointCloud<pcl::Label>& labels,
               pcl::PCLPointCloud2& output)
 {
-  const int field = pcl_ext::tools::findField (input, "label");
-  if (field < 0)
-  {
-    pcl::PCLPointCloud2 label_cloud;
-    pcl::toPCLPointCloud2 (labels, label_cloud);
-    label_cloud.width = input.width;
-    label_cloud.height = input.height;
-    return pcl::concatenateFields (input, label_cloud, output);
-  }
-  const auto& f = input.fields[field];
-  if (f.datatype != pcl::PCLPointField::UINT32 && f.datatype != pcl::PCLPointField::INT32)
-  {
-    std::cerr << "Error: the input has a 'label' field that is not a 32-bit integer.\n";
-    return false;
-  }
-  output = input;
+  std::vector<std::uint32_t> values (labels.size ());
   for (std::size_t i = 0; i < labels.size (); ++i)
-    std::memcpy (&output.data[i * output.point_step + f.offset], &labels[i].label, 4);
-  return true;
+    values[i] = labels[i].label;
+  output = input;
+  return pcl_ext::io::setLabelField (output, "label", values);
 }
 
 bool
