@@ -38,7 +38,7 @@ public:
     * \param[in] leaf_size the maximum number of points in a leaf (nanoflann's leaf_max_size) */
   void
   build (std::vector<float> xyz, std::vector<pcl::index_t> point_indices,
-         unsigned int leaf_size = 12);
+         unsigned int leaf_size = 24);
 
   /** \brief Number of points in the tree. */
   std::size_t
