@@ -6,9 +6,11 @@
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/features/neighbourhood_source.h>
 
+#include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
 #include <pcl/features/feature.h>
 
+#include <cstddef>
 #include <string>
 
 namespace pcl_ext
@@ -110,6 +112,61 @@ protected:
   {
     source_.release ();
     return FeatureBase::deinitCompute ();
+  }
+
+  /** \brief PCL_ERROR unless \a normals holds one normal per input point (the normals of a
+    * FeatureFromNormals-style estimator are indexed like the input cloud). */
+  template <typename NormalCloudConstPtr> bool
+  checkNormals (const NormalCloudConstPtr& normals) const
+  {
+    if (!normals)
+    {
+      PCL_ERROR ("[pcl_ext::%s::compute] No normals (setInputNormals).\n",
+                 feature_name_.c_str ());
+      return false;
+    }
+    if (normals->size () != input_->size ())
+    {
+      PCL_ERROR ("[pcl_ext::%s::compute] %zu normals for %zu points; one per input point is "
+                 "needed.\n", feature_name_.c_str (), normals->size (), input_->size ());
+      return false;
+    }
+    return true;
+  }
+
+  /** \brief The per-point loop of every estimator: \a compute_row (r, output[r]) for each row r
+    * of nb_, in parallel (dynamic chunks of \a chunk rows), and \a set_invalid (output[r]) for
+    * rows whose index point is not finite. Returns whether every row succeeded, i.e. the
+    * output's is_dense. Two loops as in PCL: a dense input skips the finite check (a non-finite
+    * point has an empty row and fails compute_row anyway, only later). */
+  template <typename PointOutT, typename ComputeRow, typename SetInvalid> bool
+  computeRows (pcl::PointCloud<PointOutT>& output, int chunk, const ComputeRow& compute_row,
+               const SetInvalid& set_invalid) const
+  {
+    const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size ());
+    const int threads = static_cast<int> (threadCount ());
+    bool dense = true;
+    if (input_->is_dense)
+    {
+#pragma omp parallel for num_threads(threads) schedule(dynamic, chunk) reduction(&& : dense)
+      for (std::ptrdiff_t r = 0; r < rows; ++r)
+        dense = compute_row (static_cast<std::size_t> (r), output[r]) && dense;
+    }
+    else
+    {
+#pragma omp parallel for num_threads(threads) schedule(dynamic, chunk) reduction(&& : dense)
+      for (std::ptrdiff_t r = 0; r < rows; ++r)
+      {
+        if (!pcl::isFinite ((*input_)[(*indices_)[r]]))
+        {
+          set_invalid (output[r]);
+          dense = false;
+          continue;
+        }
+        dense = compute_row (static_cast<std::size_t> (r), output[r]) && dense;
+      }
+    }
+    return dense;
   }
 
   /** \brief Threads to use, 0 resolved to all cores. */

@@ -6,8 +6,6 @@
 #include <pcl_ext/features/chi_squared_boundary.h>
 #include <pcl_ext/features/local_variance.h>
 
-#include <pcl/common/point_tests.h>
-
 #include <cmath>
 
 template <typename PointInT, typename PointOutT> bool
@@ -43,31 +41,10 @@ template <typename PointInT, typename PointOutT> void
 pcl_ext::ChiSquaredBoundaryEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
 {
   const double quantile = chiSquaredQuantile2 (confidence_);
-  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size ());
-  bool dense = true;
-  if (input_->is_dense)
-  {
-#pragma omp parallel for num_threads(this->threadCount ()) schedule(dynamic, 256) \
-    reduction(&& : dense) default(none) shared(output, rows, quantile)
-    for (std::ptrdiff_t r = 0; r < rows; ++r)
-      dense = computePoint (static_cast<std::size_t> (r), quantile, output[r]) && dense;
-  }
-  else
-  {
-#pragma omp parallel for num_threads(this->threadCount ()) schedule(dynamic, 256) \
-    reduction(&& : dense) default(none) shared(output, rows, quantile)
-    for (std::ptrdiff_t r = 0; r < rows; ++r)
-    {
-      if (!pcl::isFinite ((*input_)[(*indices_)[r]]))
-      {
-        output[r].boundary_point = 0;
-        dense = false;
-        continue;
-      }
-      dense = computePoint (static_cast<std::size_t> (r), quantile, output[r]) && dense;
-    }
-  }
-  output.is_dense = dense;
+  output.is_dense = this->computeRows (
+      output, 256,
+      [this, quantile] (std::size_t r, PointOutT& out) { return computePoint (r, quantile, out); },
+      [] (PointOutT& out) { out.boundary_point = 0; });
 }
 
 #define PCL_EXT_INSTANTIATE_ChiSquaredBoundaryEstimation(T) \

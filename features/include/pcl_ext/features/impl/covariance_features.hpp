@@ -6,8 +6,6 @@
 #include <pcl_ext/features/covariance_features.h>
 #include <pcl_ext/features/local_variance.h>
 
-#include <pcl/common/point_tests.h>
-
 #include <limits>
 
 template <typename PointInT, typename PointOutT> void
@@ -57,33 +55,9 @@ pcl_ext::CovarianceFeatureEstimation<PointInT, PointOutT>::computePoint (std::si
 template <typename PointInT, typename PointOutT> void
 pcl_ext::CovarianceFeatureEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
 {
-  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size ());
-  bool dense = true;
-  // Separate loops as in PCL: the dense one skips the finite check of the index point (a
-  // non-finite point has an empty row and fails computePoint anyway, only later).
-  if (input_->is_dense)
-  {
-#pragma omp parallel for num_threads(this->threadCount ()) schedule(dynamic, 256) \
-    reduction(&& : dense) default(none) shared(output, rows)
-    for (std::ptrdiff_t r = 0; r < rows; ++r)
-      dense = computePoint (static_cast<std::size_t> (r), output[r]) && dense;
-  }
-  else
-  {
-#pragma omp parallel for num_threads(this->threadCount ()) schedule(dynamic, 256) \
-    reduction(&& : dense) default(none) shared(output, rows)
-    for (std::ptrdiff_t r = 0; r < rows; ++r)
-    {
-      if (!pcl::isFinite ((*input_)[(*indices_)[r]]))
-      {
-        setInvalid (output[r]);
-        dense = false;
-        continue;
-      }
-      dense = computePoint (static_cast<std::size_t> (r), output[r]) && dense;
-    }
-  }
-  output.is_dense = dense;
+  output.is_dense = this->computeRows (
+      output, 256, [this] (std::size_t r, PointOutT& out) { return computePoint (r, out); },
+      &setInvalid);
 }
 
 #define PCL_EXT_INSTANTIATE_CovarianceFeatureEstimation(T) \

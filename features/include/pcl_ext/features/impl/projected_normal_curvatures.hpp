@@ -6,26 +6,12 @@
 #include <pcl_ext/features/local_variance.h>
 #include <pcl_ext/features/projected_normal_curvatures.h>
 
-#include <pcl/common/point_tests.h>
-
 #include <limits>
 
 template <typename PointInT, typename PointNT, typename PointOutT> bool
 pcl_ext::ProjectedNormalCurvaturesEstimation<PointInT, PointNT, PointOutT>::checkInputs ()
 {
-  if (!normals_)
-  {
-    PCL_ERROR ("[pcl_ext::%s::compute] No normals (setInputNormals).\n",
-               this->feature_name_.c_str ());
-    return false;
-  }
-  if (normals_->size () != input_->size ())
-  {
-    PCL_ERROR ("[pcl_ext::%s::compute] %zu normals for %zu points; one per input point is "
-               "needed.\n", this->feature_name_.c_str (), normals_->size (), input_->size ());
-    return false;
-  }
-  return true;
+  return this->checkNormals (normals_);
 }
 
 template <typename PointInT, typename PointNT, typename PointOutT> void
@@ -71,31 +57,9 @@ template <typename PointInT, typename PointNT, typename PointOutT> void
 pcl_ext::ProjectedNormalCurvaturesEstimation<PointInT, PointNT, PointOutT>::computeFeature (
     PointCloudOut& output)
 {
-  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size ());
-  bool dense = true;
-  if (input_->is_dense)
-  {
-#pragma omp parallel for num_threads(this->threadCount ()) schedule(dynamic, 256) \
-    reduction(&& : dense) default(none) shared(output, rows)
-    for (std::ptrdiff_t r = 0; r < rows; ++r)
-      dense = computePoint (static_cast<std::size_t> (r), output[r]) && dense;
-  }
-  else
-  {
-#pragma omp parallel for num_threads(this->threadCount ()) schedule(dynamic, 256) \
-    reduction(&& : dense) default(none) shared(output, rows)
-    for (std::ptrdiff_t r = 0; r < rows; ++r)
-    {
-      if (!pcl::isFinite ((*input_)[(*indices_)[r]]))
-      {
-        setInvalid (output[r]);
-        dense = false;
-        continue;
-      }
-      dense = computePoint (static_cast<std::size_t> (r), output[r]) && dense;
-    }
-  }
-  output.is_dense = dense;
+  output.is_dense = this->computeRows (
+      output, 256, [this] (std::size_t r, PointOutT& out) { return computePoint (r, out); },
+      &setInvalid);
 }
 
 #define PCL_EXT_INSTANTIATE_ProjectedNormalCurvaturesEstimation(T)                               \
