@@ -44,7 +44,8 @@ buildMembership (std::size_t num_points, SupervoxelSet& set)
 }
 
 void
-buildAdjacency (const pcl::PointCloud<pcl::PointXYZ>& cloud, int l, SupervoxelSet& set)
+buildAdjacency (const pcl::PointCloud<pcl::PointXYZ>& cloud, int l, int threads,
+                SupervoxelSet& set)
 {
   const std::size_t n = set.supervoxels.size ();
   set.adjacency.assign (n, {});
@@ -62,7 +63,7 @@ buildAdjacency (const pcl::PointCloud<pcl::PointXYZ>& cloud, int l, SupervoxelSe
   search::KdTree3f tree;
   tree.build (xyz, ids);
   const std::size_t k = std::min<std::size_t> (static_cast<std::size_t> (l) + 1, n);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for num_threads(threads) schedule(static)
   for (std::ptrdiff_t v = 0; v < static_cast<std::ptrdiff_t> (n); ++v)
   {
     pcl::Indices nn (k);
@@ -142,7 +143,7 @@ computeAdaptiveSupervoxels (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& clou
     }
   }
   buildMembership (cloud->size (), result);
-  buildAdjacency (*cloud, parameters.adjacency, result);
+  buildAdjacency (*cloud, parameters.adjacency, threads, result);
   return true;
 }
 }  // namespace pcl_ext
