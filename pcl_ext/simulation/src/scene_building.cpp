@@ -120,7 +120,10 @@ describeBuildingScene (const SceneParameters& parameters, SceneDescription& d)
     }
   }
 
-  // Scan positions 12 m out from the middle of the walls, spread by farthest-point order.
+  // Scan positions 12 m out from the middle of the walls, spread by farthest-point order. All
+  // of them by default: the central ones, in front of the courtyards, are the only ones that
+  // see the courtyard walls, and without those two hidden parallel walls (missing_walls = 2)
+  // would leave one horizontal direction to the vegetation in front of them.
   std::vector<Vec2> candidates;
   for (std::size_t k = 0; k < n; ++k)
   {
@@ -151,7 +154,7 @@ describeBuildingScene (const SceneParameters& parameters, SceneDescription& d)
     ordered.emplace_back (candidates[best].x (), candidates[best].y (), 1.7);
   }
   d.geometry = std::move (builder.geometry ());
-  d.scan_positions = detail::choosePositions (ordered, parameters.num_scanners, 6);
+  d.scan_positions = detail::choosePositions (ordered, parameters.num_scanners, static_cast<int> (ordered.size ()));
   d.footprint = footprint;
   d.angular_step_deg = 0.4;
   d.max_range = 150.0;

@@ -178,7 +178,9 @@ describeTreeScene (const SceneParameters& parameters, SceneDescription& descript
   * figure 3): walls with windows on the footprint (an H-shaped plan by default), a flat roof
   * and the ground, scanned from positions around it; options add superfluous planes and hide
   * walls behind vegetation. Labels: 1 wall, 2 ground, 3 roof, 4 superfluous, 5 vegetation.
-  * Default 6 positions 12 m out from the middle of walls (farthest-first), step 0.4 deg; the
+  * Positions 12 m out from the middle of every wall that has that much free space in front
+  * (the courtyard mouths included, so every wall is seen), in farthest-first order; all of
+  * them by default (8 on the H plan), the first num_scanners when given. Step 0.4 deg; the
   * scan frame is posed arbitrarily (SceneParameters::random_pose). */
 void
 describeBuildingScene (const SceneParameters& parameters, SceneDescription& description);
