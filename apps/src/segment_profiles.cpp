@@ -108,7 +108,7 @@ main (int argc, char** argv)
   std::string method_name = "proximity", distribution = "hemisphere";
   unsigned int stacks = 4, threads = 0, neighbours = 4;
   double width = 0.0, width_factor = 1.5, threshold = 0.0, threshold_factor = 3.0;
-  double max_turn_deg = 30.0;
+  double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0;
   int min_size = 1;
   pcl_ext::tools::CommandLine cl (
       "pcl_ext_segment_profiles",
@@ -128,6 +128,12 @@ main (int argc, char** argv)
   cl.addOption ("threshold_factor", threshold_factor, "threshold as a multiple of the spacing");
   cl.addOption ("k", neighbours, "proximity chaining: links per point");
   cl.addOption ("max_turn", max_turn_deg, "curve fitting: sharpest turn within a curve (deg)");
+  cl.addOption ("window", window,
+                "curve fitting: half length of the stretch fitted on each side of a point "
+                "(0: 2 x threshold)");
+  cl.addOption ("residual_factor", residual_factor,
+                "curve fitting: a stretch whose residual exceeds this multiple of the median "
+                "is not one curve");
   cl.addOption ("min_size", min_size, "smallest segment kept");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
@@ -178,6 +184,8 @@ main (int argc, char** argv)
   seg.setProfileSegmentation (method);
   seg.setProximityNeighbours (neighbours);
   seg.setMaxTurnAngle (max_turn_deg * M_PI / 180.0);
+  seg.setCurveWindow (window);
+  seg.setResidualFactor (residual_factor);
   seg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
   seg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;
