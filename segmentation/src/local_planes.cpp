@@ -1,0 +1,37 @@
+/*
+ * pcl_ext: non-template local plane kernels.
+ */
+#include <pcl_ext/segmentation/local_planes.h>
+
+#include <algorithm>
+#include <cmath>
+
+double
+pcl_ext::normalAngle (const Eigen::Vector3d& n1, const Eigen::Vector3d& n2)
+{
+  // atan2 of |n1 x n2| and |n1 . n2| keeps its accuracy near 0, where arccos of a dot product
+  // close to 1 loses half the digits (the parallel test works at small angles).
+  return std::atan2 (n1.cross (n2).norm (), std::abs (n1.dot (n2)));
+}
+
+bool
+pcl_ext::intersectLocalPlanes (const LocalPlane& plane1, const LocalPlane& plane2,
+                               const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
+                               Eigen::Vector3d& point, Eigen::Vector3d& direction)
+{
+  const Eigen::Vector3d& n1 = plane1.normal;
+  const Eigen::Vector3d& n2 = plane2.normal;
+  const Eigen::Vector3d a = n1.cross (n2);
+  const double det = a.squaredNorm ();  // 1 - c^2 = sin^2(theta) for unit normals
+  if (!(det > 0.0) || !std::isfinite (det))
+    return false;
+  const Eigen::Vector3d m = 0.5 * (p1 + p2);
+  const double c = n1.dot (n2);
+  const double r1 = plane1.distance (m);
+  const double r2 = plane2.distance (m);
+  const double alpha = (-r1 + c * r2) / det;
+  const double beta = (-r2 + c * r1) / det;
+  point = m + alpha * n1 + beta * n2;
+  direction = a / std::sqrt (det);
+  return point.allFinite ();
+}
