@@ -6,8 +6,10 @@
  * Ground truth at the scale of the method: the paper labels a point "on or near an edge" when
  * its neighbourhood reaches across the crease, so a point is Edge (Boundary) here when a crease
  * (border) of its own surface lies within its neighbourhood radius (distance to its k-th
- * neighbour), from the scene's exact curves. The scenes' default band (one scan spacing) is
- * narrower than any k = 50 neighbourhood; the F1 for it is printed too.
+ * neighbour), from the scene's exact curves, or when a neighbour on its surface lies on the
+ * border of the scanned part (a shadow or the blind cone, marked by the scene). The scenes'
+ * default band (one scan spacing) is narrower than any k = 50 neighbourhood; the F1 for it is
+ * printed too.
  */
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/evaluation/classification_metrics.h>
@@ -36,6 +38,7 @@ struct Scene
   Cloud::Ptr cloud {new Cloud};
   pcl_ext::Neighbourhoods<pcl::PointXYZ>::Ptr nb {new pcl_ext::Neighbourhoods<pcl::PointXYZ>};
   std::vector<std::uint32_t> truth;          ///< at the neighbourhood scale
+  std::vector<std::uint32_t> curve_truth;    ///< the same from the scene's curves alone
   std::vector<std::uint32_t> default_truth;  ///< the scene's own (one scan spacing)
 };
 
@@ -63,12 +66,25 @@ scene (const std::string& name)
   const auto& geometry = s->scene.description->geometry;
   const Eigen::Isometry3d scene_from_cloud = s->scene.cloud_from_scene.inverse ();
   s->truth.resize (sim.size ());
+  s->curve_truth.resize (sim.size ());
   for (std::size_t i = 0; i < sim.size (); ++i)
   {
     const auto row = (*s->nb)[i];
     const double radius = row.empty () ? 0.0 : std::sqrt (row.sqr_distances[row.size () - 1]);
     const Eigen::Vector3d p = scene_from_cloud * Eigen::Vector3d (sim[i].x, sim[i].y, sim[i].z);
     s->truth[i] = static_cast<std::uint32_t> (geometry.classify (p, sim[i].segment, radius));
+    s->curve_truth[i] = s->truth[i];
+    // The borders of the scanned part of a surface (shadows, silhouettes, field of view) are
+    // not curves of the scene: the scene marks them on the points next to them. A neighbour
+    // of the same surface so marked puts the border within the neighbourhood.
+    if (s->truth[i] == static_cast<std::uint32_t> (PointClass::Surface))
+      for (const auto j : row)
+        if (sim[j].segment == sim[i].segment &&
+            sim[j].point_class == static_cast<std::uint32_t> (PointClass::Boundary))
+        {
+          s->truth[i] = static_cast<std::uint32_t> (PointClass::Boundary);
+          break;
+        }
   }
   return *s;
 }
@@ -137,14 +153,15 @@ TEST_P (LocalVarianceScenes, SurfaceF1MeetsTheGoal)
 }
 
 // Goals not met yet (k = 50, the paper's 1e-4, confidence 0.95; 300,000 points): edge F1
-// 0.62 (indoor) and 0.70 (pipes), boundary F1 0.25 and 0.39. Of the false edges 87% (indoor)
-// and 97% (pipes), and of the false boundaries over 90%, lie farther than 5 neighbourhood radii
-// from any true crease or border of their surface. On indoor, 99.7% of those false edges are
-// within 2 m of a scanner, where 50 neighbours span only a few centimetres and the 5 mm range
-// noise alone makes the curvature vary by more than the tolerance (the paper's remark on
-// density changes; it suggests thinning). On pipes they are at long range, where the
-// neighbourhoods grow to the pipes' radius, and at tangential pipe-beam contacts (45%).
-// Variance tolerance 3e-4 gives edge F1 0.75 / 0.74. Run with --gtest_also_run_disabled_tests.
+// 0.62 (indoor) and 0.70 (pipes), boundary F1 0.43 and 0.44 (precision 0.54 and 0.87, recall
+// 0.36 and 0.29; 0.25 and 0.39 before the shadow and blind-cone borders entered the truth). Of
+// the false edges 87% (indoor) and 97% (pipes) lie farther than 5 neighbourhood radii from any
+// true crease or border of their surface. On indoor, 99.7% of those false edges are within
+// 2 m of a scanner, where 50 neighbours span only a few centimetres and the 5 mm range noise
+// alone makes the curvature vary by more than the tolerance (the paper's remark on density
+// changes; it suggests thinning). On pipes they are at long range, where the neighbourhoods
+// grow to the pipes' radius, and at tangential pipe-beam contacts (45%). Variance tolerance
+// 3e-4 gives edge F1 0.75 / 0.74. Run with --gtest_also_run_disabled_tests.
 TEST_P (LocalVarianceScenes, DISABLED_EdgeAndBoundaryF1MeetTheGoal)
 {
   const Scene& s = scene (GetParam ());
@@ -158,7 +175,9 @@ INSTANTIATE_TEST_SUITE_P (Scenes, LocalVarianceScenes, ::testing::Values ("indoo
 TEST (LocalVarianceScenes, VarianceOfCurvatureKeepsPipesSurface)
 {
   // Section 2.2, figure 1: with the same curvature threshold, the variance test removes most
-  // of the edges curvature alone finds on the (smooth, curved) pipes.
+  // of the edges curvature alone finds on the (smooth, curved) pipes: on the pipe points with
+  // no crease or border of the pipe within their neighbourhood (shadows on a pipe do not
+  // make it less smooth).
   const Scene& s = scene ("pipes");
   Classifier c;
   c.setInputCloud (s.cloud);
@@ -172,7 +191,8 @@ TEST (LocalVarianceScenes, VarianceOfCurvatureKeepsPipesSurface)
   std::size_t pipe_surface = 0, fp_curvature = 0, fp_workflow = 0;
   const auto edge = static_cast<std::uint32_t> (PointClass::Edge);
   for (std::size_t i = 0; i < s.truth.size (); ++i)
-    if (s.scene.cloud[i].label == 3 && s.truth[i] == static_cast<std::uint32_t> (PointClass::Surface))
+    if (s.scene.cloud[i].label == 3 &&
+        s.curve_truth[i] == static_cast<std::uint32_t> (PointClass::Surface))
     {
       ++pipe_surface;
       fp_curvature += curvature_only[i] == edge;
@@ -188,12 +208,12 @@ TEST (LocalVarianceScenes, VarianceOfCurvatureKeepsPipesSurface)
   EXPECT_LT (rate_workflow, rate_curvature);
 }
 
-// Not met on indoor at the default confidence: F1 0.200 (chi-squared, 0.95) against 0.201
-// (pcl::BoundaryEstimation), 300,000 points. Measured in the same setting: 0.210 at 0.99, 0.223
-// at 0.999; on pipes 0.293 (0.95) against 0.289; the printed eq. 6 (no factor n) finds no
-// boundary at all (F1 0.00). Both methods are dominated by occlusion and coverage borders that
-// the ground truth does not label boundary. Run with --gtest_also_run_disabled_tests.
-TEST (LocalVarianceScenes, DISABLED_ChiSquaredBoundaryBeatsPclBoundaryEstimation)
+// Both boundary tests against a truth that holds the borders of the scanned surfaces: the
+// scene's curves and its shadow and blind-cone borders. Measured (300,000 points, k = 50,
+// confidence 0.95): F1 0.38 (chi-squared) against 0.26 (pcl::BoundaryEstimation). Against the
+// scene's curves alone the two were level (0.200 and 0.201): occlusion borders then counted as
+// false boundaries for both.
+TEST (LocalVarianceScenes, ChiSquaredBoundaryBeatsPclBoundaryEstimation)
 {
   const Scene& s = scene ("indoor");
   // Same normals for PCL: ours, from the same neighbourhoods.

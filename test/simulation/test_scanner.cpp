@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -164,6 +165,7 @@ TEST (TlsScanSimulation, EdgesOfABox)
   scanner.setElevationRange (-45.0, 10.0);
   scanner.setRangeNoise (0.0);
   scanner.setEdgeDistance (0.05);
+  scanner.setCoverageBoundaries (false);  // the box's shadow: see ShadowBordersAreBoundaries
   pcl::PointCloud<SimulatedPoint> cloud;
   ASSERT_TRUE (scanner.scan (geometry, cloud));
   // Box [5, 7] x [-1, 1] x [0.5, 2.5]: distance of a face point to the nearest box edge.
@@ -198,6 +200,51 @@ TEST (TlsScanSimulation, EdgesOfABox)
   }
   EXPECT_GT (edges, 50u);
   EXPECT_EQ (boundaries, 0u);  // the ground's borders are 100 m away, out of sight of the box
+}
+
+// The ground behind the box is not scanned (its shadow); the ground points along the shadow's
+// outline are boundaries of the scanned ground, and no other ground point is.
+TEST (TlsScanSimulation, ShadowBordersAreBoundaries)
+{
+  const SceneGeometry geometry = groundAndBox (true);
+  TlsScanSimulation scanner;
+  const Vec3 o (0, 3, 3.0);
+  scanner.setScanPositions ({o});
+  scanner.setAngularStep (0.15);
+  scanner.setElevationRange (-45.0, 10.0);
+  scanner.setRangeNoise (0.0);
+  pcl::PointCloud<SimulatedPoint> cloud;
+  ASSERT_TRUE (scanner.scan (geometry, cloud));
+  const double step = 0.15 * M_PI / 180.0;
+  std::size_t shadow = 0, blind_cone = 0;
+  for (const auto& p : cloud)
+  {
+    if (p.label != 1 || p.point_class != static_cast<std::uint32_t> (PointClass::Boundary))
+      continue;
+    const Vec3 q (p.x, p.y, p.z);
+    const Vec3 d = q - o;
+    const double elevation = std::asin (d.z () / d.norm ());
+    if (elevation < -45.0 * M_PI / 180.0 + 1.5 * step)
+    {
+      ++blind_cone;  // the lowest row: the border of the blind cone
+      continue;
+    }
+    // Otherwise the point lies behind the box, next to a ray that grazes the box: the segment
+    // from the scanner to the point passes within two spacings of the box [5,7]x[-1,1]x[0.5,2.5].
+    EXPECT_GT (q.x (), 5.0);
+    double nearest = 1e9;
+    for (int t = 0; t <= 400; ++t)
+    {
+      const Vec3 r = o + (t / 400.0) * d;
+      const Vec3 c (std::clamp (r.x (), 5.0, 7.0), std::clamp (r.y (), -1.0, 1.0),
+                    std::clamp (r.z (), 0.5, 2.5));
+      nearest = std::min (nearest, (r - c).norm ());
+    }
+    EXPECT_LT (nearest, 2.0 * d.norm () * step + 0.01) << q.transpose ();
+    ++shadow;
+  }
+  EXPECT_GT (shadow, 50u);
+  EXPECT_GT (blind_cone, 50u);
 }
 
 TEST (TlsScanSimulation, BadParameters)

@@ -47,15 +47,31 @@ class SceneGroundTruth : public ::testing::TestWithParam<std::string>
 }  // namespace
 
 // With noise 0 the measured point is the true one: every point's class must agree with its
-// distance to its own segment's curves, compared with the local spacing range * step.
+// distance to its own segment's curves, compared with the local spacing range * step. The
+// coverage borders only turn Surface points into Boundary points.
 TEST_P (SceneGroundTruth, ClassesMatchCurveDistances)
 {
   SceneParameters parameters;
   parameters.noise = 0.0;
   parameters.points = 15000;
+  SyntheticScene covered;
+  ASSERT_TRUE (generateScene (GetParam (), parameters, covered));
+  parameters.coverage_boundaries = false;
   SyntheticScene scene;
   ASSERT_TRUE (generateScene (GetParam (), parameters, scene));
   ASSERT_GT (scene.cloud.size (), 10000u);
+  ASSERT_EQ (covered.cloud.size (), scene.cloud.size ());
+  std::size_t shadow_borders = 0;
+  for (std::size_t i = 0; i < scene.cloud.size (); ++i)
+    if (covered.cloud[i].point_class != scene.cloud[i].point_class)
+    {
+      ASSERT_EQ (scene.cloud[i].point_class, static_cast<std::uint32_t> (PointClass::Surface));
+      ASSERT_EQ (covered.cloud[i].point_class, static_cast<std::uint32_t> (PointClass::Boundary));
+      ++shadow_borders;
+    }
+  // Every scene has occlusions or a blind cone; none is all border.
+  EXPECT_GT (shadow_borders, 0u) << GetParam ();
+  EXPECT_LT (shadow_borders, scene.cloud.size () / 4) << GetParam ();
   ASSERT_EQ (scene.scanner_of_point.size (), scene.cloud.size ());
   const SceneGeometry& geometry = scene.description->geometry;
   std::map<std::uint32_t, std::size_t> per_class;

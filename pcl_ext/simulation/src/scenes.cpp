@@ -164,6 +164,7 @@ scanScene (const std::shared_ptr<const SceneDescription>& description,
   scanner.setMaximumRange (d.max_range);
   scanner.setRangeNoise (parameters.noise, parameters.noise_per_metre);
   scanner.setEdgeDistance (parameters.edge_distance);
+  scanner.setCoverageBoundaries (parameters.coverage_boundaries);
   scanner.setSeed (parameters.seed);
   scanner.setNumberOfThreads (parameters.threads);
   if (!scanner.checkParameters ())

@@ -194,9 +194,10 @@ TlsScanSimulation::traceColumns (const SceneGeometry& geometry, double step_deg,
       const double cos_incidence = std::abs (ray.direction.dot (hit.normal));
       if (cos_incidence < cos_max_incidence)
         continue;
-      visit (k, task.scanner, ray, hit, cos_incidence, key, step_rad);
+      visit (k, task.scanner, j, ray, hit, cos_incidence, key, step_rad);
     }
   }
+  visit.end (tasks, num_columns);
 }
 
 namespace
@@ -210,9 +211,13 @@ struct CountVisitor
     counts.assign (tasks, 0);
   }
   void
-  operator() (long task, int, const Ray&, const RayHit&, double, std::uint64_t, double)
+  operator() (long task, int, long, const Ray&, const RayHit&, double, std::uint64_t, double)
   {
     ++counts[task];
+  }
+  void
+  end (const std::vector<ColumnTask>&, long)
+  {
   }
 };
 }  // namespace
@@ -266,21 +271,93 @@ namespace
 {
 struct ScanVisitor
 {
+  /** What the coverage test needs of a return: its row, its noise-free position and the
+    * distance to the returns of the neighbouring rays on a continuous surface. */
+  struct Return
+  {
+    long row;
+    Vec3 truth;
+    double range;
+    double spacing;
+  };
+
   const SceneGeometry& geometry;
   const Eigen::Isometry3d& transform;
   double noise_sigma, noise_per_metre, edge_distance;
+  bool coverage_boundaries;
+  long lowest_row;  ///< the lowest row of the field of view (the blind cone below it)
+  unsigned int threads;
   std::vector<std::vector<SimulatedPoint, Eigen::aligned_allocator<SimulatedPoint>>> points;
   std::vector<std::vector<std::uint16_t>> scanners;
+  std::vector<std::vector<Return>> returns;
 
   void
   begin (std::size_t tasks)
   {
     points.resize (tasks);
     scanners.resize (tasks);
+    returns.resize (tasks);
   }
+
+  /** The return of row \a row in task \a task, or null (rows ascend within a task). */
+  const Return*
+  find (std::size_t task, long row) const
+  {
+    const auto& column = returns[task];
+    const auto it = std::lower_bound (column.begin (), column.end (), row,
+                                      [] (const Return& r, long j) { return r.row < j; });
+    return it != column.end () && it->row == row ? &*it : nullptr;
+  }
+
+  /** Surface points where the scanned part of their surface ends become Boundary: a
+    * neighbouring ray of the grid returned a point much nearer (this point lies at the edge of
+    * a shadow) or points into the blind cone. A neighbour on the same continuous surface lies
+    * about one spacing away (range * step / cos incidence); a jump of more than 4 spacings is a
+    * discontinuity. The other side of a jump, the occluding contour, is not marked: there the
+    * surface turns away from the scanner (a pipe's silhouette) or ends at a curve of the scene,
+    * which the scene's own curves label. */
   void
-  operator() (long task, int scanner, const Ray& ray, const RayHit& hit, double cos_incidence,
-              std::uint64_t key, double step_rad)
+  end (const std::vector<ColumnTask>& tasks, long num_columns)
+  {
+    if (!coverage_boundaries)
+      return;
+    const long num_tasks = static_cast<long> (tasks.size ());
+    const auto adjacent = [&] (long k, long dk) -> long {
+      // Columns of one scanner are consecutive tasks; a full turn wraps around.
+      for (long m : {k + dk, k - dk * (num_columns - 1)})
+        if (m >= 0 && m < num_tasks && tasks[m].scanner == tasks[k].scanner &&
+            (tasks[m].column - tasks[k].column - dk) % num_columns == 0)
+          return m;
+      return -1;
+    };
+#pragma omp parallel for schedule(dynamic, 8) num_threads(resolveThreadCount (threads))
+    for (long k = 0; k < num_tasks; ++k)
+    {
+      const long left = adjacent (k, -1), right = adjacent (k, 1);
+      for (std::size_t i = 0; i < returns[k].size (); ++i)
+      {
+        if (points[k][i].point_class != static_cast<std::uint32_t> (PointClass::Surface))
+          continue;
+        const Return& r = returns[k][i];
+        bool border = r.row - 1 < lowest_row;
+        const auto check = [&] (const Return* n) {
+          border = border || (n && n->range < r.range &&
+                              (n->truth - r.truth).norm () > 4.0 * std::max (r.spacing, n->spacing));
+        };
+        check (find (static_cast<std::size_t> (k), r.row - 1));
+        check (find (static_cast<std::size_t> (k), r.row + 1));
+        check (left < 0 ? nullptr : find (static_cast<std::size_t> (left), r.row));
+        check (right < 0 ? nullptr : find (static_cast<std::size_t> (right), r.row));
+        if (border)
+          points[k][i].point_class = static_cast<std::uint32_t> (PointClass::Boundary);
+      }
+    }
+    decltype (returns) ().swap (returns);
+  }
+
+  void
+  operator() (long task, int scanner, long row, const Ray& ray, const RayHit& hit,
+              double cos_incidence, std::uint64_t key, double step_rad)
   {
     const Primitive& primitive = *geometry.primitives ()[hit.primitive];
     const Vec3 truth = ray.origin + hit.t * ray.direction;
@@ -312,6 +389,9 @@ struct ScanVisitor
     p.point_class = static_cast<std::uint32_t> (geometry.classify (truth, info.segment, distance));
     points[task].push_back (p);
     scanners[task].push_back (static_cast<std::uint16_t> (scanner));
+    if (coverage_boundaries)
+      returns[task].push_back (
+          {row, truth, hit.t, hit.t * step_rad / std::max (cos_incidence, 0.05)});
   }
 };
 }  // namespace
@@ -326,7 +406,9 @@ TlsScanSimulation::scan (const SceneGeometry& geometry, pcl::PointCloud<Simulate
   if (!checkParameters ())
     return false;
   ScanVisitor visitor{geometry, output_transform_, noise_sigma_, noise_per_metre_,
-                      edge_distance_, {}, {}};
+                      edge_distance_, coverage_boundaries_,
+                      static_cast<long> (std::ceil (min_elevation_deg_ / step_deg_ - 1e-9)),
+                      threads_, {}, {}, {}};
   traceColumns (geometry, step_deg_, visitor);
   std::size_t total = 0;
   for (const auto& column : visitor.points)

@@ -40,6 +40,9 @@ struct SceneParameters
   double noise = 0.005;           ///< range noise sigma at zero range (m), >= 0
   double noise_per_metre = 0.0;   ///< added range noise sigma per metre of range, >= 0
   double edge_distance = 0.0;     ///< class distance (m); 0 = local scan spacing
+  /** \brief Also label Boundary where the scanned part of a surface ends (shadows, the blind
+    * cone), see TlsScanSimulation::setCoverageBoundaries. */
+  bool coverage_boundaries = true;
   int num_scanners = 0;           ///< number of scan positions (scene default when 0)
   std::vector<Eigen::Vector3d> scan_positions;  ///< explicit positions (scene frame)
   double max_range = 0.0;         ///< maximum range (m)

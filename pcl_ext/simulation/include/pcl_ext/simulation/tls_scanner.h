@@ -33,6 +33,12 @@ namespace simulation
   * - Class ground truth: a point is Edge (Boundary) when its true position lies within the edge
   *   distance of a crease (border) curve of its own segment, see SceneGeometry::classify. The
   *   edge distance is the local scan spacing range * step (in radians) unless set explicitly.
+  *   A Surface point is also Boundary where the scanned part of its surface ends although the
+  *   surface goes on (setCoverageBoundaries, default on): a neighbouring ray of the grid (one
+  *   step in azimuth or elevation, i.e. one local spacing away) returned nothing, or returned a
+  *   point much farther from it than the spacing (a shadow, a silhouette, the blind cone, the
+  *   maximum range or incidence). Those are the borders of the sampled surface that a point
+  *   cloud method sees.
   * - Colour and intensity follow the surface Material (see primitives.h).
   *
   * Determinism: every ray draws its random numbers from a stream seeded by a hash of (seed,
@@ -120,6 +126,20 @@ public:
     return edge_distance_;
   }
 
+  /** \brief Mark the borders of the scanned part of each surface (shadows, silhouettes, field
+    * of view, range) as Boundary, besides the borders of the surfaces themselves (default
+    * true). */
+  void
+  setCoverageBoundaries (bool enable)
+  {
+    coverage_boundaries_ = enable;
+  }
+  bool
+  getCoverageBoundaries () const
+  {
+    return coverage_boundaries_;
+  }
+
   /** \brief Seed of the random numbers (default 1). */
   void
   setSeed (std::uint64_t seed)
@@ -187,6 +207,7 @@ private:
   double noise_per_metre_ = 0.0;
   double max_incidence_deg_ = 88.0;
   double edge_distance_ = 0.0;
+  bool coverage_boundaries_ = true;
   std::uint64_t seed_ = 1;
   Eigen::Isometry3d output_transform_ = Eigen::Isometry3d::Identity ();
   unsigned int threads_ = 0;
