@@ -116,6 +116,17 @@ TEST (CloudIo, RoundTripAndMalformedInput)
   std::ofstream (truncated) << "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
                                "COUNT 1 1 1\nWIDTH 5\nHEIGHT 1\nPOINTS 5\nDATA binary\n\x01\x02";
   EXPECT_FALSE (pcl_ext::tools::loadCloud (truncated, blob));
+  // Files without a PCD header (PCL 1.13's reader crashes on them unless they are refused).
+  const std::string empty = dir + "/empty.pcd", text = dir + "/text.pcd";
+  const std::string no_fields = dir + "/nofields.pcd";
+  std::ofstream (empty) << "";
+  std::ofstream (text) << "not a point cloud\n";
+  std::ofstream (no_fields) << "VERSION 0.7\nFIELDS\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1\n";
+  for (const auto& f : {empty, text, no_fields})
+  {
+    EXPECT_FALSE (pcl_ext::tools::loadCloud (f, blob)) << f;
+    std::remove (f.c_str ());
+  }
   const std::string no_xyz = dir + "/noxyz.pcd";
   std::ofstream (no_xyz) << "# .PCD v0.7\nVERSION 0.7\nFIELDS a\nSIZE 4\nTYPE F\nCOUNT 1\n"
                             "WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1\n";

@@ -10,6 +10,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace pcl_ext
 {
@@ -23,6 +24,31 @@ findField (const pcl::PCLPointCloud2& cloud, const std::string& name)
       return static_cast<int> (i);
   return -1;
 }
+
+namespace
+{
+/** Whether \a path starts like a PCD file: a FIELDS line naming at least one field before a
+  * DATA line. PCL 1.13's reader crashes on files without fields (fixed upstream after 1.13),
+  * so anything else is refused before it gets there. */
+bool
+hasPcdHeader (const std::string& path)
+{
+  std::ifstream in (path, std::ios::binary);
+  std::string line;
+  bool fields = false;
+  for (int i = 0; i < 64 && std::getline (in, line); ++i)
+  {
+    std::istringstream words (line);
+    std::string key, first;
+    words >> key;
+    if (key == "FIELDS")
+      fields = static_cast<bool> (words >> first);
+    else if (key == "DATA")
+      return fields;
+  }
+  return false;
+}
+}  // namespace
 
 bool
 loadCloud (const std::string& path, pcl::PCLPointCloud2& cloud)
@@ -41,7 +67,7 @@ loadCloud (const std::string& path, pcl::PCLPointCloud2& cloud)
   try
   {
     if (ext == "pcd")
-      result = pcl::io::loadPCDFile (path, cloud);
+      result = hasPcdHeader (path) ? pcl::io::loadPCDFile (path, cloud) : -1;
     else if (ext == "ply")
       result = pcl::io::loadPLYFile (path, cloud);
     else
