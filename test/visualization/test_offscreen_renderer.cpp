@@ -3,6 +3,7 @@
  * Needs an X display (scripts/test.sh starts Xvfb when none is set).
  */
 #include <pcl_ext/visualization/colour_maps.h>
+#include <pcl_ext/visualization/montage.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
 
 #include <vtkImageData.h>
@@ -85,6 +86,55 @@ TEST (OffscreenRenderer, WritesPngOfRequestedSizeShowingTheCloud)
     }
   EXPECT_GT (left, 2000u);
   EXPECT_GT (right, 2000u);
+  std::remove (path.c_str ());
+}
+
+TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground)
+{
+  ASSERT_TRUE (pcl_ext::visualization::displayAvailable ())
+      << "this test needs an X display; scripts/test.sh starts Xvfb when none is set";
+  using namespace pcl_ext::visualization;
+  const RenderOptions one = makeMontageOptions (1, 200, 150);
+  EXPECT_EQ (one.columns, 1);
+  EXPECT_EQ (one.width, 200);
+  EXPECT_EQ (one.height, 150);
+  const RenderOptions nine = makeMontageOptions (9, 200, 150, 4);
+  EXPECT_EQ (nine.columns, 4);
+  EXPECT_EQ (nine.width, 800);
+  EXPECT_EQ (nine.height, 450);
+
+  // Three tiles in rows of two: the fourth place must be background, not the window's black.
+  const auto cloud = sphereCloud (5000);
+  std::vector<std::uint32_t> labels;
+  for (const auto& p : cloud)
+    labels.push_back (p.z > 0 ? 1 : 2);
+  std::vector<View> views;
+  for (const char* title : {"a", "b", "c"})
+    views.push_back (makeLabelView (title, cloud, labels, 3.0));
+  const RenderOptions options = makeMontageOptions (views.size (), 160, 120, 2);
+  const std::string path = temporaryPng ("montage");
+  std::remove (path.c_str ());
+  ASSERT_TRUE (renderToPng (views, path, options));
+  auto reader = vtkSmartPointer<vtkPNGReader>::New ();
+  reader->SetFileName (path.c_str ());
+  reader->Update ();
+  vtkImageData* image = reader->GetOutput ();
+  int dims[3];
+  image->GetDimensions (dims);
+  ASSERT_EQ (dims[0], 320);
+  ASSERT_EQ (dims[1], 240);
+  // PNG rows start at the bottom in VTK: the empty place is x >= 160, y < 120.
+  std::size_t drawn_bottom_left = 0, not_background_bottom_right = 0;
+  for (int y = 0; y < 120; ++y)
+    for (int x = 0; x < 320; ++x)
+    {
+      const auto* px = static_cast<unsigned char*> (image->GetScalarPointer (x, y, 0));
+      const bool background = px[0] > 245 && px[1] > 245 && px[2] > 245;
+      if (!background)
+        (x < 160 ? drawn_bottom_left : not_background_bottom_right) += 1;
+    }
+  EXPECT_GT (drawn_bottom_left, 500u);
+  EXPECT_EQ (not_background_bottom_right, 0u);
   std::remove (path.c_str ());
 }
 

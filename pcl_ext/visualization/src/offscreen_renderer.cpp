@@ -109,6 +109,9 @@ renderToPng (const std::vector<View>& views, const std::string& path,
   const double bg[3] = {options.background[0] / 255.0, options.background[1] / 255.0,
                         options.background[2] / 255.0};
   const double text = (bg[0] + bg[1] + bg[2]) / 3.0 > 0.5 ? 0.0 : 1.0;
+  // The window's own renderer shows through where no panel is (the end of an incomplete last
+  // row): give it the background colour too.
+  viewer.setBackgroundColor (bg[0], bg[1], bg[2]);
 
   for (int v = 0; v < n; ++v)
   {
