@@ -1,0 +1,314 @@
+/*
+ * pcl_ext: VarianceRegionGrowing implementation.
+ */
+#pragma once
+
+// The classifier's template code is compiled here: the classification module links the
+// segmentation module (its CRF runs on super-voxels), so the reverse link is not possible.
+#include <pcl_ext/classification/impl/local_variance_classification.hpp>
+#include <pcl_ext/common/covariance.h>
+#include <pcl_ext/common/parallel.h>
+#include <pcl_ext/features/local_variance.h>
+#include <pcl_ext/segmentation/variance_region_growing.h>
+
+#include <pcl/common/point_tests.h>
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+template <typename PointT> pcl_ext::SegmentPlane
+pcl_ext::fitSegmentPlane (const pcl::PointCloud<PointT>& cloud, const pcl::Indices& indices,
+                          const Eigen::Vector3d& viewpoint)
+{
+  SegmentPlane plane;
+  Eigen::Matrix3d covariance;
+  plane.size = computeLocalCovariance (cloud, indices, covariance, plane.centroid);
+  EigenDecomposition eigen;
+  if (plane.size < kMinNeighbours || !computeEigenDecomposition (covariance, eigen) ||
+      !hasTangentPlane (eigen.values, plane.size))
+    return plane;
+  Eigen::Vector3d n = eigen.normal ();
+  if (n.dot (viewpoint - plane.centroid) < 0.0)
+    n = -n;
+  double sum = 0.0, largest = 0.0;
+  for (const auto i : indices)
+  {
+    const PointT& p = cloud[i];
+    if (!pcl::isXYZFinite (p))
+      continue;
+    // Offsets from the centroid in double: exact enough at any coordinate magnitude.
+    const double r = std::abs (n.dot (Eigen::Vector3d (p.x, p.y, p.z) - plane.centroid));
+    sum += r * r;
+    largest = std::max (largest, r);
+  }
+  plane.normal = n;
+  plane.d = -n.dot (plane.centroid);
+  plane.rms_residual = std::sqrt (sum / static_cast<double> (plane.size));
+  plane.max_residual = largest;
+  plane.valid = true;
+  return plane;
+}
+
+template <typename PointT> bool
+pcl_ext::VarianceRegionGrowing<PointT>::checkParameters () const
+{
+  const char* const name = "[pcl_ext::VarianceRegionGrowing::extract]";
+  if (!(max_distance_ >= 0.0) || !std::isfinite (max_distance_))
+  {
+    PCL_ERROR ("%s maximum distance = %g; it must be finite and >= 0 (0: no limit).\n", name,
+               max_distance_);
+    return false;
+  }
+  if (min_size_ < 1 || max_size_ < min_size_)
+  {
+    PCL_ERROR ("%s Need 1 <= minimum cluster size (%u) <= maximum cluster size (%u).\n", name,
+               static_cast<unsigned int> (min_size_), static_cast<unsigned int> (max_size_));
+    return false;
+  }
+  if (k_ != 0 && k_ < static_cast<int> (kMinNeighbours))
+  {
+    PCL_ERROR ("%s k = %d; a tangent plane needs at least %zu neighbours.\n", name, k_,
+               kMinNeighbours);
+    return false;
+  }
+  if (k_ < 0 || !(radius_ >= 0.0) || !std::isfinite (radius_))
+  {
+    PCL_ERROR ("%s k = %d, radius = %g; give k >= %zu or a finite radius > 0.\n", name, k_,
+               radius_, kMinNeighbours);
+    return false;
+  }
+  // The classifier's own parameters are checked by it, with its messages.
+  return true;
+}
+
+template <typename PointT> typename pcl_ext::VarianceRegionGrowing<PointT>::NeighbourhoodsConstPtr
+pcl_ext::VarianceRegionGrowing<PointT>::prepareNeighbourhoods () const
+{
+  const pcl::IndicesConstPtr indices = fake_indices_ ? pcl::IndicesConstPtr () : indices_;
+  if (neighbourhoods_)
+  {
+    if (neighbourhoods_->isComputedFor (input_, indices))
+      return neighbourhoods_;
+    PCL_WARN ("[pcl_ext::VarianceRegionGrowing::extract] The shared neighbourhoods were not "
+              "computed for this cloud and these indices; searching again.\n");
+  }
+  if ((k_ != 0) == (radius_ != 0.0))
+  {
+    PCL_ERROR ("[pcl_ext::VarianceRegionGrowing::extract] Set exactly one of k (setKSearch) "
+               "and the radius (setRadiusSearch), or give shared neighbourhoods.\n");
+    return NeighbourhoodsConstPtr ();
+  }
+  typename Neighbourhoods<PointT>::Ptr own (new Neighbourhoods<PointT>);
+  own->setInputCloud (input_);
+  if (indices)
+    own->setIndices (indices);
+  if (k_ != 0)
+    own->setKSearch (k_);
+  else
+    own->setRadiusSearch (radius_);
+  if (search_)
+    own->setSearchMethod (search_);
+  own->setNumberOfThreads (threads_);
+  if (!own->compute ())
+  {
+    PCL_ERROR ("[pcl_ext::VarianceRegionGrowing::extract] The neighbourhood search failed.\n");
+    return NeighbourhoodsConstPtr ();
+  }
+  return own;
+}
+
+template <typename PointT> bool
+pcl_ext::VarianceRegionGrowing<PointT>::prepareClasses (const NeighbourhoodsConstPtr& nb)
+{
+  used_classes_.clear ();
+  if (classes_)
+  {
+    if (classes_->size () != indices_->size ())
+    {
+      PCL_ERROR ("[pcl_ext::VarianceRegionGrowing::extract] %zu class labels for %zu points; "
+                 "give one per index (LocalVarianceClassification::classify).\n",
+                 static_cast<std::size_t> (classes_->size ()), indices_->size ());
+      return false;
+    }
+    used_classes_ = *classes_;
+    return true;
+  }
+  LocalVarianceClassification<PointT> classifier;
+  classifier.setInputCloud (input_);
+  if (!fake_indices_)
+    classifier.setIndices (indices_);
+  classifier.setNeighbourhoods (nb);
+  classifier.setCurvatureThreshold (curvature_threshold_);
+  classifier.setCurvatureThresholdFactor (curvature_factor_);
+  classifier.setVarianceThreshold (variance_threshold_);
+  classifier.setConfidence (confidence_);
+  classifier.setNumberOfThreads (threads_);
+  classifier.classify (used_classes_);
+  if (used_classes_.size () != indices_->size ())
+  {
+    PCL_ERROR ("[pcl_ext::VarianceRegionGrowing::extract] The classification failed.\n");
+    used_classes_.clear ();
+    return false;
+  }
+  return true;
+}
+
+template <typename PointT> void
+pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
+{
+  const char* const name = "[pcl_ext::VarianceRegionGrowing::extract]";
+  clusters.clear ();
+  clusters_.clear ();
+  planes_.clear ();
+  used_classes_.clear ();
+  if (!checkParameters ())
+    return;
+  if (!initCompute ())
+  {
+    PCL_ERROR ("%s No input cloud.\n", name);
+    return;
+  }
+  if (input_->empty () || indices_->empty ())
+  {
+    PCL_ERROR ("%s Nothing to segment: the %s empty.\n", name,
+               input_->empty () ? "input cloud is" : "indices are");
+    deinitCompute ();
+    return;
+  }
+  const NeighbourhoodsConstPtr nb = prepareNeighbourhoods ();
+  if (!nb || !prepareClasses (nb))
+  {
+    deinitCompute ();
+    return;
+  }
+
+  // The class of every point taking part; -1 for points outside the indices.
+  std::vector<std::int8_t> class_of_point (input_->size (), -1);
+  std::size_t surface = 0;
+  for (std::size_t r = 0; r < indices_->size (); ++r)
+  {
+    const std::uint32_t c = used_classes_[r].label;
+    class_of_point[(*indices_)[r]] =
+        static_cast<std::int8_t> (c < kNumPointClasses ? c : 0);
+    surface += c == static_cast<std::uint32_t> (PointClass::Surface);
+  }
+  if (surface == 0)
+  {
+    PCL_ERROR ("%s No surface point among the %zu points: nothing to grow from (are the "
+               "classification thresholds right for this cloud?).\n", name, indices_->size ());
+    deinitCompute ();
+    return;
+  }
+
+  std::vector<std::int32_t> root;
+  const float max_sqr = max_distance_ > 0.0
+                            ? static_cast<float> (max_distance_ * max_distance_)
+                            : std::numeric_limits<float>::infinity ();
+  growSurfaceSegments (nb->getOffsets (), nb->getNeighbourIndices (), nb->getSquaredDistances (),
+                       *indices_, class_of_point, max_sqr, threads_, root);
+
+  // Segments from the roots, within the size limits, largest first.
+  std::vector<std::uint32_t> size (input_->size (), 0);
+  for (const auto r : root)
+    if (r >= 0)
+      ++size[r];
+  std::vector<std::int32_t> slot (input_->size (), -1);
+  std::vector<pcl::index_t> kept;
+  for (std::size_t i = 0; i < input_->size (); ++i)
+    if (size[i] >= min_size_ && size[i] <= max_size_ && size[i] > 0)
+      kept.push_back (static_cast<pcl::index_t> (i));
+  // Roots are the smallest index of their segment, so this order breaks size ties by it.
+  std::stable_sort (kept.begin (), kept.end (),
+                    [&size] (pcl::index_t a, pcl::index_t b) { return size[a] > size[b]; });
+  clusters_.resize (kept.size ());
+  for (std::size_t c = 0; c < kept.size (); ++c)
+  {
+    slot[kept[c]] = static_cast<std::int32_t> (c);
+    clusters_[c].indices.reserve (size[kept[c]]);
+    clusters_[c].header = input_->header;
+  }
+  for (std::size_t i = 0; i < input_->size (); ++i)
+    if (root[i] >= 0 && slot[root[i]] >= 0)
+      clusters_[slot[root[i]]].indices.push_back (static_cast<pcl::index_t> (i));
+
+  if (fit_planes_)
+  {
+    planes_.resize (clusters_.size ());
+    const Eigen::Vector3d viewpoint = input_->sensor_origin_.template head<3> ().template cast<double> ();
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (clusters_.size ());
+#pragma omp parallel for num_threads(resolveThreadCount (threads_)) schedule(dynamic, 1) \
+    default(none) shared(n, viewpoint)
+    for (std::ptrdiff_t c = 0; c < n; ++c)
+      planes_[c] = fitSegmentPlane (*input_, clusters_[c].indices, viewpoint);
+  }
+  clusters = clusters_;
+  deinitCompute ();
+}
+
+template <typename PointT> void
+pcl_ext::VarianceRegionGrowing<PointT>::getSegmentLabels (LabelCloud& labels) const
+{
+  labels.clear ();
+  labels.width = labels.height = 0;
+  if (!input_ || clusters_.empty ())
+    return;
+  labels.resize (input_->size ());
+  labels.width = input_->width;
+  labels.height = input_->height;
+  labels.header = input_->header;
+  labels.is_dense = true;
+  for (auto& l : labels)
+    l.label = 0;
+  for (std::size_t c = 0; c < clusters_.size (); ++c)
+    for (const auto i : clusters_[c].indices)
+      labels[i].label = static_cast<std::uint32_t> (c + 1);
+}
+
+template <typename PointT> pcl::PointCloud<pcl::PointXYZRGB>::Ptr
+pcl_ext::VarianceRegionGrowing<PointT>::getColoredCloud () const
+{
+  pcl::PointCloud<pcl::PointXYZRGB>::Ptr coloured (new pcl::PointCloud<pcl::PointXYZRGB>);
+  if (!input_ || clusters_.empty ())
+    return coloured;
+  coloured->resize (input_->size ());
+  coloured->width = input_->width;
+  coloured->height = input_->height;
+  coloured->is_dense = input_->is_dense;
+  for (std::size_t i = 0; i < input_->size (); ++i)
+  {
+    auto& q = (*coloured)[i];
+    q.x = (*input_)[i].x;
+    q.y = (*input_)[i].y;
+    q.z = (*input_)[i].z;
+    q.r = q.g = q.b = 255;
+  }
+  // Hues a golden-ratio step apart: neighbouring segment numbers get distinct colours, and a
+  // segment keeps its colour from run to run (pcl::RegionGrowing draws random ones).
+  for (std::size_t c = 0; c < clusters_.size (); ++c)
+  {
+    const double h = std::fmod (0.11 + 0.618033988749895 * static_cast<double> (c), 1.0) * 6.0;
+    const double v = c % 2 ? 0.75 : 0.95, s = 0.85;
+    const int sector = static_cast<int> (h) % 6;
+    const double f = h - std::floor (h), lo = v * (1 - s), fall = v * (1 - s * f),
+                 rise = v * (1 - s * (1 - f));
+    const double rgb[6][3] = {{v, rise, lo}, {fall, v, lo}, {lo, v, rise},
+                              {lo, fall, v}, {rise, lo, v}, {v, lo, fall}};
+    for (const auto index : clusters_[c].indices)
+    {
+      auto& q = (*coloured)[index];
+      q.r = static_cast<std::uint8_t> (255 * rgb[sector][0]);
+      q.g = static_cast<std::uint8_t> (255 * rgb[sector][1]);
+      q.b = static_cast<std::uint8_t> (255 * rgb[sector][2]);
+    }
+  }
+  return coloured;
+}
+
+#define PCL_EXT_INSTANTIATE_VarianceRegionGrowing(T) \
+  template class pcl_ext::VarianceRegionGrowing<T>;
+#define PCL_EXT_INSTANTIATE_fitSegmentPlane(T)                                                \
+  template pcl_ext::SegmentPlane pcl_ext::fitSegmentPlane<T> (const pcl::PointCloud<T>&,      \
+                                                              const pcl::Indices&,            \
+                                                              const Eigen::Vector3d&);

@@ -1,0 +1,308 @@
+/*
+ * pcl_ext: region growing over the surface / edge / boundary classification (Belton & Lichti
+ * 2006, section 3).
+ */
+#pragma once
+
+#include <pcl_ext/common/neighbourhoods.h>
+#include <pcl_ext/point_types.h>
+
+#include <pcl/PointIndices.h>
+#include <pcl/pcl_base.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace pcl_ext
+{
+/** \brief The least-squares plane of one segment: n . x + d = 0 (Belton & Lichti eq. 13). */
+struct SegmentPlane
+{
+  /** Unit normal, turned towards the cloud's sensor origin; NaN when \c valid is false. */
+  Eigen::Vector3d normal = Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN ());
+  double d = std::numeric_limits<double>::quiet_NaN ();  ///< offset: d = -n . centroid
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();    ///< mean of the segment's points
+  double rms_residual = std::numeric_limits<double>::quiet_NaN ();  ///< RMS point-plane distance
+  double max_residual = std::numeric_limits<double>::quiet_NaN ();  ///< largest distance
+  std::size_t size = 0;  ///< points fitted
+  /** False when the segment has fewer than 3 points or they are collinear (no plane). */
+  bool valid = false;
+};
+
+/** \brief Fit a plane to \a indices of \a cloud in double precision around the points'
+  * centroid (so georeferenced coordinates lose nothing), with its residuals.
+  * \param[in] viewpoint the normal is turned to face it (n . (viewpoint - centroid) >= 0)
+  * \return the plane; \c valid is false for fewer than 3 finite points or collinear points */
+template <typename PointT>
+SegmentPlane
+fitSegmentPlane (const pcl::PointCloud<PointT>& cloud, const pcl::Indices& indices,
+                 const Eigen::Vector3d& viewpoint);
+
+/** \brief The walks and merges of Belton & Lichti's region growing (section 3) over
+  * neighbourhoods stored as compressed rows (pcl_ext::Neighbourhoods).
+  *
+  * For every row whose point is a surface point, its neighbours are visited closest first: the
+  * point itself and points of class -1 are skipped, a surface point is linked to the seed, and
+  * anything else, or a neighbour farther than \a max_sqr_distance, ends the walk. The result
+  * is the connected components of the links.
+  * \param[in] offsets, neighbours, sqr_distances the rows (see Neighbourhoods::getOffsets)
+  * \param[in] row_points the point of each row
+  * \param[in] class_of_point per point of the cloud: a PointClass value, or -1 for points that
+  *            are not segmented (skipped in the walks)
+  * \param[in] max_sqr_distance squared distance limit from the seed (infinity: none)
+  * \param[in] threads OpenMP threads for the walks (0: all cores)
+  * \param[out] root per point of the cloud: the smallest point index of its segment for
+  *             surface points of the rows, -1 for every other point
+  */
+void
+growSurfaceSegments (const std::vector<std::size_t>& offsets, const pcl::Indices& neighbours,
+                     const std::vector<float>& sqr_distances, const pcl::Indices& row_points,
+                     const std::vector<std::int8_t>& class_of_point, float max_sqr_distance,
+                     unsigned int threads, std::vector<std::int32_t>& root);
+
+/** \brief Segmentation by region growing over classified points: D. Belton and D. D. Lichti,
+  * "Classification and segmentation of terrestrial laser scanner point clouds using local
+  * variance information", ISPRS Commission V Symposium 2006, section 3 and figure 4.
+  *
+  * The points are first labelled surface, edge or boundary (section 2, by
+  * pcl_ext::LocalVarianceClassification, or labels given with setClassification()). Then every
+  * surface point in turn is a seed: its neighbours are visited nearest first and
+  * - an unlabelled surface neighbour joins the seed's segment;
+  * - a surface neighbour already in another segment merges the two segments;
+  * - a non-surface neighbour (edge, boundary or unknown) stops the walk through the list, as
+  *   does a neighbour farther from the seed than the maximum distance (setMaxDistance).
+  * Edge and boundary points so act as cut lines between surfaces, and are left unsegmented
+  * (they are for the local surface intersection of section 4 to re-integrate). Segments
+  * smaller than the minimum size (or larger than the maximum) are dropped.
+  *
+  * Where pcl_ext departs from or makes the text precise:
+  * - Figure 4's pseudo-code has its branches out of order (its "else if" can never run); this
+  *   class implements the order of the text of section 3, as settled in the notes on the
+  *   paper: join, merge (with a union-find), stop.
+  * - Because a join and a merge both put the seed and its neighbour in one segment, the
+  *   segments are the connected components of the links "seed - neighbour before the first
+  *   stop". They do not depend on the seed order, so the result is the same in every run and
+  *   for any thread count. The walks are made in parallel; the links are united
+  *   sequentially, in point order, into a union-find whose root is the smallest point index.
+  * - The neighbours are those of the shared pcl_ext::Neighbourhoods (the classifier's own,
+  *   k = 50 by default), the seed excluded. Neighbours that are not among the indices
+  *   (setIndices) are skipped: they are not segmented and were not classified.
+  * - Points with non-finite coordinates are unknown, never segmented and nobody's neighbour.
+  * - Segments are returned largest first (ties: smallest point index first), each with its
+  *   indices in increasing order. Optionally (setFitPlanes) each segment gets a least-squares
+  *   plane with its residuals (section 3: "a surface may be fitted to groups").
+  *
+  * Bad input (no cloud, an empty cloud or empty indices, no surface point, parameters out of
+  * range, classification labels of the wrong size) gives a PCL_ERROR and no segment.
+  *
+  * \code
+  * pcl_ext::VarianceRegionGrowing<pcl::PointXYZ> rg;
+  * rg.setInputCloud (cloud);
+  * rg.setKSearch (50);
+  * rg.setMinClusterSize (50);
+  * std::vector<pcl::PointIndices> segments;
+  * rg.extract (segments);
+  * \endcode
+  */
+template <typename PointT>
+class VarianceRegionGrowing : public pcl::PCLBase<PointT>
+{
+public:
+  using Ptr = pcl::shared_ptr<VarianceRegionGrowing<PointT>>;
+  using ConstPtr = pcl::shared_ptr<const VarianceRegionGrowing<PointT>>;
+  using PointCloud = pcl::PointCloud<PointT>;
+  using NeighbourhoodsConstPtr = typename Neighbourhoods<PointT>::ConstPtr;
+  using SearchPtr = typename Neighbourhoods<PointT>::SearchPtr;
+  using LabelCloud = pcl::PointCloud<pcl::Label>;
+  using LabelCloudConstPtr = typename LabelCloud::ConstPtr;
+
+  VarianceRegionGrowing () = default;
+
+  /** \brief Number of neighbours k, the point included, for the classification and the walk.
+    * Default 50 (the paper's); valid: 3 .. number of finite points. Clears the radius. */
+  void
+  setKSearch (int k) { k_ = k; radius_ = 0.0; }
+
+  int
+  getKSearch () const { return k_; }
+
+  /** \brief Neighbourhood radius instead of k, in the cloud's units. Default 0 (k is used);
+    * valid: > 0. Clears k. */
+  void
+  setRadiusSearch (double radius) { radius_ = radius; k_ = 0; }
+
+  double
+  getRadiusSearch () const { return radius_; }
+
+  /** \brief Search for the neighbourhoods. Default null: pcl_ext::search::NanoflannKdTree. */
+  void
+  setSearchMethod (const SearchPtr& search) { search_ = search; }
+
+  SearchPtr
+  getSearchMethod () const { return search_; }
+
+  /** \brief Shared neighbourhoods, computed for the same cloud and indices (then k and radius
+    * are theirs). Default: none, extract() searches itself. */
+  void
+  setNeighbourhoods (const NeighbourhoodsConstPtr& neighbourhoods)
+  {
+    neighbourhoods_ = neighbourhoods;
+  }
+
+  NeighbourhoodsConstPtr
+  getNeighbourhoods () const { return neighbourhoods_; }
+
+  /** \brief Point classes to grow on, one pcl::Label per index with a pcl_ext::PointClass
+    * value (the output of pcl_ext::LocalVarianceClassification::classify for the same cloud
+    * and indices). Default null: extract() classifies with the parameters below. */
+  void
+  setClassification (const LabelCloudConstPtr& classes) { classes_ = classes; }
+
+  /** \brief The classes the last extract() grew on (given or computed), one per index. */
+  const LabelCloud&
+  getClassification () const { return used_classes_; }
+
+  /** \brief Curvature threshold of the classification (section 2.2). Default 0: factor times
+    * the median curvature; valid: >= 0. See LocalVarianceClassification. */
+  void
+  setCurvatureThreshold (double threshold) { curvature_threshold_ = threshold; }
+
+  double
+  getCurvatureThreshold () const { return curvature_threshold_; }
+
+  /** \brief Multiple of the median curvature used when the curvature threshold is 0.
+    * Default 3; valid: > 0. */
+  void
+  setCurvatureThresholdFactor (double factor) { curvature_factor_ = factor; }
+
+  double
+  getCurvatureThresholdFactor () const { return curvature_factor_; }
+
+  /** \brief Variance-of-curvature tolerance of the classification (eq. 5). Default 1e-4 (the
+    * paper's); valid: >= 0. */
+  void
+  setVarianceThreshold (double threshold) { variance_threshold_ = threshold; }
+
+  double
+  getVarianceThreshold () const { return variance_threshold_; }
+
+  /** \brief Confidence of the chi-squared boundary test (eq. 6). Default 0.95; valid:
+    * 0 < confidence < 1. */
+  void
+  setConfidence (double confidence) { confidence_ = confidence; }
+
+  double
+  getConfidence () const { return confidence_; }
+
+  /** \brief Longest distance from a seed to a neighbour it may link to (the paper's "limit"
+    * on the distance from the seed point). Default 0: no limit beyond the neighbourhood;
+    * valid: >= 0 and finite. */
+  void
+  setMaxDistance (double distance) { max_distance_ = distance; }
+
+  double
+  getMaxDistance () const { return max_distance_; }
+
+  /** \brief Smallest segment kept (the paper's "too few points to be useful"). Default 1, as
+    * pcl::RegionGrowing; valid: >= 1. */
+  void
+  setMinClusterSize (pcl::uindex_t size) { min_size_ = size; }
+
+  pcl::uindex_t
+  getMinClusterSize () const { return min_size_; }
+
+  /** \brief Largest segment kept. Default: no limit; valid: >= the minimum. */
+  void
+  setMaxClusterSize (pcl::uindex_t size) { max_size_ = size; }
+
+  pcl::uindex_t
+  getMaxClusterSize () const { return max_size_; }
+
+  /** \brief Fit a least-squares plane to every segment kept (getSegmentPlanes). Default
+    * false. */
+  void
+  setFitPlanes (bool fit) { fit_planes_ = fit; }
+
+  bool
+  getFitPlanes () const { return fit_planes_; }
+
+  /** \brief OpenMP threads for the search, the classification, the walks and the plane fits.
+    * Default 0: all cores. Results do not depend on it. */
+  void
+  setNumberOfThreads (unsigned int nr_threads = 0) { threads_ = nr_threads; }
+
+  unsigned int
+  getNumberOfThreads () const { return threads_; }
+
+  /** \brief Segment the cloud (the indices, if set).
+    * \param[out] clusters one PointIndices per segment, largest first; empty after a
+    * PCL_ERROR */
+  void
+  extract (std::vector<pcl::PointIndices>& clusters);
+
+  /** \brief One label per point of the input cloud (its width and height kept): segment
+    * i + 1 for the points of clusters[i], 0 for points in no segment. Empty before a
+    * successful extract(). */
+  void
+  getSegmentLabels (LabelCloud& labels) const;
+
+  /** \brief The input cloud coloured by segment (unsegmented points white), as
+    * pcl::RegionGrowing::getColoredCloud; empty before a successful extract(). */
+  pcl::PointCloud<pcl::PointXYZRGB>::Ptr
+  getColoredCloud () const;
+
+  /** \brief The planes of the last extract()'s segments, one per cluster, when setFitPlanes
+    * was on; empty otherwise. */
+  const std::vector<SegmentPlane>&
+  getSegmentPlanes () const { return planes_; }
+
+protected:
+  using pcl::PCLBase<PointT>::input_;
+  using pcl::PCLBase<PointT>::indices_;
+  using pcl::PCLBase<PointT>::fake_indices_;
+  using pcl::PCLBase<PointT>::initCompute;
+  using pcl::PCLBase<PointT>::deinitCompute;
+
+  /** \brief Parameter checks; PCL_ERROR and false on the first bad one. */
+  bool
+  checkParameters () const;
+
+  /** \brief The neighbourhoods to grow on: the shared ones when computed for this cloud and
+    * these indices, else a search of our own. Null after a PCL_ERROR. */
+  NeighbourhoodsConstPtr
+  prepareNeighbourhoods () const;
+
+  /** \brief Fill used_classes_ (given or computed); false after a PCL_ERROR. */
+  bool
+  prepareClasses (const NeighbourhoodsConstPtr& nb);
+
+  int k_ = 50;
+  double radius_ = 0.0;
+  SearchPtr search_;
+  NeighbourhoodsConstPtr neighbourhoods_;
+  LabelCloudConstPtr classes_;
+  double curvature_threshold_ = 0.0;
+  double curvature_factor_ = 3.0;
+  double variance_threshold_ = 1e-4;
+  double confidence_ = 0.95;
+  double max_distance_ = 0.0;
+  pcl::uindex_t min_size_ = 1;
+  pcl::uindex_t max_size_ = std::numeric_limits<pcl::uindex_t>::max ();
+  bool fit_planes_ = false;
+  unsigned int threads_ = 0;
+
+  // Results of the last extract().
+  LabelCloud used_classes_;
+  std::vector<pcl::PointIndices> clusters_;
+  std::vector<SegmentPlane> planes_;
+};
+}  // namespace pcl_ext
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl_ext/segmentation/impl/variance_region_growing.hpp>
+#endif
