@@ -1,0 +1,142 @@
+/*
+ * pcl_ext_segment_variance: Belton & Lichti (2006) segmentation: classifies every point surface,
+ * edge or boundary by local variance (section 2) and grows segments over the surface points
+ * (section 3). Writes the input points with a `label` field: the segment (1, 2, ... by
+ * decreasing size), 0 for points in no segment (edges, boundaries, segments too small).
+ */
+#include <pcl_ext/io/cloud_fields.h>
+#include <pcl_ext/segmentation/variance_region_growing.h>
+#include <pcl_ext/tools/cloud_io.h>
+#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/tools/file_output.h>
+#ifdef PCL_EXT_HAVE_VISUALIZATION
+#include <pcl_ext/visualization/colour_maps.h>
+#include <pcl_ext/visualization/offscreen_renderer.h>
+#endif
+
+#include <pcl/common/io.h>
+#include <pcl/conversions.h>
+
+#include <iostream>
+
+int
+main (int argc, char** argv)
+{
+  std::string input_path, output_path, png_path;
+  int k = 50, min_size = 50;
+  double curvature_threshold = 0.0, curvature_factor = 3.0, variance_threshold = 1e-4;
+  double confidence = 0.95, max_distance = 0.0;
+  unsigned int threads = 0;
+  pcl_ext::tools::CommandLine cl (
+      "pcl_ext_segment_variance",
+      "Segments a cloud by region growing over the Belton & Lichti (2006) classification: "
+      "surface points link to their nearest surface neighbours, edge and boundary points stop "
+      "the growth. Writes the input points with a 'label' field (segment 1.. by decreasing "
+      "size, 0: none).");
+  cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
+  cl.addPositional ("output.pcd", output_path, "output cloud with a 'label' field");
+  cl.addOption ("k", k, "neighbours per point (the paper's k)");
+  cl.addOption ("curvature_threshold", curvature_threshold,
+                "curvature (eq. 4) threshold; 0: factor * median curvature");
+  cl.addOption ("curvature_factor", curvature_factor,
+                "multiple of the median curvature when the threshold is 0");
+  cl.addOption ("variance_threshold", variance_threshold, "variance of curvature tolerance (eq. 5)");
+  cl.addOption ("confidence", confidence, "confidence of the chi-squared boundary test (eq. 6)");
+  cl.addOption ("max_distance", max_distance,
+                "longest link from a seed to a neighbour (0: no limit beyond the k neighbours)");
+  cl.addOption ("min_size", min_size, "smallest segment kept");
+  // Section 4 (local surface intersection) adds its options here.
+  cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
+  cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
+  if (const int code = cl.parse (argc, argv); code >= 0)
+    return code;
+  if (k < 3)
+  {
+    std::cerr << "Error: -k must be at least 3.\n";
+    return 1;
+  }
+  if (min_size < 1)
+  {
+    std::cerr << "Error: -min_size must be at least 1.\n";
+    return 1;
+  }
+  if (!(max_distance >= 0.0))
+  {
+    std::cerr << "Error: -max_distance must be >= 0.\n";
+    return 1;
+  }
+  if (!pcl_ext::tools::checkWritable (output_path) ||
+      (!png_path.empty () && !pcl_ext::tools::checkWritable (png_path)))
+    return 1;
+
+  pcl::PCLPointCloud2 input;
+  pcl_ext::tools::StageTimer load ("Loading " + input_path);
+  if (!pcl_ext::tools::loadCloud (input_path, input))
+    return 1;
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  pcl::fromPCLPointCloud2 (input, *cloud);
+  load.done (cloud->size ());
+
+  pcl_ext::VarianceRegionGrowing<pcl::PointXYZ> rg;
+  rg.setInputCloud (cloud);
+  rg.setKSearch (k);
+  rg.setCurvatureThreshold (curvature_threshold);
+  rg.setCurvatureThresholdFactor (curvature_factor);
+  rg.setVarianceThreshold (variance_threshold);
+  rg.setConfidence (confidence);
+  rg.setMaxDistance (max_distance);
+  rg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
+  rg.setNumberOfThreads (threads);
+  std::vector<pcl::PointIndices> clusters;
+  pcl_ext::tools::StageTimer segment ("Classifying and segmenting");
+  rg.extract (clusters);
+  if (clusters.empty ())
+  {
+    std::cerr << "Error: segmentation failed or found no segment of at least " << min_size
+              << " points (see the message above).\n";
+    return 1;
+  }
+  segment.done (cloud->size ());
+  pcl::PointCloud<pcl::Label> labels;
+  rg.getSegmentLabels (labels);
+  std::size_t segmented = 0, classes[pcl_ext::kNumPointClasses] = {};
+  for (const auto& c : clusters)
+    segmented += c.indices.size ();
+  for (const auto& c : rg.getClassification ())
+    ++classes[std::min<std::size_t> (c.label, pcl_ext::kNumPointClasses - 1)];
+  std::cout << clusters.size () << " segments, " << segmented << " points segmented, "
+            << cloud->size () - segmented << " not (surface " << classes[1] << ", edge "
+            << classes[2] << ", boundary " << classes[3] << ", unknown " << classes[0] << ")\n";
+
+  // Section 4 (local surface intersection) runs here, on rg's segments and classes.
+
+  std::vector<std::uint32_t> ids (labels.size ());
+  for (std::size_t i = 0; i < labels.size (); ++i)
+    ids[i] = labels[i].label;
+  pcl::PCLPointCloud2 output = input;
+  pcl_ext::tools::StageTimer save ("Saving " + output_path);
+  if (!pcl_ext::io::setLabelField (output, "label", ids) ||
+      !pcl_ext::tools::saveCloud (output_path, output))
+    return 1;
+  save.done (ids.size ());
+
+  if (!png_path.empty ())
+  {
+#ifdef PCL_EXT_HAVE_VISUALIZATION
+    pcl_ext::tools::StageTimer render ("Rendering " + png_path);
+    pcl_ext::visualization::View view;
+    view.title = "Belton & Lichti: " + std::to_string (clusters.size ()) + " segments";
+    view.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
+                                *cloud, pcl_ext::visualization::colourByLabel (ids)),
+                            2.0});
+    // Layers drawn on top of the segments (section 4's intersection points) go here.
+    if (!pcl_ext::visualization::renderToPng ({view}, png_path))
+      return 1;
+    render.done (ids.size ());
+#else
+    std::cerr << "Error: built without the renderer; -png is not available.\n";
+    return 1;
+#endif
+  }
+  return 0;
+}

@@ -1,0 +1,149 @@
+/*
+ * pcl_ext_segment_variance run as a command: segments of a cube written into the `label` field
+ * next to the input's own fields, usage errors, and no output on failure.
+ */
+#include "../features/analytic_clouds.h"
+
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace
+{
+class SegmentVarianceApp : public ::testing::Test
+{
+protected:
+  void
+  SetUp () override
+  {
+    char pattern[] = "/tmp/pcl_ext_segment_variance_XXXXXX";
+    ASSERT_NE (::mkdtemp (pattern), nullptr);
+    dir_ = pattern;
+    // A closed unit cube with 1 mm noise, coloured, so the output must keep the colours.
+    const auto cube = pcl_ext::test::makeCube (1.0, 0.025, 0.001);
+    pcl::PointCloud<pcl::PointXYZRGB> cloud;
+    for (const auto& p : *cube.cloud)
+    {
+      pcl::PointXYZRGB q (p.x, p.y, p.z, 10, 20, 30);
+      cloud.push_back (q);
+    }
+    crease_distance_ = cube.crease_distance;
+    ASSERT_EQ (pcl::io::savePCDFileBinary (path ("cube.pcd"), cloud), 0);
+  }
+
+  void
+  TearDown () override
+  {
+    const std::string command = "rm -rf '" + dir_ + "'";
+    EXPECT_EQ (std::system (command.c_str ()), 0);
+  }
+
+  std::string
+  path (const std::string& name) const { return dir_ + "/" + name; }
+
+  /** Runs the tool with \a args; returns its exit code and puts stdout + stderr in output_. */
+  int
+  run (const std::string& args)
+  {
+    const std::string command = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " " + args +
+                                " > '" + path ("log.txt") + "' 2>&1";
+    const int status = std::system (command.c_str ());
+    std::ifstream in (path ("log.txt"));
+    std::stringstream s;
+    s << in.rdbuf ();
+    output_ = s.str ();
+    return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
+  }
+
+  bool
+  exists (const std::string& name) const
+  {
+    struct stat st;
+    return ::stat (path (name).c_str (), &st) == 0;
+  }
+
+  std::string dir_, output_;
+  std::vector<double> crease_distance_;
+};
+}  // namespace
+
+TEST_F (SegmentVarianceApp, CubeFacesAreLabelledSegments)
+{
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -threads 2"), 0) << output_;
+  EXPECT_NE (output_.find ("6 segments"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("[done, "), std::string::npos) << output_;
+  pcl::PointCloud<pcl::PointXYZRGBL> out;
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
+  ASSERT_EQ (out.size (), crease_distance_.size ());
+  std::set<std::uint32_t> ids;
+  for (std::size_t i = 0; i < out.size (); ++i)
+  {
+    ids.insert (out[i].label);
+    EXPECT_EQ (out[i].r, 10);  // the input's fields are kept
+    EXPECT_EQ (out[i].b, 30);
+    // Unsegmented points are the edge band (about a neighbourhood radius, 0.1 m here).
+    if (out[i].label == 0)
+      EXPECT_LT (crease_distance_[i], 0.12) << i;
+  }
+  EXPECT_EQ (ids, (std::set<std::uint32_t> {0, 1, 2, 3, 4, 5, 6}));
+
+  // A minimum size above a face leaves nothing: an error, and no output written.
+  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("none.pcd") + " -min_size 5000"), 1);
+  EXPECT_FALSE (exists ("none.pcd"));
+}
+
+TEST_F (SegmentVarianceApp, RendersThePng)
+{
+  if (!std::getenv ("DISPLAY"))
+    GTEST_SKIP () << "no X display for rendering";
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -png " + path ("out.png")), 0)
+      << output_;
+  // PNG signature, then the IHDR chunk: width and height, big-endian, at bytes 16 and 20.
+  std::ifstream png (path ("out.png"), std::ios::binary);
+  unsigned char header[24] = {};
+  ASSERT_TRUE (png.read (reinterpret_cast<char*> (header), sizeof (header)));
+  EXPECT_EQ (header[1], 'P');
+  EXPECT_EQ ((header[16] << 24) | (header[17] << 16) | (header[18] << 8) | header[19], 1280);
+  EXPECT_EQ ((header[20] << 24) | (header[21] << 16) | (header[22] << 8) | header[23], 720);
+  png.seekg (0, std::ios::end);
+  EXPECT_GT (png.tellg (), 20000);  // more than a blank image compresses to
+}
+
+TEST_F (SegmentVarianceApp, BadUsageAndInputFailWithoutOutput)
+{
+  const std::string io = path ("cube.pcd") + " " + path ("out.pcd");
+  EXPECT_EQ (run ("-h"), 0);
+  EXPECT_NE (output_.find ("-max_distance X"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("(default: 50)"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("(default: 0.0001)"), std::string::npos) << output_;
+  EXPECT_EQ (run (""), 1);
+  EXPECT_EQ (run (path ("cube.pcd")), 1);
+  EXPECT_EQ (run (io + " -k 2"), 1);
+  EXPECT_EQ (run (io + " -min_size 0"), 1);
+  EXPECT_EQ (run (io + " -max_distance -1"), 1);
+  EXPECT_EQ (run (io + " -variance_threshold -1"), 1);
+  EXPECT_EQ (run (io + " -k"), 1);
+  EXPECT_EQ (run (io + " -bogus 3"), 1);
+  EXPECT_FALSE (exists ("out.pcd"));
+  EXPECT_EQ (run (path ("missing.pcd") + " " + path ("out.pcd")), 1);
+  EXPECT_FALSE (exists ("out.pcd"));
+  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("no/such/folder/out.pcd")), 1);
+  // A cloud without a surface point (collinear points): an error, no output.
+  pcl::PointCloud<pcl::PointXYZ> line;
+  for (int i = 0; i < 100; ++i)
+    line.push_back (pcl::PointXYZ (0.01f * i, 0.f, 0.f));
+  ASSERT_EQ (pcl::io::savePCDFileBinary (path ("line.pcd"), line), 0);
+  EXPECT_EQ (run (path ("line.pcd") + " " + path ("out.pcd") + " -k 10"), 1);
+  EXPECT_NE (output_.find ("No surface point"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("out.pcd"));
+}
