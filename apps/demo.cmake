@@ -8,6 +8,7 @@ if(TARGET pcl_ext_visualization AND TARGET pcl_ext_simulation)
       src/demo/step_neighbourhoods.cpp
       src/demo/step_profiles.cpp
       src/demo/step_classification.cpp
+      src/demo/step_variance_segmentation.cpp
       src/demo/step_registration.cpp
       src/demo/step_crf.cpp
     DEPENDS

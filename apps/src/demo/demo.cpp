@@ -29,7 +29,7 @@ main (int argc, char** argv)
   cl.addOption ("seed", seed, "random seed of the scenes");
   cl.addOption ("k", context.k, "neighbours per point");
   cl.addOption ("threads", context.threads, "threads (0: all cores)");
-  cl.addOption ("step", only, "run only this step (scenes, neighbourhoods, classification, profiles, registration, crf)");
+  cl.addOption ("step", only, "run only this step (scenes, neighbourhoods, classification, variance_segmentation, profiles, registration, crf)");
   cl.addOption ("data", context.shared_data_dir,
                 "folder of real scans used by optional steps when present");
   if (const int code = cl.parse (argc, argv); code >= 0)
@@ -51,6 +51,7 @@ main (int argc, char** argv)
       steps = {{"scenes", pcl_ext::demo::runScenesStep},
                {"neighbourhoods", pcl_ext::demo::runNeighbourhoodsStep},
                {"classification", pcl_ext::demo::runClassificationStep},
+               {"variance_segmentation", pcl_ext::demo::runVarianceSegmentationStep},
                {"profiles", pcl_ext::demo::runProfilesStep},
                {"registration", pcl_ext::demo::runRegistrationStep},
                {"crf", pcl_ext::demo::runCrfStep}};

@@ -54,6 +54,9 @@ bool
 runProfilesStep (DemoContext& context);
 bool
 runClassificationStep (DemoContext& context);
+/** \brief Belton & Lichti region growing over the classification. */
+bool
+runVarianceSegmentationStep (DemoContext& context);
 bool
 runRegistrationStep (DemoContext& context);
 /** \brief Lim & Suter's multi-scale CRF: train on one street scene, classify another. */
