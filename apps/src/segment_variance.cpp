@@ -3,8 +3,11 @@
  * edge or boundary by local variance (section 2) and grows segments over the surface points
  * (section 3). Writes the input points with a `label` field: the segment (1, 2, ... by
  * decreasing size), 0 for points in no segment (edges, boundaries, segments too small).
+ * Optionally intersects the segments locally (section 4): writes the intersection points and
+ * puts edge and boundary points back into the segments they fit.
  */
 #include <pcl_ext/io/cloud_fields.h>
+#include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 #include <pcl_ext/tools/cloud_io.h>
 #include <pcl_ext/tools/command_line.h>
@@ -17,15 +20,17 @@
 #include <pcl/common/io.h>
 #include <pcl/conversions.h>
 
+#include <cmath>
 #include <iostream>
 
 int
 main (int argc, char** argv)
 {
-  std::string input_path, output_path, png_path;
+  std::string input_path, output_path, png_path, intersections_path;
   int k = 50, min_size = 50;
   double curvature_threshold = 0.0, curvature_factor = 3.0, variance_threshold = 1e-4;
-  double confidence = 0.95, max_distance = 0.0;
+  double confidence = 0.95, max_distance = 0.0, parallel_angle = 10.0;
+  bool reintegrate = false;
   unsigned int threads = 0;
   pcl_ext::tools::CommandLine cl (
       "pcl_ext_segment_variance",
@@ -45,7 +50,15 @@ main (int argc, char** argv)
   cl.addOption ("max_distance", max_distance,
                 "longest link from a seed to a neighbour (0: no limit beyond the k neighbours)");
   cl.addOption ("min_size", min_size, "smallest segment kept");
-  // Section 4 (local surface intersection) adds its options here.
+  cl.addOption ("intersections", intersections_path,
+                "also write the local intersection points of the segments (section 4) to this "
+                "PCD: x y z, segment_a, segment_b and the two surface points index_a, index_b");
+  cl.addSwitch ("reintegrate", reintegrate,
+                "put edge and boundary points into the segment whose local plane they fit "
+                "(section 4) before writing output.pcd");
+  cl.addOption ("parallel_angle", parallel_angle,
+                "with -intersections or -reintegrate: segments whose normals differ by less "
+                "(degrees) are parallel, not intersected (eq. 9)");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
   if (const int code = cl.parse (argc, argv); code >= 0)
@@ -65,8 +78,15 @@ main (int argc, char** argv)
     std::cerr << "Error: -max_distance must be >= 0.\n";
     return 1;
   }
+  if (!(parallel_angle >= 0.0 && parallel_angle <= 90.0))
+  {
+    std::cerr << "Error: -parallel_angle must lie between 0 and 90 degrees.\n";
+    return 1;
+  }
+  const bool intersect = !intersections_path.empty () || reintegrate;
   if (!pcl_ext::tools::checkWritable (output_path) ||
-      (!png_path.empty () && !pcl_ext::tools::checkWritable (png_path)))
+      (!png_path.empty () && !pcl_ext::tools::checkWritable (png_path)) ||
+      (!intersections_path.empty () && !pcl_ext::tools::checkWritable (intersections_path)))
     return 1;
 
   pcl::PCLPointCloud2 input;
@@ -77,9 +97,22 @@ main (int argc, char** argv)
   pcl::fromPCLPointCloud2 (input, *cloud);
   load.done (cloud->size ());
 
+  // One neighbourhood search for the segmentation and the intersections.
+  auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>> ();
+  nb->setInputCloud (cloud);
+  nb->setKSearch (k);
+  nb->setNumberOfThreads (threads);
+  pcl_ext::tools::StageTimer search ("Searching " + std::to_string (k) + " neighbours");
+  if (!nb->compute ())
+  {
+    std::cerr << "Error: the neighbourhood search failed (see the message above).\n";
+    return 1;
+  }
+  search.done (cloud->size ());
+
   pcl_ext::VarianceRegionGrowing<pcl::PointXYZ> rg;
   rg.setInputCloud (cloud);
-  rg.setKSearch (k);
+  rg.setNeighbourhoods (nb);
   rg.setCurvatureThreshold (curvature_threshold);
   rg.setCurvatureThresholdFactor (curvature_factor);
   rg.setVarianceThreshold (variance_threshold);
@@ -108,7 +141,41 @@ main (int argc, char** argv)
             << cloud->size () - segmented << " not (surface " << classes[1] << ", edge "
             << classes[2] << ", boundary " << classes[3] << ", unknown " << classes[0] << ")\n";
 
-  // Section 4 (local surface intersection) runs here, on rg's segments and classes.
+  pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> intersections;
+  if (intersect)
+  {
+    pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ> lsi;
+    lsi.setInputCloud (cloud);
+    lsi.setNeighbourhoods (nb);
+    lsi.setSegmentLabels (pcl::make_shared<pcl::PointCloud<pcl::Label>> (labels));
+    lsi.setPointClasses (
+        pcl::make_shared<pcl::PointCloud<pcl::Label>> (rg.getClassification ()));
+    lsi.setParallelAngleThreshold (parallel_angle * M_PI / 180.0);
+    lsi.setNumberOfThreads (threads);
+    pcl::PointCloud<pcl::Label> reintegrated;
+    pcl_ext::tools::StageTimer stage ("Intersecting segments");
+    if (!lsi.compute (intersections, reintegrated))
+    {
+      std::cerr << "Error: the local surface intersection failed (see the message above).\n";
+      return 1;
+    }
+    stage.done (intersections.size ());
+    const auto& r = lsi.getReport ();
+    std::cout << intersections.size () << " intersection points from " << r.pairs
+              << " pairs of segments' surface points (" << r.parallel << " parallel, "
+              << r.beyond_tolerance << " too far, " << r.no_plane << " without a plane); "
+              << r.examined << " edge and boundary points: " << r.reintegrated
+              << " fit one segment, " << r.ambiguous << " several, " << r.left << " none\n";
+    if (reintegrate)
+      labels = reintegrated;
+    if (!intersections_path.empty ())
+    {
+      pcl_ext::tools::StageTimer save ("Saving " + intersections_path);
+      if (!pcl_ext::tools::saveCloud (intersections_path, intersections))
+        return 1;
+      save.done (intersections.size ());
+    }
+  }
 
   std::vector<std::uint32_t> ids (labels.size ());
   for (std::size_t i = 0; i < labels.size (); ++i)
@@ -126,10 +193,18 @@ main (int argc, char** argv)
     pcl_ext::tools::StageTimer render ("Rendering " + png_path);
     pcl_ext::visualization::View view;
     view.title = "Belton & Lichti: " + std::to_string (clusters.size ()) + " segments";
+    if (!intersections.empty ())
+      view.title += ", local intersections in black";
     view.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
                                 *cloud, pcl_ext::visualization::colourByLabel (ids)),
                             2.0});
-    // Layers drawn on top of the segments (section 4's intersection points) go here.
+    // Intersection points in black, larger, on top of the segments.
+    if (!intersections.empty ())
+      view.layers.push_back (
+          {pcl_ext::visualization::makeColouredCloud (
+               intersections, std::vector<pcl_ext::visualization::Colour> (
+                                  intersections.size (), pcl_ext::visualization::Colour {0, 0, 0})),
+           4.0});
     if (!pcl_ext::visualization::renderToPng ({view}, png_path))
       return 1;
     render.done (ids.size ());

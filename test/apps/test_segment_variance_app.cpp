@@ -4,11 +4,15 @@
  */
 #include "../features/analytic_clouds.h"
 
+#include <pcl_ext/segmentation/surface_intersection_point.h>
+
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <set>
@@ -146,4 +150,80 @@ TEST_F (SegmentVarianceApp, BadUsageAndInputFailWithoutOutput)
   EXPECT_EQ (run (path ("line.pcd") + " " + path ("out.pcd") + " -k 10"), 1);
   EXPECT_NE (output_.find ("No surface point"), std::string::npos) << output_;
   EXPECT_FALSE (exists ("out.pcd"));
+}
+
+TEST_F (SegmentVarianceApp, IntersectionsLieOnTheCubeEdges)
+{
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("plain.pcd")), 0) << output_;
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -intersections " +
+                  path ("edges.pcd") + " -reintegrate"),
+             0)
+      << output_;
+  EXPECT_NE (output_.find ("intersection points from"), std::string::npos) << output_;
+  pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> edges;
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("edges.pcd"), edges), 0);
+  ASSERT_GT (edges.size (), 100u);
+  // Distance to the nearest of the unit cube's 12 edges: two coordinates at 0 or 1.
+  std::vector<double> distances;
+  for (const auto& e : edges)
+  {
+    EXPECT_NE (e.segment_a, e.segment_b);
+    EXPECT_TRUE (e.segment_a >= 1 && e.segment_a <= 6 && e.segment_b >= 1 && e.segment_b <= 6);
+    const double p[3] = {e.x, e.y, e.z};
+    double d[3], best = 1e9;
+    for (int a = 0; a < 3; ++a)
+      d[a] = std::min (std::abs (p[a]), std::abs (p[a] - 1.0));
+    for (int a = 0; a < 3; ++a)
+      best = std::min (best, std::hypot (d[a], d[(a + 1) % 3]));
+    distances.push_back (best);
+  }
+  std::nth_element (distances.begin (), distances.begin () + distances.size () / 2,
+                    distances.end ());
+  EXPECT_LT (distances[distances.size () / 2], 0.003);  // 3 noise sigmas
+
+  // Re-integration leaves fewer points without a segment, and never a wrong face: every
+  // re-integrated point keeps to a face it lies on (within the 1 mm noise and the band).
+  pcl::PointCloud<pcl::PointXYZRGBL> plain, out;
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("plain.pcd"), plain), 0);
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
+  ASSERT_EQ (plain.size (), out.size ());
+  std::size_t unsegmented_before = 0, unsegmented_after = 0, changed_segmented = 0;
+  for (std::size_t i = 0; i < out.size (); ++i)
+  {
+    unsegmented_before += plain[i].label == 0;
+    unsegmented_after += out[i].label == 0;
+    changed_segmented += plain[i].label != 0 && out[i].label != plain[i].label;
+  }
+  EXPECT_EQ (changed_segmented, 0u);
+  EXPECT_LT (unsegmented_after, unsegmented_before / 2);
+}
+
+TEST_F (SegmentVarianceApp, RendersTheIntersectionsOnThePng)
+{
+  if (!std::getenv ("DISPLAY"))
+    GTEST_SKIP () << "no X display for rendering";
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -intersections " +
+                  path ("edges.pcd") + " -png " + path ("out.png")),
+             0)
+      << output_;
+  std::ifstream png (path ("out.png"), std::ios::binary);
+  unsigned char header[24] = {};
+  ASSERT_TRUE (png.read (reinterpret_cast<char*> (header), sizeof (header)));
+  EXPECT_EQ (header[1], 'P');
+  EXPECT_EQ ((header[16] << 24) | (header[17] << 16) | (header[18] << 8) | header[19], 1280);
+  png.seekg (0, std::ios::end);
+  EXPECT_GT (png.tellg (), 20000);
+}
+
+TEST_F (SegmentVarianceApp, BadIntersectionOptionsFailWithoutOutput)
+{
+  const std::string io = path ("cube.pcd") + " " + path ("out.pcd");
+  EXPECT_EQ (run (io + " -intersections " + path ("edges.pcd") + " -parallel_angle 95"), 1);
+  EXPECT_EQ (run (io + " -intersections " + path ("edges.pcd") + " -parallel_angle -1"), 1);
+  EXPECT_EQ (run (io + " -intersections " + path ("no/such/folder/edges.pcd")), 1);
+  EXPECT_FALSE (exists ("out.pcd"));
+  EXPECT_FALSE (exists ("edges.pcd"));
+  EXPECT_EQ (run ("-h"), 0);
+  EXPECT_NE (output_.find ("-intersections"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-reintegrate"), std::string::npos) << output_;
 }
