@@ -4,8 +4,11 @@
  */
 #include "segmenter_methods.h"
 
+#include <pcl_ext/common/neighbourhoods.h>
 #include <pcl_ext/segmentation/adaptive_supervoxel_segmentation.h>
+#include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
+#include <pcl_ext/segmentation/variance_region_growing.h>
 
 namespace pcl_ext
 {
@@ -13,6 +16,64 @@ namespace compare
 {
 namespace
 {
+/** Belton & Lichti region growing over the local variance classes, with the class defaults
+  * (the paper's k = 50 neighbours, curvature threshold 3x the median curvature). */
+bool
+runVarianceRegionGrowing (const SegmenterInput& in, const SegmenterSettings& s,
+                          std::vector<pcl::PointIndices>& clusters)
+{
+  VarianceRegionGrowing<pcl::PointXYZ> rg;
+  rg.setInputCloud (in.cloud);
+  rg.setMinClusterSize (static_cast<pcl::uindex_t> (s.min_size));
+  rg.setNumberOfThreads (s.threads);
+  rg.extract (clusters);
+  return true;
+}
+
+/** The whole of Belton & Lichti: region growing (section 3), then the edge and boundary
+  * points it leaves out re-integrated into the surfaces they fit by local surface
+  * intersection (section 4), both with the class defaults on one shared k = 50 search. */
+bool
+runVarianceWithIntersection (const SegmenterInput& in, const SegmenterSettings& s,
+                             std::vector<pcl::PointIndices>& clusters)
+{
+  auto nb = pcl::make_shared<Neighbourhoods<pcl::PointXYZ>> ();
+  nb->setInputCloud (in.cloud);
+  nb->setKSearch (50);
+  nb->setNumberOfThreads (s.threads);
+  if (!nb->compute ())
+    return false;
+  VarianceRegionGrowing<pcl::PointXYZ> rg;
+  rg.setInputCloud (in.cloud);
+  rg.setNeighbourhoods (nb);
+  rg.setMinClusterSize (static_cast<pcl::uindex_t> (s.min_size));
+  rg.setNumberOfThreads (s.threads);
+  std::vector<pcl::PointIndices> segments;
+  rg.extract (segments);
+  if (segments.empty ())
+    return true;
+  auto labels = pcl::make_shared<pcl::PointCloud<pcl::Label>> ();
+  rg.getSegmentLabels (*labels);
+  auto classes = pcl::make_shared<pcl::PointCloud<pcl::Label>> (rg.getClassification ());
+  LocalSurfaceIntersection<pcl::PointXYZ> lsi;
+  lsi.setInputCloud (in.cloud);
+  lsi.setNeighbourhoods (nb);
+  lsi.setSegmentLabels (labels);
+  lsi.setPointClasses (classes);
+  lsi.setNumberOfThreads (s.threads);
+  pcl::PointCloud<SurfaceIntersectionPoint> intersections;
+  pcl::PointCloud<pcl::Label> merged;
+  lsi.compute (intersections, merged);
+  if (merged.size () != in.cloud->size ())
+    return false;
+  // Segment i + 1 of the labels is segments[i], re-integrated points added.
+  clusters.assign (segments.size (), pcl::PointIndices ());
+  for (std::size_t i = 0; i < merged.size (); ++i)
+    if (merged[i].label != 0 && merged[i].label <= clusters.size ())
+      clusters[merged[i].label - 1].indices.push_back (static_cast<pcl::index_t> (i));
+  return true;
+}
+
 /** Sithole & Mapurisa with one profile segmenter; the spacing is given (not estimated again),
   * so the proximity threshold is tolerance * s like every other method's distance. */
 SegmenterMethod::Runner
@@ -63,6 +124,14 @@ pclExtMethods ()
 {
   using profiles::ProfileMethod;
   return {
+      {"variance", "pcl_ext", false,
+       "pcl_ext::VarianceRegionGrowing (Belton & Lichti), class defaults (k = 50, the paper's); "
+       "min_size",
+       runVarianceRegionGrowing},
+      {"variance_lsi", "pcl_ext", false,
+       "variance, then pcl_ext::LocalSurfaceIntersection (Belton & Lichti section 4) "
+       "re-integrating the edge and boundary points; class defaults, one k = 50 search",
+       runVarianceWithIntersection},
       {"proximity", "pcl_ext", false,
        "pcl_ext::ProfileSegmentation (Sithole & Mapurisa), proximity chaining; 4 stacks, width "
        "1.5 s, threshold tolerance * s, min_size",
