@@ -16,6 +16,7 @@ target_link_libraries(pcl_ext_segmenter_comparison PUBLIC
 pcl_ext_add_app(compare_segmenters
   SOURCES
     src/compare_segmenters/compare_segmenters.cpp
+    src/compare_segmenters/comparison.cpp
     src/compare_segmenters/comparison_report.cpp
   DEPENDS
     pcl_ext_segmenter_comparison pcl_ext::evaluation pcl_ext::io pcl_ext::tools)

@@ -2,28 +2,20 @@
  * pcl_ext_compare_segmenters: pcl_ext's segmenters and the stock PCL ones on the same cloud,
  * scored against its ground truth: one table, optionally a CSV file, the labels and a montage.
  */
+#include "comparison.h"
 #include "comparison_report.h"
-#include "isolated_run.h"
 #include "segmenter_methods.h"
 
-#include <pcl_ext/evaluation/segmentation_metrics.h>
-#include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/segmentation/profile_stacks.h>
-#include <pcl_ext/tools/cloud_io.h>
 #include <pcl_ext/tools/command_line.h>
 #include <pcl_ext/tools/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/montage.h>
 #endif
 
-#include <pcl/common/point_tests.h>
-#include <pcl/conversions.h>
-#include <pcl/features/normal_3d_omp.h>
-#include <pcl/search/kdtree.h>
-
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <iostream>
 #include <limits>
 #include <set>
@@ -72,194 +64,6 @@ selectMethods (const std::string& list, const std::vector<SegmenterMethod>& all,
     std::cerr << "Error: -methods names no method.\n";
     return false;
   }
-  return true;
-}
-
-/** Everything the methods share, and the ground truth of the same points. */
-struct Comparison
-{
-  SegmenterInput input;
-  std::vector<std::size_t> source_index;  ///< input-file index of each finite point
-  std::size_t file_points = 0;
-  bool organised = false;
-  std::vector<std::uint32_t> truth;       ///< per finite point; empty without ground truth
-};
-
-bool
-loadInput (const std::string& path, const std::string& truth_field, pcl::PCLPointCloud2& blob,
-           Comparison& c)
-{
-  pcl_ext::tools::StageTimer timer ("Loading " + path);
-  if (!pcl_ext::tools::loadCloud (path, blob))
-    return false;
-  std::vector<std::uint32_t> truth;
-  if (!truth_field.empty ())
-  {
-    std::string error;
-    if (!pcl_ext::io::getLabelField (blob, truth_field, truth, &error))
-    {
-      std::cout << std::endl;
-      std::cerr << "Error: " << path << ": " << error << ".\n";
-      return false;
-    }
-  }
-  pcl::PointCloud<pcl::PointXYZ> all;
-  pcl::fromPCLPointCloud2 (blob, all);
-  const bool colour = pcl_ext::tools::findField (blob, "rgb") >= 0 ||
-                      pcl_ext::tools::findField (blob, "rgba") >= 0;
-  pcl::PointCloud<pcl::PointXYZRGBA> all_coloured;
-  if (colour)
-    pcl::fromPCLPointCloud2 (blob, all_coloured);
-  c.file_points = all.size ();
-  c.organised = all.isOrganized ();
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
-  pcl::PointCloud<pcl::PointXYZRGBA>::Ptr coloured (new pcl::PointCloud<pcl::PointXYZRGBA>);
-  for (std::size_t i = 0; i < all.size (); ++i)
-    if (pcl::isFinite (all[i]))
-    {
-      cloud->push_back (all[i]);
-      if (colour)
-        coloured->push_back (all_coloured[i]);
-      if (!truth.empty ())
-        c.truth.push_back (truth[i]);
-      c.source_index.push_back (i);
-    }
-  if (cloud->empty ())
-  {
-    std::cout << std::endl;
-    std::cerr << "Error: " << path << " has no point with finite coordinates.\n";
-    return false;
-  }
-  c.input.cloud = cloud;
-  if (colour)
-    c.input.coloured = coloured;
-  timer.done (cloud->size ());
-  if (cloud->size () < all.size ())
-    std::cout << "  " << all.size () - cloud->size ()
-              << " points with non-finite coordinates left out (no method can segment them)\n";
-  return true;
-}
-
-/** Normals for the methods that need them, in a child process (OpenMP stays out of this one). */
-bool
-computeNormals (Comparison& c, int k, unsigned int threads, double timeout, MethodResult& cost)
-{
-  pcl_ext::tools::StageTimer timer ("Estimating normals (pcl::NormalEstimationOMP, k = " +
-                                    std::to_string (k) + ")");
-  pcl::PointCloud<pcl::Normal> normals;
-  const auto run = runIsolated (
-      [&] {
-        pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> ne (threads);
-        ne.setInputCloud (c.input.cloud);
-        ne.setSearchMethod (pcl::search::KdTree<pcl::PointXYZ>::Ptr (
-            new pcl::search::KdTree<pcl::PointXYZ>));
-        ne.setKSearch (k);
-        ne.compute (normals);
-        return normals.size () == c.input.cloud->size ();
-      },
-      [&] {
-        std::vector<char> bytes;
-        appendBytes (std::vector<pcl::Normal> (normals.begin (), normals.end ()), bytes);
-        return bytes;
-      },
-      timeout);
-  std::vector<pcl::Normal> values;
-  std::size_t offset = 0;
-  if (!run.ok || !readBytes (run.result, offset, c.input.cloud->size (), values))
-  {
-    std::cout << std::endl;
-    std::cerr << "Error: normal estimation " << (run.ok ? "sent a short result" : run.error)
-              << ".\n";
-    return false;
-  }
-  pcl::PointCloud<pcl::Normal>::Ptr cloud (new pcl::PointCloud<pcl::Normal>);
-  cloud->assign (values.begin (), values.end (), static_cast<pcl::index_t> (values.size ()));
-  c.input.normals = cloud;
-  cost.seconds = run.seconds;
-  cost.peak_bytes = run.peak_bytes;
-  timer.done (values.size ());
-  std::cout << "  " << run.seconds << " s, peak " << run.peak_bytes / (1024 * 1024)
-            << " MB (counted in the methods that use them)\n";
-  return true;
-}
-
-MethodResult
-runMethod (const SegmenterMethod& method, const Comparison& c, const SegmenterSettings& settings,
-           const MethodResult& normals_cost, double timeout)
-{
-  MethodResult r;
-  r.name = method.name;
-  r.library = method.library;
-  r.needs_normals = method.needs_normals;
-  const std::size_t n = c.input.cloud->size ();
-  pcl_ext::tools::StageTimer timer ("Running " + method.name);
-  std::vector<pcl::PointIndices> clusters;
-  const auto run = runIsolated (
-      [&] { return method.run (c.input, settings, clusters); },
-      [&] {
-        // Overlapping clusters (super-voxels) keep their points in the first cluster that
-        // holds them; the segments counted are those left with a point.
-        std::vector<std::uint32_t> labels;
-        pcl_ext::labelsFromIndices (clusters, n, labels);
-        std::vector<char> used (clusters.size () + 1, 0);
-        for (const auto l : labels)
-          used[l] = 1;
-        const std::uint64_t segments =
-            static_cast<std::uint64_t> (std::count (used.begin () + 1, used.end (), 1));
-        std::vector<char> bytes;
-        appendBytes (std::vector<std::uint64_t> {segments}, bytes);
-        appendBytes (labels, bytes);
-        return bytes;
-      },
-      timeout);
-  std::vector<std::uint64_t> count;
-  std::size_t offset = 0;
-  if (!run.ok || !readBytes (run.result, offset, 1, count) ||
-      !readBytes (run.result, offset, n, r.labels))
-  {
-    r.error = run.ok ? "short result" : run.error;
-    std::cout << "[failed: " << r.error << "]" << std::endl;
-    return r;
-  }
-  r.ok = true;
-  r.segments = static_cast<std::size_t> (count[0]);
-  r.seconds = run.seconds;
-  r.peak_bytes = run.peak_bytes;
-  if (method.needs_normals)
-  {
-    // As if the method had estimated them itself: their time, and the larger of their
-    // estimation's peak and their storage plus the method's own peak.
-    r.seconds += normals_cost.seconds;
-    r.peak_bytes = std::max (normals_cost.peak_bytes,
-                             run.peak_bytes + n * sizeof (pcl::Normal));
-  }
-  for (const auto l : r.labels)
-    r.unsegmented += l == 0;
-  timer.done (n);
-  if (!c.truth.empty ())
-    r.evaluated = pcl_ext::evaluateSegmentation (r.labels, c.truth, r.metrics);
-  return r;
-}
-
-/** The input file with one uint32 field per method (its labels; 0 for non-finite points). */
-bool
-writeLabels (const std::string& path, pcl::PCLPointCloud2& blob, const Comparison& c,
-             const std::vector<MethodResult>& results)
-{
-  pcl_ext::tools::StageTimer timer ("Saving " + path);
-  for (const auto& r : results)
-  {
-    if (!r.ok)
-      continue;
-    std::vector<std::uint32_t> labels (c.file_points, 0);
-    for (std::size_t i = 0; i < r.labels.size (); ++i)
-      labels[c.source_index[i]] = r.labels[i];
-    if (!pcl_ext::io::setLabelField (blob, r.name, labels))
-      return false;
-  }
-  if (!pcl_ext::tools::saveCloud (path, blob))
-    return false;
-  timer.done (c.file_points);
   return true;
 }
 
@@ -430,9 +234,17 @@ main (int argc, char** argv)
       return 1;
     }
   }
-  std::cout << "Point spacing s = " << s.spacing << " m: tolerance " << s.tolerance * s.spacing
-            << " m, plane distance " << s.plane_distance * s.spacing << " m, voxel "
-            << s.voxel * s.spacing << " m, seed " << s.seed * s.spacing << " m\n";
+  {
+    const auto length = [] (double metres) {
+      char text[32];
+      std::snprintf (text, sizeof (text), "%.3g m", metres);
+      return std::string (text);
+    };
+    std::cout << "Point spacing s = " << length (s.spacing) << ": tolerance "
+              << length (s.tolerance * s.spacing) << ", plane distance "
+              << length (s.plane_distance * s.spacing) << ", voxel "
+              << length (s.voxel * s.spacing) << ", seed " << length (s.seed * s.spacing) << "\n";
+  }
 
   MethodResult normals_cost;
   bool need_normals = false;
