@@ -3,6 +3,8 @@
  * are the metrics library's numbers for the labels the tool wrote; bad usage fails without
  * output.
  */
+#include "../app_test.h"
+
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/simulation/scene_io.h>
@@ -12,15 +14,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -68,16 +67,17 @@ number (const Row& row, const std::string& column)
   return std::stod (it->second);
 }
 
-class CompareSegmentersApp : public ::testing::Test
+class CompareSegmentersApp : public pcl_ext::test::AppTest
 {
 protected:
+  CompareSegmentersApp () : AppTest (COMPARE_SEGMENTERS_EXE) {}
+
   void
   SetUp () override
   {
-    dir_ = fs::temp_directory_path () /
-           ("pcl_ext_compare_" + std::to_string (::getpid ()) + "_" +
-            ::testing::UnitTest::GetInstance ()->current_test_info ()->name ());
-    fs::create_directories (dir_);
+    AppTest::SetUp ();
+    if (HasFatalFailure ())
+      return;
     // Eight floating cubes (28 visible faces), small enough for every method in seconds.
     pcl_ext::simulation::SceneParameters parameters;
     parameters.points = 12000;
@@ -86,32 +86,6 @@ protected:
     ASSERT_TRUE (pcl_ext::simulation::generateScene ("cubes", parameters, scene));
     ASSERT_TRUE (pcl_ext::simulation::saveScene (path ("cubes.pcd"), scene));
   }
-
-  void
-  TearDown () override
-  {
-    fs::remove_all (dir_);
-  }
-
-  std::string
-  path (const std::string& name) const { return (dir_ / name).string (); }
-
-  /** Runs the tool; returns its exit code, stdout + stderr in output_. */
-  int
-  run (const std::string& arguments)
-  {
-    const std::string command = std::string (COMPARE_SEGMENTERS_EXE) + " " + arguments + " > '" +
-                                path ("log.txt") + "' 2>&1";
-    const int status = std::system (command.c_str ());
-    std::ifstream in (path ("log.txt"));
-    std::stringstream s;
-    s << in.rdbuf ();
-    output_ = s.str ();
-    return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
-  }
-
-  fs::path dir_;
-  std::string output_;
 };
 }  // namespace
 

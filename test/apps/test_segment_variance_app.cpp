@@ -2,6 +2,8 @@
  * pcl_ext_segment_variance run as a command: segments of a cube written into the `label` field
  * next to the input's own fields, usage errors, and no output on failure.
  */
+#include "../app_test.h"
+
 #include "../features/analytic_clouds.h"
 
 #include <pcl_ext/segmentation/surface_intersection_point.h>
@@ -13,26 +15,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace
 {
-class SegmentVarianceApp : public ::testing::Test
+class SegmentVarianceApp : public pcl_ext::test::AppTest
 {
 protected:
+  SegmentVarianceApp () : AppTest (PCL_EXT_SEGMENT_VARIANCE_EXE) {}
+
   void
   SetUp () override
   {
-    char pattern[] = "/tmp/pcl_ext_segment_variance_XXXXXX";
-    ASSERT_NE (::mkdtemp (pattern), nullptr);
-    dir_ = pattern;
+    AppTest::SetUp ();
+    if (HasFatalFailure ())
+      return;
     // A closed unit cube with 1 mm noise, coloured, so the output must keep the colours.
     const auto cube = pcl_ext::test::makeCube (1.0, 0.025, 0.001);
     pcl::PointCloud<pcl::PointXYZRGB> cloud;
@@ -45,38 +44,6 @@ protected:
     ASSERT_EQ (pcl::io::savePCDFileBinary (path ("cube.pcd"), cloud), 0);
   }
 
-  void
-  TearDown () override
-  {
-    const std::string command = "rm -rf '" + dir_ + "'";
-    EXPECT_EQ (std::system (command.c_str ()), 0);
-  }
-
-  std::string
-  path (const std::string& name) const { return dir_ + "/" + name; }
-
-  /** Runs the tool with \a args; returns its exit code and puts stdout + stderr in output_. */
-  int
-  run (const std::string& args)
-  {
-    const std::string command = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " " + args +
-                                " > '" + path ("log.txt") + "' 2>&1";
-    const int status = std::system (command.c_str ());
-    std::ifstream in (path ("log.txt"));
-    std::stringstream s;
-    s << in.rdbuf ();
-    output_ = s.str ();
-    return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
-  }
-
-  bool
-  exists (const std::string& name) const
-  {
-    struct stat st;
-    return ::stat (path (name).c_str (), &st) == 0;
-  }
-
-  std::string dir_, output_;
   std::vector<double> crease_distance_;
 };
 }  // namespace

@@ -1,30 +1,30 @@
 /*
  * pcl_ext_evaluate run as a command: exit codes, tables, CSV, and no output on failure.
  */
+#include "../app_test.h"
+
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace
 {
-class EvaluateApp : public ::testing::Test
+class EvaluateApp : public pcl_ext::test::AppTest
 {
 protected:
+  EvaluateApp () : AppTest (PCL_EXT_EVALUATE_EXE) {}
+
   void
   SetUp () override
   {
-    char pattern[] = "/tmp/pcl_ext_evaluate_XXXXXX";
-    ASSERT_NE (::mkdtemp (pattern), nullptr);
-    dir_ = pattern;
+    AppTest::SetUp ();
+    if (HasFatalFailure ())
+      return;
     // Ground truth as the scene generator writes it (fields segment, object, class; 'class' is
     // not a valid C++ member name, so the file is written as text): segments 1 (4 points,
     // class 1), 2 (4 points, class 2), 0 (2 points, ignored).
@@ -49,37 +49,6 @@ protected:
     ASSERT_EQ (pcl::io::savePCDFileBinary (path ("prediction.pcd"), prediction), 0);
   }
 
-  void
-  TearDown () override
-  {
-    const std::string command = "rm -rf '" + dir_ + "'";
-    EXPECT_EQ (std::system (command.c_str ()), 0);
-  }
-
-  std::string
-  path (const std::string& name) const { return dir_ + "/" + name; }
-
-  /** Runs the tool with \a args; returns its exit code and puts stdout + stderr in output_. */
-  int
-  run (const std::string& args)
-  {
-    const std::string command = std::string (PCL_EXT_EVALUATE_EXE) + " " + args + " > '" +
-                                path ("log.txt") + "' 2>&1";
-    const int status = std::system (command.c_str ());
-    std::ifstream in (path ("log.txt"));
-    std::stringstream s;
-    s << in.rdbuf ();
-    output_ = s.str ();
-    return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
-  }
-
-  bool
-  exists (const std::string& name) const
-  {
-    struct stat st;
-    return ::stat (path (name).c_str (), &st) == 0;
-  }
-
   std::string
   read (const std::string& name) const
   {
@@ -88,8 +57,6 @@ protected:
     s << in.rdbuf ();
     return s.str ();
   }
-
-  std::string dir_, output_;
 };
 }  // namespace
 

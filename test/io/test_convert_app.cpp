@@ -1,19 +1,16 @@
 /*
  * pcl_ext_convert run as a command: formats, class mapping, origin, and no output on failure.
  */
+#include "../app_test.h"
+
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace
 {
@@ -23,48 +20,18 @@ fixture (const std::string& name)
   return std::string (PCL_EXT_TEST_DATA_DIR) + "/" + name;
 }
 
-class ConvertApp : public ::testing::Test
+class ConvertApp : public pcl_ext::test::AppTest
 {
 protected:
+  ConvertApp () : AppTest (PCL_EXT_CONVERT_EXE) {}
+
   void
   SetUp () override
   {
-    char pattern[] = "/tmp/pcl_ext_convert_XXXXXX";
-    ASSERT_NE (::mkdtemp (pattern), nullptr);
-    dir_ = pattern;
+    AppTest::SetUp ();
+    if (HasFatalFailure ())
+      return;
   }
-
-  void
-  TearDown () override
-  {
-    const std::string command = "rm -rf '" + dir_ + "'";
-    EXPECT_EQ (std::system (command.c_str ()), 0);
-  }
-
-  std::string
-  path (const std::string& name) const { return dir_ + "/" + name; }
-
-  int
-  run (const std::string& args)
-  {
-    const std::string command = std::string (PCL_EXT_CONVERT_EXE) + " " + args + " > '" +
-                                path ("log.txt") + "' 2>&1";
-    const int status = std::system (command.c_str ());
-    std::ifstream in (path ("log.txt"));
-    std::stringstream s;
-    s << in.rdbuf ();
-    output_ = s.str ();
-    return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
-  }
-
-  bool
-  exists (const std::string& name) const
-  {
-    struct stat st;
-    return ::stat (path (name).c_str (), &st) == 0;
-  }
-
-  std::string dir_, output_;
 };
 }  // namespace
 
