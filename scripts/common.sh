@@ -7,6 +7,8 @@ PCL_EXT_PACKAGES=(
   libgtest-dev libbenchmark-dev
   xvfb xauth
 )
+# scripts/test.sh --fuzz only: clang with its libFuzzer / sanitizer runtimes and OpenMP.
+PCL_EXT_FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev libomp-14-dev)
 
 pcl_ext_install_packages() {
   local missing=()

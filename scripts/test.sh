@@ -1,8 +1,13 @@
 #!/usr/bin/env bash
-# Build pcl_ext and run every test.
+# Build pcl_ext and run its tests.
 #
-#   scripts/test.sh            # Release build in build/, then ctest
-#   BUILD_DIR=... scripts/test.sh
+#   scripts/test.sh                    # Release build in build/, then every test (ctest)
+#   scripts/test.sh --sanitize         # ASan + UBSan build in build-sanitize/, then every test
+#   scripts/test.sh --sanitize-quick   # same build dir, only the unit tests of io, common, tools,
+#                                      # evaluation, features, segmentation and the fuzz seeds
+#   scripts/test.sh --fuzz [SECONDS]   # clang libFuzzer build in build-fuzz/, then each fuzz
+#                                      # target for SECONDS (default 30) from its seed corpus
+#   BUILD_DIR=... BUILD_TYPE=... scripts/test.sh [option]
 #
 # Installs the Debian packages it needs when missing (apt-get, as root), starts Xvfb when no
 # display is set (and stops it), exits non-zero when anything fails.
@@ -12,14 +17,77 @@ root="$(dirname "$here")"
 # shellcheck source=common.sh
 source "$here/common.sh"
 
-build_dir="${BUILD_DIR:-$root/build}"
+mode="${1:-default}"
+case "$mode" in
+  default|--sanitize|--sanitize-quick|--fuzz) ;;
+  -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
+  *) echo "unknown option '$mode' (see scripts/test.sh --help)" >&2; exit 2 ;;
+esac
 build_type="${BUILD_TYPE:-Release}"
+jobs="$(pcl_ext_jobs)"
+
+# Unit tests of the sanitized quick run: ctest folders under test/ (small inputs, no scenes).
+quick_dirs=(io common tools evaluation features segmentation fuzz)
+
+if [ "$mode" = "--fuzz" ]; then
+  seconds="${2:-30}"
+  pcl_ext_install_packages "${PCL_EXT_FUZZ_PACKAGES[@]}"
+  build_dir="${BUILD_DIR:-$root/build-fuzz}"
+  # Optimised, with assertions (Eigen's, Boost's, ours) left on: they are findings too.
+  cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+    -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
+    -DPCL_EXT_BUILD_FUZZERS=ON -DPCL_EXT_BUILD_TESTS=OFF -DPCL_EXT_BUILD_APPS=OFF \
+    -DPCL_EXT_BUILD_BENCHMARKS=OFF -DPCL_EXT_BUILD_VISUALIZATION=OFF
+  cmake --build "$build_dir" -j "$jobs" --target pcl_ext_fuzzers
+  # shellcheck source=sanitizers.sh
+  source "$here/sanitizers.sh"
+  status=0
+  for corpus in "$root"/test/fuzz/*/; do
+    target="$(basename "$corpus")"
+    # New inputs go to a scratch corpus; the committed seeds are only read.
+    work="$build_dir/test/fuzz/corpus/$target"
+    mkdir -p "$work"
+    echo "== fuzz_$target: ${seconds} s"
+    if ! (cd "$build_dir/test/fuzz" && "./fuzz_$target" -max_total_time="$seconds" \
+            -print_final_stats=1 -artifact_prefix="$build_dir/test/fuzz/fuzz_${target}-" \
+            "$work" "$corpus"); then
+      echo "fuzz_$target FAILED: the crashing input is in $build_dir/test/fuzz/" >&2
+      status=1
+    fi
+  done
+  exit "$status"
+fi
+
+cmake_args=(-DCMAKE_BUILD_TYPE="$build_type")
+build_dir="${BUILD_DIR:-$root/build}"
+if [ "$mode" != default ]; then
+  build_dir="${BUILD_DIR:-$root/build-sanitize}"
+  cmake_args+=(-DPCL_EXT_SANITIZE=ON)
+  # The build runs the test programs to list their tests: the sanitizer options apply there too.
+  # shellcheck source=sanitizers.sh
+  source "$here/sanitizers.sh"
+fi
 
 pcl_ext_install_packages
-cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type"
-cmake --build "$build_dir" -j "$(pcl_ext_jobs)"
+cmake -S "$root" -B "$build_dir" "${cmake_args[@]}"
+if [ "$mode" = "--sanitize-quick" ]; then
+  # The Makefile of a folder builds its targets and what they need, nothing else.
+  for d in "${quick_dirs[@]}"; do
+    make -C "$build_dir/test/$d" -j "$jobs" --no-print-directory
+  done
+else
+  cmake --build "$build_dir" -j "$jobs"
+fi
 
 trap pcl_ext_stop_display EXIT
 pcl_ext_start_display
 cd "$build_dir"
-ctest --output-on-failure -j "$(pcl_ext_jobs)" --timeout 900
+if [ "$mode" = "--sanitize-quick" ]; then
+  status=0
+  for d in "${quick_dirs[@]}"; do
+    ctest --test-dir "test/$d" --output-on-failure -j "$jobs" --timeout 900 -LE data || status=1
+  done
+  exit "$status"
+fi
+ctest --output-on-failure -j "$jobs" --timeout 900

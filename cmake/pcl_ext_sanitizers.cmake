@@ -1,0 +1,33 @@
+# PCL_EXT_SANITIZE: every target of this build (libraries, apps, tests, benchmarks) with
+# AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer, plus the bounds checks
+# of libstdc++ (_GLIBCXX_ASSERTIONS, which do not change the ABI). PCL, VTK and the other system
+# libraries stay uninstrumented; the run-time options and the suppressions of their reports are
+# in scripts/sanitizers.sh and test/sanitizers/ (scripts/test.sh --sanitize sets them up).
+#
+# float-cast-overflow is added to GCC's -fsanitize=undefined set: converting a NaN or a huge
+# coordinate to an integer cell index is undefined behaviour and a classic point-cloud bug.
+#
+# PCL_EXT_BUILD_FUZZERS: the libFuzzer targets under test/fuzz (clang only); the libraries are
+# then built with -fsanitize=fuzzer-no-link so that the readers are coverage-instrumented.
+
+set(PCL_EXT_SANITIZE_FLAGS "")
+if(PCL_EXT_SANITIZE OR PCL_EXT_BUILD_FUZZERS)
+  set(PCL_EXT_SANITIZE_FLAGS -fsanitize=address,undefined,float-cast-overflow
+                             -fno-omit-frame-pointer -g1)
+  add_compile_options(${PCL_EXT_SANITIZE_FLAGS})
+  # Under AddressSanitizer Eigen stops trusting malloc's 16-byte alignment and switches to its
+  # own aligned allocator, whose blocks cannot be freed by the uninstrumented PCL libraries (nor
+  # theirs by us): PointCloud storage crosses that boundary all the time. Keep the allocator PCL
+  # was built with; ASan's malloc aligns to 16 bytes as glibc's does.
+  add_compile_definitions(_GLIBCXX_ASSERTIONS EIGEN_MALLOC_ALREADY_ALIGNED=1)
+  add_link_options(-fsanitize=address,undefined,float-cast-overflow)
+endif()
+
+if(PCL_EXT_BUILD_FUZZERS)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "PCL_EXT_BUILD_FUZZERS needs clang (libFuzzer): configure with "
+                        "-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link)
+  list(APPEND PCL_EXT_SANITIZE_FLAGS -fsanitize=fuzzer-no-link)
+endif()

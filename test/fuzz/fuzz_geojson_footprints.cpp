@@ -1,0 +1,12 @@
+/*
+ * Fuzz target: pcl_ext::io::loadGeoJsonFootprints.
+ */
+#include "fuzz_footprint_checks.h"
+
+extern "C" int
+LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
+{
+  static pcl_ext_fuzz::InputFile file;
+  pcl_ext_fuzz::checkLoad (pcl_ext::io::loadGeoJsonFootprints, file.write (data, size));
+  return 0;
+}
