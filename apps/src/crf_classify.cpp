@@ -7,6 +7,7 @@
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/tools/cloud_io.h>
 #include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/tools/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
@@ -49,6 +50,8 @@ main (int argc, char** argv)
   cl.addSwitch ("truth", truth, "the input's labels are ground truth: print the metrics");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
+  if (!pcl_ext::tools::checkWritable (output) || (!png.empty () && !pcl_ext::tools::checkWritable (png)))
+    return 1;
   pcl_ext::MultiscaleCrfModel model;
   {
     pcl_ext::tools::StageTimer timer ("Loading the model " + model_path);

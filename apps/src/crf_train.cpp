@@ -4,6 +4,7 @@
 #include "crf/crf_inputs.h"
 
 #include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/tools/file_output.h>
 
 #include <pcl/console/print.h>
 
@@ -60,6 +61,8 @@ main (int argc, char** argv)
                  "among node, crf, mcrf (see -h)\n";
     return 1;
   }
+  if (!pcl_ext::tools::checkWritable (output))
+    return 1;
   pcl_ext::io::ClassMapping mapping;
   if (!classes_file.empty ())
   {

@@ -6,6 +6,7 @@
 #include <pcl_ext/registration/plane_matching_registration.h>
 #include <pcl_ext/tools/cloud_io.h>
 #include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/tools/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/offscreen_renderer.h>
 #endif
@@ -102,6 +103,11 @@ main (int argc, char** argv)
   cl.addOption ("png_before", png_before, "top view before registration");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
+
+  if (!pcl_ext::tools::checkWritable (output) ||
+      (!png.empty () && !pcl_ext::tools::checkWritable (png)) ||
+      (!png_before.empty () && !pcl_ext::tools::checkWritable (png_before)))
+    return 1;
 
   pcl_ext::PlaneMatchingRegistration<Point, Point> reg;
   for (std::stringstream list (no_constraint); list.good ();)

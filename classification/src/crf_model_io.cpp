@@ -7,6 +7,8 @@
 
 #include <pcl/console/print.h>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -202,19 +204,27 @@ MultiscaleCrfModel::saveModel (const std::string& path) const
   }
   try
   {
-    tools::writeTextFile (path, toText ());
+    if (tools::writeTextFile (path, toText ()))
+      return true;
+    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::saveModel] Cannot write %s.\n", path.c_str ());
   }
   catch (const std::exception& e)
   {
     PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::saveModel] %s\n", e.what ());
-    return false;
   }
-  return true;
+  return false;
 }
 
 bool
 MultiscaleCrfModel::loadModel (const std::string& path)
 {
+  struct stat st;
+  if (::stat (path.c_str (), &st) != 0 || !S_ISREG (st.st_mode))
+  {
+    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::loadModel] %s is %s.\n", path.c_str (),
+               ::stat (path.c_str (), &st) != 0 ? "missing" : "not a regular file");
+    return false;
+  }
   std::ifstream in (path);
   if (!in)
   {

@@ -169,7 +169,7 @@ TEST (LocalVarianceClassification, CurvatureThresholdIsDerivedFromTheMedian)
   EXPECT_EQ (c.getCurvatureThresholdUsed (), 0.25);
 }
 
-TEST (LocalVarianceClassification, ThreadsAndSharedNeighbourhoodsDoNotChangeLabels)
+TEST (LocalVarianceClassification, DeterministicForAnyThreadCountAndSharedNeighbourhoods)
 {
   const auto cube = pcl_ext::test::makeCube (1.0, 0.03, 0.0005);
   Classifier c;

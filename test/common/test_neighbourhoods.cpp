@@ -227,7 +227,7 @@ TEST (Neighbourhoods, BadInputGivesAnErrorAndNothing)
   EXPECT_TRUE (nb.empty ());
 }
 
-TEST (Neighbourhoods, SameResultForAnyThreadCountAndSearchMethod)
+TEST (Neighbourhoods, DeterministicForAnyThreadCountAndSearchMethod)
 {
   const auto cloud = randomCloud (20000, 7, 6000.0f);
   pcl_ext::Neighbourhoods<Point> one, two, flann;

@@ -145,7 +145,7 @@ TEST (PlaneMatching, ConstraintsCutCombinationsByOrdersOfMagnitude)
                (unsigned long long) s.residual, s.seconds);
 }
 
-TEST (PlaneMatching, ResultDoesNotDependOnThreadsOrSigns)
+TEST (PlaneMatching, DeterministicForAnyThreadCountAndNormalSigns)
 {
   const auto map = hMapPlanes ();
   std::mt19937 rng (23);

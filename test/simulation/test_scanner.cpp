@@ -38,7 +38,7 @@ groundAndBox (bool box, std::array<std::uint32_t, 6>* faces = nullptr)
 }
 }  // namespace
 
-TEST (TlsScanSimulation, IdenticalForAnyThreadCount)
+TEST (TlsScanSimulation, DeterministicForAnyThreadCount)
 {
   const SceneGeometry geometry = groundAndBox (true);
   TlsScanSimulation scanner;

@@ -42,7 +42,7 @@ struct TempDir
 };
 }  // namespace
 
-TEST (SceneIo, SameSeedSameBytesForAnyThreadCount)
+TEST (SceneIo, DeterministicBytesForASeedAndAnyThreadCount)
 {
   TempDir dir;
   SceneParameters parameters;

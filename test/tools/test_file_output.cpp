@@ -139,3 +139,22 @@ TEST (CloudIo, RoundTripAndMalformedInput)
   EXPECT_TRUE (listFolder (dir).empty ());
   ::rmdir (dir.c_str ());
 }
+
+TEST (CloudIo, FolderIsRefusedWithoutHanging)
+{
+  // PCL's PCD reader never returns on a folder (its reads fail without reaching EOF).
+  const std::string dir = freshFolder ("cloud_io_folder");
+  const std::string folder = dir + "/folder.pcd", ply_folder = dir + "/folder.ply";
+  ASSERT_EQ (::mkdir (folder.c_str (), 0755), 0);
+  ASSERT_EQ (::mkdir (ply_folder.c_str (), 0755), 0);
+  testing::internal::CaptureStderr ();
+  pcl::PCLPointCloud2 blob;
+  EXPECT_FALSE (pcl_ext::tools::loadCloud (folder, blob));
+  pcl::PointCloud<pcl::PointXYZ> typed;
+  EXPECT_FALSE (pcl_ext::tools::loadCloud (ply_folder, typed));
+  const std::string message = testing::internal::GetCapturedStderr ();
+  EXPECT_NE (message.find ("folder.pcd: it is a folder"), std::string::npos) << message;
+  EXPECT_EQ (blob.width, 0u);
+  ::rmdir (folder.c_str ());
+  ::rmdir (ply_folder.c_str ());
+}

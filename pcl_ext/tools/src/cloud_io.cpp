@@ -8,6 +8,8 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 
+#include <sys/stat.h>
+
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -54,9 +56,23 @@ bool
 loadCloud (const std::string& path, pcl::PCLPointCloud2& cloud)
 {
   cloud = pcl::PCLPointCloud2 ();
+  // Only regular files: PCL's PCD reader loops forever on a folder (reads fail without EOF),
+  // and a FIFO would block.
+  struct stat st;
+  if (::stat (path.c_str (), &st) != 0)
+  {
+    std::cerr << "Error: cannot open " << path << ": no such file.\n";
+    return false;
+  }
+  if (!S_ISREG (st.st_mode))
+  {
+    std::cerr << "Error: cannot read " << path << ": "
+              << (S_ISDIR (st.st_mode) ? "it is a folder" : "not a regular file") << ".\n";
+    return false;
+  }
   if (!std::ifstream (path).good ())
   {
-    std::cerr << "Error: cannot open " << path << ": no such readable file.\n";
+    std::cerr << "Error: cannot open " << path << " for reading.\n";
     return false;
   }
   const std::string ext = fileExtension (path);
@@ -92,6 +108,12 @@ loadCloud (const std::string& path, pcl::PCLPointCloud2& cloud)
   if (findField (cloud, "x") < 0 || findField (cloud, "y") < 0 || findField (cloud, "z") < 0)
   {
     std::cerr << "Error: " << path << " has no x, y, z fields.\n";
+    cloud = pcl::PCLPointCloud2 ();
+    return false;
+  }
+  if (static_cast<std::size_t> (cloud.width) * cloud.height == 0)
+  {
+    std::cerr << "Error: " << path << " has no points.\n";
     cloud = pcl::PCLPointCloud2 ();
     return false;
   }

@@ -23,7 +23,8 @@ namespace pcl_ext
   * getFeatureNames() names the columns.
   *
   * Errors (PCL_ERROR, empty output): empty cloud, no finite point, a radius that is not
-  * positive and finite, radii not matching the indices, a non-finite indexed point.
+  * positive and finite, radii not matching the indices, an index out of range, a non-finite
+  * indexed point.
   */
 template <typename PointT>
 class SaliencyFeatureEstimation : public pcl::PCLBase<PointT>

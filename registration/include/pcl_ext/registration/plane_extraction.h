@@ -80,7 +80,10 @@ public:
   int
   getMaxIterations () const { return max_iterations_; }
 
-  /** \brief Inlier sets of the planes, largest first. \return false on bad parameters or input */
+  /** \brief Inlier sets of the planes, largest first; none when fewer than the minimum of
+    * inliers lie on any plane (e.g. too few points). Non-finite points are never inliers.
+    * \return false (PCL_ERROR, no planes) on bad parameters, no input, an index out of range or
+    *         no finite point */
   bool
   extract (std::vector<pcl::PointIndices>& planes);
 

@@ -71,6 +71,14 @@ pcl_ext::SaliencyFeatureEstimation<PointT>::compute (Eigen::MatrixXf& features)
     deinitCompute ();
     return;
   }
+  for (const auto i : *indices_)
+    if (i < 0 || static_cast<std::size_t> (i) >= input_->size ())
+    {
+      PCL_ERROR ("[pcl_ext::SaliencyFeatureEstimation::compute] Index %d is out of range (%zu "
+                 "points).\n", static_cast<int> (i), input_->size ());
+      deinitCompute ();
+      return;
+    }
   pcl::PointCloud<pcl::PointXYZ> xyz;
   std::vector<Eigen::Vector3f> colours;
   std::vector<float> intensity;

@@ -13,8 +13,8 @@ namespace pcl_ext
 namespace tools
 {
 /** \brief Load a PCD or PLY file (by extension) as a PCLPointCloud2.
-  * Prints an error naming the file and returns false when it is missing, unreadable,
-  * malformed or has no x, y, z fields. */
+  * Prints an error naming the file and returns false when it is missing, not a regular file
+  * (a folder), unreadable, malformed, has no x, y, z fields or no points. */
 bool
 loadCloud (const std::string& path, pcl::PCLPointCloud2& cloud);
 

@@ -110,15 +110,34 @@ SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
     return false;
   }
   if (!this->initCompute ())
+  {
+    PCL_ERROR ("[pcl_ext::SACPlaneExtraction::extract] No input cloud.\n");
     return false;
-  // Finite points only: RANSAC would happily sample NaN.
+  }
+  // Finite points only: RANSAC would happily sample NaN. Sorted and unique, as the removal of
+  // each plane's inliers below needs.
   pcl::IndicesPtr remaining (new pcl::Indices);
   for (const auto i : *indices_)
   {
+    if (i < 0 || static_cast<std::size_t> (i) >= input_->size ())
+    {
+      PCL_ERROR ("[pcl_ext::SACPlaneExtraction::extract] Index %d is out of range (%zu points).\n",
+                 static_cast<int> (i), input_->size ());
+      this->deinitCompute ();
+      return false;
+    }
     const PointT& p = (*input_)[i];
     if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
       remaining->push_back (i);
   }
+  if (remaining->empty ())
+  {
+    PCL_ERROR ("[pcl_ext::SACPlaneExtraction::extract] The input has no finite point.\n");
+    this->deinitCompute ();
+    return false;
+  }
+  std::sort (remaining->begin (), remaining->end ());
+  remaining->erase (std::unique (remaining->begin (), remaining->end ()), remaining->end ());
   pcl::SACSegmentation<PointT> sac;
   sac.setModelType (pcl::SACMODEL_PLANE);
   sac.setMethodType (pcl::SAC_RANSAC);
