@@ -139,3 +139,21 @@ TEST (Footprints, TextFormat)
   expectReadError ([&] { pcl_ext::io::loadTextFootprints (p, fp); }, p, 0, "no polygons");
   EXPECT_EQ (fp.size (), 2u);
 }
+
+TEST (Footprints, HugeCoordinatesAndNumberOverflowAreReadErrors)
+{
+  // Found by fuzzing: Boost.Geometry's validity check threw boost::numeric::positive_overflow
+  // on a coordinate of 1e49, and nlohmann/json an out_of_range on 1e15500123; neither was a
+  // ReadError.
+  std::vector<pcl_ext::io::Footprint> fp (1);
+  std::string p = fixture ("footprint_huge_coordinate.wkt");
+  expectReadError ([&] { pcl_ext::io::loadWktFootprints (p, fp); }, p, 1, "beyond 1e9 m");
+  p = fixture ("footprint_huge_coordinate.txt");
+  expectReadError ([&] { pcl_ext::io::loadTextFootprints (p, fp); }, p, 1, "beyond 1e9 m");
+  p = fixture ("footprint_number_overflow.geojson");
+  expectReadError ([&] { pcl_ext::io::loadGeoJsonFootprints (p, fp); }, p, 0, "JSON error");
+  EXPECT_EQ (fp.size (), 1u);
+  // Just inside the bound is fine.
+  pcl_ext::io::Footprint f;
+  EXPECT_NO_THROW (pcl_ext::io::parseWkt ("POLYGON((0 0, 999999999 0, 999999999 1, 0 0))", f));
+}

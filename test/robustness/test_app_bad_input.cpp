@@ -125,6 +125,17 @@ tools ()
                 [] (const Files& f) {
                   return quote (f.input) + " " + quote (f.output) + " -threads 2" + option (f, "k");
                 }});
+  t.push_back ({"segment_variance", PCL_EXT_SEGMENT_VARIANCE_EXE,
+                with (with (cloud_inputs, params), {Bad::KLargerThanCloud}),
+                [] (const Files& f) {
+                  return quote (f.input) + " " + quote (f.output) + " -threads 2 -min_size 5" +
+                         option (f, "k");
+                }});
+  t.push_back ({"compare_segmenters", PCL_EXT_COMPARE_SEGMENTERS_EXE, with (cloud_inputs, params),
+                [] (const Files& f) {
+                  return quote (f.input) + " -methods variance,euclidean -threads 2 -min_size 5 -csv " +
+                         quote (f.output) + option (f, "tolerance");
+                }});
   t.push_back ({"segment_profiles", PCL_EXT_SEGMENT_PROFILES_EXE, with (cloud_inputs, params),
                 [] (const Files& f) {
                   return quote (f.input) + " " + quote (f.output) + " -threads 2" +
@@ -266,7 +277,10 @@ TEST_P (Matrix, Run)
   f.dir = s.dir + "/" + tool.name + "_" + kNames.at (bad);
   fs::create_directories (f.dir);
   f.input = f.dir + "/input.pcd";
-  f.output = f.dir + "/output." + (tool.name == "evaluate" ? "csv" : tool.name == "crf_train" ? "txt" : "pcd");
+  f.output = f.dir + "/output." +
+             (tool.name == "evaluate" || tool.name == "compare_segmenters" ? "csv"
+              : tool.name == "crf_train"                                  ? "txt"
+                                                                          : "pcd");
   f.truth = s.good;
   f.model = s.model;
   f.footprint = s.footprint;

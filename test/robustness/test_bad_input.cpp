@@ -26,7 +26,9 @@
 #include <pcl_ext/registration/plane_extraction.h>
 #include <pcl_ext/registration/plane_matching_registration.h>
 #include <pcl_ext/segmentation/adaptive_supervoxel_segmentation.h>
+#include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
+#include <pcl_ext/segmentation/variance_region_growing.h>
 #include <pcl_ext/simulation/scenes.h>
 
 #include <pcl/common/io.h>
@@ -296,6 +298,39 @@ isNaN (float v)
   return std::isnan (v);
 }
 
+/** Segment labels for LocalSurfaceIntersection: the nearest face of the bounding box (bottom
+  * or one of the four sides), 0 for non-finite points; and every finite point a surface. */
+void
+faceLabels (const Cloud& cloud, pcl::PointCloud<pcl::Label>& segments,
+            pcl::PointCloud<pcl::Label>& classes)
+{
+  Eigen::Vector3f lo = Eigen::Vector3f::Constant (std::numeric_limits<float>::max ());
+  Eigen::Vector3f hi = -lo;
+  for (const auto& p : cloud)
+    if (pcl::isFinite (p))
+    {
+      lo = lo.cwiseMin (p.getVector3fMap ());
+      hi = hi.cwiseMax (p.getVector3fMap ());
+    }
+  segments.clear ();
+  classes.clear ();
+  for (const auto& p : cloud)
+  {
+    pcl::Label s, c;
+    s.label = c.label = 0;
+    if (pcl::isFinite (p))
+    {
+      const Eigen::Vector3f q = p.getVector3fMap ();
+      const float d[5] = {q.z () - lo.z (), q.x () - lo.x (), hi.x () - q.x (), q.y () - lo.y (),
+                          hi.y () - q.y ()};
+      s.label = static_cast<std::uint32_t> (std::min_element (d, d + 5) - d) + 1;
+      c.label = 1;  // PointClass::Surface
+    }
+    segments.push_back (s);
+    classes.push_back (c);
+  }
+}
+
 /** A trained CRF model for the classification subject (a small generated street). */
 const MultiscaleCrfClassification<Point>&
 trainedCrf ()
@@ -498,6 +533,60 @@ subjects ()
     std::vector<pcl::PointIndices> clusters;
     seg.extract (clusters);
     return segments (in, clusters);
+  }});
+
+  // Parameter: the confidence of the boundary test, in (0, 1). A line has no surface point
+  // to grow from: refused with a message.
+  s.push_back ({"VarianceRegionGrowing", with (kCloudInputs, {Bad::KLargerThanCloud}),
+                {{Bad::Collinear, Expect::Refused}}, [] (const Input& in) {
+    VarianceRegionGrowing<Point> rg;
+    rg.setInputCloud (in.cloud);
+    if (in.indices)
+      rg.setIndices (in.indices);
+    rg.setNumberOfThreads (2);
+    rg.setKSearch (in.k);
+    if (in.param)
+      rg.setConfidence (*in.param);
+    if (in.nan_param)
+      rg.setConfidence (std::numeric_limits<double>::quiet_NaN ());
+    std::vector<pcl::PointIndices> clusters;
+    rg.extract (clusters);
+    return segments (in, clusters);
+  }});
+
+  // Segments: the faces of the box. Normals are optional (missing is fine, the wrong size is
+  // not). Parameter: the reach factor (> 0). Labels come out for every point of the cloud.
+  s.push_back ({"LocalSurfaceIntersection", with_normals,
+                {{Bad::MissingNormals, Expect::Computed}, {Bad::Collinear, Expect::Computed}},
+                [] (const Input& in) {
+    LocalSurfaceIntersection<Point> lsi;
+    lsi.setInputCloud (in.cloud);
+    if (in.indices)
+      lsi.setIndices (in.indices);
+    lsi.setNumberOfThreads (2);
+    lsi.setKSearch (in.k);
+    auto segments_in = pcl::make_shared<pcl::PointCloud<pcl::Label>> ();
+    auto classes = pcl::make_shared<pcl::PointCloud<pcl::Label>> ();
+    faceLabels (*in.cloud, *segments_in, *classes);
+    lsi.setSegmentLabels (segments_in);
+    lsi.setPointClasses (classes);
+    if (in.normals && in.normals->size () != in.cloud->size ())
+      lsi.setInputNormals (in.normals);  // only the wrong size: the right normals are optional
+    if (in.param)
+      lsi.setReachFactor (*in.param);
+    if (in.nan_param)
+      lsi.setReachFactor (std::numeric_limits<double>::quiet_NaN ());
+    pcl::PointCloud<SurfaceIntersectionPoint> intersections;
+    pcl::PointCloud<pcl::Label> labels;
+    Outcome o;
+    o.produced = lsi.compute (intersections, labels);
+    if (o.produced)
+    {
+      o.size = labels.size ();
+      for (const auto& l : labels)
+        o.no_result.push_back (l.label == 0 ? 1 : 0);
+    }
+    return o;
   }});
 
   // Parameter: the damping of eq. 3, in (0, 1].

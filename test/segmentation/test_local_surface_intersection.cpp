@@ -272,7 +272,7 @@ TEST (LocalSurfaceIntersection, AmbiguousPointsCanBeLeft)
   EXPECT_EQ (left, leave.report.reintegrated);
 }
 
-TEST (LocalSurfaceIntersection, SameOutputForAnyThreadCountAndRun)
+TEST (LocalSurfaceIntersection, DeterministicForAnyThreadCountAndRun)
 {
   const Scene s = makeHalfPlanes (dihedral (70.0 * kDeg));
   const Result one = run (s, 1), two = run (s, 2), again = run (s, 2);

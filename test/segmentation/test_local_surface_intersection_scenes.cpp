@@ -212,7 +212,7 @@ TEST (LocalSurfaceIntersectionIndoor, EdgePointsGoBackToTheirSegment)
   EXPECT_GE (edgesRightlyReintegrated (s, *s.belton, r), 0.70);
 }
 
-TEST (LocalSurfaceIntersectionIndoor, SameOutputForOneAndTwoThreads)
+TEST (LocalSurfaceIntersectionIndoor, DeterministicForOneAndTwoThreads)
 {
   const Indoor& s = indoor ();
   const Outcome one = run (s, s.belton, 1), two = run (s, s.belton, 2);

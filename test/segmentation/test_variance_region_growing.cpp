@@ -230,7 +230,7 @@ TEST (VarianceRegionGrowing, OnePlaneIsOneSegment)
   EXPECT_GT (clusters[0].indices.size (), plane.cloud->size () * 8 / 10);
 }
 
-TEST (VarianceRegionGrowing, SameResultForAnyThreadCountAndRun)
+TEST (VarianceRegionGrowing, DeterministicForAnyThreadCountAndRun)
 {
   const auto cube = pcl_ext::test::makeCube (1.0, 0.02, 0.003);
   std::vector<pcl::PointIndices> reference;

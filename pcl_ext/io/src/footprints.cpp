@@ -62,8 +62,12 @@ Ring2d
 openRing (const std::vector<Eigen::Vector2d>& closed, const std::string& name, const Where& where)
 {
   for (const auto& p : closed)
+  {
     if (!p.allFinite ())
       where.fail (name + " has a coordinate that is not finite");
+    if (p.cwiseAbs ().maxCoeff () > kMaxFootprintCoordinate)
+      where.fail (name + " has a coordinate beyond 1e9 m: " + pointText (p));
+  }
   if (closed.size () < 2 || closed.front () != closed.back ())
   {
     if (closed.empty ())
@@ -107,9 +111,18 @@ makePolygon (const std::vector<std::vector<Eigen::Vector2d>>& rings, const std::
     b.inners ().emplace_back ();
     fill (hole, b.inners ().back ());
   }
-  bg::correct (b);
   std::string reason;
-  if (!bg::is_valid (b, reason))
+  bool valid = false;
+  try
+  {
+    bg::correct (b);
+    valid = bg::is_valid (b, reason);
+  }
+  catch (const std::exception& e)  // e.g. boost::numeric::bad_numeric_cast in its rescaling
+  {
+    reason = std::string ("the validity check failed (") + e.what () + ")";
+  }
+  if (!valid)
     where.fail (name + " is not a valid polygon: " + reason);
 
   // Outer counter-clockwise, holes clockwise (interior on the left of every edge).
@@ -372,6 +385,10 @@ loadGeoJsonFootprints (const std::string& path, std::vector<Footprint>& footprin
     // e.byte is 1-based, pointing just past the offending character.
     throw ReadError (path, lineOfByte (text, e.byte > 0 ? e.byte - 1 : 0),
                      std::string ("JSON syntax error: ") + e.what ());
+  }
+  catch (const json::exception& e)  // e.g. out_of_range: a number too large for a double
+  {
+    throw ReadError (path, 0, std::string ("JSON error: ") + e.what ());
   }
   std::vector<Footprint> result;
   try

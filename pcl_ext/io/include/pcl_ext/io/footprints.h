@@ -15,6 +15,11 @@ namespace pcl_ext
 {
 namespace io
 {
+/** \brief Largest |coordinate| of a footprint vertex, in metres: far beyond any projected
+  * coordinate system, and small enough for Boost.Geometry's validity check, which rescales
+  * coordinates to 64-bit integers. */
+constexpr double kMaxFootprintCoordinate = 1e9;
+
 /** \brief A polygon ring: vertices in order, in double precision, stored open (the first
   * vertex is not repeated at the end), without consecutive duplicates. */
 using Ring2d = std::vector<Eigen::Vector2d>;
@@ -39,15 +44,16 @@ struct Footprint
 /** \brief Parse one WKT POLYGON or MULTIPOLYGON (case-insensitive; a "Z" geometry's heights are
   * dropped) with Boost.Geometry.
   *
-  * Every ring must be closed (first vertex = last vertex, as the WKT standard requires) and have
-  * at least 3 distinct vertices; the polygon must then be valid in Boost.Geometry's sense (no
-  * self-intersection, holes inside the outer ring, no spikes). The vertex order is normalised
-  * (see FootprintPolygon).
+  * Every ring must be closed (first vertex = last vertex, as the WKT standard requires), have
+  * finite coordinates within kMaxFootprintCoordinate and at least 3 distinct vertices; the
+  * polygon must then be valid in Boost.Geometry's sense (no self-intersection, holes inside
+  * the outer ring, no spikes). The vertex order is normalised (see FootprintPolygon).
   * \param[in] wkt the text
   * \param[out] footprint its polygons (the id and line are left as they were)
   * \param[in] source name used in error messages, e.g. a file name; default "WKT"
   * \param[in] line line number used in error messages; default 0 (none)
-  * \throw ReadError on a syntax error, an unclosed or degenerate ring, or an invalid polygon
+  * \throw ReadError on a syntax error, an unclosed or degenerate ring, a coordinate out of
+  *        range, or an invalid polygon
   */
 void
 parseWkt (const std::string& wkt, Footprint& footprint, const std::string& source = "WKT",
