@@ -4,6 +4,8 @@
  * (pcl::NormalEstimationOMP + pcl::BoundaryEstimation), same cloud, same k, same threads, in
  * one run. Prints times, both ratios and the peak memory per point above the cloud.
  */
+#include "benchmark_support.h"
+
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/simulation/scenes.h>
@@ -12,11 +14,8 @@
 #include <pcl/features/boundary.h>
 #include <pcl/features/normal_3d_omp.h>
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -25,44 +24,9 @@ namespace
 {
 using Point = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Point>;
-using Clock = std::chrono::steady_clock;
-
-double
-seconds (Clock::time_point a, Clock::time_point b)
-{
-  return std::chrono::duration<double> (b - a).count ();
-}
-
-/** CPU seconds of the whole process (all threads): on a shared machine the wall times of
-  * parallel code suffer from other load more than single-threaded code, so both are printed. */
-double
-cpuSeconds ()
-{
-  rusage u {};
-  getrusage (RUSAGE_SELF, &u);
-  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-/** A field of /proc/self/status in kB (VmRSS, VmHWM), or -1. */
-long
-statusKb (const std::string& key)
-{
-  std::ifstream in ("/proc/self/status");
-  std::string line;
-  while (std::getline (in, line))
-    if (line.compare (0, key.size () + 1, key + ":") == 0)
-      return std::stol (line.substr (key.size () + 1));
-  return -1;
-}
-
-/** Reset the peak resident size so VmHWM measures what follows (Linux >= 4.0). */
-bool
-resetPeak ()
-{
-  std::ofstream out ("/proc/self/clear_refs");
-  out << "5";
-  return static_cast<bool> (out);
-}
+using pcl_ext::benchmark::Clock;
+using pcl_ext::benchmark::cpuSeconds;
+using pcl_ext::benchmark::seconds;
 }  // namespace
 
 int
@@ -90,17 +54,10 @@ main (int argc, char** argv)
   }
   threads = pcl_ext::resolveThreadCount (threads);
 
-  Cloud::Ptr cloud (new Cloud);
-  {
-    pcl_ext::simulation::SceneParameters parameters;
-    parameters.points = static_cast<std::size_t> (points);
-    parameters.seed = seed;
-    pcl_ext::simulation::SyntheticScene scene;
-    if (!pcl_ext::simulation::generateScene (scene_name, parameters, scene))
-      return 1;
-    for (const auto& p : scene.cloud)
-      cloud->push_back (Point (p.x, p.y, p.z));
-  }
+  const Cloud::Ptr cloud =
+      pcl_ext::benchmark::generateXyzCloud (scene_name, static_cast<std::size_t> (points), seed);
+  if (cloud->empty ())
+    return 1;
   std::cout << "cloud: " << cloud->size () << " points (" << scene_name << ", seed " << seed
             << "), k = " << k << ", threads = " << threads << "\n";
 
@@ -122,9 +79,9 @@ main (int argc, char** argv)
 
   // 2. The whole classification: its own search, covariances, all three tests, labels.
   double t_ours = 1e30, cpu_ours = 1e30;
-  long peak_kb = -1;
-  const long base_kb = statusKb ("VmRSS");
-  const bool peak_ok = resetPeak ();
+  std::size_t peak_bytes = 0;
+  const std::size_t base_bytes = pcl_ext::benchmark::statusBytes ("VmRSS");
+  const bool peak_ok = pcl_ext::benchmark::resetPeak ();
   std::size_t edges = 0;
   for (int r = 0; r < repeats; ++r)
   {
@@ -145,7 +102,7 @@ main (int argc, char** argv)
     });
   }
   if (peak_ok)
-    peak_kb = statusKb ("VmHWM");
+    peak_bytes = pcl_ext::benchmark::statusBytes ("VmHWM");
 
   // 3. Stock PCL: normals (OpenMP) then boundaries (single-threaded in PCL), each with its
   //    own FLANN tree, as a user would chain them.
@@ -188,8 +145,8 @@ main (int argc, char** argv)
             << "  (goal >= 5)\n"
             << "CPU seconds (all threads): search " << cpu_search << ", classification "
             << cpu_ours << ", stock PCL " << cpu_stock << "\n";
-  if (peak_kb > 0 && base_kb > 0)
+  if (peak_bytes > base_bytes && base_bytes > 0)
     std::cout << "peak memory above the cloud        : " << std::setprecision (0)
-              << 1024.0 * (peak_kb - base_kb) / cloud->size () << " bytes per point\n";
+              << static_cast<double> (peak_bytes - base_bytes) / cloud->size () << " bytes per point\n";
   return 0;
 }

@@ -4,6 +4,8 @@
  * (pcl::NormalEstimationOMP + pcl::RegionGrowing), same cloud, same threads, in one run.
  * Prints both times, the ratio and where our time goes.
  */
+#include "benchmark_support.h"
+
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
@@ -15,7 +17,6 @@
 #include <pcl/segmentation/region_growing.h>
 
 #include <algorithm>
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -24,13 +25,8 @@ namespace
 {
 using Point = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Point>;
-using Clock = std::chrono::steady_clock;
-
-double
-seconds (Clock::time_point a, Clock::time_point b)
-{
-  return std::chrono::duration<double> (b - a).count ();
-}
+using pcl_ext::benchmark::Clock;
+using pcl_ext::benchmark::seconds;
 }  // namespace
 
 int
@@ -59,17 +55,10 @@ main (int argc, char** argv)
   }
   threads = pcl_ext::resolveThreadCount (threads);
 
-  Cloud::Ptr cloud (new Cloud);
-  {
-    pcl_ext::simulation::SceneParameters parameters;
-    parameters.points = static_cast<std::size_t> (points);
-    parameters.seed = seed;
-    pcl_ext::simulation::SyntheticScene scene;
-    if (!pcl_ext::simulation::generateScene (scene_name, parameters, scene))
-      return 1;
-    for (const auto& p : scene.cloud)
-      cloud->push_back (Point (p.x, p.y, p.z));
-  }
+  const Cloud::Ptr cloud =
+      pcl_ext::benchmark::generateXyzCloud (scene_name, static_cast<std::size_t> (points), seed);
+  if (cloud->empty ())
+    return 1;
   std::cout << "cloud: " << cloud->size () << " points (" << scene_name << ", seed " << seed
             << "), k = " << k << ", pcl::RegionGrowing k = " << rg_k << ", threads = "
             << threads << "\n";
