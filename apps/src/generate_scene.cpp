@@ -2,6 +2,8 @@
  * pcl_ext_generate_scene: simulate a terrestrial laser scan of a synthetic scene and save it
  * with its ground truth (segment, object, class, label).
  */
+#include <pcl_ext/io/footprints.h>
+#include <pcl_ext/io/read_error.h>
 #include <pcl_ext/simulation/scene_io.h>
 #include <pcl_ext/simulation/scenes.h>
 #include <pcl_ext/tools/command_line.h>
@@ -58,38 +60,36 @@ parseVectors (const std::string& option, const std::string& text, std::vector<Ve
   return true;
 }
 
-// A footprint from WKT text or a file holding WKT: the first ring of POLYGON((x y, ...)).
+// A footprint from WKT text, or from a file in any format io::loadFootprints reads: one polygon
+// without holes (the simulator walls its outer ring).
 bool
 parseFootprint (const std::string& value, std::vector<Vector2d>& footprint)
 {
-  std::string text = value;
-  if (text.find ("POLYGON") == std::string::npos)
+  std::vector<io::Footprint> read;
+  try
   {
-    std::ifstream file (value);
-    if (!file)
+    std::string upper = value;
+    std::transform (upper.begin (), upper.end (), upper.begin (),
+                    [] (unsigned char c) { return static_cast<char> (std::toupper (c)); });
+    if (upper.find ("POLYGON") != std::string::npos)
     {
-      std::cerr << "Error: -footprint: cannot read '" << value << "' (a WKT POLYGON or a file).\n";
-      return false;
+      read.emplace_back ();
+      io::parseWkt (value, read.back (), "-footprint");  // errors name the option
     }
-    std::stringstream buffer;
-    buffer << file.rdbuf ();
-    text = buffer.str ();
+    else
+      io::loadFootprints (value, read);
   }
-  const std::size_t open = text.find ("((");
-  const std::size_t close = text.find (')', open == std::string::npos ? 0 : open);
-  std::vector<double> v;
-  if (open == std::string::npos || close == std::string::npos ||
-      !parseNumbers (text.substr (open + 2, close - open - 2), v) || v.size () < 6 ||
-      v.size () % 2 != 0)
+  catch (const io::ReadError& e)
   {
-    std::cerr << "Error: -footprint: expected POLYGON((x y, x y, ...)) in '" << value << "'.\n";
+    std::cerr << "Error: " << e.what () << "\n";
     return false;
   }
-  footprint.clear ();
-  for (std::size_t i = 0; i < v.size (); i += 2)
-    footprint.emplace_back (v[i], v[i + 1]);
-  if (footprint.size () > 3 && footprint.front () == footprint.back ())
-    footprint.pop_back ();
+  if (read.size () != 1 || read[0].polygons.size () != 1 || !read[0].polygons[0].holes.empty ())
+  {
+    std::cerr << "Error: -footprint: expected one polygon without holes in '" << value << "'.\n";
+    return false;
+  }
+  footprint.assign (read[0].polygons[0].outer.begin (), read[0].polygons[0].outer.end ());
   return true;
 }
 }  // namespace
@@ -129,7 +129,7 @@ main (int argc, char** argv)
                 "class boundary only along the scene's borders, not along shadows and the blind cone");
   cl.addOption ("offset", offset, "'x,y,z' added to all coordinates (georeferenced-like); building: to the map");
   cl.addOption ("threads", threads, "threads; 0 = all cores (output is identical for any count)");
-  cl.addOption ("footprint", footprint, "building: footprint as WKT POLYGON((x y, ...)) or a file holding it");
+  cl.addOption ("footprint", footprint, "building: footprint, WKT POLYGON((x y, ..., x y)) or a footprint file (.wkt, .geojson, .txt)");
   cl.addOption ("height", height, "building: wall height in metres");
   cl.addOption ("superfluous", superfluous, "building: number of superfluous planes (neighbours, interior walls)");
   cl.addOption ("missing", missing, "building: number of walls hidden behind vegetation");

@@ -5,6 +5,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -38,6 +40,34 @@ TEST (GenerateSceneApp, WritesTheSceneAndSideFiles)
   EXPECT_TRUE (fs::exists (dir / "b.transform.txt"));
   EXPECT_EQ (run ("cubes " + (dir / "c.pcd").string () + " -seed 3 -step 0.5 -offset 100,200,0"), 0);
   EXPECT_TRUE (fs::exists (dir / "c.pcd"));
+  fs::remove_all (dir);
+}
+
+TEST (GenerateSceneApp, FootprintFromWktOrAFootprintFile)
+{
+  const fs::path dir = tempDir ();
+  const auto footprintOf = [&] (const std::string& stem) {
+    std::ifstream in (dir / (stem + ".footprint.wkt"));
+    std::stringstream text;
+    text << in.rdbuf ();
+    return text.str ();
+  };
+  // A 30 x 20 m box, inline as WKT and as a file in the text format: the same walls.
+  EXPECT_EQ (run ("building " + (dir / "a.pcd").string () +
+                  " -points 20000 -footprint 'POLYGON((0 0, 30 0, 30 20, 0 20, 0 0))'"), 0);
+  std::ofstream (dir / "box.txt") << "box 5 0 0 30 0 30 20 0 20 0 0\n";
+  EXPECT_EQ (run ("building " + (dir / "b.pcd").string () + " -points 20000 -footprint " +
+                  (dir / "box.txt").string ()), 0);
+  EXPECT_NE (footprintOf ("a").find ("30"), std::string::npos);
+  EXPECT_EQ (footprintOf ("a"), footprintOf ("b"));
+  // Refused, as the footprint readers refuse them: an unclosed ring, two parts, a hole.
+  const std::string out = (dir / "x.pcd").string ();
+  EXPECT_NE (run ("building " + out + " -footprint 'POLYGON((0 0, 30 0, 30 20, 0 20))'"), 0);
+  EXPECT_NE (run ("building " + out + " -footprint 'MULTIPOLYGON(((0 0, 9 0, 9 9, 0 0)), "
+                  "((20 0, 29 0, 29 9, 20 0)))'"), 0);
+  EXPECT_NE (run ("building " + out + " -footprint 'POLYGON((0 0, 30 0, 30 20, 0 20, 0 0), "
+                  "(5 5, 6 5, 6 6, 5 5))'"), 0);
+  EXPECT_FALSE (fs::exists (out));
   fs::remove_all (dir);
 }
 
