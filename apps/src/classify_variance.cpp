@@ -63,17 +63,13 @@ main (int argc, char** argv)
                                  "green boundary); needs an X display");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (!pcl_ext::tools::checkWritable (output_path) ||
-      (!png_path.empty () && !pcl_ext::tools::checkWritable (png_path)))
+  if (!pcl_ext::tools::checkOutputsWritable (output_path, {png_path}))
     return 1;
 
   pcl::PCLPointCloud2 input;
-  pcl_ext::tools::StageTimer load ("Loading " + input_path);
-  if (!pcl_ext::tools::loadCloud (input_path, input))
-    return 1;
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  pcl::fromPCLPointCloud2 (input, *cloud);
-  load.done (cloud->size ());
+  if (!pcl_ext::tools::loadInput (input_path, input, *cloud))
+    return 1;
 
   pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
   classifier.setInputCloud (cloud);

@@ -50,7 +50,7 @@ main (int argc, char** argv)
   cl.addSwitch ("truth", truth, "the input's labels are ground truth: print the metrics");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (!pcl_ext::tools::checkWritable (output) || (!png.empty () && !pcl_ext::tools::checkWritable (png)))
+  if (!pcl_ext::tools::checkOutputsWritable (output, {png}))
     return 1;
   pcl_ext::MultiscaleCrfModel model;
   {

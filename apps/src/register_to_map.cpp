@@ -104,9 +104,7 @@ main (int argc, char** argv)
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
 
-  if (!pcl_ext::tools::checkWritable (output) ||
-      (!png.empty () && !pcl_ext::tools::checkWritable (png)) ||
-      (!png_before.empty () && !pcl_ext::tools::checkWritable (png_before)))
+  if (!pcl_ext::tools::checkOutputsWritable (output, {png, png_before}))
     return 1;
 
   pcl_ext::PlaneMatchingRegistration<Point, Point> reg;

@@ -158,18 +158,13 @@ main (int argc, char** argv)
     std::cerr << "Error: -min_size must be at least 1.\n";
     return 1;
   }
-  if (!pcl_ext::tools::checkWritable (output_path) ||
-      (!png_path.empty () && !pcl_ext::tools::checkWritable (png_path)) ||
-      (!png_profiles_path.empty () && !pcl_ext::tools::checkWritable (png_profiles_path)))
+  if (!pcl_ext::tools::checkOutputsWritable (output_path, {png_path, png_profiles_path}))
     return 1;
 
   pcl::PCLPointCloud2 input;
-  pcl_ext::tools::StageTimer load ("Loading " + input_path);
-  if (!pcl_ext::tools::loadCloud (input_path, input))
-    return 1;
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  pcl::fromPCLPointCloud2 (input, *cloud);
-  load.done (cloud->size ());
+  if (!pcl_ext::tools::loadInput (input_path, input, *cloud))
+    return 1;
 
   Segmentation seg;
   seg.setInputCloud (cloud);

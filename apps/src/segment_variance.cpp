@@ -84,18 +84,13 @@ main (int argc, char** argv)
     return 1;
   }
   const bool intersect = !intersections_path.empty () || reintegrate;
-  if (!pcl_ext::tools::checkWritable (output_path) ||
-      (!png_path.empty () && !pcl_ext::tools::checkWritable (png_path)) ||
-      (!intersections_path.empty () && !pcl_ext::tools::checkWritable (intersections_path)))
+  if (!pcl_ext::tools::checkOutputsWritable (output_path, {png_path, intersections_path}))
     return 1;
 
   pcl::PCLPointCloud2 input;
-  pcl_ext::tools::StageTimer load ("Loading " + input_path);
-  if (!pcl_ext::tools::loadCloud (input_path, input))
-    return 1;
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  pcl::fromPCLPointCloud2 (input, *cloud);
-  load.done (cloud->size ());
+  if (!pcl_ext::tools::loadInput (input_path, input, *cloud))
+    return 1;
 
   // One neighbourhood search for the segmentation and the intersections.
   auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>> ();

@@ -2,8 +2,10 @@
  * pcl_ext: loading and saving clouds in apps.
  */
 #include <pcl_ext/tools/cloud_io.h>
+#include <pcl_ext/tools/command_line.h>
 #include <pcl_ext/tools/file_output.h>
 
+#include <pcl/conversions.h>
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
@@ -140,5 +142,17 @@ saveCloud (const std::string& path, const pcl::PCLPointCloud2& cloud, bool ascii
     return writer.writeBinaryCompressed (temporary, cloud) == 0;
   });
 }
+bool
+loadInput (const std::string& path, pcl::PCLPointCloud2& input,
+           pcl::PointCloud<pcl::PointXYZ>& xyz)
+{
+  StageTimer timer ("Loading " + path);
+  if (!loadCloud (path, input))
+    return false;
+  pcl::fromPCLPointCloud2 (input, xyz);
+  timer.done (xyz.size ());
+  return true;
+}
+
 }  // namespace tools
 }  // namespace pcl_ext

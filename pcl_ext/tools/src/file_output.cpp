@@ -88,6 +88,17 @@ checkWritable (const std::string& path)
 }
 
 bool
+checkOutputsWritable (const std::string& output, std::initializer_list<std::string> optional)
+{
+  if (!checkWritable (output))
+    return false;
+  for (const auto& path : optional)
+    if (!path.empty () && !checkWritable (path))
+      return false;
+  return true;
+}
+
+bool
 writeFileAtomically (const std::string& path,
                      const std::function<bool (const std::string&)>& writer)
 {

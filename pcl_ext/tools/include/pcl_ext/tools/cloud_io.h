@@ -5,6 +5,7 @@
 
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
 
 #include <string>
 
@@ -21,6 +22,13 @@ loadCloud (const std::string& path, pcl::PCLPointCloud2& cloud);
 /** \brief Load a PCD or PLY file into a typed cloud (fields not in the file stay default). */
 template <typename PointT> bool
 loadCloud (const std::string& path, pcl::PointCloud<PointT>& cloud);
+
+/** \brief Load an app's input: the file as it is in \a input (kept so that the output can carry
+  * every input field) and its x, y, z in \a xyz, with a "Loading <path>" timing line. Errors as
+  * loadCloud. */
+bool
+loadInput (const std::string& path, pcl::PCLPointCloud2& input,
+           pcl::PointCloud<pcl::PointXYZ>& xyz);
 
 /** \brief Save a PCD (binary-compressed unless \a ascii) or PLY file atomically. */
 bool

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <string>
 
 namespace pcl_ext
@@ -30,6 +31,11 @@ writeTextFile (const std::string& path, const std::string& text);
   * that an unwritable output fails fast). Prints an error naming the path when it cannot. */
 bool
 checkWritable (const std::string& path);
+
+/** \brief checkWritable for the output an app always writes and for each optional output that
+  * was asked for (an empty path is one that was not). */
+bool
+checkOutputsWritable (const std::string& output, std::initializer_list<std::string> optional);
 
 /** \brief Lower-case extension of \a path without the dot ("pcd", "ply"), or "". */
 std::string
