@@ -24,6 +24,8 @@ namespace
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 constexpr int kMaxInitial = 64;  // map positions in use are kept in a 64-bit mask
 constexpr int kMaxK = 8;
+constexpr int kMaxSubsets = 70;  // C(kMaxK, 4)
+constexpr double kMaxDegeneracyCache = 1 << 20;  // entries of a worker's degeneracy cache
 
 enum PlaneClass { Other = -1, Vertical = 0, Horizontal = 1 };
 
@@ -124,7 +126,10 @@ struct Context
   std::vector<int> scan_init, map_init;  // the m and n initial planes
   std::vector<int> scan_class, map_class;
   std::vector<double> scan_angle, map_angle;  // angle between normals, row-major m x m, n x n
+  std::vector<Eigen::Vector3d> scan_anchor;   // of the m initial scan planes, as the estimate's
   double angle_tol, cos_angle_tol, distance_tol, orientation_tol, cos_up_tol;
+  double normal_slack;   // largest |R^T n_m - s n_s| of a pair within the angle tolerance
+  bool distance_bound;   // whether constraint 3 is screened by the bound (see Worker::screen)
 
   Context (const std::vector<RegistrationPlane>& s, const std::vector<RegistrationPlane>& m,
            const PlaneMatchingParameters& params)
@@ -135,13 +140,25 @@ struct Context
     distance_tol = p.distance_tolerance;
     orientation_tol = p.orientation_tolerance_deg * kDegree;
     cos_up_tol = std::cos (p.vertical_tolerance_deg * kDegree);
+    // |R^T n_m - s n_s|^2 = |n_m|^2 + |n_s|^2 - 2 cos, the norms within 1e-6 of 1 (checkPlanes).
+    normal_slack = std::sqrt (2.0 * (1.0 + 1e-6) * (1.0 + 1e-6) - 2.0 * cos_angle_tol) + 1e-9;
+    distance_bound = p.residual_constraint && p.k >= 4 && p.model == PlaneTransformationModel::Rigid;
   }
 };
 
 class Worker
 {
 public:
-  explicit Worker (const Context& c) : c_ (c) {}
+  explicit Worker (const Context& c) : c_ (c)
+  {
+    for (auto& outer : outer_)
+      outer.setZero ();
+    // Whether an ordered tuple of map planes is degenerate: 0 unknown, 1 no, 2 yes. The leaves
+    // share far fewer map tuples than there are leaves.
+    const double tuples = std::pow (static_cast<double> (c_.map_init.size ()), c_.p.k);
+    if (tuples <= kMaxDegeneracyCache)
+      degenerate_cache_.assign (static_cast<std::size_t> (tuples), 0);
+  }
 
   // All combinations whose first pair is (scan_init[s0], map_init[m0]).
   void
@@ -255,6 +272,129 @@ private:
     return true;
   }
 
+  // Whether the map normals of the leaf fail to span 3D (min_conditioning). The sum runs in pair
+  // order, so an ordered map tuple always gives the same answer and is computed once.
+  bool
+  degenerate ()
+  {
+    const int k = c_.p.k;
+    std::size_t key = 0;
+    if (!degenerate_cache_.empty ())
+    {
+      for (int i = k - 1; i >= 0; --i)
+        key = key * c_.map_init.size () + m_[i];
+      if (degenerate_cache_[key])
+        return degenerate_cache_[key] == 2;
+    }
+    Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero ();
+    for (int i = 0; i < k; ++i)
+      normal_matrix.noalias () += map_ptr_[i]->normal * map_ptr_[i]->normal.transpose ();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+    eigen.computeDirect (normal_matrix, Eigen::EigenvaluesOnly);
+    const bool result =
+        !(std::max (0.0, eigen.eigenvalues ()[0]) >= c_.p.min_conditioning * eigen.eigenvalues ()[2]);
+    if (!degenerate_cache_.empty ())
+      degenerate_cache_[key] = result ? 2 : 1;
+    return result;
+  }
+
+  // A necessary condition of the distance part of constraint 3 that needs no estimate. For any
+  // four pairs whose map normals span 3D, lambda_i = (-1)^i det(the other three normals) gives
+  // sum lambda_i n_m,i = 0, which eliminates the translation: for any point p,
+  //   sum lambda_i r_i = sum lambda_i (R^T n_m,i . (a_i - p) - d_m,i),
+  // r_i the distance residual of pair i at its anchor a_i. If the combination passes, |r_i| <=
+  // distance_tol and R^T n_m,i = s_i n_s,i + e_i with |e_i| <= normal_slack, hence
+  //   |sum lambda_i (s_i n_s,i . (a_i - p) - d_m,i)| <= sum |lambda_i| (distance_tol +
+  //                                                    normal_slack |a_i - p|).
+  // A sign pattern that breaks it cannot pass, so its estimate is skipped; the bound never
+  // rejects a combination the estimate accepts. A margin of 1e-9 of the magnitudes involved
+  // covers rounding (sum lambda_i n_m,i is zero only to rounding, times the map coordinates).
+  void
+  prepareScreen ()
+  {
+    const int k = c_.p.k;
+    subsets_ = 0;
+    for (int a = 0; a < k; ++a)
+      for (int b = a + 1; b < k; ++b)
+        for (int cc = b + 1; cc < k; ++cc)
+          for (int d = cc + 1; d < k; ++d)
+          {
+            Subset& sub = subset_[subsets_];
+            const int index[4] = {a, b, cc, d};
+            const Eigen::Vector3d* n[4];
+            for (int i = 0; i < 4; ++i)
+              n[i] = &map_ptr_[index[i]]->normal;
+            const double lambda[4] = {n[1]->dot (n[2]->cross (*n[3])), -n[0]->dot (n[2]->cross (*n[3])),
+                                      n[0]->dot (n[1]->cross (*n[3])), -n[0]->dot (n[1]->cross (*n[2]))};
+            double weight = 0.0;
+            Eigen::Vector3d p = Eigen::Vector3d::Zero ();
+            for (int i = 0; i < 4; ++i)
+            {
+              weight += std::abs (lambda[i]);
+              p += std::abs (lambda[i]) * c_.scan_anchor[s_[index[i]]];
+            }
+            if (!(weight > 0.0))
+              continue;  // normals in a plane: no condition
+            p /= weight;
+            double bound = 0.0, magnitude = 1.0;
+            sub.offset = 0.0;
+            for (int i = 0; i < 4; ++i)
+            {
+              const Eigen::Vector3d arm = c_.scan_anchor[s_[index[i]]] - p;
+              const double q = scan_ptr_[index[i]]->normal.dot (arm), dm = map_ptr_[index[i]]->d;
+              sub.index[i] = index[i];
+              sub.lambda_q[i] = lambda[i] * q;
+              sub.offset += lambda[i] * dm;
+              bound += std::abs (lambda[i]) * (c_.distance_tol + c_.normal_slack * arm.norm ());
+              magnitude += std::abs (lambda[i]) * (std::abs (q) + std::abs (dm) + arm.norm () +
+                                                   c_.scan_anchor[s_[index[i]]].norm ());
+            }
+            sub.bound = bound + 1e-9 * magnitude;
+            ++subsets_;
+          }
+    // det (sum s_i n_s,i n_m,i^T) has the sign of the estimate's affine block (N^-1 is positive
+    // definite): it tells which of a pattern and its mirror the estimate keeps.
+    for (int i = 0; i < k; ++i)
+      outer_[i] = scan_ptr_[i]->normal * map_ptr_[i]->normal.transpose ();
+  }
+
+  bool
+  passesScreen (const int* signs) const
+  {
+    for (int t = 0; t < subsets_; ++t)
+    {
+      const Subset& sub = subset_[t];
+      double sum = -sub.offset;
+      for (int i = 0; i < 4; ++i)
+        sum += signs[sub.index[i]] * sub.lambda_q[i];
+      if (std::abs (sum) > sub.bound)
+        return false;
+    }
+    return true;
+  }
+
+  // Whether the pattern \a signs, as the estimate will keep it (mirrored when its affine block
+  // has a negative determinant), can pass constraint 3.
+  bool
+  screen (const int* signs) const
+  {
+    const int k = c_.p.k;
+    if (c_.p.oriented_normals)
+      return passesScreen (signs);
+    Eigen::Matrix3d c = Eigen::Matrix3d::Zero ();
+    for (int i = 0; i < k; ++i)
+      c += signs[i] * outer_[i];
+    const double det = c.determinant ();
+    int flipped[kMaxK];
+    for (int i = 0; i < k; ++i)
+      flipped[i] = -signs[i];
+    if (det > 1e-6)
+      return passesScreen (signs);
+    if (det < -1e-6)
+      return passesScreen (flipped);
+    return passesScreen (signs) || passesScreen (flipped);
+  }
+
   void
   leaf ()
   {
@@ -269,16 +409,13 @@ private:
       map_ptr_[i] = &c_.map[c_.map_init[m_[i]]];
     }
     // Degenerate sets (map normals not spanning 3D) are reported, not solved.
-    Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero ();
-    for (int i = 0; i < k; ++i)
-      normal_matrix.noalias () += map_ptr_[i]->normal * map_ptr_[i]->normal.transpose ();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-    eigen.computeDirect (normal_matrix, Eigen::EigenvaluesOnly);
-    if (!(std::max (0.0, eigen.eigenvalues ()[0]) >= c_.p.min_conditioning * eigen.eigenvalues ()[2]))
+    if (degenerate ())
     {
       ++stats.degenerate;
       return;
     }
+    if (c_.distance_bound)
+      prepareScreen ();
 
     // Handedness: a rotation keeps the sign of det(n_i, n_j, n_l) of well-spread triples, so of
     // a sign pattern and its mirror image only one can fit.
@@ -312,6 +449,8 @@ private:
       int signs[kMaxK];
       for (int i = 0; i < k; ++i)
         signs[i] = (mask >> i) & 1u ? -1 : 1;
+      if (c_.distance_bound && !screen (signs))
+        continue;
       if (!estimate (signs, k, trial_))
         continue;
       if (!c_.p.oriented_normals && trial_.affine.leftCols<3> ().determinant () < 0.0)
@@ -434,8 +573,20 @@ private:
       best = std::move (candidate);
   }
 
+  struct Subset
+  {
+    int index[4];
+    double lambda_q[4];  // lambda_i n_s,i . (a_i - p)
+    double offset;       // sum lambda_i d_m,i
+    double bound;
+  };
+
   const Context& c_;
   int s_[kMaxK] = {}, m_[kMaxK] = {};
+  Subset subset_[kMaxSubsets] = {};
+  int subsets_ = 0;
+  Eigen::Matrix3d outer_[kMaxK];  // n_s,i n_m,i^T
+  std::vector<signed char> degenerate_cache_;
   int initial_signs_[kMaxK] = {};
   std::uint64_t order_ = 0;
   std::vector<const RegistrationPlane*> scan_ptr_, map_ptr_;
@@ -547,6 +698,8 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
             std::acos (std::clamp (planes[init[a]].normal.dot (planes[init[b]].normal), -1.0, 1.0));
     return table;
   };
+  for (const int i : c.scan_init)
+    c.scan_anchor.push_back (scan[i].centroid - (scan[i].normal.dot (scan[i].centroid) - scan[i].d) * scan[i].normal);
   c.scan_angle = angles (scan, c.scan_init);
   c.map_angle = angles (map, c.map_init);
 
