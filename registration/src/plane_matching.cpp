@@ -126,7 +126,17 @@ struct Context
   std::vector<int> scan_init, map_init;  // the m and n initial planes
   std::vector<int> scan_class, map_class;
   std::vector<double> scan_angle, map_angle;  // angle between normals, row-major m x m, n x n
+  // Constraints 1 and 2: bit mp of compatible[(s * n + m) * m + sp] is set when the pair
+  // (sp, mp) may join a combination that holds the pair (s, m) (initial plane positions).
+  std::vector<std::uint64_t> compatible;
+  std::vector<double> scan_triple, map_triple;  // det(n_a, n_b, n_c), row-major m^3, n^3
+  // Per sign pattern (bit i: pair i flipped): pattern_pairs bit t set when the pairs (i, j) of
+  // the t-th index pair (i < j, in order) have opposite signs; pattern_parity bit t set when an
+  // odd number of the pairs of the t-th index triple (i < j < l, in order) are flipped.
+  std::vector<std::uint32_t> pattern_pairs;
+  std::vector<std::uint64_t> pattern_parity;
   std::vector<Eigen::Vector3d> scan_anchor;   // of the m initial scan planes, as the estimate's
+  std::vector<double> scan_anchor_norm;
   double angle_tol, cos_angle_tol, distance_tol, orientation_tol, cos_up_tol;
   double normal_slack;   // largest |R^T n_m - s n_s| of a pair within the angle tolerance
   bool distance_bound;   // whether constraint 3 is screened by the bound (see Worker::screen)
@@ -182,7 +192,22 @@ private:
   scanAngle (int a, int b) const { return c_.scan_angle[a * c_.scan_init.size () + b]; }
   double
   mapAngle (int a, int b) const { return c_.map_angle[a * c_.map_init.size () + b]; }
+  double
+  scanTriple (int a, int b, int l) const
+  {
+    const std::size_t m = c_.scan_init.size ();
+    return c_.scan_triple[(a * m + b) * m + l];
+  }
+  double
+  mapTriple (int a, int b, int l) const
+  {
+    const std::size_t n = c_.map_init.size ();
+    return c_.map_triple[(a * n + b) * n + l];
+  }
 
+  // Depth-first over the pairs (sp, mp) that extend s_, m_: scan planes in increasing order, map
+  // planes in any order, each unused map plane allowed by constraints 1 and 2 with every earlier
+  // pair (a bit of Context::compatible), in increasing order.
   void
   search (int depth, std::uint64_t used)
   {
@@ -192,18 +217,15 @@ private:
       leaf ();
       return;
     }
+    const std::uint64_t all = n == 64 ? ~std::uint64_t (0) : (std::uint64_t (1) << n) - 1;
     for (int sp = s_[depth - 1] + 1; sp <= m - (k - depth); ++sp)
     {
-      if (c_.p.vertical_constraint && c_.scan_class[sp] == Other)
-        continue;
-      for (int mp = 0; mp < n; ++mp)
+      std::uint64_t candidates = all & ~used;
+      for (int i = 0; i < depth && candidates; ++i)
+        candidates &= c_.compatible[(static_cast<std::size_t> (s_[i]) * n + m_[i]) * m + sp];
+      for (; candidates; candidates &= candidates - 1)
       {
-        if (used & (std::uint64_t (1) << mp))
-          continue;
-        if (c_.p.vertical_constraint && c_.scan_class[sp] != c_.map_class[mp])
-          continue;
-        if (c_.p.orientation_constraint && !orientationAgrees (depth, sp, mp))
-          continue;
+        const int mp = __builtin_ctzll (candidates);
         s_[depth] = sp;
         m_[depth] = mp;
         search (depth + 1, used | (std::uint64_t (1) << mp));
@@ -211,38 +233,32 @@ private:
     }
   }
 
-  // Constraint 2; without oriented normals the angle of two lines, in [0, 90] degrees.
-  bool
-  orientationAgrees (int depth, int sp, int mp) const
+  // Signed orientation agreement of the leaf's pairs (i, j), with the same signs (bit set in
+  // same_ok_) and with opposite ones (flip_ok_), pairs numbered in (i, j) order.
+  void
+  prepareSigns ()
   {
-    for (int i = 0; i < depth; ++i)
-    {
-      double a = scanAngle (s_[i], sp), b = mapAngle (m_[i], mp);
-      if (!c_.p.oriented_normals)
+    same_ok_ = flip_ok_ = 0;
+    all_pairs_ = 0;
+    int bit = 0;
+    for (int i = 0; i < c_.p.k; ++i)
+      for (int j = i + 1; j < c_.p.k; ++j, ++bit)
       {
-        a = std::min (a, M_PI - a);
-        b = std::min (b, M_PI - b);
+        const double a = scanAngle (s_[i], s_[j]), b = mapAngle (m_[i], m_[j]);
+        if (!(std::abs (a - b) > c_.orientation_tol))
+          same_ok_ |= 1u << bit;
+        if (!(std::abs ((M_PI - a) - b) > c_.orientation_tol))
+          flip_ok_ |= 1u << bit;
+        all_pairs_ |= 1u << bit;
       }
-      if (std::abs (a - b) > c_.orientation_tol)
-        return false;
-    }
-    return true;
   }
 
   // Signed orientation agreement of a sign pattern (bit i set: pair i flipped).
   bool
   signsAgree (unsigned mask) const
   {
-    for (int i = 0; i < c_.p.k; ++i)
-      for (int j = i + 1; j < c_.p.k; ++j)
-      {
-        double a = scanAngle (s_[i], s_[j]);
-        if (((mask >> i) ^ (mask >> j)) & 1u)
-          a = M_PI - a;
-        if (std::abs (a - mapAngle (m_[i], m_[j])) > c_.orientation_tol)
-          return false;
-      }
-    return true;
+    const std::uint32_t flipped = c_.pattern_pairs[mask];
+    return !(flipped & ~flip_ok_) && !(~flipped & ~same_ok_ & all_pairs_);
   }
 
   bool
@@ -321,11 +337,11 @@ private:
           {
             Subset& sub = subset_[subsets_];
             const int index[4] = {a, b, cc, d};
-            const Eigen::Vector3d* n[4];
+            int n[4];
             for (int i = 0; i < 4; ++i)
-              n[i] = &map_ptr_[index[i]]->normal;
-            const double lambda[4] = {n[1]->dot (n[2]->cross (*n[3])), -n[0]->dot (n[2]->cross (*n[3])),
-                                      n[0]->dot (n[1]->cross (*n[3])), -n[0]->dot (n[1]->cross (*n[2]))};
+              n[i] = m_[index[i]];
+            const double lambda[4] = {mapTriple (n[1], n[2], n[3]), -mapTriple (n[0], n[2], n[3]),
+                                      mapTriple (n[0], n[1], n[3]), -mapTriple (n[0], n[1], n[2])};
             double weight = 0.0;
             Eigen::Vector3d p = Eigen::Vector3d::Zero ();
             for (int i = 0; i < 4; ++i)
@@ -342,20 +358,17 @@ private:
             {
               const Eigen::Vector3d arm = c_.scan_anchor[s_[index[i]]] - p;
               const double q = scan_ptr_[index[i]]->normal.dot (arm), dm = map_ptr_[index[i]]->d;
+              const double length = arm.norm ();
               sub.index[i] = index[i];
               sub.lambda_q[i] = lambda[i] * q;
               sub.offset += lambda[i] * dm;
-              bound += std::abs (lambda[i]) * (c_.distance_tol + c_.normal_slack * arm.norm ());
-              magnitude += std::abs (lambda[i]) * (std::abs (q) + std::abs (dm) + arm.norm () +
-                                                   c_.scan_anchor[s_[index[i]]].norm ());
+              bound += std::abs (lambda[i]) * (c_.distance_tol + c_.normal_slack * length);
+              magnitude += std::abs (lambda[i]) * (std::abs (q) + std::abs (dm) + length +
+                                                   c_.scan_anchor_norm[s_[index[i]]]);
             }
             sub.bound = bound + 1e-9 * magnitude;
             ++subsets_;
           }
-    // det (sum s_i n_s,i n_m,i^T) has the sign of the estimate's affine block (N^-1 is positive
-    // definite): it tells which of a pattern and its mirror the estimate keeps.
-    for (int i = 0; i < k; ++i)
-      outer_[i] = scan_ptr_[i]->normal * map_ptr_[i]->normal.transpose ();
   }
 
   bool
@@ -376,23 +389,35 @@ private:
   // Whether the pattern \a signs, as the estimate will keep it (mirrored when its affine block
   // has a negative determinant), can pass constraint 3.
   bool
-  screen (const int* signs) const
+  screen (const int* signs)
   {
     const int k = c_.p.k;
+    if (!screen_ready_)
+    {
+      prepareScreen ();
+      screen_ready_ = true;
+    }
     if (c_.p.oriented_normals)
       return passesScreen (signs);
+    int flipped[kMaxK];
+    for (int i = 0; i < k; ++i)
+      flipped[i] = -signs[i];
+    const bool direct = passesScreen (signs), mirror = passesScreen (flipped);
+    if (direct == mirror)
+      return direct;
+    // det (sum s_i n_s,i n_m,i^T) has the sign of the estimate's affine block (N^-1 is positive
+    // definite): it tells which of a pattern and its mirror the estimate keeps.
+    if (!outer_ready_)
+    {
+      for (int i = 0; i < k; ++i)
+        outer_[i] = scan_ptr_[i]->normal * map_ptr_[i]->normal.transpose ();
+      outer_ready_ = true;
+    }
     Eigen::Matrix3d c = Eigen::Matrix3d::Zero ();
     for (int i = 0; i < k; ++i)
       c += signs[i] * outer_[i];
     const double det = c.determinant ();
-    int flipped[kMaxK];
-    for (int i = 0; i < k; ++i)
-      flipped[i] = -signs[i];
-    if (det > 1e-6)
-      return passesScreen (signs);
-    if (det < -1e-6)
-      return passesScreen (flipped);
-    return passesScreen (signs) || passesScreen (flipped);
+    return det > 1e-6 ? direct : det < -1e-6 ? mirror : true;
   }
 
   void
@@ -414,26 +439,30 @@ private:
       ++stats.degenerate;
       return;
     }
-    if (c_.distance_bound)
-      prepareScreen ();
+    screen_ready_ = outer_ready_ = false;
+    if (!c_.p.oriented_normals && c_.p.orientation_constraint)
+      prepareSigns ();
 
     // Handedness: a rotation keeps the sign of det(n_i, n_j, n_l) of well-spread triples, so of
     // a sign pattern and its mirror image only one can fit.
-    int triples = 0;
-    unsigned triple_mask[kMaxK * kMaxK * kMaxK];
-    bool triple_sign[kMaxK * kMaxK * kMaxK];
+    // A pattern is kept when an odd number of the pairs of each such triple (bit t of
+    // pattern_parity) are flipped exactly where the determinants disagree in sign.
+    std::uint64_t spread = 0, odd = 0;
     if (!c_.p.oriented_normals)
+    {
+      int bit = 0;
       for (int i = 0; i < k; ++i)
         for (int j = i + 1; j < k; ++j)
-          for (int l = j + 1; l < k; ++l)
+          for (int l = j + 1; l < k; ++l, ++bit)
           {
-            const double dm = map_ptr_[i]->normal.dot (map_ptr_[j]->normal.cross (map_ptr_[l]->normal));
-            const double ds = scan_ptr_[i]->normal.dot (scan_ptr_[j]->normal.cross (scan_ptr_[l]->normal));
+            const double dm = mapTriple (m_[i], m_[j], m_[l]), ds = scanTriple (s_[i], s_[j], s_[l]);
             if (std::abs (dm) < 0.3 || std::abs (ds) < 0.3)
               continue;
-            triple_mask[triples] = (1u << i) | (1u << j) | (1u << l);
-            triple_sign[triples++] = (dm > 0.0) == (ds > 0.0);
+            spread |= std::uint64_t (1) << bit;
+            if ((dm > 0.0) != (ds > 0.0))
+              odd |= std::uint64_t (1) << bit;
           }
+    }
 
     bool found = false;
     const unsigned patterns = c_.p.oriented_normals ? 1u : (1u << k);
@@ -441,11 +470,8 @@ private:
     {
       if (!c_.p.oriented_normals && c_.p.orientation_constraint && !signsAgree (mask))
         continue;
-      bool mirrored = false;
-      for (int t = 0; t < triples && !mirrored; ++t)
-        mirrored = ((__builtin_popcount (mask & triple_mask[t]) % 2 == 0) != triple_sign[t]);
-      if (mirrored)
-        continue;
+      if ((c_.pattern_parity[mask] ^ odd) & spread)
+        continue;  // mirrored
       int signs[kMaxK];
       for (int i = 0; i < k; ++i)
         signs[i] = (mask >> i) & 1u ? -1 : 1;
@@ -492,31 +518,49 @@ private:
       used_map_[pair.map] = 1;
     }
     PlaneTransformationResult current = initial_;
+    PlaneTransformer mover (current.transformation);
+    // A pass that reaches, unchanged, the plane the previous pass last added sees the state that
+    // pass saw from there on, so it would add nothing more: it ends there.
+    std::size_t last_added = c_.scan_order.size ();
     bool changed = true;
     while (changed)
     {
       changed = false;
-      for (const int j : c_.scan_order)
+      for (std::size_t position = 0; position < c_.scan_order.size (); ++position)
       {
+        if (!changed && position == last_added)
+          break;
+        const int j = c_.scan_order[position];
         if (used_scan_[j])
           continue;
-        const RegistrationPlane moved = transformPlane (c_.scan[j], current.transformation);
+        // The image of the scan plane, its extent only once a map plane is near enough.
+        const Eigen::Vector3d normal = mover.normal (c_.scan[j]), centroid = mover.point (c_.scan[j].centroid);
+        Eigen::AlignedBox3d extent;
+        bool have_extent = false;
         int best_map = -1, best_sign = 1;
         double best_score = std::numeric_limits<double>::infinity ();
         for (std::size_t i = 0; i < c_.map.size (); ++i)
         {
           if (used_map_[i])
             continue;
-          const double dot = moved.normal.dot (c_.map[i].normal);
+          const double dot = normal.dot (c_.map[i].normal);
           const int sign = c_.p.oriented_normals || dot >= 0.0 ? 1 : -1;
           const double cosine = sign * dot;
           if (cosine < c_.cos_angle_tol)
             continue;
-          const double distance = std::abs (c_.map[i].signedDistance (moved.centroid));
+          const double distance = std::abs (c_.map[i].signedDistance (centroid));
           if (distance > c_.distance_tol)
             continue;
-          if (c_.p.check_extents && !extentsOverlap (moved.extent, c_.map[i].extent, c_.p.extent_margin))
-            continue;
+          if (c_.p.check_extents)
+          {
+            if (!have_extent)
+            {
+              extent = mover.extent (c_.scan[j]);
+              have_extent = true;
+            }
+            if (!extentsOverlap (extent, c_.map[i].extent, c_.p.extent_margin))
+              continue;
+          }
           const double score = std::acos (std::min (1.0, cosine)) / c_.angle_tol + distance / c_.distance_tol;
           if (score < best_score)
           {
@@ -540,9 +584,11 @@ private:
         if (estimate (signs_.data (), static_cast<int> (pairs_.size ()), trial_) && withinTolerance (trial_))
         {
           current = trial_;
+          mover = PlaneTransformer (current.transformation);
           used_scan_[j] = 1;
           used_map_[best_map] = 1;
           changed = true;
+          last_added = position;
         }
         else
           pairs_.pop_back ();
@@ -586,6 +632,8 @@ private:
   Subset subset_[kMaxSubsets] = {};
   int subsets_ = 0;
   Eigen::Matrix3d outer_[kMaxK];  // n_s,i n_m,i^T
+  bool screen_ready_ = false, outer_ready_ = false;
+  std::uint32_t same_ok_ = 0, flip_ok_ = 0, all_pairs_ = 0;
   std::vector<signed char> degenerate_cache_;
   int initial_signs_[kMaxK] = {};
   std::uint64_t order_ = 0;
@@ -699,9 +747,64 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
     return table;
   };
   for (const int i : c.scan_init)
+  {
     c.scan_anchor.push_back (scan[i].centroid - (scan[i].normal.dot (scan[i].centroid) - scan[i].d) * scan[i].normal);
+    c.scan_anchor_norm.push_back (c.scan_anchor.back ().norm ());
+  }
   c.scan_angle = angles (scan, c.scan_init);
   c.map_angle = angles (map, c.map_init);
+  // Constraint 2 without oriented normals compares the angles of lines, in [0, 90] degrees.
+  auto lines = [&] (std::vector<double> table) {
+    if (!parameters.oriented_normals)
+      for (double& a : table)
+        a = std::min (a, M_PI - a);
+    return table;
+  };
+  const std::vector<double> scan_line = lines (c.scan_angle), map_line = lines (c.map_angle);
+  c.compatible.assign (static_cast<std::size_t> (m) * n * m, 0);
+  for (int s = 0; s < m; ++s)
+    for (int t = 0; t < n; ++t)
+      for (int sp = 0; sp < m; ++sp)
+      {
+        std::uint64_t& bits = c.compatible[(static_cast<std::size_t> (s) * n + t) * m + sp];
+        for (int mp = 0; mp < n; ++mp)
+        {
+          if (parameters.vertical_constraint && (c.scan_class[sp] == Other || c.scan_class[sp] != c.map_class[mp]))
+            continue;
+          if (parameters.orientation_constraint &&
+              std::abs (scan_line[s * m + sp] - map_line[t * n + mp]) > c.orientation_tol)
+            continue;
+          bits |= std::uint64_t (1) << mp;
+        }
+      }
+  auto triples = [] (const std::vector<RegistrationPlane>& planes, const std::vector<int>& init) {
+    const std::size_t size = init.size ();
+    std::vector<double> table (size * size * size);
+    for (std::size_t a = 0; a < size; ++a)
+      for (std::size_t b = 0; b < size; ++b)
+        for (std::size_t l = 0; l < size; ++l)
+          table[(a * size + b) * size + l] =
+              planes[init[a]].normal.dot (planes[init[b]].normal.cross (planes[init[l]].normal));
+    return table;
+  };
+  c.scan_triple = triples (scan, c.scan_init);
+  c.map_triple = triples (map, c.map_init);
+  for (unsigned mask = 0; mask < (1u << k); ++mask)
+  {
+    std::uint32_t pairs = 0;
+    std::uint64_t parity = 0;
+    int bit = 0;
+    for (int i = 0; i < k; ++i)
+      for (int j = i + 1; j < k; ++j, ++bit)
+        pairs |= static_cast<std::uint32_t> (((mask >> i) ^ (mask >> j)) & 1u) << bit;
+    bit = 0;
+    for (int i = 0; i < k; ++i)
+      for (int j = i + 1; j < k; ++j)
+        for (int l = j + 1; l < k; ++l, ++bit)
+          parity |= static_cast<std::uint64_t> (((mask >> i) ^ (mask >> j) ^ (mask >> l)) & 1u) << bit;
+    c.pattern_pairs.push_back (pairs);
+    c.pattern_parity.push_back (parity);
+  }
 
   stats.unconstrained = countInitialCombinations (m, n, k);
   if (parameters.vertical_constraint)

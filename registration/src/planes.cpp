@@ -7,23 +7,39 @@
 
 namespace pcl_ext
 {
+PlaneTransformer::PlaneTransformer (const Eigen::Matrix4d& transformation)
+  : block_ (transformation.topLeftCorner<3, 3> ())
+{
+  scale_ = std::cbrt (block_.determinant ());
+  rotation_ = block_ / scale_;
+  t_ = transformation.topRightCorner<3, 1> ();
+}
+
+Eigen::AlignedBox3d
+PlaneTransformer::extent (const RegistrationPlane& plane) const
+{
+  Eigen::AlignedBox3d out;
+  if (!plane.extent.isEmpty ())
+    for (int c = 0; c < 8; ++c)
+      out.extend (point (plane.extent.corner (static_cast<Eigen::AlignedBox3d::CornerType> (c))));
+  return out;
+}
+
+RegistrationPlane
+PlaneTransformer::operator() (const RegistrationPlane& plane) const
+{
+  RegistrationPlane out = plane;
+  out.normal = normal (plane);
+  out.d = scale_ * plane.d + out.normal.dot (t_);
+  out.centroid = point (plane.centroid);
+  if (!plane.extent.isEmpty ())
+    out.extent = extent (plane);
+  return out;
+}
+
 RegistrationPlane
 transformPlane (const RegistrationPlane& plane, const Eigen::Matrix4d& transformation)
 {
-  const Eigen::Matrix3d block = transformation.topLeftCorner<3, 3> ();
-  const double scale = std::cbrt (block.determinant ());
-  const Eigen::Matrix3d rotation = block / scale;
-  const Eigen::Vector3d t = transformation.topRightCorner<3, 1> ();
-  RegistrationPlane out = plane;
-  out.normal = (rotation * plane.normal).normalized ();
-  out.d = scale * plane.d + out.normal.dot (t);
-  out.centroid = block * plane.centroid + t;
-  if (!plane.extent.isEmpty ())
-  {
-    out.extent.setEmpty ();
-    for (int c = 0; c < 8; ++c)
-      out.extent.extend (block * plane.extent.corner (static_cast<Eigen::AlignedBox3d::CornerType> (c)) + t);
-  }
-  return out;
+  return PlaneTransformer (transformation) (plane);
 }
 }  // namespace pcl_ext

@@ -68,4 +68,35 @@ struct MapPlane : RegistrationPlane
   * n' = R n, d' = s d + n' . t (the inverse-transpose rule of eq. 6, kept unit-normal). */
 RegistrationPlane
 transformPlane (const RegistrationPlane& plane, const Eigen::Matrix4d& transformation);
+
+/** \brief transformPlane for many planes under one transform, part by part: the scale (a cube
+  * root) and the rotation are computed once, and each part of the image only when asked for.
+  * The parts are those of transformPlane, to the last bit. */
+class PlaneTransformer
+{
+public:
+  explicit PlaneTransformer (const Eigen::Matrix4d& transformation);
+
+  /** \brief n' = R n (normalised). */
+  Eigen::Vector3d
+  normal (const RegistrationPlane& plane) const { return (rotation_ * plane.normal).normalized (); }
+
+  /** \brief x' = s R x + t. */
+  Eigen::Vector3d
+  point (const Eigen::Vector3d& x) const { return block_ * x + t_; }
+
+  /** \brief Bounding box of the transformed corners of \a plane's extent (empty if it is). */
+  Eigen::AlignedBox3d
+  extent (const RegistrationPlane& plane) const;
+
+  /** \brief The whole image, as transformPlane. */
+  RegistrationPlane
+  operator() (const RegistrationPlane& plane) const;
+
+private:
+  Eigen::Matrix3d block_;     // s R
+  double scale_;
+  Eigen::Matrix3d rotation_;  // R
+  Eigen::Vector3d t_;
+};
 }  // namespace pcl_ext
