@@ -25,7 +25,8 @@ constexpr double kDegree = 3.14159265358979323846 / 180.0;
 constexpr int kMaxInitial = 64;  // map positions in use are kept in a 64-bit mask
 constexpr int kMaxK = 8;
 constexpr int kMaxSubsets = 70;  // C(kMaxK, 4)
-constexpr double kMaxDegeneracyCache = 1 << 20;  // entries of a worker's degeneracy cache
+constexpr int kMaxPatternWords = (1 << kMaxK) / 64;  // sign patterns as a bit set
+constexpr double kMaxDegeneracyCache = 1 << 20;  // prefixes in a worker's degeneracy cache
 
 enum PlaneClass { Other = -1, Vertical = 0, Horizontal = 1 };
 
@@ -130,16 +131,15 @@ struct Context
   // (sp, mp) may join a combination that holds the pair (s, m) (initial plane positions).
   std::vector<std::uint64_t> compatible;
   std::vector<double> scan_triple, map_triple;  // det(n_a, n_b, n_c), row-major m^3, n^3
-  // Per sign pattern (bit i: pair i flipped): pattern_pairs bit t set when the pairs (i, j) of
-  // the t-th index pair (i < j, in order) have opposite signs; pattern_parity bit t set when an
-  // odd number of the pairs of the t-th index triple (i < j < l, in order) are flipped.
-  std::vector<std::uint32_t> pattern_pairs;
-  std::vector<std::uint64_t> pattern_parity;
+  // Sets of sign patterns (bit i of a pattern: pair i flipped), kMaxPatternWords words at most:
+  // all of them; per index pair (i < j, in order) those flipping one of the two; per index
+  // triple (i < j < l, in order) those flipping an odd number of the three.
+  std::vector<std::uint64_t> all_patterns, pair_opposite, triple_odd;
   std::vector<Eigen::Vector3d> scan_anchor;   // of the m initial scan planes, as the estimate's
   std::vector<double> scan_anchor_norm;
   double angle_tol, cos_angle_tol, distance_tol, orientation_tol, cos_up_tol;
   double normal_slack;   // largest |R^T n_m - s n_s| of a pair within the angle tolerance
-  bool distance_bound;   // whether constraint 3 is screened by the bound (see Worker::screen)
+  bool distance_screen, up_screen, screen;  // the screens of constraint 3 in use (Worker::screen)
 
   Context (const std::vector<RegistrationPlane>& s, const std::vector<RegistrationPlane>& m,
            const PlaneMatchingParameters& params)
@@ -152,7 +152,10 @@ struct Context
     cos_up_tol = std::cos (p.vertical_tolerance_deg * kDegree);
     // |R^T n_m - s n_s|^2 = |n_m|^2 + |n_s|^2 - 2 cos, the norms within 1e-6 of 1 (checkPlanes).
     normal_slack = std::sqrt (2.0 * (1.0 + 1e-6) * (1.0 + 1e-6) - 2.0 * cos_angle_tol) + 1e-9;
-    distance_bound = p.residual_constraint && p.k >= 4 && p.model == PlaneTransformationModel::Rigid;
+    distance_screen = p.residual_constraint && p.k >= 4 && p.model == PlaneTransformationModel::Rigid;
+    up_screen = p.residual_constraint && p.vertical_constraint &&
+                2.0 * p.vertical_tolerance_deg + p.angle_tolerance_deg < 89.0;
+    screen = distance_screen || up_screen;
   }
 };
 
@@ -163,11 +166,15 @@ public:
   {
     for (auto& outer : outer_)
       outer.setZero ();
-    // Whether an ordered tuple of map planes is degenerate: 0 unknown, 1 no, 2 yes. The leaves
-    // share far fewer map tuples than there are leaves.
-    const double tuples = std::pow (static_cast<double> (c_.map_init.size ()), c_.p.k);
-    if (tuples <= kMaxDegeneracyCache)
-      degenerate_cache_.assign (static_cast<std::size_t> (tuples), 0);
+    // Which last map planes make the ordered map planes of the first k - 1 pairs a degenerate
+    // set, known_ and degenerate_ bits per prefix: the leaves share far fewer map tuples than
+    // there are leaves.
+    const double prefixes = std::pow (static_cast<double> (c_.map_init.size ()), c_.p.k - 1);
+    if (prefixes <= kMaxDegeneracyCache)
+    {
+      known_.assign (static_cast<std::size_t> (prefixes), 0);
+      degenerate_.assign (static_cast<std::size_t> (prefixes), 0);
+    }
   }
 
   // All combinations whose first pair is (scan_init[s0], map_init[m0]).
@@ -207,58 +214,59 @@ private:
 
   // Depth-first over the pairs (sp, mp) that extend s_, m_: scan planes in increasing order, map
   // planes in any order, each unused map plane allowed by constraints 1 and 2 with every earlier
-  // pair (a bit of Context::compatible), in increasing order.
+  // pair (a bit of Context::compatible), in increasing order. With the degeneracy cache, the
+  // last pair is chosen here and degenerate combinations are only counted.
   void
   search (int depth, std::uint64_t used)
   {
     const int k = c_.p.k, m = static_cast<int> (c_.scan_init.size ()), n = static_cast<int> (c_.map_init.size ());
-    if (depth == k)
+    if (depth >= k || depth >= kMaxK)  // k <= kMaxK: the second test is for the compiler
     {
       leaf ();
       return;
     }
     const std::uint64_t all = n == 64 ? ~std::uint64_t (0) : (std::uint64_t (1) << n) - 1;
+    const bool last = depth == k - 1 && !known_.empty ();
+    std::size_t prefix = 0;
+    if (last)
+      for (int i = depth - 1; i >= 0; --i)
+        prefix = prefix * n + m_[i];
     for (int sp = s_[depth - 1] + 1; sp <= m - (k - depth); ++sp)
     {
       std::uint64_t candidates = all & ~used;
       for (int i = 0; i < depth && candidates; ++i)
         candidates &= c_.compatible[(static_cast<std::size_t> (s_[i]) * n + m_[i]) * m + sp];
+      std::uint64_t degenerate = 0;
+      if (last)
+      {
+        for (std::uint64_t unknown = candidates & ~known_[prefix]; unknown; unknown &= unknown - 1)
+        {
+          m_[depth] = __builtin_ctzll (unknown);
+          if (degenerateMap ())
+            degenerate_[prefix] |= std::uint64_t (1) << m_[depth];
+        }
+        known_[prefix] |= candidates;
+        degenerate = degenerate_[prefix];
+      }
       for (; candidates; candidates &= candidates - 1)
       {
         const int mp = __builtin_ctzll (candidates);
+        if (degenerate >> mp & 1u)
+        {
+          // Degenerate sets (map normals not spanning 3D) are reported, not solved.
+          ++stats.orientation;
+          ++stats.degenerate;
+          ++order_;
+          continue;
+        }
         s_[depth] = sp;
         m_[depth] = mp;
-        search (depth + 1, used | (std::uint64_t (1) << mp));
+        if (last)
+          leaf ();
+        else
+          search (depth + 1, used | (std::uint64_t (1) << mp));
       }
     }
-  }
-
-  // Signed orientation agreement of the leaf's pairs (i, j), with the same signs (bit set in
-  // same_ok_) and with opposite ones (flip_ok_), pairs numbered in (i, j) order.
-  void
-  prepareSigns ()
-  {
-    same_ok_ = flip_ok_ = 0;
-    all_pairs_ = 0;
-    int bit = 0;
-    for (int i = 0; i < c_.p.k; ++i)
-      for (int j = i + 1; j < c_.p.k; ++j, ++bit)
-      {
-        const double a = scanAngle (s_[i], s_[j]), b = mapAngle (m_[i], m_[j]);
-        if (!(std::abs (a - b) > c_.orientation_tol))
-          same_ok_ |= 1u << bit;
-        if (!(std::abs ((M_PI - a) - b) > c_.orientation_tol))
-          flip_ok_ |= 1u << bit;
-        all_pairs_ |= 1u << bit;
-      }
-  }
-
-  // Signed orientation agreement of a sign pattern (bit i set: pair i flipped).
-  bool
-  signsAgree (unsigned mask) const
-  {
-    const std::uint32_t flipped = c_.pattern_pairs[mask];
-    return !(flipped & ~flip_ok_) && !(~flipped & ~same_ok_ & all_pairs_);
   }
 
   bool
@@ -288,108 +296,117 @@ private:
     return true;
   }
 
-  // Whether the map normals of the leaf fail to span 3D (min_conditioning). The sum runs in pair
-  // order, so an ordered map tuple always gives the same answer and is computed once.
+  // Whether the map normals of m_ fail to span 3D (min_conditioning). The sum runs in pair
+  // order, so an ordered map tuple always gives the same answer.
   bool
-  degenerate ()
+  degenerateMap () const
   {
-    const int k = c_.p.k;
-    std::size_t key = 0;
-    if (!degenerate_cache_.empty ())
-    {
-      for (int i = k - 1; i >= 0; --i)
-        key = key * c_.map_init.size () + m_[i];
-      if (degenerate_cache_[key])
-        return degenerate_cache_[key] == 2;
-    }
     Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero ();
-    for (int i = 0; i < k; ++i)
-      normal_matrix.noalias () += map_ptr_[i]->normal * map_ptr_[i]->normal.transpose ();
+    for (int i = 0; i < c_.p.k; ++i)
+    {
+      const Eigen::Vector3d& normal = c_.map[c_.map_init[m_[i]]].normal;
+      normal_matrix.noalias () += normal * normal.transpose ();
+    }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
     eigen.computeDirect (normal_matrix, Eigen::EigenvaluesOnly);
-    const bool result =
-        !(std::max (0.0, eigen.eigenvalues ()[0]) >= c_.p.min_conditioning * eigen.eigenvalues ()[2]);
-    if (!degenerate_cache_.empty ())
-      degenerate_cache_[key] = result ? 2 : 1;
-    return result;
+    return !(std::max (0.0, eigen.eigenvalues ()[0]) >= c_.p.min_conditioning * eigen.eigenvalues ()[2]);
   }
 
-  // A necessary condition of the distance part of constraint 3 that needs no estimate. For any
-  // four pairs whose map normals span 3D, lambda_i = (-1)^i det(the other three normals) gives
-  // sum lambda_i n_m,i = 0, which eliminates the translation: for any point p,
-  //   sum lambda_i r_i = sum lambda_i (R^T n_m,i . (a_i - p) - d_m,i),
-  // r_i the distance residual of pair i at its anchor a_i. If the combination passes, |r_i| <=
-  // distance_tol and R^T n_m,i = s_i n_s,i + e_i with |e_i| <= normal_slack, hence
-  //   |sum lambda_i (s_i n_s,i . (a_i - p) - d_m,i)| <= sum |lambda_i| (distance_tol +
-  //                                                    normal_slack |a_i - p|).
-  // A sign pattern that breaks it cannot pass, so its estimate is skipped; the bound never
-  // rejects a combination the estimate accepts. A margin of 1e-9 of the magnitudes involved
-  // covers rounding (sum lambda_i n_m,i is zero only to rounding, times the map coordinates).
+  // Constraint 3 screened before the estimate by necessary conditions that need none: a sign
+  // pattern that breaks one cannot pass, so its estimate is skipped, and no combination the
+  // estimate would accept is rejected.
+  // 1. Distance (rigid transform, k >= 4). For any four pairs whose map normals span 3D, lambda_i
+  //    = (-1)^i det(the other three normals) gives sum lambda_i n_m,i = 0, which eliminates the
+  //    translation: for any point p,
+  //      sum lambda_i r_i = sum lambda_i (R^T n_m,i . (a_i - p) - d_m,i),
+  //    r_i the distance residual of pair i at its anchor a_i. If the combination passes, |r_i|
+  //    <= distance_tol and R^T n_m,i = s_i n_s,i + e_i with |e_i| <= normal_slack, hence
+  //      |sum lambda_i (s_i n_s,i . (a_i - p) - d_m,i)| <= sum |lambda_i| (distance_tol +
+  //                                                       normal_slack |a_i - p|).
+  //    A margin of 1e-9 of the magnitudes involved covers rounding (sum lambda_i n_m,i is zero
+  //    only to rounding, times the map coordinates).
+  // 2. Up axis (vertical constraint). A near-horizontal pair, both normals within
+  //    vertical_tol of the z axes, R within angle_tol, turns the scan's up axis within
+  //    2 vertical_tol + angle_tol (< 90 degrees) of the map's times the sign of
+  //    s_i n_s,z n_m,z: where that sign is negative, R(2, 2) < 0 and the up test fails.
   void
   prepareScreen ()
   {
     const int k = c_.p.k;
     subsets_ = 0;
-    for (int a = 0; a < k; ++a)
-      for (int b = a + 1; b < k; ++b)
-        for (int cc = b + 1; cc < k; ++cc)
-          for (int d = cc + 1; d < k; ++d)
-          {
-            Subset& sub = subset_[subsets_];
-            const int index[4] = {a, b, cc, d};
-            int n[4];
-            for (int i = 0; i < 4; ++i)
-              n[i] = m_[index[i]];
-            const double lambda[4] = {mapTriple (n[1], n[2], n[3]), -mapTriple (n[0], n[2], n[3]),
-                                      mapTriple (n[0], n[1], n[3]), -mapTriple (n[0], n[1], n[2])};
-            double weight = 0.0;
-            Eigen::Vector3d p = Eigen::Vector3d::Zero ();
-            for (int i = 0; i < 4; ++i)
+    if (c_.distance_screen)
+      for (int a = 0; a < k; ++a)
+        for (int b = a + 1; b < k; ++b)
+          for (int cc = b + 1; cc < k; ++cc)
+            for (int d = cc + 1; d < k; ++d)
             {
-              weight += std::abs (lambda[i]);
-              p += std::abs (lambda[i]) * c_.scan_anchor[s_[index[i]]];
+              Subset& sub = subset_[subsets_];
+              const int index[4] = {a, b, cc, d};
+              int n[4];
+              for (int i = 0; i < 4; ++i)
+                n[i] = m_[index[i]];
+              const double lambda[4] = {mapTriple (n[1], n[2], n[3]), -mapTriple (n[0], n[2], n[3]),
+                                        mapTriple (n[0], n[1], n[3]), -mapTriple (n[0], n[1], n[2])};
+              double weight = 0.0;
+              Eigen::Vector3d p = Eigen::Vector3d::Zero ();
+              for (int i = 0; i < 4; ++i)
+              {
+                weight += std::abs (lambda[i]);
+                p += std::abs (lambda[i]) * c_.scan_anchor[s_[index[i]]];
+              }
+              if (!(weight > 0.0))
+                continue;  // normals in a plane: no condition
+              p /= weight;
+              double bound = 0.0, magnitude = 1.0;
+              sub.offset = 0.0;
+              for (int i = 0; i < 4; ++i)
+              {
+                const Eigen::Vector3d arm = c_.scan_anchor[s_[index[i]]] - p;
+                const double q = scan_ptr_[index[i]]->normal.dot (arm), dm = map_ptr_[index[i]]->d;
+                const double length = arm.norm ();
+                sub.index[i] = index[i];
+                sub.lambda_q[i] = lambda[i] * q;
+                sub.offset += lambda[i] * dm;
+                bound += std::abs (lambda[i]) * (c_.distance_tol + c_.normal_slack * length);
+                magnitude += std::abs (lambda[i]) * (std::abs (q) + std::abs (dm) + length +
+                                                     c_.scan_anchor_norm[s_[index[i]]]);
+              }
+              sub.bound = bound + 1e-9 * magnitude;
+              ++subsets_;
             }
-            if (!(weight > 0.0))
-              continue;  // normals in a plane: no condition
-            p /= weight;
-            double bound = 0.0, magnitude = 1.0;
-            sub.offset = 0.0;
-            for (int i = 0; i < 4; ++i)
-            {
-              const Eigen::Vector3d arm = c_.scan_anchor[s_[index[i]]] - p;
-              const double q = scan_ptr_[index[i]]->normal.dot (arm), dm = map_ptr_[index[i]]->d;
-              const double length = arm.norm ();
-              sub.index[i] = index[i];
-              sub.lambda_q[i] = lambda[i] * q;
-              sub.offset += lambda[i] * dm;
-              bound += std::abs (lambda[i]) * (c_.distance_tol + c_.normal_slack * length);
-              magnitude += std::abs (lambda[i]) * (std::abs (q) + std::abs (dm) + length +
-                                                   c_.scan_anchor_norm[s_[index[i]]]);
-            }
-            sub.bound = bound + 1e-9 * magnitude;
-            ++subsets_;
-          }
+    up_pairs_ = up_flipped_ = 0;
+    if (c_.up_screen)
+      for (int i = 0; i < k; ++i)
+        if (c_.scan_class[s_[i]] == Horizontal)
+        {
+          up_pairs_ |= 1u << i;
+          if (scan_ptr_[i]->normal.z () * map_ptr_[i]->normal.z () < 0.0)
+            up_flipped_ |= 1u << i;
+        }
   }
 
+  // The screen of the pattern \a mask (bit i set: pair i flipped).
   bool
-  passesScreen (const int* signs) const
+  passesScreen (unsigned mask) const
   {
+    if ((mask ^ up_flipped_) & up_pairs_)
+      return false;
     for (int t = 0; t < subsets_; ++t)
     {
       const Subset& sub = subset_[t];
       double sum = -sub.offset;
       for (int i = 0; i < 4; ++i)
-        sum += signs[sub.index[i]] * sub.lambda_q[i];
+        sum += (mask >> sub.index[i] & 1u ? -1.0 : 1.0) * sub.lambda_q[i];
       if (std::abs (sum) > sub.bound)
         return false;
     }
     return true;
   }
 
-  // Whether the pattern \a signs, as the estimate will keep it (mirrored when its affine block
+  // Whether the pattern \a mask, as the estimate will keep it (mirrored when its affine block
   // has a negative determinant), can pass constraint 3.
   bool
-  screen (const int* signs)
+  screen (unsigned mask)
   {
     const int k = c_.p.k;
     if (!screen_ready_)
@@ -398,11 +415,8 @@ private:
       screen_ready_ = true;
     }
     if (c_.p.oriented_normals)
-      return passesScreen (signs);
-    int flipped[kMaxK];
-    for (int i = 0; i < k; ++i)
-      flipped[i] = -signs[i];
-    const bool direct = passesScreen (signs), mirror = passesScreen (flipped);
+      return passesScreen (mask);
+    const bool direct = passesScreen (mask), mirror = passesScreen (mask ^ ((1u << k) - 1));
     if (direct == mirror)
       return direct;
     // det (sum s_i n_s,i n_m,i^T) has the sign of the estimate's affine block (N^-1 is positive
@@ -415,17 +429,23 @@ private:
     }
     Eigen::Matrix3d c = Eigen::Matrix3d::Zero ();
     for (int i = 0; i < k; ++i)
-      c += signs[i] * outer_[i];
+      c += (mask >> i & 1u ? -1.0 : 1.0) * outer_[i];
     const double det = c.determinant ();
     return det > 1e-6 ? direct : det < -1e-6 ? mirror : true;
   }
 
+  // A combination that passed constraints 1 and 2: its sign patterns, estimates and extension.
   void
   leaf ()
   {
     const int k = c_.p.k;
     ++stats.orientation;
     const std::uint64_t order = order_++;
+    if (known_.empty () && degenerateMap ())
+    {
+      ++stats.degenerate;
+      return;
+    }
     scan_ptr_.resize (k);
     map_ptr_.resize (k);
     for (int i = 0; i < k; ++i)
@@ -433,69 +453,79 @@ private:
       scan_ptr_[i] = &c_.scan[c_.scan_init[s_[i]]];
       map_ptr_[i] = &c_.map[c_.map_init[m_[i]]];
     }
-    // Degenerate sets (map normals not spanning 3D) are reported, not solved.
-    if (degenerate ())
-    {
-      ++stats.degenerate;
-      return;
-    }
     screen_ready_ = outer_ready_ = false;
-    if (!c_.p.oriented_normals && c_.p.orientation_constraint)
-      prepareSigns ();
 
-    // Handedness: a rotation keeps the sign of det(n_i, n_j, n_l) of well-spread triples, so of
-    // a sign pattern and its mirror image only one can fit.
-    // A pattern is kept when an odd number of the pairs of each such triple (bit t of
-    // pattern_parity) are flipped exactly where the determinants disagree in sign.
-    std::uint64_t spread = 0, odd = 0;
+    // The sign patterns to try (bit i of a pattern: pair i flipped), as a bit set over patterns.
+    const int words = static_cast<int> (c_.all_patterns.size ());
+    std::uint64_t patterns[kMaxPatternWords];
+    for (int w = 0; w < words; ++w)
+      patterns[w] = c_.p.oriented_normals ? (w == 0) : c_.all_patterns[w];
+    auto keep = [&] (const std::uint64_t* set, bool inside) {
+      for (int w = 0; w < words; ++w)
+        patterns[w] &= inside ? set[w] : ~set[w];
+    };
     if (!c_.p.oriented_normals)
     {
-      int bit = 0;
+      // Signed orientation: each pair (i, j) keeps its relative sign (same or opposite signs)
+      // only where the angle of the scan normals, or its supplement, agrees with the map's.
+      int t = 0;
+      for (int i = 0; i < k; ++i)
+        for (int j = i + 1; j < k; ++j, ++t)
+        {
+          if (!c_.p.orientation_constraint)
+            continue;
+          const double a = scanAngle (s_[i], s_[j]), b = mapAngle (m_[i], m_[j]);
+          const bool same = !(std::abs (a - b) > c_.orientation_tol);
+          const bool opposite = !(std::abs ((M_PI - a) - b) > c_.orientation_tol);
+          if (!same && !opposite)
+            return;
+          if (!same || !opposite)
+            keep (&c_.pair_opposite[t * words], opposite);
+        }
+      // Handedness: a rotation keeps the sign of det(n_i, n_j, n_l) of well-spread triples, so
+      // of a sign pattern and its mirror image only one can fit: an odd number of the pairs of
+      // the triple are flipped exactly where the scan and map determinants differ in sign.
+      t = 0;
       for (int i = 0; i < k; ++i)
         for (int j = i + 1; j < k; ++j)
-          for (int l = j + 1; l < k; ++l, ++bit)
+          for (int l = j + 1; l < k; ++l, ++t)
           {
             const double dm = mapTriple (m_[i], m_[j], m_[l]), ds = scanTriple (s_[i], s_[j], s_[l]);
             if (std::abs (dm) < 0.3 || std::abs (ds) < 0.3)
               continue;
-            spread |= std::uint64_t (1) << bit;
-            if ((dm > 0.0) != (ds > 0.0))
-              odd |= std::uint64_t (1) << bit;
+            keep (&c_.triple_odd[t * words], (dm > 0.0) != (ds > 0.0));
           }
     }
 
     bool found = false;
-    const unsigned patterns = c_.p.oriented_normals ? 1u : (1u << k);
-    for (unsigned mask = 0; mask < patterns; ++mask)
-    {
-      if (!c_.p.oriented_normals && c_.p.orientation_constraint && !signsAgree (mask))
-        continue;
-      if ((c_.pattern_parity[mask] ^ odd) & spread)
-        continue;  // mirrored
-      int signs[kMaxK];
-      for (int i = 0; i < k; ++i)
-        signs[i] = (mask >> i) & 1u ? -1 : 1;
-      if (c_.distance_bound && !screen (signs))
-        continue;
-      if (!estimate (signs, k, trial_))
-        continue;
-      if (!c_.p.oriented_normals && trial_.affine.leftCols<3> ().determinant () < 0.0)
+    for (int w = 0; w < words; ++w)
+      for (; patterns[w]; patterns[w] &= patterns[w] - 1)
       {
-        // A mirror image: the pattern with every sign flipped is the rotation.
+        const unsigned mask = static_cast<unsigned> (64 * w + __builtin_ctzll (patterns[w]));
+        int signs[kMaxK];
         for (int i = 0; i < k; ++i)
-          signs[i] = -signs[i];
+          signs[i] = (mask >> i) & 1u ? -1 : 1;
+        if (c_.screen && !screen (mask))
+          continue;
         if (!estimate (signs, k, trial_))
           continue;
+        if (!c_.p.oriented_normals && trial_.affine.leftCols<3> ().determinant () < 0.0)
+        {
+          // A mirror image: the pattern with every sign flipped is the rotation.
+          for (int i = 0; i < k; ++i)
+            signs[i] = -signs[i];
+          if (!estimate (signs, k, trial_))
+            continue;
+        }
+        if (c_.p.residual_constraint && !withinTolerance (trial_))
+          continue;
+        if (!found || trial_.residual_norm < initial_.residual_norm)
+        {
+          initial_ = trial_;
+          std::copy (signs, signs + k, initial_signs_);
+          found = true;
+        }
       }
-      if (c_.p.residual_constraint && !withinTolerance (trial_))
-        continue;
-      if (!found || trial_.residual_norm < initial_.residual_norm)
-      {
-        initial_ = trial_;
-        std::copy (signs, signs + k, initial_signs_);
-        found = true;
-      }
-    }
     if (!found)
       return;
     pairs_.clear ();
@@ -633,8 +663,8 @@ private:
   int subsets_ = 0;
   Eigen::Matrix3d outer_[kMaxK];  // n_s,i n_m,i^T
   bool screen_ready_ = false, outer_ready_ = false;
-  std::uint32_t same_ok_ = 0, flip_ok_ = 0, all_pairs_ = 0;
-  std::vector<signed char> degenerate_cache_;
+  unsigned up_pairs_ = 0, up_flipped_ = 0;  // near-horizontal pairs; those whose z signs differ
+  std::vector<std::uint64_t> known_, degenerate_;  // degeneracy cache, see the constructor
   int initial_signs_[kMaxK] = {};
   std::uint64_t order_ = 0;
   std::vector<const RegistrationPlane*> scan_ptr_, map_ptr_;
@@ -789,22 +819,27 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
   };
   c.scan_triple = triples (scan, c.scan_init);
   c.map_triple = triples (map, c.map_init);
-  for (unsigned mask = 0; mask < (1u << k); ++mask)
-  {
-    std::uint32_t pairs = 0;
-    std::uint64_t parity = 0;
-    int bit = 0;
-    for (int i = 0; i < k; ++i)
-      for (int j = i + 1; j < k; ++j, ++bit)
-        pairs |= static_cast<std::uint32_t> (((mask >> i) ^ (mask >> j)) & 1u) << bit;
-    bit = 0;
-    for (int i = 0; i < k; ++i)
-      for (int j = i + 1; j < k; ++j)
-        for (int l = j + 1; l < k; ++l, ++bit)
-          parity |= static_cast<std::uint64_t> (((mask >> i) ^ (mask >> j) ^ (mask >> l)) & 1u) << bit;
-    c.pattern_pairs.push_back (pairs);
-    c.pattern_parity.push_back (parity);
-  }
+  const unsigned patterns = 1u << k;
+  const std::size_t words = (patterns + 63) / 64;
+  auto patternSet = [&] (auto test) {
+    std::vector<std::uint64_t> set (words, 0);
+    for (unsigned mask = 0; mask < patterns; ++mask)
+      if (test (mask))
+        set[mask / 64] |= std::uint64_t (1) << (mask % 64);
+    return set;
+  };
+  c.all_patterns = patternSet ([] (unsigned) { return true; });
+  for (int i = 0; i < k; ++i)
+    for (int j = i + 1; j < k; ++j)
+    {
+      const auto set = patternSet ([&] (unsigned mask) { return ((mask >> i) ^ (mask >> j)) & 1u; });
+      c.pair_opposite.insert (c.pair_opposite.end (), set.begin (), set.end ());
+      for (int l = j + 1; l < k; ++l)
+      {
+        const auto odd = patternSet ([&] (unsigned mask) { return ((mask >> i) ^ (mask >> j) ^ (mask >> l)) & 1u; });
+        c.triple_odd.insert (c.triple_odd.end (), odd.begin (), odd.end ());
+      }
+    }
 
   stats.unconstrained = countInitialCombinations (m, n, k);
   if (parameters.vertical_constraint)
