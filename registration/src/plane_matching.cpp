@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -127,6 +128,9 @@ struct Context
   std::vector<int> scan_init, map_init;  // the m and n initial planes
   std::vector<int> scan_class, map_class;
   std::vector<double> scan_angle, map_angle;  // angle between normals, row-major m x m, n x n
+  // Extension: the map planes each scan plane may pair with (all of them, or see matchPlanes).
+  std::vector<std::vector<int>> reachable;
+  std::vector<std::array<int, 4>> subsets;  // the 4-subsets of k pairs, for the distance screen
   // Constraints 1 and 2: bit mp of compatible[(s * n + m) * m + sp] is set when the pair
   // (sp, mp) may join a combination that holds the pair (s, m) (initial plane positions).
   std::vector<std::uint64_t> compatible;
@@ -335,45 +339,53 @@ private:
     const int k = c_.p.k;
     subsets_ = 0;
     if (c_.distance_screen)
-      for (int a = 0; a < k; ++a)
-        for (int b = a + 1; b < k; ++b)
-          for (int cc = b + 1; cc < k; ++cc)
-            for (int d = cc + 1; d < k; ++d)
-            {
-              Subset& sub = subset_[subsets_];
-              const int index[4] = {a, b, cc, d};
-              int n[4];
-              for (int i = 0; i < 4; ++i)
-                n[i] = m_[index[i]];
-              const double lambda[4] = {mapTriple (n[1], n[2], n[3]), -mapTriple (n[0], n[2], n[3]),
-                                        mapTriple (n[0], n[1], n[3]), -mapTriple (n[0], n[1], n[2])};
-              double weight = 0.0;
-              Eigen::Vector3d p = Eigen::Vector3d::Zero ();
-              for (int i = 0; i < 4; ++i)
-              {
-                weight += std::abs (lambda[i]);
-                p += std::abs (lambda[i]) * c_.scan_anchor[s_[index[i]]];
-              }
-              if (!(weight > 0.0))
-                continue;  // normals in a plane: no condition
-              p /= weight;
-              double bound = 0.0, magnitude = 1.0;
-              sub.offset = 0.0;
-              for (int i = 0; i < 4; ++i)
-              {
-                const Eigen::Vector3d arm = c_.scan_anchor[s_[index[i]]] - p;
-                const double q = scan_ptr_[index[i]]->normal.dot (arm), dm = map_ptr_[index[i]]->d;
-                const double length = arm.norm ();
-                sub.index[i] = index[i];
-                sub.lambda_q[i] = lambda[i] * q;
-                sub.offset += lambda[i] * dm;
-                bound += std::abs (lambda[i]) * (c_.distance_tol + c_.normal_slack * length);
-                magnitude += std::abs (lambda[i]) * (std::abs (q) + std::abs (dm) + length +
-                                                     c_.scan_anchor_norm[s_[index[i]]]);
-              }
-              sub.bound = bound + 1e-9 * magnitude;
-              ++subsets_;
-            }
+    {
+      // The scan side (p the mean of the four anchors) is shared by the leaves of a scan tuple.
+      if (!std::equal (s_, s_ + k, screen_scan_))
+      {
+        std::copy (s_, s_ + k, screen_scan_);
+        for (std::size_t t = 0; t < c_.subsets.size (); ++t)
+        {
+          const auto& index = c_.subsets[t];
+          Eigen::Vector3d p = Eigen::Vector3d::Zero ();
+          for (int i = 0; i < 4; ++i)
+            p += 0.25 * c_.scan_anchor[s_[index[i]]];
+          for (int i = 0; i < 4; ++i)
+          {
+            const Eigen::Vector3d arm = c_.scan_anchor[s_[index[i]]] - p;
+            const double q = c_.scan[c_.scan_init[s_[index[i]]]].normal.dot (arm), length = arm.norm ();
+            scan_side_[t].q[i] = q;
+            scan_side_[t].allowance[i] = c_.distance_tol + c_.normal_slack * length;
+            scan_side_[t].magnitude[i] = std::abs (q) + length + c_.scan_anchor_norm[s_[index[i]]];
+          }
+        }
+      }
+      for (std::size_t t = 0; t < c_.subsets.size (); ++t)
+      {
+        const auto& index = c_.subsets[t];
+        Subset& sub = subset_[subsets_];
+        int n[4];
+        for (int i = 0; i < 4; ++i)
+          n[i] = m_[index[i]];
+        const double lambda[4] = {mapTriple (n[1], n[2], n[3]), -mapTriple (n[0], n[2], n[3]),
+                                  mapTriple (n[0], n[1], n[3]), -mapTriple (n[0], n[1], n[2])};
+        if (lambda[0] == 0.0 && lambda[1] == 0.0 && lambda[2] == 0.0 && lambda[3] == 0.0)
+          continue;  // normals in a plane: no condition
+        double bound = 0.0, magnitude = 1.0;
+        sub.offset = 0.0;
+        for (int i = 0; i < 4; ++i)
+        {
+          const double dm = map_ptr_[index[i]]->d;
+          sub.index[i] = index[i];
+          sub.lambda_q[i] = lambda[i] * scan_side_[t].q[i];
+          sub.offset += lambda[i] * dm;
+          bound += std::abs (lambda[i]) * scan_side_[t].allowance[i];
+          magnitude += std::abs (lambda[i]) * (scan_side_[t].magnitude[i] + std::abs (dm));
+        }
+        sub.bound = bound + 1e-9 * magnitude;
+        ++subsets_;
+      }
+    }
     up_pairs_ = up_flipped_ = 0;
     if (c_.up_screen)
       for (int i = 0; i < k; ++i)
@@ -563,13 +575,16 @@ private:
         const int j = c_.scan_order[position];
         if (used_scan_[j])
           continue;
+        const std::vector<int>& reachable = c_.reachable[j];
+        if (std::all_of (reachable.begin (), reachable.end (), [&] (int i) { return used_map_[i]; }))
+          continue;
         // The image of the scan plane, its extent only once a map plane is near enough.
         const Eigen::Vector3d normal = mover.normal (c_.scan[j]), centroid = mover.point (c_.scan[j].centroid);
         Eigen::AlignedBox3d extent;
         bool have_extent = false;
         int best_map = -1, best_sign = 1;
         double best_score = std::numeric_limits<double>::infinity ();
-        for (std::size_t i = 0; i < c_.map.size (); ++i)
+        for (const int i : reachable)
         {
           if (used_map_[i])
             continue;
@@ -595,7 +610,7 @@ private:
           if (score < best_score)
           {
             best_score = score;
-            best_map = static_cast<int> (i);
+            best_map = i;
             best_sign = sign;
           }
         }
@@ -656,10 +671,18 @@ private:
     double offset;       // sum lambda_i d_m,i
     double bound;
   };
+  struct ScanSide
+  {
+    double q[4];          // n_s,i . (a_i - p)
+    double allowance[4];  // distance_tol + normal_slack |a_i - p|
+    double magnitude[4];  // for the rounding margin
+  };
 
   const Context& c_;
   int s_[kMaxK] = {}, m_[kMaxK] = {};
   Subset subset_[kMaxSubsets] = {};
+  ScanSide scan_side_[kMaxSubsets] = {};
+  int screen_scan_[kMaxK] = {-1, -1, -1, -1, -1, -1, -1, -1};  // the scan tuple of scan_side_
   int subsets_ = 0;
   Eigen::Matrix3d outer_[kMaxK];  // n_s,i n_m,i^T
   bool screen_ready_ = false, outer_ready_ = false;
@@ -819,6 +842,27 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
   };
   c.scan_triple = triples (scan, c.scan_init);
   c.map_triple = triples (map, c.map_init);
+  // Extension under the vertical and residual constraints: every transform it applies keeps the
+  // scan's up axis within vertical_tol of the map's, so it changes the elevation of a line by
+  // vertical_tol at most, and a pair within angle_tol differs in elevation by angle_tol +
+  // vertical_tol at most (plus 1e-6 rad for rounding). Other map planes are not looked at.
+  auto elevation = [] (const RegistrationPlane& plane) {
+    return std::asin (std::min (1.0, std::abs (plane.normal.z ()) / plane.normal.norm ()));
+  };
+  const bool by_elevation = parameters.vertical_constraint && parameters.residual_constraint;
+  const double elevation_tol = c.angle_tol + parameters.vertical_tolerance_deg * kDegree + 1e-6;
+  c.reachable.resize (scan.size ());
+  for (std::size_t j = 0; j < scan.size (); ++j)
+    for (std::size_t i = 0; i < map.size (); ++i)
+      if (!by_elevation || std::abs (elevation (scan[j]) - elevation (map[i])) <= elevation_tol)
+        c.reachable[j].push_back (static_cast<int> (i));
+
+  for (int a = 0; a < k; ++a)
+    for (int b = a + 1; b < k; ++b)
+      for (int d = b + 1; d < k; ++d)
+        for (int e = d + 1; e < k; ++e)
+          c.subsets.push_back ({a, b, d, e});
+
   const unsigned patterns = 1u << k;
   const std::size_t words = (patterns + 63) / 64;
   auto patternSet = [&] (auto test) {
