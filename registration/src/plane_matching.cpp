@@ -845,12 +845,13 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
   // Extension under the vertical and residual constraints: every transform it applies keeps the
   // scan's up axis within vertical_tol of the map's, so it changes the elevation of a line by
   // vertical_tol at most, and a pair within angle_tol differs in elevation by angle_tol +
-  // vertical_tol at most (plus 1e-6 rad for rounding). Other map planes are not looked at.
+  // vertical_tol at most (plus 1e-4 rad for normals of length 1 +- 1e-6 and rounding). Other
+  // map planes are not looked at.
   auto elevation = [] (const RegistrationPlane& plane) {
     return std::asin (std::min (1.0, std::abs (plane.normal.z ()) / plane.normal.norm ()));
   };
   const bool by_elevation = parameters.vertical_constraint && parameters.residual_constraint;
-  const double elevation_tol = c.angle_tol + parameters.vertical_tolerance_deg * kDegree + 1e-6;
+  const double elevation_tol = c.angle_tol + parameters.vertical_tolerance_deg * kDegree + 1e-4;
   c.reachable.resize (scan.size ());
   for (std::size_t j = 0; j < scan.size (); ++j)
     for (std::size_t i = 0; i < map.size (); ++i)

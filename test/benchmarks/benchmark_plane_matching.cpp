@@ -15,7 +15,7 @@ int
 main (int argc, char** argv)
 {
   double step = 0.5, noise = 0.2;
-  int repeats = 3, max_m = 12;
+  int repeats = 5, max_m = 12;
   unsigned int threads = 0;
   pcl_ext::tools::CommandLine cl ("pcl_ext_benchmark_plane_matching",
                                   "Times plane matching for m = n = 7..12, k = 4 (Table 3).");
@@ -63,9 +63,10 @@ main (int argc, char** argv)
   const unsigned long paper_k3[] = {7350, 18816, 42336, 86400, 163350, 290400};
   const unsigned long paper_orientation[] = {582, 1039, 1859, 3035, 4838, 7206};
   const unsigned long paper_residual[] = {49, 109, 276, 617, 1661, 3982};
-  std::printf ("%5s | %10s %10s | %10s %10s | %8s %8s | %9s %9s | %7s | %10s %9s\n", "m=n", "k3 none", "paper",
-               "k3 orient", "paper", "k4 resid", "paper", "k4 none", "k4 orient", "matches", "time (s)",
-               "paper (s)");
+  std::printf ("%5s | %10s %10s | %10s %10s | %8s %8s | %9s %9s %9s | %7s | %10s %9s\n", "m=n", "k3 none",
+               "paper", "k3 orient", "paper", "k4 resid", "paper", "k4 none", "k4 orient", "k4 estim",
+               "matches", "time (s)", "paper (s)");
+  double last = 0.0;
   for (int size = 7; size <= std::min (max_m, 12); ++size)
   {
     pcl_ext::PlaneMatchingParameters parameters;
@@ -87,13 +88,16 @@ main (int argc, char** argv)
       }
     }
     const int i = size - 7;
-    std::printf ("%5d | %10llu %10lu | %10llu %10lu | %8llu %8lu | %9llu %9llu | %7zu | %10.4f %9.1f\n", size,
-                 (unsigned long long) k3.statistics.unconstrained, paper_k3[i],
+    std::printf ("%5d | %10llu %10lu | %10llu %10lu | %8llu %8lu | %9llu %9llu %9llu | %7zu | %10.4f %9.1f\n",
+                 size, (unsigned long long) k3.statistics.unconstrained, paper_k3[i],
                  (unsigned long long) k3.statistics.orientation, paper_orientation[i],
                  (unsigned long long) k4.statistics.residual, paper_residual[i],
                  (unsigned long long) k4.statistics.unconstrained, (unsigned long long) k4.statistics.orientation,
-                 k4.matches.size (), best, paper_seconds[i]);
+                 (unsigned long long) k4.statistics.estimations, k4.matches.size (), best, paper_seconds[i]);
+    last = best;
   }
-  std::printf ("ratio of the m = n = 12 time to the paper's 302.5 s is printed above; goal: <= 0.05 s\n");
+  if (max_m >= 12)
+    std::printf ("m = n = 12, k = 4: %.4f s, paper 302.5 s; goal: at most 0.05 s -> %s\n", last,
+                 last <= 0.05 ? "met" : "NOT met");
   return 0;
 }

@@ -77,11 +77,13 @@ struct PlaneMatchingResult
   *    since its affine fit of 3 planes is exact; the projected rigid fit is not, so it applies
   *    for k = 3 too.
   * Combinations whose map normals do not span 3D are counted as degenerate and skipped.
-  * Before its estimate, each sign pattern of a combination is screened by a necessary condition
-  * of constraint 3 that needs no estimate: for four pairs, the combination of their distance
-  * rows that cancels the translation must stay within what the tolerances allow (see
-  * plane_matching.cpp). It skips most estimates and never rejects a combination the estimate
-  * would accept, so the counts and the result are those of estimating every combination.
+  * Before its estimate, each sign pattern of a combination is screened by necessary conditions
+  * of constraint 3 that need no estimate (see plane_matching.cpp): for four pairs, the
+  * combination of their distance rows that cancels the translation must stay within what the
+  * tolerances allow, and under constraint 1 no near-horizontal pair may turn the up axis over.
+  * They skip most estimates (on the building scene at m = n = 12, k = 4: 8,849 instead of
+  * 209,930) and never reject a combination the estimate would accept, so the counts and the
+  * result are those of estimating every combination.
   * Each surviving combination is extended: every other scan plane (all of them, largest
   * first) is transformed to the map and paired with the most similar unused map plane; the pair
   * is kept if the transform re-estimated with it keeps every residual within the tolerances.
