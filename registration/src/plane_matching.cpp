@@ -579,7 +579,8 @@ private:
         if (std::all_of (reachable.begin (), reachable.end (), [&] (int i) { return used_map_[i]; }))
           continue;
         // The image of the scan plane, its extent only once a map plane is near enough.
-        const Eigen::Vector3d normal = mover.normal (c_.scan[j]), centroid = mover.point (c_.scan[j].centroid);
+        const Eigen::Vector3d normal = mover.normal (c_.scan[j]);
+        const Eigen::Vector3d centroid = mover.point (c_.scan[j].centroid);
         Eigen::AlignedBox3d extent;
         bool have_extent = false;
         int best_map = -1, best_sign = 1;
@@ -801,7 +802,8 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
   };
   for (const int i : c.scan_init)
   {
-    c.scan_anchor.push_back (scan[i].centroid - (scan[i].normal.dot (scan[i].centroid) - scan[i].d) * scan[i].normal);
+    const RegistrationPlane& plane = scan[i];
+    c.scan_anchor.push_back (plane.centroid - (plane.normal.dot (plane.centroid) - plane.d) * plane.normal);
     c.scan_anchor_norm.push_back (c.scan_anchor.back ().norm ());
   }
   c.scan_angle = angles (scan, c.scan_init);
@@ -822,7 +824,8 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
         std::uint64_t& bits = c.compatible[(static_cast<std::size_t> (s) * n + t) * m + sp];
         for (int mp = 0; mp < n; ++mp)
         {
-          if (parameters.vertical_constraint && (c.scan_class[sp] == Other || c.scan_class[sp] != c.map_class[mp]))
+          if (parameters.vertical_constraint &&
+              (c.scan_class[sp] == Other || c.scan_class[sp] != c.map_class[mp]))
             continue;
           if (parameters.orientation_constraint &&
               std::abs (scan_line[s * m + sp] - map_line[t * n + mp]) > c.orientation_tol)
@@ -881,7 +884,8 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
       c.pair_opposite.insert (c.pair_opposite.end (), set.begin (), set.end ());
       for (int l = j + 1; l < k; ++l)
       {
-        const auto odd = patternSet ([&] (unsigned mask) { return ((mask >> i) ^ (mask >> j) ^ (mask >> l)) & 1u; });
+        const auto odd =
+            patternSet ([&] (unsigned mask) { return ((mask >> i) ^ (mask >> j) ^ (mask >> l)) & 1u; });
         c.triple_odd.insert (c.triple_odd.end (), odd.begin (), odd.end ());
       }
     }

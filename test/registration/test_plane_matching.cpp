@@ -138,11 +138,13 @@ TEST (PlaneMatching, ConstraintsCutCombinationsByOrdersOfMagnitude)
   EXPECT_LT (s.orientation, s.unconstrained / 10);
   EXPECT_LT (s.residual, s.unconstrained / 1000);
   EXPECT_GT (s.residual, 0u);
+  // The screens of constraint 3 leave fewer estimates than there are combinations to estimate.
+  EXPECT_LT (s.estimations, s.orientation - s.degenerate);
   std::printf ("m = n = 12, k = 4: %llu unconstrained, %llu vertical, %llu orientation (%llu "
-               "degenerate), %llu residual, %.4f s\n",
+               "degenerate), %llu residual, %llu estimates, %.4f s\n",
                (unsigned long long) s.unconstrained, (unsigned long long) s.vertical,
                (unsigned long long) s.orientation, (unsigned long long) s.degenerate,
-               (unsigned long long) s.residual, s.seconds);
+               (unsigned long long) s.residual, (unsigned long long) s.estimations, s.seconds);
 }
 
 TEST (PlaneMatching, DeterministicForAnyThreadCountAndNormalSigns)

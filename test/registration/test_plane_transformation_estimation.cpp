@@ -146,3 +146,30 @@ TEST (PlaneTransformationEstimation, DegenerateSetsAreReportedNotSolved)
   g.scan[1].d = std::numeric_limits<double>::quiet_NaN ();
   EXPECT_FALSE (estimatePlaneTransformation (g.scan, g.map, g.pairs, PlaneTransformationModel::Rigid, r));
 }
+
+TEST (PlaneTransformationEstimation, PlaneTransformerGivesTransformPlaneByParts)
+{
+  std::mt19937 rng (31);
+  Eigen::Matrix4d transformation = test::randomPose (rng);
+  transformation.topLeftCorner<3, 3> () *= 1.5;  // a similarity
+  RegistrationPlane plane;
+  plane.normal = Eigen::Vector3d (0.3, -0.4, 0.2).normalized ();
+  plane.d = 7.5;
+  plane.centroid = plane.d * plane.normal + Eigen::Vector3d (0.4, 0.3, 0.0);
+  plane.extent = Eigen::AlignedBox3d (Eigen::Vector3d (-1, -2, 3), Eigen::Vector3d (4, 5, 6));
+  const RegistrationPlane whole = transformPlane (plane, transformation);
+  const PlaneTransformer mover (transformation);
+  // The parts are those of the whole image to the last bit.
+  EXPECT_EQ (mover.normal (plane), whole.normal);
+  EXPECT_EQ (mover.point (plane.centroid), whole.centroid);
+  EXPECT_EQ (mover.extent (plane).min (), whole.extent.min ());
+  EXPECT_EQ (mover.extent (plane).max (), whole.extent.max ());
+  // The image plane holds the images of the plane's points.
+  const Eigen::Vector3d on_plane = plane.d * plane.normal + Eigen::Vector3d (0.4, 0.3, -0.1).cross (plane.normal);
+  EXPECT_NEAR (whole.signedDistance (mover.point (on_plane)), 0.0, 1e-9);
+  EXPECT_NEAR (whole.normal.norm (), 1.0, 1e-12);
+  // No extent stays no extent.
+  plane.extent.setEmpty ();
+  EXPECT_TRUE (mover.extent (plane).isEmpty ());
+  EXPECT_TRUE (transformPlane (plane, transformation).extent.isEmpty ());
+}
