@@ -103,7 +103,7 @@ main (int argc, char** argv)
   double noise = 0.005, noise_per_metre = 0.0, step = 0.0, max_range = 0.0, edge_distance = 0.0,
          height = 10.0;
   std::string positions, offset, footprint, pose;
-  bool identity_pose = false, ascii = false, curves_only = false;
+  bool identity_pose = false, ascii = false, curves_only = false, surface_segments = false;
 
   std::string names;
   for (const auto& n : simulation::sceneNames ())
@@ -127,6 +127,8 @@ main (int argc, char** argv)
                 "distance to a crease/border for class edge/boundary; 0 = local spacing range*step");
   cl.addSwitch ("curve_boundaries_only", curves_only,
                 "class boundary only along the scene's borders, not along shadows and the blind cone");
+  cl.addSwitch ("surface_segments", surface_segments,
+                "one segment id per surface as built, not per connected visible piece of it");
   cl.addOption ("offset", offset, "'x,y,z' added to all coordinates (georeferenced-like); building: to the map");
   cl.addOption ("threads", threads, "threads; 0 = all cores (output is identical for any count)");
   cl.addOption ("footprint", footprint, "building: footprint, WKT POLYGON((x y, ..., x y)) or a footprint file (.wkt, .geojson, .txt)");
@@ -154,6 +156,7 @@ main (int argc, char** argv)
   parameters.max_range = max_range;
   parameters.edge_distance = edge_distance;
   parameters.coverage_boundaries = !curves_only;
+  parameters.connected_segments = !surface_segments;
   parameters.threads = threads;
   parameters.building_height = height;
   parameters.superfluous_planes = superfluous;

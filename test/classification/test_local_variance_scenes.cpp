@@ -72,14 +72,16 @@ scene (const std::string& name)
     const auto row = (*s->nb)[i];
     const double radius = row.empty () ? 0.0 : std::sqrt (row.sqr_distances[row.size () - 1]);
     const Eigen::Vector3d p = scene_from_cloud * Eigen::Vector3d (sim[i].x, sim[i].y, sim[i].z);
-    s->truth[i] = static_cast<std::uint32_t> (geometry.classify (p, sim[i].segment, radius));
+    const auto& surface_of = s->scene.surface_of_segment;
+    s->truth[i] =
+        static_cast<std::uint32_t> (geometry.classify (p, surface_of[sim[i].segment], radius));
     s->curve_truth[i] = s->truth[i];
     // The borders of the scanned part of a surface (shadows, silhouettes, field of view) are
     // not curves of the scene: the scene marks them on the points next to them. A neighbour
     // of the same surface so marked puts the border within the neighbourhood.
     if (s->truth[i] == static_cast<std::uint32_t> (PointClass::Surface))
       for (const auto j : row)
-        if (sim[j].segment == sim[i].segment &&
+        if (surface_of[sim[j].segment] == surface_of[sim[i].segment] &&
             sim[j].point_class == static_cast<std::uint32_t> (PointClass::Boundary))
         {
           s->truth[i] = static_cast<std::uint32_t> (PointClass::Boundary);

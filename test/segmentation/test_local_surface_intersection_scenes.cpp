@@ -130,8 +130,10 @@ wallCreaseDistances (const Indoor& s, const Outcome& r)
       continue;
     const Eigen::Vector3d x = scene_from_cloud * Eigen::Vector3d (p.x, p.y, p.z);
     double best = std::numeric_limits<double>::infinity ();
-    const auto it = creases.find ({std::min (p.segment_a, p.segment_b),
-                                   std::max (p.segment_a, p.segment_b)});
+    // Intersections name the segments (connected pieces); the curves, their surfaces.
+    const std::uint32_t a = s.scene.surface_of_segment[p.segment_a],
+                        b = s.scene.surface_of_segment[p.segment_b];
+    const auto it = creases.find ({std::min (a, b), std::max (a, b)});
     if (it != creases.end ())
       for (const auto c : it->second)
         best = std::min (best, curves[c].distance (x));

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <map>
 
 using namespace pcl_ext;
 using namespace pcl_ext::simulation;
@@ -245,6 +246,61 @@ TEST (TlsScanSimulation, ShadowBordersAreBoundaries)
   }
   EXPECT_GT (shadow, 50u);
   EXPECT_GT (blind_cone, 50u);
+}
+
+TEST (TlsScanSimulation, ConnectedSegmentsSplitASurfaceCutByAWall)
+{
+  // A 10 x 4 m floor, scanned from (2.5, 2) and (7.5, 2); with a 0.2 m thick, 3 m high wall
+  // across it at x = 5 neither scanner sees the other half: the floor is two visible pieces.
+  for (const bool wall : {false, true})
+  {
+    SceneBuilder builder;
+    const std::uint32_t floor = builder.addPolygon (
+        Vec3::Zero (), Vec3::UnitX (), Vec3::UnitY (),
+        {{Vec2 (0, 0), Vec2 (10, 0), Vec2 (10, 4), Vec2 (0, 4)}}, builder.newObject (), 1,
+        Material ());
+    if (wall)
+      builder.addBox (Vec3 (5, 2, 1.5), Eigen::Matrix3d::Identity (), Vec3 (0.1, 2.5, 1.5),
+                      builder.newObject (), 2, Material (), floor);
+    SceneGeometry geometry = std::move (builder.geometry ());
+    geometry.build ();
+    TlsScanSimulation scanner;
+    scanner.setScanPositions ({Vec3 (2.5, 2, 1.5), Vec3 (7.5, 2, 1.5)});
+    scanner.setAngularStep (0.5);
+    pcl::PointCloud<SimulatedPoint> pieces, surfaces;
+    std::vector<std::uint32_t> surface_of_segment, identity;
+    ASSERT_TRUE (scanner.scan (geometry, pieces, nullptr, &surface_of_segment));
+    scanner.setConnectedSegments (false);
+    ASSERT_TRUE (scanner.scan (geometry, surfaces, nullptr, &identity));
+    ASSERT_EQ (pieces.size (), surfaces.size ());
+    ASSERT_GT (pieces.size (), 10000u);
+    std::map<std::uint32_t, std::pair<double, double>> x_range;  // floor piece -> x extent
+    for (std::size_t i = 0; i < pieces.size (); ++i)
+    {
+      // Only the segment ids differ, and each piece maps back to its surface.
+      ASSERT_EQ (pieces[i].object, surfaces[i].object);
+      ASSERT_EQ (pieces[i].point_class, surfaces[i].point_class);
+      ASSERT_LT (pieces[i].segment, surface_of_segment.size ());
+      ASSERT_EQ (surface_of_segment[pieces[i].segment], surfaces[i].segment);
+      ASSERT_EQ (identity[surfaces[i].segment], surfaces[i].segment);
+      if (surfaces[i].segment != floor)
+        continue;
+      auto it = x_range.emplace (pieces[i].segment, std::make_pair (1e9, -1e9)).first;
+      it->second.first = std::min<double> (it->second.first, pieces[i].x);
+      it->second.second = std::max<double> (it->second.second, pieces[i].x);
+    }
+    if (!wall)
+    {
+      EXPECT_EQ (x_range.size (), 1u);  // both scans overlap: one piece
+      EXPECT_EQ (x_range.begin ()->first, floor);
+      continue;
+    }
+    ASSERT_EQ (x_range.size (), 2u);
+    EXPECT_EQ (x_range.count (floor), 1u);  // the larger piece keeps the surface's id
+    for (const auto& [segment, range] : x_range)
+      EXPECT_TRUE (range.second < 4.95 || range.first > 5.05)  // the wall: 4.9 .. 5.1
+          << segment << ": " << range.first << " .. " << range.second;
+  }
 }
 
 TEST (TlsScanSimulation, BadParameters)

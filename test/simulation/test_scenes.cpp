@@ -86,7 +86,8 @@ TEST_P (SceneGroundTruth, ClassesMatchCurveDistances)
     const double range = (q - scene.scan_positions[scene.scanner_of_point[i]]).norm ();
     const double threshold = range * scene.angular_step_deg * kDeg;
     double crease, border;
-    curveDistances (geometry, q, p.segment, crease, border);
+    ASSERT_LT (p.segment, scene.surface_of_segment.size ());
+    curveDistances (geometry, q, scene.surface_of_segment[p.segment], crease, border);
     const auto cls = static_cast<PointClass> (p.point_class);
     ++per_class[p.point_class];
     if (cls == PointClass::Edge)
@@ -165,7 +166,7 @@ TEST (Scenes, PlanarResidualsMatchTheNoise)
     std::map<std::uint32_t, Sums> sums;
     for (std::size_t i = 0; i < scene.cloud.size (); ++i)
     {
-      const auto it = planes.find (scene.cloud[i].segment);
+      const auto it = planes.find (scene.surface_of_segment[scene.cloud[i].segment]);
       if (it == planes.end ())
         continue;
       const Vec3 q = scenePoint (scene, i);
@@ -211,6 +212,47 @@ TEST (Scenes, PointCountsOfThePapers)
   for (const auto& p : cubes.cloud)
     objects[p.object] = 1;
   EXPECT_EQ (objects.size (), 8u);
+}
+
+TEST (Scenes, IndoorSegmentsAreConnectedPieces)
+{
+  // The interior wall (faces at x = 7.9 and 8.1, full height, a door) cuts the ceiling and the
+  // two long walls: each room sees its own part, a segment apiece. Only the floor is seen
+  // whole, from both rooms through the door. Without connected segments, one id per surface.
+  SceneParameters parameters;
+  SyntheticScene pieces, surfaces;
+  ASSERT_TRUE (generateScene ("indoor", parameters, pieces));
+  parameters.connected_segments = false;
+  ASSERT_TRUE (generateScene ("indoor", parameters, surfaces));
+  ASSERT_EQ (pieces.cloud.size (), surfaces.cloud.size ());
+  const auto spans = [] (const SyntheticScene& scene) {
+    std::map<std::uint32_t, std::pair<bool, bool>> sides;  // segment -> (room 1, room 2)
+    for (const auto& p : scene.cloud)
+    {
+      auto& s = sides[p.segment];
+      s.first = s.first || p.x < 7.85;
+      s.second = s.second || p.x > 8.15;
+    }
+    std::map<std::uint32_t, std::uint32_t> labels;  // scene label -> segments in both rooms
+    for (const auto& p : scene.cloud)
+      if (sides[p.segment].first && sides[p.segment].second)
+        labels[p.label] += 1;
+    return labels;
+  };
+  const auto both = spans (pieces);
+  ASSERT_EQ (both.size (), 1u);
+  EXPECT_EQ (both.begin ()->first, 2u);  // the floor
+  EXPECT_GT (spans (surfaces).count (3u), 0u);  // the ceiling, as one surface
+  // Every piece maps to its surface; the ceiling is in at least two pieces.
+  std::map<std::uint32_t, std::size_t> ceiling_pieces;
+  for (std::size_t i = 0; i < pieces.cloud.size (); ++i)
+  {
+    ASSERT_EQ (pieces.cloud[i].object, surfaces.cloud[i].object);
+    ASSERT_EQ (pieces.surface_of_segment.at (pieces.cloud[i].segment), surfaces.cloud[i].segment);
+    if (pieces.cloud[i].label == 3u)
+      ++ceiling_pieces[pieces.cloud[i].segment];
+  }
+  EXPECT_GE (ceiling_pieces.size (), 2u);
 }
 
 TEST (Scenes, TargetPointCount)

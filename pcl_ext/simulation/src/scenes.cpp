@@ -165,6 +165,7 @@ scanScene (const std::shared_ptr<const SceneDescription>& description,
   scanner.setRangeNoise (parameters.noise, parameters.noise_per_metre);
   scanner.setEdgeDistance (parameters.edge_distance);
   scanner.setCoverageBoundaries (parameters.coverage_boundaries);
+  scanner.setConnectedSegments (parameters.connected_segments);
   scanner.setSeed (parameters.seed);
   scanner.setNumberOfThreads (parameters.threads);
   if (!scanner.checkParameters ())
@@ -218,7 +219,8 @@ scanScene (const std::shared_ptr<const SceneDescription>& description,
     cloud_from_scene.translation () = parameters.offset;
   scanner.setOutputTransform (cloud_from_scene);
 
-  if (!scanner.scan (d.geometry, scene.cloud, &scene.scanner_of_point))
+  if (!scanner.scan (d.geometry, scene.cloud, &scene.scanner_of_point,
+                     &scene.surface_of_segment))
   {
     scene = SyntheticScene ();
     return false;

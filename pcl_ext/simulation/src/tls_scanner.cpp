@@ -2,6 +2,7 @@
  * pcl_ext: a terrestrial laser scanner simulator.
  */
 #include <pcl_ext/common/parallel.h>
+#include <pcl_ext/search/kdtree_3f.h>
 #include <pcl_ext/simulation/random.h>
 #include <pcl_ext/simulation/tls_scanner.h>
 
@@ -9,6 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numeric>
+#include <utility>
 
 namespace pcl_ext
 {
@@ -279,17 +283,21 @@ struct ScanVisitor
     Vec3 truth;
     double range;
     double spacing;
+    bool porous;  ///< on a porous primitive (vegetation), not a continuous surface
   };
 
   const SceneGeometry& geometry;
   const Eigen::Isometry3d& transform;
   double noise_sigma, noise_per_metre, edge_distance;
   bool coverage_boundaries;
+  bool connected_segments;
   long lowest_row;  ///< the lowest row of the field of view (the blind cone below it)
   unsigned int threads;
   std::vector<std::vector<SimulatedPoint, Eigen::aligned_allocator<SimulatedPoint>>> points;
   std::vector<std::vector<std::uint16_t>> scanners;
   std::vector<std::vector<Return>> returns;
+  /** Surface id of every segment id after splitSegmentsIntoPieces (empty otherwise). */
+  std::vector<std::uint32_t> surface_of_segment;
 
   void
   begin (std::size_t tasks)
@@ -319,21 +327,43 @@ struct ScanVisitor
   void
   end (const std::vector<ColumnTask>& tasks, long num_columns)
   {
-    if (!coverage_boundaries)
-      return;
+    if (coverage_boundaries)
+      markCoverageBoundaries (tasks, num_columns);
+    if (connected_segments)
+      splitSegmentsIntoPieces (tasks, num_columns);
+    decltype (returns) ().swap (returns);
+  }
+
+  /** The task of the column \a dk columns from task \a k's, same scanner, or -1. */
+  static long
+  adjacentTask (const std::vector<ColumnTask>& tasks, long num_columns, long k, long dk)
+  {
     const long num_tasks = static_cast<long> (tasks.size ());
-    const auto adjacent = [&] (long k, long dk) -> long {
-      // Columns of one scanner are consecutive tasks; a full turn wraps around.
-      for (long m : {k + dk, k - dk * (num_columns - 1)})
-        if (m >= 0 && m < num_tasks && tasks[m].scanner == tasks[k].scanner &&
-            (tasks[m].column - tasks[k].column - dk) % num_columns == 0)
-          return m;
-      return -1;
-    };
+    // Columns of one scanner are consecutive tasks; a full turn wraps around.
+    for (long m : {k + dk, k - dk * (num_columns - 1)})
+      if (m >= 0 && m < num_tasks && tasks[m].scanner == tasks[k].scanner &&
+          (tasks[m].column - tasks[k].column - dk) % num_columns == 0)
+        return m;
+    return -1;
+  }
+
+  /** Two returns lie on one continuous piece of surface when they are about a spacing apart;
+    * a jump of more than 4 spacings is a discontinuity (a shadow, a gap, a silhouette). */
+  static bool
+  continuous (const Return& a, const Return& b)
+  {
+    return (a.truth - b.truth).norm () <= 4.0 * std::max (a.spacing, b.spacing);
+  }
+
+  void
+  markCoverageBoundaries (const std::vector<ColumnTask>& tasks, long num_columns)
+  {
+    const long num_tasks = static_cast<long> (tasks.size ());
 #pragma omp parallel for schedule(dynamic, 8) num_threads(resolveThreadCount (threads))
     for (long k = 0; k < num_tasks; ++k)
     {
-      const long left = adjacent (k, -1), right = adjacent (k, 1);
+      const long left = adjacentTask (tasks, num_columns, k, -1),
+                 right = adjacentTask (tasks, num_columns, k, 1);
       for (std::size_t i = 0; i < returns[k].size (); ++i)
       {
         if (points[k][i].point_class != static_cast<std::uint32_t> (PointClass::Surface))
@@ -341,8 +371,7 @@ struct ScanVisitor
         const Return& r = returns[k][i];
         bool border = r.row - 1 < lowest_row;
         const auto check = [&] (const Return* n) {
-          border = border || (n && n->range < r.range &&
-                              (n->truth - r.truth).norm () > 4.0 * std::max (r.spacing, n->spacing));
+          border = border || (n && n->range < r.range && !continuous (*n, r));
         };
         check (find (static_cast<std::size_t> (k), r.row - 1));
         check (find (static_cast<std::size_t> (k), r.row + 1));
@@ -352,7 +381,176 @@ struct ScanVisitor
           points[k][i].point_class = static_cast<std::uint32_t> (PointClass::Boundary);
       }
     }
-    decltype (returns) ().swap (returns);
+  }
+
+  /** Split-off pieces smaller than this keep their surface's id. */
+  static constexpr std::uint32_t kMinPiecePoints = 10;
+
+  /** Give every connected visible piece of a surface its own segment id (see
+    * TlsScanSimulation::setConnectedSegments). Two returns of one surface are linked when
+    * - they come from adjacent rays of one scanner (one step in azimuth or elevation) and are
+    *   continuous (within 4 spacings, the test of the coverage boundaries), or
+    * - they come from different scanners and lie within the spacing of both (where two scans
+    *   overlap, every return of one lies inside a grid cell of the other, so within about
+    *   0.7 spacing of one of its returns; two pieces that only face each other across a gap
+    *   wider than the local spacing, e.g. the two sides of a wall cutting a ceiling, are not).
+    * The pieces are the connected components of the links. The largest piece of a surface
+    * keeps its id; the others get new ids, above every surface id of the scan, in the order of
+    * (surface id, first point), except pieces of fewer than kMinPiecePoints returns (a few rays
+    * through a gap, a face seen edge-on), which keep the surface's id. Porous surfaces
+    * (vegetation) are scattered returns, not a continuous surface, and are not split. Points
+    * are numbered in output order, so the result does not depend on the thread count. */
+  void
+  splitSegmentsIntoPieces (const std::vector<ColumnTask>& tasks, long num_columns)
+  {
+    const long num_tasks = static_cast<long> (tasks.size ());
+    std::vector<std::size_t> first (tasks.size () + 1, 0);
+    for (long k = 0; k < num_tasks; ++k)
+      first[k + 1] = first[k] + returns[k].size ();
+    const std::size_t n = first.back ();
+    if (n == 0)
+      return;
+
+    // Links, collected per task in parallel, united in task order.
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> links (tasks.size ());
+#pragma omp parallel for schedule(dynamic, 8) num_threads(resolveThreadCount (threads))
+    for (long k = 0; k < num_tasks; ++k)
+    {
+      const long right = adjacentTask (tasks, num_columns, k, 1);
+      for (std::size_t i = 0; i < returns[k].size (); ++i)
+      {
+        const Return& r = returns[k][i];
+        const std::uint32_t segment = points[k][i].segment;
+        const auto link = [&] (long m, long row) {
+          if (m < 0)
+            return;
+          const Return* other = find (static_cast<std::size_t> (m), row);
+          if (!other)
+            return;
+          const std::size_t j = static_cast<std::size_t> (other - returns[m].data ());
+          if (points[m][j].segment == segment && continuous (r, *other))
+            links[k].emplace_back (static_cast<std::uint32_t> (first[k] + i),
+                                   static_cast<std::uint32_t> (first[m] + j));
+        };
+        link (k, r.row + 1);
+        link (right, r.row);
+      }
+    }
+
+    // Returns of different scanners within both spacings.
+    bool several_scanners = false;
+    for (long k = 1; k < num_tasks && !several_scanners; ++k)
+      several_scanners = tasks[k].scanner != tasks[0].scanner;
+    if (several_scanners)
+    {
+      std::vector<float> xyz;
+      xyz.reserve (3 * n);
+      std::vector<const Return*> of_point;
+      std::vector<std::uint32_t> segment_of_point, task_of_point;
+      of_point.reserve (n);
+      segment_of_point.reserve (n);
+      task_of_point.reserve (n);
+      for (long k = 0; k < num_tasks; ++k)
+        for (std::size_t i = 0; i < returns[k].size (); ++i)
+        {
+          const Vec3& t = returns[k][i].truth;
+          xyz.insert (xyz.end (), {static_cast<float> (t.x ()), static_cast<float> (t.y ()),
+                                   static_cast<float> (t.z ())});
+          of_point.push_back (&returns[k][i]);
+          segment_of_point.push_back (points[k][i].segment);
+          task_of_point.push_back (static_cast<std::uint32_t> (k));
+        }
+      std::vector<pcl::index_t> ids (n);
+      std::iota (ids.begin (), ids.end (), 0);
+      search::KdTree3f tree;
+      tree.build (xyz, ids);
+#pragma omp parallel for schedule(dynamic, 8) num_threads(resolveThreadCount (threads))
+      for (long k = 0; k < num_tasks; ++k)
+      {
+        pcl::Indices found;
+        std::vector<float> sqr;
+        for (std::size_t i = 0; i < returns[k].size (); ++i)
+        {
+          const std::size_t p = first[k] + i;
+          const Return& r = returns[k][i];
+          tree.radiusSearch (&xyz[3 * p], r.spacing, found, sqr, 0, false);
+          for (std::size_t f = 0; f < found.size (); ++f)
+          {
+            const auto q = static_cast<std::size_t> (found[f]);
+            if (q <= p || segment_of_point[q] != segment_of_point[p] ||
+                tasks[task_of_point[q]].scanner == tasks[k].scanner)
+              continue;
+            const double d = (of_point[q]->truth - r.truth).norm ();
+            if (d <= r.spacing && d <= of_point[q]->spacing)
+              links[k].emplace_back (static_cast<std::uint32_t> (p),
+                                     static_cast<std::uint32_t> (q));
+          }
+        }
+      }
+    }
+
+    std::vector<std::uint32_t> parent (n);
+    std::iota (parent.begin (), parent.end (), 0u);
+    const auto root = [&parent] (std::uint32_t x) {
+      while (parent[x] != x)
+        x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    for (const auto& task_links : links)
+      for (const auto& [a, b] : task_links)
+      {
+        const std::uint32_t ra = root (a), rb = root (b);
+        if (ra != rb)
+          parent[std::max (ra, rb)] = std::min (ra, rb);
+      }
+    decltype (links) ().swap (links);
+
+    // Pieces by root (the smallest point of the piece), sizes, and the largest of each surface.
+    std::vector<std::uint32_t> segment (n), size (n, 0);
+    std::uint32_t highest = 0;
+    for (long k = 0; k < num_tasks; ++k)
+      for (std::size_t i = 0; i < returns[k].size (); ++i)
+      {
+        segment[first[k] + i] = points[k][i].segment;
+        highest = std::max (highest, points[k][i].segment);
+      }
+    for (std::uint32_t p = 0; p < n; ++p)
+      ++size[root (p)];
+    std::map<std::uint32_t, std::uint32_t> largest;  // surface -> root of its largest piece
+    std::map<std::uint32_t, bool> porous;
+    for (long k = 0; k < num_tasks; ++k)
+      for (const Return& r : returns[k])
+        if (r.porous)
+          porous[segment[first[k] + (&r - returns[k].data ())]] = true;
+    for (std::uint32_t p = 0; p < n; ++p)
+      if (root (p) == p)
+      {
+        const auto it = largest.find (segment[p]);
+        if (it == largest.end () || size[p] > size[it->second])
+          largest[segment[p]] = p;  // roots ascend: ties keep the first piece
+      }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> others;  // (surface, root)
+    std::vector<std::uint32_t> id (n, 0);
+    for (std::uint32_t p = 0; p < n; ++p)
+      if (root (p) == p)
+      {
+        if (largest[segment[p]] == p || size[p] < kMinPiecePoints || porous.count (segment[p]))
+          id[p] = segment[p];
+        else
+          others.emplace_back (segment[p], p);
+      }
+    std::sort (others.begin (), others.end ());
+    surface_of_segment.assign (highest + 1 + others.size (), 0);
+    for (std::uint32_t s = 1; s <= highest; ++s)
+      surface_of_segment[s] = s;
+    for (std::size_t o = 0; o < others.size (); ++o)
+    {
+      id[others[o].second] = highest + 1 + static_cast<std::uint32_t> (o);
+      surface_of_segment[highest + 1 + o] = others[o].first;
+    }
+    for (long k = 0; k < num_tasks; ++k)
+      for (std::size_t i = 0; i < returns[k].size (); ++i)
+        points[k][i].segment = id[root (static_cast<std::uint32_t> (first[k] + i))];
   }
 
   void
@@ -389,26 +587,30 @@ struct ScanVisitor
     p.point_class = static_cast<std::uint32_t> (geometry.classify (truth, info.segment, distance));
     points[task].push_back (p);
     scanners[task].push_back (static_cast<std::uint16_t> (scanner));
-    if (coverage_boundaries)
+    if (coverage_boundaries || connected_segments)
       returns[task].push_back (
-          {row, truth, hit.t, hit.t * step_rad / std::max (cos_incidence, 0.05)});
+          {row, truth, hit.t, hit.t * step_rad / std::max (cos_incidence, 0.05),
+           primitive.porosity > 0.0});
   }
 };
 }  // namespace
 
 bool
 TlsScanSimulation::scan (const SceneGeometry& geometry, pcl::PointCloud<SimulatedPoint>& cloud,
-                         std::vector<std::uint16_t>* scanner_of_point) const
+                         std::vector<std::uint16_t>* scanner_of_point,
+                         std::vector<std::uint32_t>* surface_of_segment) const
 {
   cloud.clear ();
   if (scanner_of_point)
     scanner_of_point->clear ();
+  if (surface_of_segment)
+    surface_of_segment->clear ();
   if (!checkParameters ())
     return false;
   ScanVisitor visitor{geometry, output_transform_, noise_sigma_, noise_per_metre_,
-                      edge_distance_, coverage_boundaries_,
+                      edge_distance_, coverage_boundaries_, connected_segments_,
                       static_cast<long> (std::ceil (min_elevation_deg_ / step_deg_ - 1e-9)),
-                      threads_, {}, {}, {}};
+                      threads_, {}, {}, {}, {}};
   traceColumns (geometry, step_deg_, visitor);
   std::size_t total = 0;
   for (const auto& column : visitor.points)
@@ -424,6 +626,19 @@ TlsScanSimulation::scan (const SceneGeometry& geometry, pcl::PointCloud<Simulate
                                 visitor.scanners[k].end ());
     // Free each column as it is copied: large scans would otherwise need twice the memory.
     decltype (visitor.points)::value_type ().swap (visitor.points[k]);
+  }
+  if (surface_of_segment)
+  {
+    if (connected_segments_)
+      surface_of_segment->swap (visitor.surface_of_segment);
+    else
+    {
+      std::uint32_t highest = 0;
+      for (const auto& p : cloud)
+        highest = std::max (highest, p.segment);
+      surface_of_segment->resize (cloud.empty () ? 0 : highest + 1);
+      std::iota (surface_of_segment->begin (), surface_of_segment->end (), 0u);
+    }
   }
   cloud.width = static_cast<std::uint32_t> (cloud.size ());
   cloud.height = 1;

@@ -43,6 +43,9 @@ struct SceneParameters
   /** \brief Also label Boundary where the scanned part of a surface ends (shadows, the blind
     * cone), see TlsScanSimulation::setCoverageBoundaries. */
   bool coverage_boundaries = true;
+  /** \brief One \c segment id per connected visible piece of a surface (true) or per surface
+    * (false), see TlsScanSimulation::setConnectedSegments. */
+  bool connected_segments = true;
   int num_scanners = 0;           ///< number of scan positions (scene default when 0)
   std::vector<Eigen::Vector3d> scan_positions;  ///< explicit positions (scene frame)
   double max_range = 0.0;         ///< maximum range (m)
@@ -90,6 +93,10 @@ struct SyntheticScene
   std::string name;
   pcl::PointCloud<SimulatedPoint> cloud;
   std::vector<std::uint16_t> scanner_of_point;  ///< index into scan_positions per point
+  /** \brief Indexed by \c segment id: the scene surface (SurfaceInfo::segment, the id the
+    * geometry's curves and primitives use) that the segment is a connected piece of; the
+    * identity when SceneParameters::connected_segments is off. */
+  std::vector<std::uint32_t> surface_of_segment;
   std::vector<Eigen::Vector3d> scan_positions;  ///< scene frame
   double angular_step_deg = 0.0;                ///< step used
   double noise = 0.0;                           ///< range noise sigma used

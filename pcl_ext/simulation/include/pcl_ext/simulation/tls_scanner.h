@@ -39,6 +39,16 @@ namespace simulation
   *   point much farther from it than the spacing (a shadow, a silhouette, the blind cone, the
   *   maximum range or incidence). Those are the borders of the sampled surface that a point
   *   cloud method sees.
+  * - Segment ground truth: by default (setConnectedSegments) a segment id names one connected
+  *   visible piece of a surface, not the whole surface: a ceiling cut in two by a wall, or a
+  *   floor split by an object's shadow that no scan position sees into, gives two segments.
+  *   Returns of one surface are connected when they come from adjacent rays of one scanner
+  *   and lie within 4 spacings of each other (the continuity test of the coverage
+  *   boundaries), or from different scanners and lie within the local spacing of both (where
+  *   scans overlap). The largest piece keeps the surface's id, the others get new ids above
+  *   every surface id of the scan; scan() can report the surface of every segment id. Pieces
+  *   of fewer than 10 returns (a few rays through a gap, a face seen edge-on) and porous
+  *   surfaces (vegetation: scattered returns, not a continuous surface) keep the surface's id.
   * - Colour and intensity follow the surface Material (see primitives.h).
   *
   * Determinism: every ray draws its random numbers from a stream seeded by a hash of (seed,
@@ -140,6 +150,21 @@ public:
     return coverage_boundaries_;
   }
 
+  /** \brief One segment id per connected visible piece of a surface (default true), or one
+    * per surface (false: the ids of the scene's surfaces, as built). A region-based
+    * segmentation can only find connected pieces, so they are what its ground truth should
+    * hold; the object id is never split. See the class description for the connection test. */
+  void
+  setConnectedSegments (bool enable)
+  {
+    connected_segments_ = enable;
+  }
+  bool
+  getConnectedSegments () const
+  {
+    return connected_segments_;
+  }
+
   /** \brief Seed of the random numbers (default 1). */
   void
   setSeed (std::uint64_t seed)
@@ -165,10 +190,14 @@ public:
   /** \brief Scan \a geometry (built) from every position.
     * \param[out] cloud the returns, ordered by scanner, azimuth and elevation
     * \param[out] scanner_of_point when not null, the index of the position of each point
+    * \param[out] surface_of_segment when not null, indexed by segment id: the id of the
+    *             scene surface the segment is a piece of (the identity without connected
+    *             segments); index 0 is unused
     * \return false (with an error) on invalid parameters; \a cloud is then empty */
   bool
   scan (const SceneGeometry& geometry, pcl::PointCloud<SimulatedPoint>& cloud,
-        std::vector<std::uint16_t>* scanner_of_point = nullptr) const;
+        std::vector<std::uint16_t>* scanner_of_point = nullptr,
+        std::vector<std::uint32_t>* surface_of_segment = nullptr) const;
 
   /** \brief Number of returns a scan at \a step_deg would produce (no attributes computed). */
   std::size_t
@@ -208,6 +237,7 @@ private:
   double max_incidence_deg_ = 88.0;
   double edge_distance_ = 0.0;
   bool coverage_boundaries_ = true;
+  bool connected_segments_ = true;
   std::uint64_t seed_ = 1;
   Eigen::Isometry3d output_transform_ = Eigen::Isometry3d::Identity ();
   unsigned int threads_ = 0;
