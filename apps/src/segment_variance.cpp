@@ -29,7 +29,7 @@ main (int argc, char** argv)
   std::string input_path, output_path, png_path, intersections_path;
   int k = 50, min_size = 50;
   double curvature_threshold = 0.0, curvature_factor = 3.0, variance_threshold = 1e-4;
-  double confidence = 0.95, max_distance = 0.0, parallel_angle = 10.0;
+  double confidence = 0.95, max_distance = 0.0, max_distance_factor = 3.0, parallel_angle = 10.0;
   bool reintegrate = false;
   unsigned int threads = 0;
   pcl_ext::tools::CommandLine cl (
@@ -49,6 +49,8 @@ main (int argc, char** argv)
   cl.addOption ("confidence", confidence, "confidence of the chi-squared boundary test (eq. 6)");
   cl.addOption ("max_distance", max_distance,
                 "longest link from a seed to a neighbour (0: no limit beyond the k neighbours)");
+  cl.addOption ("max_distance_factor", max_distance_factor,
+                "longest link from a seed as a multiple of its local point spacing (0: none)");
   cl.addOption ("min_size", min_size, "smallest segment kept");
   cl.addOption ("intersections", intersections_path,
                 "also write the local intersection points of the segments (section 4) to this "
@@ -76,6 +78,11 @@ main (int argc, char** argv)
   if (!(max_distance >= 0.0))
   {
     std::cerr << "Error: -max_distance must be >= 0.\n";
+    return 1;
+  }
+  if (!(max_distance_factor >= 0.0) || !std::isfinite (max_distance_factor))
+  {
+    std::cerr << "Error: -max_distance_factor must be finite and >= 0.\n";
     return 1;
   }
   if (!(parallel_angle >= 0.0 && parallel_angle <= 90.0))
@@ -113,6 +120,7 @@ main (int argc, char** argv)
   rg.setVarianceThreshold (variance_threshold);
   rg.setConfidence (confidence);
   rg.setMaxDistance (max_distance);
+  rg.setMaxDistanceFactor (max_distance_factor);
   rg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
   rg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;

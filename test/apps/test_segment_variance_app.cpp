@@ -102,6 +102,7 @@ TEST_F (SegmentVarianceApp, BadUsageAndInputFailWithoutOutput)
   EXPECT_EQ (run (io + " -k 2"), 1);
   EXPECT_EQ (run (io + " -min_size 0"), 1);
   EXPECT_EQ (run (io + " -max_distance -1"), 1);
+  EXPECT_EQ (run (io + " -max_distance_factor -1"), 1);
   EXPECT_EQ (run (io + " -variance_threshold -1"), 1);
   EXPECT_EQ (run (io + " -k"), 1);
   EXPECT_EQ (run (io + " -bogus 3"), 1);

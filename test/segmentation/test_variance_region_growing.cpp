@@ -261,6 +261,7 @@ TEST (VarianceRegionGrowing, MaximumDistanceSeparatesPatches)
   Growing rg;
   rg.setInputCloud (cloud);
   rg.setClassification (uniformClasses (cloud->size (), 1));
+  rg.setMaxDistanceFactor (0.0);
   std::vector<pcl::PointIndices> clusters;
   rg.extract (clusters);
   ASSERT_EQ (clusters.size (), 1u);
@@ -271,6 +272,35 @@ TEST (VarianceRegionGrowing, MaximumDistanceSeparatesPatches)
   EXPECT_EQ (clusters[0].indices.size (), 441u);
   EXPECT_EQ (clusters[1].indices.size (), 441u);
   EXPECT_EQ (clusters[1].indices.front (), 441);  // ties: smallest index first
+}
+
+TEST (VarianceRegionGrowing, MaximumDistanceFactorFollowsTheSpacing)
+{
+  // The same two patches at two scales: spacing 0.05 with a 0.2 gap, and both doubled. A
+  // limit of twice the local spacing (s = r_m sqrt(pi / m), m = 24 of k = 50: about 0.05
+  // inside a patch, more on its border, where the m-th neighbour is farther) separates them at
+  // both scales, as the limit scales with the sampling. Without a limit both are one segment.
+  for (const double scale : {1.0, 2.0})
+  {
+    const auto base = twoPatches (0.2);
+    Cloud::Ptr cloud (new Cloud);
+    for (const auto& p : *base)
+      cloud->push_back (
+          Point (static_cast<float> (scale * p.x), static_cast<float> (scale * p.y), 0.f));
+    Growing rg;
+    rg.setInputCloud (cloud);
+    rg.setClassification (uniformClasses (cloud->size (), 1));
+    std::vector<pcl::PointIndices> clusters;
+    rg.setMaxDistanceFactor (0.0);
+    rg.extract (clusters);
+    EXPECT_EQ (clusters.size (), 1u) << scale;
+    rg.setMaxDistanceFactor (2.0);
+    rg.extract (clusters);
+    ASSERT_EQ (clusters.size (), 2u) << scale;
+    EXPECT_EQ (clusters[0].indices.size (), 441u);
+    EXPECT_EQ (clusters[1].indices.size (), 441u);
+  }
+  EXPECT_DOUBLE_EQ (Growing ().getMaxDistanceFactor (), 3.0);  // the default
 }
 
 TEST (VarianceRegionGrowing, SizeLimitsDropSegments)
@@ -574,6 +604,9 @@ TEST (VarianceRegionGrowingBadInput, NonsenseParameters)
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxDistance (-1.0); }));
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxDistance (std::nan ("")); }));
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxDistance (INFINITY); }));
+  EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxDistanceFactor (-1.0); }));
+  EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxDistanceFactor (std::nan ("")); }));
+  EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxDistanceFactor (INFINITY); }));
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setKSearch (2); }));
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setKSearch (-5); }));
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setKSearch (100000); }));

@@ -65,6 +65,15 @@ growSurfaceSegments (const std::vector<std::size_t>& offsets, const pcl::Indices
                      const std::vector<std::int8_t>& class_of_point, float max_sqr_distance,
                      unsigned int threads, std::vector<std::int32_t>& root);
 
+/** \brief The same with one squared distance limit per row (\a row_max_sqr_distances, one per
+  * row; \a root is left empty when the sizes differ). */
+void
+growSurfaceSegments (const std::vector<std::size_t>& offsets, const pcl::Indices& neighbours,
+                     const std::vector<float>& sqr_distances, const pcl::Indices& row_points,
+                     const std::vector<std::int8_t>& class_of_point,
+                     const std::vector<float>& row_max_sqr_distances, unsigned int threads,
+                     std::vector<std::int32_t>& root);
+
 /** \brief Segmentation by region growing over classified points: D. Belton and D. D. Lichti,
   * "Classification and segmentation of terrestrial laser scanner point clouds using local
   * variance information", ISPRS Commission V Symposium 2006, section 3 and figure 4.
@@ -75,7 +84,8 @@ growSurfaceSegments (const std::vector<std::size_t>& offsets, const pcl::Indices
   * - an unlabelled surface neighbour joins the seed's segment;
   * - a surface neighbour already in another segment merges the two segments;
   * - a non-surface neighbour (edge, boundary or unknown) stops the walk through the list, as
-  *   does a neighbour farther from the seed than the maximum distance (setMaxDistance).
+  *   does a neighbour farther from the seed than the maximum distance (setMaxDistance,
+  *   setMaxDistanceFactor).
   * Edge and boundary points so act as cut lines between surfaces, and are left unsegmented
   * (they are for the local surface intersection of section 4 to re-integrate). Segments
   * smaller than the minimum size (or larger than the maximum) are dropped.
@@ -92,6 +102,10 @@ growSurfaceSegments (const std::vector<std::size_t>& offsets, const pcl::Indices
   * - The neighbours are those of the shared pcl_ext::Neighbourhoods (the classifier's own,
   *   k = 50 by default), the seed excluded. Neighbours that are not among the indices
   *   (setIndices) are skipped: they are not segmented and were not classified.
+  * - The paper's limit on the distance from the seed is, by default, 3 times the seed's local
+  *   point spacing (setMaxDistanceFactor) rather than one distance for the whole cloud: the
+  *   spacing of a TLS scan grows with range, and without a limit a sparse seed's
+  *   neighbourhood links the two faces of a thin wall.
   * - Points with non-finite coordinates are unknown, never segmented and nobody's neighbour.
   * - Segments are returned largest first (ties: smallest point index first), each with its
   *   indices in increasing order. Optionally (setFitPlanes) each segment gets a least-squares
@@ -113,6 +127,9 @@ template <typename PointT>
 class VarianceRegionGrowing : public pcl::PCLBase<PointT>
 {
 public:
+  /** \brief The smallest m of the local spacing of setMaxDistanceFactor. */
+  static constexpr std::size_t kMinSpacingNeighbour = 3;
+
   using Ptr = pcl::shared_ptr<VarianceRegionGrowing<PointT>>;
   using ConstPtr = pcl::shared_ptr<const VarianceRegionGrowing<PointT>>;
   using PointCloud = pcl::PointCloud<PointT>;
@@ -208,6 +225,22 @@ public:
   double
   getMaxDistance () const { return max_distance_; }
 
+  /** \brief The distance limit from the seed as a multiple of the seed's local point spacing
+    * s = r_m sqrt(pi / m), r_m the distance to its m-th nearest neighbour, m half its
+    * neighbours (the spacing of a uniform sampling with m points within r_m; half the
+    * neighbourhood, so that the rows of a surface seen at a grazing angle, far apart across
+    * and dense along the scan line, still count as one sampling). Default 3 (the paper gives
+    * no value); 0: no such limit; valid: >= 0 and finite. With both limits set, the smaller
+    * applies. A TLS cloud's spacing varies with range and incidence, so one fixed distance
+    * cannot suit near and far surfaces; a multiple of the local spacing stops the walks from
+    * linking two parallel surfaces (the two faces of a thin wall) that a sparse seed's
+    * neighbourhood reaches across. Rows of fewer than 7 neighbours have no such limit. */
+  void
+  setMaxDistanceFactor (double factor) { max_distance_factor_ = factor; }
+
+  double
+  getMaxDistanceFactor () const { return max_distance_factor_; }
+
   /** \brief Smallest segment kept (the paper's "too few points to be useful"). Default 1, as
     * pcl::RegionGrowing; valid: >= 1. */
   void
@@ -291,6 +324,7 @@ protected:
   double variance_threshold_ = 1e-4;
   double confidence_ = 0.95;
   double max_distance_ = 0.0;
+  double max_distance_factor_ = 3.0;
   pcl::uindex_t min_size_ = 1;
   pcl::uindex_t max_size_ = std::numeric_limits<pcl::uindex_t>::max ();
   bool fit_planes_ = false;

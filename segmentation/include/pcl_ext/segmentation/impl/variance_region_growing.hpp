@@ -61,6 +61,12 @@ pcl_ext::VarianceRegionGrowing<PointT>::checkParameters () const
                max_distance_);
     return false;
   }
+  if (!(max_distance_factor_ >= 0.0) || !std::isfinite (max_distance_factor_))
+  {
+    PCL_ERROR ("%s maximum distance factor = %g; it must be finite and >= 0 (0: none).\n",
+               name, max_distance_factor_);
+    return false;
+  }
   if (min_size_ < 1 || max_size_ < min_size_)
   {
     PCL_ERROR ("%s Need 1 <= minimum cluster size (%u) <= maximum cluster size (%u).\n", name,
@@ -206,8 +212,29 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>&
   const float max_sqr = max_distance_ > 0.0
                             ? static_cast<float> (max_distance_ * max_distance_)
                             : std::numeric_limits<float>::infinity ();
-  growSurfaceSegments (nb->getOffsets (), nb->getNeighbourIndices (), nb->getSquaredDistances (),
-                       *indices_, class_of_point, max_sqr, threads_, root);
+  if (max_distance_factor_ > 0.0)
+  {
+    // Per seed: the smaller of the fixed limit and the factor times its local spacing
+    // s = r_m sqrt(pi / m), m half its neighbours (the row holds the seed first).
+    const auto& offsets = nb->getOffsets ();
+    const auto& sqr_distances = nb->getSquaredDistances ();
+    const double f2 = max_distance_factor_ * max_distance_factor_;
+    std::vector<float> limits (indices_->size (), max_sqr);
+    for (std::size_t r = 0; r < limits.size (); ++r)
+    {
+      const std::size_t m = (offsets[r + 1] - offsets[r] - 1) / 2;
+      if (m >= kMinSpacingNeighbour)
+        limits[r] = std::min (max_sqr, static_cast<float> (f2 * 3.141592653589793 /
+                                                           static_cast<double> (m)) *
+                                           sqr_distances[offsets[r] + m]);
+    }
+    growSurfaceSegments (nb->getOffsets (), nb->getNeighbourIndices (), sqr_distances, *indices_,
+                         class_of_point, limits, threads_, root);
+  }
+  else
+    growSurfaceSegments (nb->getOffsets (), nb->getNeighbourIndices (),
+                         nb->getSquaredDistances (), *indices_, class_of_point, max_sqr, threads_,
+                         root);
 
   // Segments from the roots, within the size limits, largest first.
   std::vector<std::uint32_t> size (input_->size (), 0);
