@@ -317,13 +317,7 @@ struct ScanVisitor
     return it != column.end () && it->row == row ? &*it : nullptr;
   }
 
-  /** Surface points where the scanned part of their surface ends become Boundary: a
-    * neighbouring ray of the grid returned a point much nearer (this point lies at the edge of
-    * a shadow) or points into the blind cone. A neighbour on the same continuous surface lies
-    * about one spacing away (range * step / cos incidence); a jump of more than 4 spacings is a
-    * discontinuity. The other side of a jump, the occluding contour, is not marked: there the
-    * surface turns away from the scanner (a pipe's silhouette) or ends at a curve of the scene,
-    * which the scene's own curves label. */
+  /** After the last column: the coverage boundaries, then the pieces. */
   void
   end (const std::vector<ColumnTask>& tasks, long num_columns)
   {
@@ -355,6 +349,13 @@ struct ScanVisitor
     return (a.truth - b.truth).norm () <= 4.0 * std::max (a.spacing, b.spacing);
   }
 
+  /** Surface points where the scanned part of their surface ends become Boundary: a
+    * neighbouring ray of the grid returned a point much nearer (this point lies at the edge of
+    * a shadow) or points into the blind cone. A neighbour on the same continuous surface lies
+    * about one spacing away (range * step / cos incidence); a jump of more than 4 spacings is a
+    * discontinuity. The other side of a jump, the occluding contour, is not marked: there the
+    * surface turns away from the scanner (a pipe's silhouette) or ends at a curve of the scene,
+    * which the scene's own curves label. */
   void
   markCoverageBoundaries (const std::vector<ColumnTask>& tasks, long num_columns)
   {

@@ -23,7 +23,8 @@ namespace simulation
   *     offset; for \c building, the scan frame);
   *   - \c rgb (F32, PCL's packed colour) and \c intensity (F32, in [0, 1]) when the scene has
   *     them (all scenes but cubes, spheres and coaxial);
-  *   - \c segment, \c object (U32): true surface and object ids, >= 1;
+  *   - \c segment, \c object (U32): true segment (a connected visible piece of a surface,
+  *     see TlsScanSimulation::setConnectedSegments) and object ids, >= 1;
   *   - \c class (U32): pcl_ext::PointClass, 1 surface, 2 edge, 3 boundary;
   *   - \c label (U32): the scene label when the scene has labels (see scenes.h), 0 = none.
   * - building only, next to it (\a path without its extension is the stem):

@@ -23,7 +23,9 @@ struct EIGEN_ALIGN16 SimulatedPoint
   PCL_ADD_POINT4D;
   PCL_ADD_RGB;
   float intensity = 0.f;           ///< reflectance-like return strength in [0, 1]
-  std::uint32_t segment = 0;       ///< true surface id, >= 1
+  /** \brief True segment id, >= 1: a connected visible piece of a surface by default, or
+    * the surface (see TlsScanSimulation::setConnectedSegments). */
+  std::uint32_t segment = 0;
   std::uint32_t object = 0;        ///< true object id, >= 1
   std::uint32_t point_class = 0;   ///< pcl_ext::PointClass
   std::uint32_t label = 0;         ///< scene label (see each scene), 0 = none
