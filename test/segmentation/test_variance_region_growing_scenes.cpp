@@ -172,8 +172,8 @@ TEST (VarianceRegionGrowingScenes, IndoorSegmentsStopAtCreases)
 
 // Goal not met. 300,000 points (this test), paper parameters: mean best IoU 0.479 against
 // 0.620 for pcl::RegionGrowing (33 true surface pieces); the whole workflow, with section 4's
-// re-integration, 0.627. 1,000,000 points: 0.624, whole workflow 0.765, pcl::RegionGrowing
-// 0.716. Why:
+// re-integration, 0.627. 1,000,000 points (this fixture with parameters.points = 1000000):
+// 0.624, whole workflow 0.765, pcl::RegionGrowing 0.716. Why:
 // - Section 3 leaves edge and boundary points out of every segment (they are cut lines until
 //   section 4 re-integrates them), so a piece's best IoU is at most its share of points the
 //   classifier calls surface: averaged over the pieces that bound is 0.526 here (0.681 at
