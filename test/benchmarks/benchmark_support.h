@@ -74,6 +74,7 @@ generateXyzCloud (const std::string& scene_name, std::size_t points, unsigned in
   pcl_ext::simulation::SceneParameters parameters;
   parameters.points = points;
   parameters.seed = seed;
+  parameters.connected_segments = false;  // segment ids are not used: skip the piece search
   pcl_ext::simulation::SyntheticScene scene;
   if (!pcl_ext::simulation::generateScene (scene_name, parameters, scene))
     return cloud;

@@ -464,7 +464,7 @@ struct ScanVisitor
       std::vector<pcl::index_t> ids (n);
       std::iota (ids.begin (), ids.end (), 0);
       search::KdTree3f tree;
-      tree.build (xyz, ids);
+      tree.build (std::move (xyz), std::move (ids));
 #pragma omp parallel for schedule(dynamic, 8) num_threads(resolveThreadCount (threads))
       for (long k = 0; k < num_tasks; ++k)
       {
@@ -474,7 +474,10 @@ struct ScanVisitor
         {
           const std::size_t p = first[k] + i;
           const Return& r = returns[k][i];
-          tree.radiusSearch (&xyz[3 * p], r.spacing, found, sqr, 0, false);
+          const float query[3] = {static_cast<float> (r.truth.x ()),
+                                  static_cast<float> (r.truth.y ()),
+                                  static_cast<float> (r.truth.z ())};
+          tree.radiusSearch (query, r.spacing, found, sqr, 0, false);
           for (std::size_t f = 0; f < found.size (); ++f)
           {
             const auto q = static_cast<std::size_t> (found[f]);
