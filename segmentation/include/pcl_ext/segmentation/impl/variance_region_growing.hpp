@@ -222,7 +222,9 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>&
     std::vector<float> limits (indices_->size (), max_sqr);
     for (std::size_t r = 0; r < limits.size (); ++r)
     {
-      const std::size_t m = (offsets[r + 1] - offsets[r] - 1) / 2;
+      // A point without neighbourhood (NaN, or none found) has an empty row.
+      const std::size_t row_size = offsets[r + 1] - offsets[r];
+      const std::size_t m = row_size > 0 ? (row_size - 1) / 2 : 0;
       if (m >= kMinSpacingNeighbour)
         limits[r] = std::min (max_sqr, static_cast<float> (f2 * 3.141592653589793 /
                                                            static_cast<double> (m)) *
