@@ -6,6 +6,7 @@
 #include <pcl/console/print.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <array>
@@ -143,6 +144,14 @@ struct Context
   std::vector<double> scan_anchor_norm;
   double angle_tol, cos_angle_tol, distance_tol, orientation_tol, cos_up_tol;
   double normal_slack;   // largest |R^T n_m - s n_s| of a pair within the angle tolerance
+  // Bounds around the guess: its rotation (nearest rotation to its 3 x 3 block), the centre of
+  // the scan planes and where the guess puts it; guess_pairs[sp] has bit mp set when the initial
+  // pair (sp, mp) passes the necessary conditions of the bounds (all bits without them).
+  bool bounded = false;
+  Eigen::Matrix3d guess_rotation = Eigen::Matrix3d::Identity ();
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero (), guess_centre = Eigen::Vector3d::Zero ();
+  double cos_rotation_bound = -1.0, translation_bound = 0.0;
+  std::vector<std::uint64_t> guess_pairs;
   bool distance_screen, up_screen, screen;  // the screens of constraint 3 in use (Worker::screen)
 
   Context (const std::vector<RegistrationPlane>& s, const std::vector<RegistrationPlane>& m,
@@ -189,6 +198,8 @@ public:
     if (c_.p.vertical_constraint && c_.scan_class[s0] != c_.map_class[m0])
       return;
     if (c_.p.vertical_constraint && c_.scan_class[s0] == Other)
+      return;
+    if (!(c_.guess_pairs[s0] >> m0 & 1u))
       return;
     s_[0] = s0;
     m_[0] = m0;
@@ -286,6 +297,22 @@ private:
   {
     return r.valid && r.max_angle <= c_.angle_tol && r.max_distance <= c_.distance_tol &&
            (!c_.p.vertical_constraint || r.transformation (2, 2) >= c_.cos_up_tol * r.scale);
+  }
+
+  // The bounds around the guess: the rotation of R_g^T R (cos = (trace - 1) / 2) and the
+  // distance between the images of the centre.
+  bool
+  withinBounds (const PlaneTransformationResult& r) const
+  {
+    if (!c_.bounded)
+      return true;
+    const Eigen::Matrix3d rotation = r.transformation.topLeftCorner<3, 3> () / r.scale;
+    const double cosine = 0.5 * ((c_.guess_rotation.transpose () * rotation).trace () - 1.0);
+    if (!(cosine >= c_.cos_rotation_bound))
+      return false;
+    const Eigen::Vector3d moved =
+        r.transformation.topLeftCorner<3, 3> () * c_.centre + r.transformation.topRightCorner<3, 1> ();
+    return (moved - c_.guess_centre).norm () <= c_.translation_bound;
   }
 
   bool
@@ -531,6 +558,8 @@ private:
         }
         if (c_.p.residual_constraint && !withinTolerance (trial_))
           continue;
+        if (!withinBounds (trial_))
+          continue;
         if (!found || trial_.residual_norm < initial_.residual_norm)
         {
           initial_ = trial_;
@@ -627,7 +656,8 @@ private:
           map_ptr_.push_back (&c_.map[pair.map]);
           signs_.push_back (pair.sign);
         }
-        if (estimate (signs_.data (), static_cast<int> (pairs_.size ()), trial_) && withinTolerance (trial_))
+        if (estimate (signs_.data (), static_cast<int> (pairs_.size ()), trial_) && withinTolerance (trial_) &&
+            withinBounds (trial_))
         {
           current = trial_;
           mover = PlaneTransformer (current.transformation);
@@ -739,6 +769,10 @@ checkPlaneMatchingParameters (const PlaneMatchingParameters& p)
     bad = "the distance tolerance must be positive and finite";
   else if (!(p.extent_margin >= 0.0) || !std::isfinite (p.extent_margin))
     bad = "the extent margin must be >= 0 and finite";
+  else if (!(p.max_rotation_from_guess_deg > 0.0))
+    bad = "the rotation bound around the guess must be positive (infinity: no bound)";
+  else if (!(p.max_translation_from_guess > 0.0))
+    bad = "the translation bound around the guess must be positive (infinity: no bound)";
   else if (p.min_matches < 0)
     bad = "the minimum number of matches must be >= 0";
   else if (!(p.min_conditioning > 0.0 && p.min_conditioning < 1.0))
@@ -753,24 +787,79 @@ checkPlaneMatchingParameters (const PlaneMatchingParameters& p)
 
 bool
 matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<RegistrationPlane>& map,
-             const PlaneMatchingParameters& parameters, PlaneMatchingResult& result)
+             const PlaneMatchingParameters& parameters, PlaneMatchingResult& result,
+             const Eigen::Matrix4d& guess)
 {
   const auto start = std::chrono::steady_clock::now ();
   result = PlaneMatchingResult ();
   if (!checkPlaneMatchingParameters (parameters) || !checkPlanes (scan, "scan") ||
       !checkPlanes (map, "map"))
     return false;
+  if (!guess.allFinite ())
+  {
+    PCL_ERROR ("[pcl_ext::matchPlanes] The guess is not finite.\n");
+    return false;
+  }
   const int k = parameters.k;
   Context c (scan, map, parameters);
   c.scan_order = bySize (scan);
 
+  // Bounds around the guess. The guess's rotation is the nearest rotation to its 3 x 3 block,
+  // and the centre is that of the bounding box of the scan planes' centroids.
+  c.bounded = std::isfinite (parameters.max_rotation_from_guess_deg) ||
+              std::isfinite (parameters.max_translation_from_guess);
+  const double rotation_bound = std::min (parameters.max_rotation_from_guess_deg * kDegree, M_PI);
+  const double chord = 2.0 * std::sin (0.5 * rotation_bound);  // |(R - R_g) x| <= chord |x|
+  std::vector<char> map_within_reach (map.size (), 1);
+  if (c.bounded)
+  {
+    c.cos_rotation_bound = rotation_bound >= M_PI ? -2.0 : std::cos (rotation_bound);  // -2: any
+    c.translation_bound = parameters.max_translation_from_guess;
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd (guess.topLeftCorner<3, 3> (), Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d d = Eigen::Matrix3d::Identity ();
+    d (2, 2) = (svd.matrixU () * svd.matrixV ().transpose ()).determinant () < 0.0 ? -1.0 : 1.0;
+    c.guess_rotation = svd.matrixU () * d * svd.matrixV ().transpose ();
+    Eigen::AlignedBox3d centroids, extents;
+    for (const auto& plane : scan)
+    {
+      centroids.extend (plane.centroid);
+      extents.extend (plane.extent.isEmpty () ? Eigen::AlignedBox3d (plane.centroid) : plane.extent);
+    }
+    c.centre = centroids.center ();
+    c.guess_centre = guess.topLeftCorner<3, 3> () * c.centre + guess.topRightCorner<3, 1> ();
+    // Map planes out of reach: a pair must pass the extent test (residual constraint for the
+    // initial pairs, extension always), and a transform within the bounds puts every scan
+    // point x within translation_bound + chord |x - centre| of where the guess puts it. A map
+    // plane whose extent is farther than that (plus the extent margin) from the guessed image
+    // of the scan planes' bounding box can pair with none of them: it neither initiates nor
+    // extends, and the n initial map planes are the largest of the others (rigid model: a
+    // similarity's scale is not bounded).
+    if (parameters.check_extents && parameters.residual_constraint && std::isfinite (c.translation_bound) &&
+        parameters.model == PlaneTransformationModel::Rigid)
+    {
+      Eigen::AlignedBox3d image;
+      double radius = 0.0;
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        const Eigen::Vector3d x = extents.corner (static_cast<Eigen::AlignedBox3d::CornerType> (corner));
+        image.extend (c.guess_rotation * (x - c.centre) + c.guess_centre);
+        radius = std::max (radius, (x - c.centre).norm ());
+      }
+      const double margin = parameters.extent_margin + c.translation_bound + chord * radius + 1e-6;
+      for (std::size_t i = 0; i < map.size (); ++i)
+        map_within_reach[i] = extentsOverlap (image, map[i].extent, margin);
+    }
+  }
+
   // The initial planes: the largest, among the near-vertical/horizontal ones under constraint 1.
   auto initial = [&] (const std::vector<RegistrationPlane>& planes, int count, std::vector<int>& init,
-                      std::vector<int>& classes) {
+                      std::vector<int>& classes, const std::vector<char>* allowed) {
     for (const int i : bySize (planes))
     {
       const int cls = classify (planes[i].normal, parameters.vertical_tolerance_deg);
       if (parameters.vertical_constraint && cls == Other)
+        continue;
+      if (allowed && !(*allowed)[i])
         continue;
       if (static_cast<int> (init.size ()) == count)
         break;
@@ -778,8 +867,8 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
       classes.push_back (cls);
     }
   };
-  initial (scan, parameters.scan_initial, c.scan_init, c.scan_class);
-  initial (map, parameters.map_initial, c.map_init, c.map_class);
+  initial (scan, parameters.scan_initial, c.scan_init, c.scan_class, nullptr);
+  initial (map, parameters.map_initial, c.map_init, c.map_class, &map_within_reach);
   const int m = static_cast<int> (c.scan_init.size ()), n = static_cast<int> (c.map_init.size ());
   auto& stats = result.statistics;
   stats.m = m;
@@ -787,8 +876,9 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
   stats.k = k;
   if (m < k || n < k)
   {
-    PCL_ERROR ("[pcl_ext::matchPlanes] %d scan and %d map planes%s: at least k = %d of each are "
+    PCL_ERROR ("[pcl_ext::matchPlanes] %d scan and %d map planes%s%s: at least k = %d of each are "
                "needed.\n", m, n, parameters.vertical_constraint ? " (near-vertical or horizontal)" : "",
+               std::count (map_within_reach.begin (), map_within_reach.end (), 0) > 0 ? " within reach of the guess" : "",
                k);
     return false;
   }
@@ -833,6 +923,45 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
           bits |= std::uint64_t (1) << mp;
         }
       }
+  // Bounds around the guess, and their necessary conditions on the initial pairs.
+  c.guess_pairs.assign (m, n == 64 ? ~std::uint64_t (0) : (std::uint64_t (1) << n) - 1);
+  if (c.bounded)
+  {
+    if (parameters.residual_constraint)
+    {
+      // An accepted pair has angle(R n_s, s n_m) <= angle_tol and angle(R, R_g) <= the rotation
+      // bound, hence angle(R_g n_s, s n_m) <= their sum. For a rigid estimate T within the
+      // bounds, |T a - T_g a| <= translation_bound + 2 sin(rotation_bound / 2) |a - centre|
+      // for T_g = (R_g, guess_centre - R_g centre), so the anchor a, whose image is within
+      // distance_tol of the map plane, has its guessed image within the sum of the two.
+      const double reach = std::min (M_PI, rotation_bound + c.angle_tol) + 1e-9;
+      const bool by_distance = std::isfinite (c.translation_bound) && parameters.model == PlaneTransformationModel::Rigid;
+      for (int sp = 0; sp < m; ++sp)
+      {
+        const Eigen::Vector3d normal = c.guess_rotation * scan[c.scan_init[sp]].normal;
+        const Eigen::Vector3d anchor =
+            c.guess_rotation * (c.scan_anchor[sp] - c.centre) + c.guess_centre;
+        const double allowance = c.distance_tol + c.translation_bound +
+                                 chord * (c.scan_anchor[sp] - c.centre).norm ();
+        for (int mp = 0; mp < n; ++mp)
+        {
+          const RegistrationPlane& target = map[c.map_init[mp]];
+          double cosine = normal.dot (target.normal);
+          if (!parameters.oriented_normals)
+            cosine = std::abs (cosine);
+          bool keep = std::acos (std::clamp (cosine, -1.0, 1.0)) <= reach;
+          if (keep && by_distance)
+            keep = std::abs (target.signedDistance (anchor)) <= allowance * (1.0 + 1e-9) + 1e-9;
+          if (!keep)
+            c.guess_pairs[sp] &= ~(std::uint64_t (1) << mp);
+        }
+      }
+      for (int s = 0; s < m; ++s)
+        for (int t = 0; t < n; ++t)
+          for (int sp = 0; sp < m; ++sp)
+            c.compatible[(static_cast<std::size_t> (s) * n + t) * m + sp] &= c.guess_pairs[sp];
+    }
+  }
   auto triples = [] (const std::vector<RegistrationPlane>& planes, const std::vector<int>& init) {
     const std::size_t size = init.size ();
     std::vector<double> table (size * size * size);
@@ -858,7 +987,8 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
   c.reachable.resize (scan.size ());
   for (std::size_t j = 0; j < scan.size (); ++j)
     for (std::size_t i = 0; i < map.size (); ++i)
-      if (!by_elevation || std::abs (elevation (scan[j]) - elevation (map[i])) <= elevation_tol)
+      if (map_within_reach[i] &&
+          (!by_elevation || std::abs (elevation (scan[j]) - elevation (map[i])) <= elevation_tol))
         c.reachable[j].push_back (static_cast<int> (i));
 
   for (int a = 0; a < k; ++a)

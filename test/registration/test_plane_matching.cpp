@@ -6,6 +6,9 @@
 
 #include <pcl_ext/evaluation/registration_metrics.h>
 #include <pcl_ext/registration/plane_matching.h>
+#include <pcl_ext/registration/plane_matching_registration.h>
+
+#include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
 
@@ -251,4 +254,145 @@ TEST (PlaneMatching, SymmetricPlanIsMatchedUpToItsHalfTurn)
     EXPECT_EQ (wrongPairs (scan, test::slice (map), r.matches, is_turned ? half_turn * truth : truth), 0);
   }
   std::printf ("symmetric H: %d of 20 poses matched the half-turned way\n", turned);
+}
+
+namespace
+{
+// \a pose turned by \a yaw_deg about the vertical through \a centre (map frame) and shifted by
+// \a shift: a rough guess of it.
+Eigen::Matrix4d
+roughGuess (const Eigen::Matrix4d& pose, double yaw_deg, const Eigen::Vector3d& shift, const Eigen::Vector3d& centre)
+{
+  Eigen::Affine3d turn = Eigen::Translation3d (centre + shift) *
+                         Eigen::AngleAxisd (yaw_deg * kPi / 180.0, Eigen::Vector3d::UnitZ ()) *
+                         Eigen::Translation3d (-centre);
+  return turn.matrix () * pose;
+}
+}  // namespace
+
+// The symmetric H has two exact solutions; bounds around a rough guess of either pick that one,
+// every time, and a guess near neither gives none.
+TEST (PlaneMatchingBounds, GuessPicksTheSolutionWithinTheBounds)
+{
+  std::vector<MapPlane> map;
+  ASSERT_TRUE (computeMapPlanes (test::hShape (), MapPlaneParameters (), map));
+  Eigen::Matrix4d half_turn = Eigen::Matrix4d::Identity ();
+  half_turn.topLeftCorner<3, 3> () = Eigen::AngleAxisd (kPi, Eigen::Vector3d::UnitZ ()).toRotationMatrix ();
+  half_turn.topRightCorner<3, 1> () = Eigen::Vector3d (40, 30, 0);
+  const Eigen::Vector3d centre (20, 15, 5);
+  for (unsigned seed = 1; seed <= 10; ++seed)
+  {
+    std::mt19937 rng (seed);
+    const Eigen::Matrix4d truth = test::randomPose (rng);
+    const auto scan = test::scanPlanes (map, truth, rng, 0.2 * kPi / 180.0, 0.05, 2, 3);
+    const Eigen::Vector3d scan_centre = (truth.inverse () * centre.homogeneous ()).head<3> ();
+    PlaneMatchingParameters p;
+    p.max_rotation_from_guess_deg = 10.0;
+    p.max_translation_from_guess = 10.0;
+    for (const bool turned : {false, true})
+    {
+      const Eigen::Matrix4d solution = turned ? Eigen::Matrix4d (half_turn * truth) : truth;
+      PlaneMatchingResult r;
+      ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, r,
+                                roughGuess (solution, 5.0, Eigen::Vector3d (3.0, -2.0, 0.5), centre)))
+          << "seed " << seed;
+      const auto error = computeTransformationError (r.estimate.transformation, solution, scan_centre);
+      EXPECT_LT (error.rotation_deg, 0.5) << "seed " << seed << (turned ? " turned" : "");
+      EXPECT_LT (error.translation, 0.2) << "seed " << seed << (turned ? " turned" : "");
+      EXPECT_EQ (wrongPairs (scan, test::slice (map), r.matches, solution), 0);
+    }
+    // A quarter turn away from both: at most a partial match of x walls to y walls, within 10
+    // degrees of that guess.
+    PlaneMatchingResult none;
+    const Eigen::Matrix4d quarter = roughGuess (truth, 90.0, Eigen::Vector3d::Zero (), centre);
+    if (matchPlanes (scan, test::slice (map), p, none, quarter))
+      EXPECT_LE (computeTransformationError (none.estimate.transformation, quarter, scan_centre).rotation_deg, 10.0);
+    // Far off the building: nothing within 10 m.
+    EXPECT_FALSE (matchPlanes (scan, test::slice (map), p, none, roughGuess (truth, 0.0, Eigen::Vector3d (200, 0, 0), centre)));
+  }
+}
+
+// Bounds that hold the global search's answer give that answer (their pruning rejects nothing
+// the bounds accept), with fewer combinations; infinite bounds are the global search.
+TEST (PlaneMatchingBounds, BoundsHoldingTheAnswerChangeNothingButTheWork)
+{
+  const auto map = hMapPlanes ();
+  for (unsigned seed = 1; seed <= 10; ++seed)
+  {
+    std::mt19937 rng (seed);
+    const Eigen::Matrix4d truth = test::randomPose (rng);
+    const auto scan = test::scanPlanes (map, truth, rng, 0.2 * kPi / 180.0, 0.05, 2, 3);
+    PlaneMatchingParameters p;
+    p.threads = 1;
+    PlaneMatchingResult global, infinite, bounded;
+    ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, global));
+    ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, infinite, roughGuess (truth, 45.0, Eigen::Vector3d (50, 0, 0), {})));
+    p.max_rotation_from_guess_deg = 8.0;
+    p.max_translation_from_guess = 10.0;
+    ASSERT_TRUE (matchPlanes (scan, test::slice (map), p, bounded,
+                              roughGuess (truth, -5.0, Eigen::Vector3d (2.0, 2.0, 0.0), Eigen::Vector3d (20, 15, 5))));
+    for (const auto* r : {&infinite, &bounded})
+    {
+      ASSERT_EQ (r->matches.size (), global.matches.size ()) << "seed " << seed;
+      for (std::size_t i = 0; i < global.matches.size (); ++i)
+      {
+        EXPECT_EQ (r->matches[i].scan, global.matches[i].scan);
+        EXPECT_EQ (r->matches[i].map, global.matches[i].map);
+      }
+      EXPECT_TRUE (r->estimate.transformation.isApprox (global.estimate.transformation, 1e-12));
+    }
+    EXPECT_EQ (infinite.statistics.orientation, global.statistics.orientation);
+    EXPECT_LT (bounded.statistics.orientation, global.statistics.orientation / 4);
+    EXPECT_LE (bounded.statistics.residual, global.statistics.residual);
+  }
+}
+
+// Bad bounds (negative, zero, NaN) and a non-finite guess: a PCL_ERROR and no convergence, from
+// matchPlanes and from the registration class.
+TEST (PlaneMatchingBounds, BadBoundsAndGuessAreRefused)
+{
+  const auto map = hMapPlanes ();
+  std::mt19937 rng (3);
+  const Eigen::Matrix4d truth = test::randomPose (rng);
+  const auto scan = test::scanPlanes (map, truth, rng, 0.0, 0.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN ();
+  for (const double bad : {-1.0, 0.0, nan})
+    for (const bool rotation : {true, false})
+    {
+      PlaneMatchingParameters p;
+      (rotation ? p.max_rotation_from_guess_deg : p.max_translation_from_guess) = bad;
+      PlaneMatchingResult r;
+      EXPECT_FALSE (matchPlanes (scan, test::slice (map), p, r, truth)) << bad << " " << rotation;
+      EXPECT_FALSE (r.converged);
+
+      PlaneMatchingRegistration<pcl::PointXYZ, pcl::PointXYZ> reg;
+      reg.setMapPlanes (map);
+      std::vector<ScanPlane> planes (scan.size ());
+      for (std::size_t i = 0; i < scan.size (); ++i)
+        static_cast<RegistrationPlane&> (planes[i]) = scan[i];
+      reg.setSourcePlanes (planes);
+      pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+      cloud->emplace_back (0.f, 0.f, 0.f);
+      reg.setInputSource (cloud);
+      if (rotation)
+        reg.setMaxRotationFromGuess (bad);
+      else
+        reg.setMaxTranslationFromGuess (bad);
+      pcl::PointCloud<pcl::PointXYZ> aligned;
+      reg.align (aligned, truth.cast<float> ());
+      EXPECT_FALSE (reg.hasConverged ()) << bad << " " << rotation;
+      // Good bounds around the same guess converge.
+      reg.setMaxRotationFromGuess (5.0);
+      reg.setMaxTranslationFromGuess (5.0);
+      reg.align (aligned, truth.cast<float> ());
+      EXPECT_TRUE (reg.hasConverged ());
+      EXPECT_DOUBLE_EQ (reg.getMaxRotationFromGuess (), 5.0);
+      EXPECT_DOUBLE_EQ (reg.getMaxTranslationFromGuess (), 5.0);
+    }
+  Eigen::Matrix4d guess = truth;
+  guess (0, 3) = std::numeric_limits<double>::infinity ();
+  PlaneMatchingParameters p;
+  p.max_translation_from_guess = 5.0;
+  PlaneMatchingResult r;
+  EXPECT_FALSE (matchPlanes (scan, test::slice (map), p, r, guess));
 }

@@ -7,6 +7,7 @@
 #include <pcl_ext/registration/planes.h>
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace pcl_ext
@@ -33,6 +34,14 @@ struct PlaneMatchingParameters
     * planes; without it a superfluous plane in line with one wing can take the other. */
   bool check_extents = true;
   double extent_margin = 2.0;   ///< slack of the extent test (m), >= 0
+  /** \brief Beyond the paper: bounds around an initial guess of the pose (a rough GNSS/INS or
+    * georeferenced pose). Every estimate, initial or extended, whose rotation differs from the
+    * guess's by more than \a max_rotation_from_guess_deg, or that puts the centre of the scan
+    * planes (the middle of the bounding box of their centroids) farther than
+    * \a max_translation_from_guess from where the guess puts it, is rejected. Both (0, inf];
+    * infinity (the default) is the paper's global search, which ignores the guess. */
+  double max_rotation_from_guess_deg = std::numeric_limits<double>::infinity ();
+  double max_translation_from_guess = std::numeric_limits<double>::infinity ();  ///< metres
   int min_matches = 0;          ///< least final matches to converge; 0 = k
   double min_conditioning = 1e-2;  ///< degeneracy threshold of the normals, (0, 1)
   PlaneTransformationModel model = PlaneTransformationModel::Rigid;
@@ -45,9 +54,12 @@ struct PlaneMatchingStatistics
   int m = 0, n = 0, k = 0;            ///< values used (m, n capped by the plane counts)
   std::uint64_t unconstrained = 0;    ///< eq. 13: C(m, k) P(n, k)
   std::uint64_t vertical = 0;         ///< after constraint 1 (= unconstrained if off)
-  std::uint64_t orientation = 0;      ///< after constraints 1-2 (enumerated)
+  /** \brief After constraints 1-2 (enumerated). With bounds around the guess, only the pairs
+    * those bounds can accept are enumerated (see matchPlanes), so the count is smaller than the
+    * paper's Table 3 for the same planes. */
+  std::uint64_t orientation = 0;
   std::uint64_t degenerate = 0;       ///< of those, normals not spanning 3D: not estimated
-  std::uint64_t residual = 0;         ///< after constraints 1-3: initial match sets extended
+  std::uint64_t residual = 0;         ///< after constraints 1-3 (and the bounds): extended
   std::uint64_t estimations = 0;      ///< transformation estimates computed in all
   double seconds = 0.0;               ///< wall time of the search and estimation
 };
@@ -92,6 +104,22 @@ struct PlaneMatchingResult
   * floor in the map, the ground and a ceiling seen through the windows give match sets of equal
   * size: oriented normals (scanner side: the ceiling faces down) tell them apart.
   *
+  * Bounds around a guess (beyond the paper, off by default): with \a max_rotation_from_guess_deg
+  * or \a max_translation_from_guess finite, an estimate farther from \a guess is rejected like
+  * one breaking constraint 3, at initiation and at every extension step. The paper searches the
+  * whole pose space, which on a street grid of parallel walls also fits a quarter turn onto the
+  * next block; a user with a rough pose knows better. With the residual constraint on, the
+  * bounds also prune before estimating, by necessary conditions (as the screens above, they
+  * never reject a combination the bounds and the tolerances would accept):
+  * - an initial pair is enumerated only if the guess's rotation brings the scan normal within
+  *   \a angle_tolerance_deg plus the rotation bound of the map normal, and (rigid model,
+  *   translation bounded) the guess brings the scan plane's anchor within
+  *   \a distance_tolerance + the translation bound + 2 sin(rotation bound / 2) times the
+  *   anchor's distance from the centre of the scan planes;
+  * - with extents checked (rigid model, translation bounded), a map plane whose extent the
+  *   bounds cannot bring within \a extent_margin of the scan planes' bounding box neither
+  *   initiates nor extends: the n initial map planes are the largest of the others.
+  *
   * Sign handling (papers/README.md): without \a oriented_normals, each initial combination is
   * tried with every sign pattern consistent with constraint 2 and with the handedness of its
   * normals (a rotation keeps the sign of det(n_i, n_j, n_l); a pattern whose affine block still
@@ -102,12 +130,15 @@ struct PlaneMatchingResult
   * \param[in] map planes in the target frame
   * \param[in] parameters see PlaneMatchingParameters
   * \param[out] result the match set, transform and statistics
+  * \param[in] guess an initial scan-to-map pose, used only by the bounds of \a parameters
   * \return result.converged; false with a PCL_ERROR for invalid parameters, too few or
-  *         non-finite planes, or when no combination yields a valid transform
+  *         non-finite planes, a non-finite guess, or when no combination yields a valid
+  *         transform
   */
 bool
 matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<RegistrationPlane>& map,
-             const PlaneMatchingParameters& parameters, PlaneMatchingResult& result);
+             const PlaneMatchingParameters& parameters, PlaneMatchingResult& result,
+             const Eigen::Matrix4d& guess = Eigen::Matrix4d::Identity ());
 
 /** \brief Eq. 13: C(m, k) P(n, k), saturating at the largest std::uint64_t. */
 std::uint64_t

@@ -31,10 +31,13 @@ namespace pcl_ext
   *   extracted the same way and play the map's part.
   *
   * Departures from the text are listed with each function (signed d, projection, offsets at
-  * the data, sign handling, up-axis and extent checks). align() works as for any
-  * pcl::Registration; getFinalTransformation() maps the scan into the map's local frame (map
-  * coordinates minus getLocalOrigin()), in float as PCL's interface has it, and
-  * getFinalTransformationDouble() gives it in double. Deterministic for any thread count.
+  * the data, sign handling, up-axis and extent checks, bounds around a guess). align() works
+  * as for any pcl::Registration. getFinalTransformation() maps the scan into the map's local
+  * frame (map coordinates minus getLocalOrigin()), in float as PCL's interface has it, and
+  * getFinalTransformationDouble() gives it in double. The guess of align(output, guess) is in
+  * that frame too (a georeferenced scan: a translation by -getLocalOrigin()) and is used only
+  * by the bounds of setMaxRotationFromGuess() and setMaxTranslationFromGuess(). Deterministic
+  * for any thread count.
   */
 template <typename PointSource, typename PointTarget>
 class PlaneMatchingRegistration : public pcl::Registration<PointSource, PointTarget, float>
@@ -125,6 +128,23 @@ public:
   /** \brief Use scan normals as oriented (scanner side) against outward walls; default off. */
   void
   setOrientedNormals (bool on) { parameters_.oriented_normals = on; }
+  /** \brief Beyond the paper: largest rotation, in degrees, between the estimate and the guess
+    * given to align(output, guess); (0, inf], default infinity: no bound, the paper's search of
+    * every pose, which ignores the guess. With a rough pose (GNSS/INS, a georeferenced scan),
+    * a bound rejects the poses a repetitive street grid also fits (a quarter turn onto the next
+    * block) and prunes the search. A value that is not positive (or NaN) makes align() fail with
+    * a PCL_ERROR. */
+  void
+  setMaxRotationFromGuess (double degrees) { parameters_.max_rotation_from_guess_deg = degrees; }
+  double
+  getMaxRotationFromGuess () const { return parameters_.max_rotation_from_guess_deg; }
+  /** \brief Beyond the paper: largest distance, in metres, between where the estimate and the
+    * guess put the centre of the scan planes (the middle of the bounding box of their
+    * centroids); (0, inf], default infinity: no bound. As setMaxRotationFromGuess. */
+  void
+  setMaxTranslationFromGuess (double metres) { parameters_.max_translation_from_guess = metres; }
+  double
+  getMaxTranslationFromGuess () const { return parameters_.max_translation_from_guess; }
   /** \brief Threads of the search, 0 = all cores (default); the result does not depend on it. */
   void
   setNumberOfThreads (unsigned int threads) { parameters_.threads = threads; }

@@ -82,7 +82,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::setCornerTarget ()
 
 template <typename PointSource, typename PointTarget> void
 PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (PointCloudSource& output,
-                                                                             const Matrix4&)
+                                                                             const Matrix4& guess)
 {
   converged_ = false;
   result_ = PlaneMatchingResult ();
@@ -128,7 +128,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (Poin
   }
 
   const std::vector<RegistrationPlane> scan (source_planes_.begin (), source_planes_.end ());
-  if (!matchPlanes (scan, target_planes_, parameters_, result_))
+  if (!matchPlanes (scan, target_planes_, parameters_, result_, guess.template cast<double> ()))
     return;
 
   // Tables 1-2: mean and maximum distance of the matched scan inliers to their map planes.
