@@ -2,22 +2,17 @@
  * Real data: AHN3 airborne tiles registered to their BGT footprints (labelled "data"; skipped
  * without ../shared/data). The true cloud-to-map transform is the identity, so the cloud is
  * moved by a known rigid transform and its recovery measured. Airborne data has dense roofs and
- * sparse walls, so walls come from roof outlines: a plugged-in extractor fits vertical planes to
- * the outline points of each building of the building class, which shows the PlaneExtractor
- * hook at work. Each tile is registered from an identity guess, once with bounds of 10 deg and
+ * sparse walls, so walls come from roof outlines: RoofOutlinePlaneExtraction, plugged in through
+ * the PlaneExtractor hook, fits vertical planes to the outline points of each building of the
+ * building class. Each tile is registered from an identity guess, once with bounds of 10 deg and
  * 10 m around it (a rough GNSS pose) and once by the paper's global search.
  */
 #include <pcl_ext/evaluation/registration_metrics.h>
 #include <pcl_ext/registration/plane_matching_registration.h>
+#include <pcl_ext/registration/roof_outline_plane_extraction.h>
 
 #include <pcl/io/pcd_io.h>
-#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/point_types.h>
-#include <pcl/sample_consensus/method_types.h>
-#include <pcl/sample_consensus/model_types.h>
-#include <pcl/search/kdtree.h>
-#include <pcl/segmentation/extract_clusters.h>
-#include <pcl/segmentation/sac_segmentation.h>
 
 #include <gtest/gtest.h>
 
@@ -33,145 +28,6 @@ namespace
 {
 const std::string kDir = std::string (PCL_EXT_SHARED_DATA_DIR) + "/amsterdam_ahn3_bgt_footprints";
 constexpr std::uint32_t kGround = 2, kBuilding = 6;  // LAS classes
-
-// The largest run of \a inliers along the horizontal line of a vertical plane (normal n): the
-// points sorted along the line and split where they are more than \a gap apart, so that a
-// wall is one stretch of outline and not two collinear ones across a courtyard or a street.
-pcl::Indices
-largestRun (const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::Indices& inliers, const Eigen::Vector3f& n,
-            float gap)
-{
-  const Eigen::Vector2f along = Eigen::Vector2f (-n.y (), n.x ()).normalized ();
-  std::vector<std::pair<float, int>> position;
-  for (const int i : inliers)
-    position.emplace_back (along.dot (cloud[i].getVector3fMap ().head<2> ()), i);
-  std::sort (position.begin (), position.end ());
-  std::size_t best_begin = 0, best_end = 0;
-  for (std::size_t begin = 0, end = 0; begin < position.size (); begin = end)
-  {
-    for (end = begin + 1; end < position.size () && position[end].first - position[end - 1].first <= gap; ++end)
-      ;
-    if (end - begin > best_end - best_begin)
-    {
-      best_begin = begin;
-      best_end = end;
-    }
-  }
-  pcl::Indices run;
-  for (std::size_t q = best_begin; q < best_end; ++q)
-    run.push_back (position[q].second);
-  std::sort (run.begin (), run.end ());
-  return run;
-}
-
-// Ground: one plane of the ground class. Walls: vertical planes through the roof outline points
-// of each building (building-class points clustered in 2D), so that no plane is fitted across
-// two buildings. An outline point has its 2D neighbours to one side and, on the open side,
-// points of another class: where the tile cuts a roof there is nothing beyond, and no wall.
-PlaneExtractor<pcl::PointXYZ>
-roofOutlineExtractor (std::vector<std::uint32_t> labels)
-{
-  return [labels] (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud, std::vector<pcl::PointIndices>& sets) {
-    sets.clear ();
-    pcl::IndicesPtr ground (new pcl::Indices);
-    pcl::Indices building;
-    pcl::PointCloud<pcl::PointXYZ>::Ptr flat (new pcl::PointCloud<pcl::PointXYZ>),
-        others (new pcl::PointCloud<pcl::PointXYZ>);
-    for (std::size_t i = 0; i < cloud->size (); ++i)
-    {
-      if (labels[i] == kGround)
-        ground->push_back (static_cast<int> (i));
-      if (labels[i] == kBuilding)
-      {
-        building.push_back (static_cast<int> (i));
-        flat->emplace_back ((*cloud)[i].x, (*cloud)[i].y, 0.f);
-      }
-      else
-        others->emplace_back ((*cloud)[i].x, (*cloud)[i].y, 0.f);
-    }
-    pcl::SACSegmentation<pcl::PointXYZ> sac;
-    sac.setInputCloud (cloud);
-    sac.setModelType (pcl::SACMODEL_PLANE);
-    sac.setMethodType (pcl::SAC_RANSAC);
-    sac.setDistanceThreshold (0.3);
-    sac.setMaxIterations (500);
-    sac.setIndices (ground);
-    pcl::PointIndices inliers;
-    pcl::ModelCoefficients coefficients;
-    sac.segment (inliers, coefficients);
-    if (!inliers.indices.empty ())
-      sets.push_back (inliers);
-    if (flat->empty () || others->empty ())
-      return true;
-
-    // Buildings: the building points in 2D, 1 m apart at most (AHN3: about 0.25 m spacing).
-    std::vector<pcl::PointIndices> buildings;
-    pcl::search::KdTree<pcl::PointXYZ>::Ptr flat_search (new pcl::search::KdTree<pcl::PointXYZ>);
-    flat_search->setInputCloud (flat);
-    pcl::EuclideanClusterExtraction<pcl::PointXYZ> clustering;
-    clustering.setClusterTolerance (1.0);
-    clustering.setMinClusterSize (100);
-    clustering.setSearchMethod (flat_search);
-    clustering.setInputCloud (flat);
-    clustering.extract (buildings);
-
-    pcl::KdTreeFLANN<pcl::PointXYZ> beyond;
-    beyond.setInputCloud (others);
-    sac.setModelType (pcl::SACMODEL_PARALLEL_PLANE);
-    sac.setAxis (Eigen::Vector3f::UnitZ ());
-    sac.setEpsAngle (5.0 * M_PI / 180.0);
-    sac.setDistanceThreshold (0.3);
-    pcl::Indices nn;
-    std::vector<float> d2;
-    for (const auto& members : buildings)
-    {
-      pcl::PointCloud<pcl::PointXYZ>::Ptr roof (new pcl::PointCloud<pcl::PointXYZ> (*flat, members.indices));
-      pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-      tree.setInputCloud (roof);
-      pcl::IndicesPtr outline (new pcl::Indices);
-      for (std::size_t j = 0; j < roof->size (); ++j)
-      {
-        if (tree.nearestKSearch ((*roof)[j], 12, nn, d2) < 12)
-          continue;
-        const Eigen::Vector2f p = (*roof)[j].getVector3fMap ().head<2> ();
-        Eigen::Vector2f mean = Eigen::Vector2f::Zero ();
-        float spacing = 0.f;
-        for (std::size_t q = 1; q < nn.size (); ++q)
-        {
-          mean += (*roof)[nn[q]].getVector3fMap ().head<2> ();
-          spacing += std::sqrt (d2[q]);
-        }
-        mean /= static_cast<float> (nn.size () - 1);
-        spacing /= static_cast<float> (nn.size () - 1);
-        if ((mean - p).norm () <= 0.35f * spacing)
-          continue;
-        const Eigen::Vector2f out = p + (p - mean).normalized ();
-        if (beyond.radiusSearch (pcl::PointXYZ (out.x (), out.y (), 0.f), 1.0, nn, d2, 1) == 0)
-          continue;
-        outline->push_back (building[members.indices[j]]);
-      }
-      std::sort (outline->begin (), outline->end ());
-      while (outline->size () >= 15)
-      {
-        sac.setIndices (outline);
-        sac.segment (inliers, coefficients);
-        if (inliers.indices.size () < 15)
-          break;
-        const Eigen::Vector3f normal (coefficients.values[0], coefficients.values[1], coefficients.values[2]);
-        const pcl::Indices run = largestRun (*cloud, inliers.indices, normal, 1.5f);
-        if (run.size () < 15)
-          break;
-        pcl::IndicesPtr rest (new pcl::Indices);
-        std::set_difference (outline->begin (), outline->end (), run.begin (), run.end (), std::back_inserter (*rest));
-        outline = rest;
-        pcl::PointIndices wall;
-        wall.indices = run;
-        sets.push_back (wall);
-      }
-    }
-    return true;
-  };
-}
 
 struct TileFigures
 {
@@ -196,7 +52,7 @@ registerTile (const std::string& tile, const Eigen::Matrix4d& perturbation, doub
   io::loadFootprints (footprint_path, footprints);
 
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
-  std::vector<std::uint32_t> labels;
+  pcl::PointCloud<pcl::Label>::Ptr labels (new pcl::PointCloud<pcl::Label>);
   std::vector<float> ground_z;
   for (const auto& p : points)
   {
@@ -206,7 +62,7 @@ registerTile (const std::string& tile, const Eigen::Matrix4d& perturbation, doub
       ground_z.push_back (p.z);
     const Eigen::Vector4d q = perturbation * Eigen::Vector4d (p.x, p.y, p.z, 1.0);
     cloud->emplace_back (float (q.x ()), float (q.y ()), float (q.z ()));
-    labels.push_back (p.label);
+    labels->push_back (pcl::Label {p.label});
   }
   // The map has no heights: the floor is put at the terrain's median height.
   std::nth_element (ground_z.begin (), ground_z.begin () + ground_z.size () / 2, ground_z.end ());
@@ -216,7 +72,13 @@ registerTile (const std::string& tile, const Eigen::Matrix4d& perturbation, doub
   const auto start = std::chrono::steady_clock::now ();
   PlaneMatchingRegistration<pcl::PointXYZ, pcl::PointXYZ> reg;
   reg.setInputSource (cloud);
-  reg.setPlaneExtractor (roofOutlineExtractor (labels));
+  // Ground: one plane of the ground class; walls: vertical planes through each building's roof
+  // outline, with the extractor's defaults (not tuned to these tiles).
+  RoofOutlinePlaneExtraction<pcl::PointXYZ> walls;
+  walls.setInputLabels (labels);
+  walls.setGroundLabel (kGround);
+  walls.setBuildingLabel (kBuilding);
+  reg.setPlaneExtractor (walls.asExtractor ());
   EXPECT_TRUE (reg.setFootprints (footprints, map_parameters));
   // Every plane initiates (m = n = 64, the most): the map of a curved facade is many short
   // walls, and the matching ones are not among the longest.

@@ -25,6 +25,7 @@
 #include <pcl_ext/registration/map_planes.h>
 #include <pcl_ext/registration/plane_extraction.h>
 #include <pcl_ext/registration/plane_matching_registration.h>
+#include <pcl_ext/registration/roof_outline_plane_extraction.h>
 #include <pcl_ext/segmentation/adaptive_supervoxel_segmentation.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
@@ -636,6 +637,45 @@ subjects ()
     sac.setMinInliers (20);
     std::vector<pcl::PointIndices> planes;
     const bool ok = sac.extract (planes);
+    Outcome o = segments (in, planes);
+    o.produced = ok;
+    if (ok && planes.empty ())
+    {
+      o.size = indicesOf (in).size ();
+      o.no_result.assign (o.size, 1);
+    }
+    return o;
+  }});
+
+  // The box as a classified airborne cloud: its floor is ground, the rest building (label by
+  // height above the lowest point); parameter: the outline band (> 0). A horizontal plane, or
+  // one point, is all floor: no building point, which is refused. At the micrometre scale the
+  // plane models reject every sample (as for SACPlaneExtraction).
+  s.push_back ({"RoofOutlinePlaneExtraction", kCloudInputs,
+                {{Bad::Coplanar, Expect::Refused}, {Bad::Tiny, Expect::Degenerate}},
+                [] (const Input& in) {
+    float floor = std::numeric_limits<float>::infinity ();
+    for (const auto& p : *in.cloud)
+      if (pcl::isFinite (p))
+        floor = std::min (floor, p.z);
+    pcl::PointCloud<pcl::Label>::Ptr labels (new pcl::PointCloud<pcl::Label>);
+    for (const auto& p : *in.cloud)
+      labels->push_back (pcl::Label {p.z < floor + 0.02 * in.scale ? 2u : 6u});
+    RoofOutlinePlaneExtraction<Point> walls;
+    walls.setInputCloud (in.cloud);
+    walls.setInputLabels (labels);
+    if (in.indices)
+      walls.setIndices (in.indices);
+    walls.setGroundDistanceThreshold (0.02 * in.scale);
+    walls.setBuildingTolerance (0.2 * in.scale);
+    walls.setMinBuildingPoints (20);
+    walls.setOpenSideDistance (0.2 * in.scale);
+    walls.setMaxGap (0.3 * in.scale);
+    walls.setOutlineBand (in.param ? *in.param : 0.02 * in.scale);
+    if (in.nan_param)
+      walls.setOutlineBand (std::numeric_limits<double>::quiet_NaN ());
+    std::vector<pcl::PointIndices> planes;
+    const bool ok = walls.extract (planes);
     Outcome o = segments (in, planes);
     o.produced = ok;
     if (ok && planes.empty ())
