@@ -2,8 +2,11 @@
  * pcl_ext_register_to_map: register a building scan to its 2D footprint by plane matching
  * (Khoshelham & Gorte 2009).
  */
+#include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/footprints.h>
+#include <pcl_ext/io/transform_file.h>
 #include <pcl_ext/registration/plane_matching_registration.h>
+#include <pcl_ext/registration/roof_outline_plane_extraction.h>
 #include <pcl_ext/tools/cloud_io.h>
 #include <pcl_ext/tools/command_line.h>
 #include <pcl_ext/tools/file_output.h>
@@ -13,8 +16,10 @@
 
 #include <pcl/point_types.h>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace
@@ -73,10 +78,13 @@ renderTopView (const pcl::PointCloud<Point>& scan, const std::vector<pcl_ext::Sc
 int
 main (int argc, char** argv)
 {
-  std::string input, footprint_path, output, png, png_before, no_constraint, id;
+  std::string input, footprint_path, output, png, png_before, no_constraint, id, guess_path;
+  std::string walls = "sac", label_field = "label";
   int k = 4, m = 10, n = 10, max_planes = 30, min_inliers = 200;
-  unsigned int threads = 0;
+  unsigned int threads = 0, ground_label = 2, building_label = 6;
   double threshold = 0.4, angle = 3.0, distance = 0.5, floor_height = 0.0;
+  double max_rotation = std::numeric_limits<double>::infinity ();
+  double max_translation = std::numeric_limits<double>::infinity ();
   bool similarity = false, oriented = false;
   pcl_ext::tools::CommandLine cl ("pcl_ext_register_to_map",
                                   "Registers a building scan to its 2D footprint by plane matching "
@@ -93,9 +101,22 @@ main (int argc, char** argv)
   cl.addOption ("angle", angle, "residual and extension tolerance on normals (degrees)");
   cl.addOption ("distance", distance, "residual and extension tolerance on plane offsets (m)");
   cl.addSwitch ("oriented", oriented, "use plane signs (scan normals to the scanner, walls outward)");
-  cl.addOption ("threshold", threshold, "plane extraction: RANSAC inlier distance (m)");
-  cl.addOption ("min_inliers", min_inliers, "plane extraction: least points of a plane");
-  cl.addOption ("max_planes", max_planes, "plane extraction: most planes");
+  cl.addOption ("guess", guess_path,
+                "initial guess: a scan-to-map 4x4 transform file in map coordinates (e.g. the "
+                ".transform.txt of pcl_ext_generate_scene); none: the identity (a georeferenced scan)");
+  cl.addOption ("max_rotation_from_guess", max_rotation,
+                "search only within this rotation of the guess (degrees, > 0; unbounded when left out: the paper's global search)");
+  cl.addOption ("max_translation_from_guess", max_translation,
+                "search only within this translation of the guess (m, > 0; unbounded when left out)");
+  cl.addOption ("walls", walls,
+                "plane extraction: sac (sequential RANSAC, for terrestrial scans) or roof_outline (a "
+                "classified airborne cloud: ground plane and walls along the building outlines)");
+  cl.addOption ("label_field", label_field, "roof_outline: the field holding the point classes");
+  cl.addOption ("ground_label", ground_label, "roof_outline: class of ground points (LAS: 2)");
+  cl.addOption ("building_label", building_label, "roof_outline: class of building points (LAS: 6)");
+  cl.addOption ("threshold", threshold, "sac: RANSAC inlier distance (m)");
+  cl.addOption ("min_inliers", min_inliers, "sac: least points of a plane");
+  cl.addOption ("max_planes", max_planes, "sac: most planes");
   cl.addOption ("floor", floor_height, "floor height in map coordinates (m)");
   cl.addOption ("id", id, "use only the footprint with this id (default: all)");
   cl.addOption ("threads", threads, "threads of the search (0 = all cores)");
@@ -104,8 +125,49 @@ main (int argc, char** argv)
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
 
+  // Bad values are refused before anything is read or written.
+  if (!(max_rotation > 0.0))
+  {
+    std::cerr << "Error: -max_rotation_from_guess must be > 0 degrees (leave it out for no bound).\n";
+    return 1;
+  }
+  if (!(max_translation > 0.0))
+  {
+    std::cerr << "Error: -max_translation_from_guess must be > 0 m (leave it out for no bound).\n";
+    return 1;
+  }
+  const bool roof_outline = walls == "roof_outline";
+  if (!roof_outline && walls != "sac")
+  {
+    std::cerr << "Error: unknown -walls '" << walls << "' (sac, roof_outline).\n";
+    return 1;
+  }
+  for (const char* option : {"label_field", "ground_label", "building_label"})
+    if (!roof_outline && cl.given (option))
+    {
+      std::cerr << "Error: -" << option << " applies to -walls roof_outline only.\n";
+      return 1;
+    }
+  if (roof_outline && ground_label == building_label)
+  {
+    std::cerr << "Error: -ground_label and -building_label must differ.\n";
+    return 1;
+  }
   if (!pcl_ext::tools::checkOutputsWritable (output, {png, png_before}))
     return 1;
+  Eigen::Matrix4d guess = Eigen::Matrix4d::Identity ();
+  if (!guess_path.empty ())
+  {
+    try
+    {
+      pcl_ext::io::loadTransform (guess_path, guess);
+    }
+    catch (const pcl_ext::io::ReadError& e)
+    {
+      std::cerr << "Error: " << e.what () << "\n";
+      return 1;
+    }
+  }
 
   pcl_ext::PlaneMatchingRegistration<Point, Point> reg;
   for (std::stringstream list (no_constraint); list.good ();)
@@ -126,11 +188,23 @@ main (int argc, char** argv)
   }
 
   pcl::PointCloud<Point>::Ptr scan (new pcl::PointCloud<Point>);
+  pcl::PointCloud<pcl::Label>::Ptr labels (new pcl::PointCloud<pcl::Label>);
   {
-    pcl_ext::tools::StageTimer timer ("Loading " + input);
-    if (!pcl_ext::tools::loadCloud (input, *scan))
+    pcl::PCLPointCloud2 file;
+    if (!pcl_ext::tools::loadInput (input, file, *scan))
       return 1;
-    timer.done (scan->size ());
+    if (roof_outline)
+    {
+      std::vector<std::uint32_t> values;
+      std::string error;
+      if (!pcl_ext::io::getLabelField (file, label_field, values, &error))
+      {
+        std::cerr << "Error: " << input << ": " << error << " (-label_field).\n";
+        return 1;
+      }
+      for (const auto v : values)
+        labels->push_back (pcl::Label {v});
+    }
   }
   std::vector<pcl_ext::io::Footprint> footprints;
   try
@@ -160,11 +234,24 @@ main (int argc, char** argv)
   if (!reg.setFootprints (footprints, map_parameters))
     return 1;
 
-  pcl_ext::SACPlaneExtraction<Point> extraction;
-  extraction.setDistanceThreshold (threshold);
-  extraction.setMinInliers (min_inliers);
-  extraction.setMaxPlanes (max_planes);
-  reg.setPlaneExtractor (extraction.asExtractor ());
+  if (roof_outline)
+  {
+    pcl_ext::RoofOutlinePlaneExtraction<Point> extraction;
+    extraction.setInputLabels (labels);
+    extraction.setGroundLabel (ground_label);
+    extraction.setBuildingLabel (building_label);
+    reg.setPlaneExtractor (extraction.asExtractor ());
+  }
+  else
+  {
+    pcl_ext::SACPlaneExtraction<Point> extraction;
+    extraction.setDistanceThreshold (threshold);
+    extraction.setMinInliers (min_inliers);
+    extraction.setMaxPlanes (max_planes);
+    reg.setPlaneExtractor (extraction.asExtractor ());
+  }
+  reg.setMaxRotationFromGuess (max_rotation);
+  reg.setMaxTranslationFromGuess (max_translation);
   reg.setInitialPairs (k);
   reg.setInitialScanPlanes (m);
   reg.setInitialMapPlanes (n);
@@ -174,10 +261,17 @@ main (int argc, char** argv)
   reg.setNumberOfThreads (threads);
   reg.setInputSource (scan);
 
+  // The guess is in map coordinates; the registration works in the map's local frame.
+  Eigen::Matrix4d local_guess = guess;
+  local_guess.topRightCorner<3, 1> () -= reg.getLocalOrigin ();
+  if (!guess_path.empty () || std::isfinite (max_rotation) || std::isfinite (max_translation))
+    std::printf ("Search within %g deg and %g m of the guess%s\n", max_rotation, max_translation,
+                 guess_path.empty () ? " (the identity)" : (" in " + guess_path).c_str ());
+
   pcl::PointCloud<Point> registered;
   {
     pcl_ext::tools::StageTimer timer ("Extracting and matching planes");
-    reg.align (registered);
+    reg.align (registered, local_guess.cast<float> ());
     timer.done (reg.getMatchingResult ().matches.size ());
   }
   const auto& result = reg.getMatchingResult ();

@@ -215,7 +215,7 @@ CommandLine::printHelp () const
   {
     std::cout << "\nArguments:\n";
     for (const auto& p : positionals_)
-      std::cout << "  " << std::left << std::setw (26) << p.name << p.help << "\n";
+      std::cout << "  " << std::left << std::setw (25) << p.name << " " << p.help << "\n";
   }
   std::cout << "\nOptions:\n";
   for (const auto& o : options_)
@@ -223,7 +223,7 @@ CommandLine::printHelp () const
     std::string lhs = "-" + o.name;
     if (o.kind != Kind::Switch)
       lhs += " X";
-    std::cout << "  " << std::left << std::setw (26) << lhs << o.help << " (default: "
+    std::cout << "  " << std::left << std::setw (25) << lhs << " " << o.help << " (default: "
               << o.default_text << ")\n";
   }
   std::cout << "  " << std::left << std::setw (26) << "-h" << "print this help and exit\n";
