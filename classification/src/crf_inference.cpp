@@ -56,9 +56,9 @@ beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
       g (d) = edgeFeature (graph.z (graph.edge_a[e], d), graph.z (graph.edge_b[e], d));
     const Eigen::VectorXd u = W.col (0) + W.rightCols (D) * g;
     for (Eigen::Index c = 0; c < u.size (); ++c)
-      diag (c, e) = softplus (u (c));
+      diag (c, e) = w.edge_scale * std::min (softplus (u (c)), kMaxLogPotential);
   }
-  const Eigen::MatrixXd exp_diag = diag.array ().min (50.0).exp ().matrix ();
+  const Eigen::MatrixXd exp_diag = diag.array ().exp ().matrix ();
   // Messages in log space: column 2e goes a -> b, 2e + 1 goes b -> a.
   Eigen::MatrixXd msg = Eigen::MatrixXd::Zero (C, 2 * E), next (C, 2 * E), incoming (C, N);
   const double damping = settings.bp_damping;
@@ -136,6 +136,40 @@ beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
     for (std::size_t c = 0; c < C; ++c)
       marginals (n, c) = static_cast<float> (std::exp (b[c]));
   }
+}
+
+double
+fitEdgeScale (const Graph& graph, const MultiscaleCrfModel::Weights& w,
+              const std::vector<double>& node_weights, const CrfSettings& settings)
+{
+  constexpr double kStep = 0.1, kMax = 1.5;
+  double best_scale = 1.0, best_loss = std::numeric_limits<double>::infinity ();
+  int worse = 0;
+  for (int k = 1; k * kStep <= kMax + 1e-9; ++k)
+  {
+    MultiscaleCrfModel::Weights scaled = w;
+    scaled.edge_scale = k * kStep;
+    Eigen::MatrixXf marginals;
+    int iterations = 0;
+    bool converged = false;
+    beliefPropagation (graph, scaled, settings, marginals, iterations, converged);
+    double loss = 0.0;
+    for (std::size_t n = 0; n < graph.num_supervoxels; ++n)
+      if (graph.labels[n] >= 0 && node_weights[n] > 0.0)
+        loss -= node_weights[n]
+                * std::log (std::max (1e-30, static_cast<double> (
+                                                 marginals (static_cast<Eigen::Index> (n),
+                                                            graph.labels[n]))));
+    if (loss < best_loss)
+    {
+      best_loss = loss;
+      best_scale = scaled.edge_scale;
+      worse = 0;
+    }
+    else if (++worse == 2)  // rising twice in a row: past the minimum (larger scales cost
+      break;                // the most sweeps and have only ever been worse)
+  }
+  return best_scale;
 }
 }  // namespace crf
 }  // namespace pcl_ext

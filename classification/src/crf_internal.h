@@ -20,6 +20,7 @@ struct MultiscaleCrfModel::Weights
   std::vector<std::string> feature_names;
   Eigen::VectorXd mean, scale;  // z = clamp((f - mean) / scale, -kClamp, kClamp)
   Eigen::MatrixXd node_s, node_x, local_edge, regional_edge;
+  double edge_scale = 1.0;  // beta: the log edge potentials are multiplied by it (stage 3)
 };
 
 namespace crf
@@ -27,6 +28,8 @@ namespace crf
 constexpr float kClamp = 5.f;
 /** Edge features z_i z_j are clamped to [-kEdgeClamp, kEdgeClamp]. */
 constexpr double kEdgeClamp = 3.0;
+/** The diagonal of a log edge potential is capped here, in training and inference alike. */
+constexpr double kMaxLogPotential = 50.0;
 
 /** Edge potentials are kept associative: log psi(c, c) = softplus(lambda^c . g) >= 0, so that an
   * edge can only favour agreement (unbounded linear potentials turned repulsive on unseen
@@ -82,26 +85,34 @@ void
 unpackWeights (const Eigen::VectorXd& theta, std::size_t classes, std::size_t dims,
                MultiscaleCrfModel::Weights& w);
 
-/** Penalised negative pseudo-log-likelihood and its gradient (see crf_model.h); each node's
-  * neighbours are conditioned on at \a context_labels (-1: not at all). */
+/** Penalised negative pseudo-log-likelihood and its gradient (see crf_model.h); each node
+  * hears from each neighbour o the message BP's first sweep would send given o's class
+  * probabilities \a context.col(o) (C x N; with no columns, neighbours are ignored). */
 double
 pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
-                  const std::vector<int>& context_labels, const Eigen::VectorXd& theta,
+                  const Eigen::MatrixXd& context, const Eigen::VectorXd& theta,
                   std::size_t classes, double sigma, Eigen::VectorXd& gradient,
                   unsigned int threads);
 
 /** Minimise the penalised negative pseudo-log-likelihood by L-BFGS from \a theta; returns
-  * the iterations done. */
+  * the iterations done. With \a edges_only, the node blocks are held where they are. */
 int
 trainWeights (const Graph& graph, const std::vector<double>& node_weights,
-              const std::vector<int>& context_labels, std::size_t classes,
-              const CrfSettings& settings, Eigen::VectorXd& theta, bool& converged,
-              double& value);
+              const Eigen::MatrixXd& context, std::size_t classes,
+              const CrfSettings& settings, bool edges_only, Eigen::VectorXd& theta,
+              bool& converged, double& value);
 
 /** Loopy BP marginals of the super-voxel nodes (rows) over classes. */
 void
 beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
                    const CrfSettings& settings, Eigen::MatrixXf& marginals, int& iterations,
                    bool& converged);
+
+/** Stage 3 of training: the factor beta on the log edge potentials that minimises the
+  * weighted negative log-likelihood of the labelled super-voxels under their BP marginals on
+  * the training graph, searched on the grid 0.1, 0.2, .., 1.5. */
+double
+fitEdgeScale (const Graph& graph, const MultiscaleCrfModel::Weights& w,
+              const std::vector<double>& node_weights, const CrfSettings& settings);
 }  // namespace crf
 }  // namespace pcl_ext

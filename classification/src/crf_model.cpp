@@ -49,6 +49,8 @@ checkCrfSettings (const CrfSettings& s, const char* caller)
     bad = "the prior's sigma must be positive and finite";
   else if (s.max_training_iterations < 1 || s.bp_iterations < 1)
     bad = "iteration limits must be at least 1";
+  else if (!(s.edge_scale >= 0.0) || !std::isfinite (s.edge_scale))
+    bad = "the edge scale must be 0 (fitted at training) or positive and finite";
   else if (!(s.bp_damping >= 0.0 && s.bp_damping < 1.0))
     bad = "the BP damping must be in [0, 1)";
   else if (!(s.bp_tolerance > 0.0) || !std::isfinite (s.bp_tolerance))
@@ -306,37 +308,45 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
   bool converged = false;
   double value = 0.0;
   // Stage 1: node potentials alone (multinomial logistic regression; all of NodeOnly).
-  std::vector<int> context (graph.size (), -1);
-  int iterations = crf::trainWeights (graph, node_weights, context, C, settings, theta, converged, value);
+  int iterations = crf::trainWeights (graph, node_weights, Eigen::MatrixXd (), C, settings, false,
+                                      theta, converged, value);
   if (settings.mode != CrfMode::NodeOnly)
   {
-    // Stage 2: all weights, each node conditioned on its neighbours' stage-1 predictions rather
-    // than their true labels (stacked pseudo-likelihood): with true labels, neighbours nearly
-    // always agree and the edges learnt overwhelm the node potentials at inference.
+    // Stage 2: the edge weights, with the node weights held at stage 1. Each node hears from
+    // its neighbours the message BP's first sweep sends, computed from their stage-1 class
+    // probabilities (stacked pseudo-likelihood). Refitting the node weights too, or
+    // conditioning on the neighbours' labels instead of their probabilities, both let the
+    // edges explain the labels alone: the node potentials lost their meaning, rare classes got
+    // large edge potentials that a small belief already triggers in BP, and inference
+    // collapsed onto those classes.
     const Eigen::Index D1 = D + 1;
     const Eigen::Map<const Eigen::MatrixXd> ws (theta.data (), static_cast<Eigen::Index> (C), D1);
     const Eigen::Map<const Eigen::MatrixXd> wx (theta.data () + C * D1, static_cast<Eigen::Index> (C), D1);
+    Eigen::MatrixXd context (static_cast<Eigen::Index> (C), static_cast<Eigen::Index> (graph.size ()));
     for (std::size_t n = 0; n < graph.size (); ++n)
     {
       const auto& W = n < graph.num_supervoxels ? ws : wx;
       const Eigen::VectorXd score =
           W.col (0) + W.rightCols (D) * graph.z.row (static_cast<Eigen::Index> (n)).transpose ().cast<double> ();
-      Eigen::Index best;
-      score.maxCoeff (&best);
-      context[n] = static_cast<int> (best);
+      const Eigen::VectorXd p = (score.array () - score.maxCoeff ()).exp ().matrix ();
+      context.col (static_cast<Eigen::Index> (n)) = p / p.sum ();
     }
-    iterations += crf::trainWeights (graph, node_weights, context, C, settings, theta, converged, value);
+    iterations += crf::trainWeights (graph, node_weights, context, C, settings, true, theta,
+                                     converged, value);
   }
-  stats.training_ms = msSince (t0);
-  stats.iterations = iterations;
-  stats.converged = converged;
-  stats.objective = value / total;
-
   Weights w;
   w.feature_names = saliencyFeatureNames (settings.features);
   w.mean = mean;
   w.scale = scale;
   crf::unpackWeights (theta, C, static_cast<std::size_t> (D), w);
+  // Stage 3: the weight of the edges against the nodes at inference (see crf_model.h).
+  w.edge_scale = settings.edge_scale > 0.0 ? settings.edge_scale : 1.0;
+  if (settings.mode != CrfMode::NodeOnly && settings.edge_scale == 0.0)
+    w.edge_scale = crf::fitEdgeScale (graph, w, node_weights, settings);
+  stats.training_ms = msSince (t0);
+  stats.iterations = iterations;
+  stats.converged = converged;
+  stats.objective = value / total;
   *weights_ = std::move (w);
   class_ids_ = ids;
   for (const auto id : ids)

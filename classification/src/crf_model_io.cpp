@@ -20,7 +20,7 @@ namespace pcl_ext
 namespace
 {
 constexpr const char* kMagic = "pcl_ext_crf_model";
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;
 
 std::string
 num (double v)
@@ -189,6 +189,7 @@ MultiscaleCrfModel::toText () const
   writeMatrix (out, "node_point", w.node_x);
   writeMatrix (out, "local_edge", w.local_edge);
   writeMatrix (out, "regional_edge", w.regional_edge);
+  out << "edge_scale " << num (w.edge_scale) << '\n';
   out << "end\n";
   return out.str ();
 }
@@ -330,6 +331,10 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
         || !readMatrix (rd, "local_edge", rows, cols, w.local_edge)
         || !readMatrix (rd, "regional_edge", rows, cols, w.regional_edge))
       return false;
+    if (!rd.next ("edge_scale") || !rd.expect ("edge_scale", 1) || !rd.number (1, w.edge_scale))
+      return false;
+    if (!(w.edge_scale > 0.0))
+      return rd.fail ("the edge scale must be positive");
     if (!rd.next ("end") || !rd.expect ("end", 0))
       return false;
     return true;

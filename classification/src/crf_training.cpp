@@ -32,27 +32,63 @@ logSumExp (const double* v, std::size_t n)
 
 double
 pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
-                  const std::vector<int>& context_labels, const Eigen::VectorXd& theta,
+                  const Eigen::MatrixXd& context, const Eigen::VectorXd& theta,
                   std::size_t classes, double sigma, Eigen::VectorXd& gradient,
                   unsigned int threads)
 {
   const std::size_t C = classes;
-  const std::size_t D = static_cast<std::size_t> (graph.z.cols ());
-  const std::size_t D1 = D + 1;
+  const Eigen::Index D = graph.z.cols ();
+  const std::size_t D1 = static_cast<std::size_t> (D) + 1;
   const std::size_t block = C * D1;
   // theta block b, class c, feature d (d = 0: bias), column-major C x D1
   auto at = [&] (std::size_t b, std::size_t c, std::size_t d) { return b * block + d * C + c; };
   const std::size_t N = graph.size ();
+  const std::size_t E = graph.edge_a.size ();
+  const bool use_context = context.cols () == static_cast<Eigen::Index> (N) && E > 0;
+  const int nthreads = static_cast<int> (resolveThreadCount (threads));
+  const Eigen::Index Ci = static_cast<Eigen::Index> (C);
+
+  // Per edge, once: its features g (row 0: the constant 1), the diagonal d of its log
+  // potential and dd/du.
+  Eigen::MatrixXd features, potential, exp_potential, slope;
+  if (use_context)
+  {
+    features.resize (static_cast<Eigen::Index> (D1), static_cast<Eigen::Index> (E));
+    potential.resize (Ci, static_cast<Eigen::Index> (E));
+    exp_potential.resize (Ci, static_cast<Eigen::Index> (E));
+    slope.resize (Ci, static_cast<Eigen::Index> (E));
+    const Eigen::Map<const Eigen::MatrixXd> local (theta.data () + 2 * block, Ci, D1);
+    const Eigen::Map<const Eigen::MatrixXd> regional (theta.data () + 3 * block, Ci, D1);
+#pragma omp parallel for num_threads(nthreads) schedule(static)
+    for (std::ptrdiff_t e = 0; e < static_cast<std::ptrdiff_t> (E); ++e)
+    {
+      features (0, e) = 1.0;
+      for (Eigen::Index d = 0; d < D; ++d)
+        features (d + 1, e) = edgeFeature (graph.z (graph.edge_a[e], d), graph.z (graph.edge_b[e], d));
+      const Eigen::VectorXd u = (graph.edge_regional[e] ? regional : local) * features.col (e);
+      for (Eigen::Index c = 0; c < Ci; ++c)
+      {
+        const double sp = softplus (u (c));
+        potential (c, e) = std::min (sp, kMaxLogPotential);
+        exp_potential (c, e) = std::exp (potential (c, e));
+        slope (c, e) = sp < kMaxLogPotential ? sigmoid (u (c)) : 0.0;
+      }
+    }
+  }
+  // d loss / d u for each edge end: column 2e is edge e's term in edge_a's score, 2e + 1 in
+  // edge_b's. Each node writes only its own ends, so the node loop needs no locks.
+  Eigen::MatrixXd end_gradient =
+      Eigen::MatrixXd::Zero (Ci, use_context ? static_cast<Eigen::Index> (2 * E) : 0);
+
   const std::size_t chunks = (N + kChunk - 1) / kChunk;
   std::vector<Eigen::VectorXd> partial_grad (chunks);
   std::vector<double> partial_loss (chunks, 0.0);
-  const int nthreads = static_cast<int> (resolveThreadCount (threads));
 #pragma omp parallel for num_threads(nthreads) schedule(dynamic, 1)
   for (std::ptrdiff_t ch = 0; ch < static_cast<std::ptrdiff_t> (chunks); ++ch)
   {
-    Eigen::VectorXd g = Eigen::VectorXd::Zero (theta.size ());
+    Eigen::VectorXd g = Eigen::VectorXd::Zero (static_cast<Eigen::Index> (2 * block));
     double loss = 0.0;
-    std::vector<double> score (C), p (C), edge_feature (D1);
+    std::vector<double> score (C), p (C), dmessage;
     for (std::size_t n = ch * kChunk; n < std::min (N, (ch + 1) * kChunk); ++n)
     {
       const int y = graph.labels[n];
@@ -64,24 +100,28 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
       for (std::size_t c = 0; c < C; ++c)
       {
         double s = theta[at (nb, c, 0)];
-        for (std::size_t d = 0; d < D; ++d)
-          s += theta[at (nb, c, d + 1)] * z (static_cast<Eigen::Index> (d));
+        for (Eigen::Index d = 0; d < D; ++d)
+          s += theta[at (nb, c, d + 1)] * z (d);
         score[c] = s;
       }
-      // Labelled neighbours raise the score of their own label (associative potentials).
-      for (std::size_t a = graph.adj_offsets[n]; a < graph.adj_offsets[n + 1]; ++a)
+      // Each neighbour o sends the message an undamped first BP sweep sends: with q its class
+      // probabilities and d the diagonal of the edge's log potential,
+      // log sum_c' q(c') psi(c', c) = log(1 + q(c) (e^d - 1)).
+      const std::size_t a0 = graph.adj_offsets[n];
+      const std::size_t a1 = use_context ? graph.adj_offsets[n + 1] : a0;
+      dmessage.assign ((a1 - a0) * C, 0.0);
+      for (std::size_t a = a0; a < a1; ++a)
       {
         const std::uint32_t e = graph.adj_edge[a];
         const std::uint32_t o = graph.other (e, static_cast<std::uint32_t> (n));
-        const int yo = context_labels[o];
-        if (yo < 0)
-          continue;
-        const std::size_t eb = graph.edge_regional[e] ? 3 : 2;
-        const auto zo = graph.z.row (o);
-        double s = theta[at (eb, yo, 0)];
-        for (std::size_t d = 0; d < D; ++d)
-          s += theta[at (eb, yo, d + 1)] * edgeFeature (z (d), zo (d));
-        score[yo] += softplus (s);
+        for (std::size_t c = 0; c < C; ++c)
+        {
+          const Eigen::Index ci = static_cast<Eigen::Index> (c);
+          const double q = context (ci, o);
+          const double grow = q * (exp_potential (ci, e) - 1.0);
+          score[c] += std::log1p (grow);
+          dmessage[(a - a0) * C + c] = q * exp_potential (ci, e) / (1.0 + grow) * slope (ci, e);
+        }
       }
       const double lse = logSumExp (score.data (), C);
       loss += w * (lse - score[y]);
@@ -91,25 +131,15 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
       {
         const double r = w * p[c];
         g[at (nb, c, 0)] += r;
-        for (std::size_t d = 0; d < D; ++d)
+        for (Eigen::Index d = 0; d < D; ++d)
           g[at (nb, c, d + 1)] += r * z (d);
       }
-      for (std::size_t a = graph.adj_offsets[n]; a < graph.adj_offsets[n + 1]; ++a)
+      for (std::size_t a = a0; a < a1; ++a)
       {
         const std::uint32_t e = graph.adj_edge[a];
-        const std::uint32_t o = graph.other (e, static_cast<std::uint32_t> (n));
-        const int yo = context_labels[o];
-        if (yo < 0)
-          continue;
-        const std::size_t eb = graph.edge_regional[e] ? 3 : 2;
-        const auto zo = graph.z.row (o);
-        double u = theta[at (eb, yo, 0)];
-        for (std::size_t d = 0; d < D; ++d)
-          u += theta[at (eb, yo, d + 1)] * edgeFeature (z (d), zo (d));
-        const double r = w * p[yo] * sigmoid (u);
-        g[at (eb, yo, 0)] += r;
-        for (std::size_t d = 0; d < D; ++d)
-          g[at (eb, yo, d + 1)] += r * edgeFeature (z (d), zo (d));
+        const Eigen::Index col = 2 * static_cast<Eigen::Index> (e) + (graph.edge_a[e] == n ? 0 : 1);
+        for (std::size_t c = 0; c < C; ++c)
+          end_gradient (static_cast<Eigen::Index> (c), col) = w * p[c] * dmessage[(a - a0) * C + c];
       }
     }
     partial_grad[ch] = std::move (g);
@@ -119,8 +149,33 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
   double value = theta.squaredNorm () / (2.0 * sigma * sigma);
   for (std::size_t ch = 0; ch < chunks; ++ch)
   {
-    gradient += partial_grad[ch];
+    gradient.head (static_cast<Eigen::Index> (2 * block)) += partial_grad[ch];
     value += partial_loss[ch];
+  }
+  if (use_context)
+  {
+    // Edge blocks: sum over edges of (both ends' d loss / d u) x g, in fixed edge chunks.
+    const std::size_t echunks = (E + kChunk - 1) / kChunk;
+    std::vector<Eigen::MatrixXd> local (echunks), regional (echunks);
+#pragma omp parallel for num_threads(nthreads) schedule(static)
+    for (std::ptrdiff_t ch = 0; ch < static_cast<std::ptrdiff_t> (echunks); ++ch)
+    {
+      local[ch] = Eigen::MatrixXd::Zero (Ci, static_cast<Eigen::Index> (D1));
+      regional[ch] = Eigen::MatrixXd::Zero (Ci, static_cast<Eigen::Index> (D1));
+      for (std::size_t e = ch * kChunk; e < std::min (E, (ch + 1) * kChunk); ++e)
+      {
+        const Eigen::Index ei = static_cast<Eigen::Index> (e);
+        (graph.edge_regional[e] ? regional[ch] : local[ch]) +=
+            (end_gradient.col (2 * ei) + end_gradient.col (2 * ei + 1)) * features.col (ei).transpose ();
+      }
+    }
+    Eigen::Map<Eigen::MatrixXd> g_local (gradient.data () + 2 * block, Ci, D1);
+    Eigen::Map<Eigen::MatrixXd> g_regional (gradient.data () + 3 * block, Ci, D1);
+    for (std::size_t ch = 0; ch < echunks; ++ch)
+    {
+      g_local += local[ch];
+      g_regional += regional[ch];
+    }
   }
   return value;
 }
@@ -216,15 +271,31 @@ minimiseLbfgs (Objective&& f, Eigen::VectorXd& x, int max_iterations, bool& conv
 /** Train: returns iterations; fills theta. */
 int
 trainWeights (const Graph& graph, const std::vector<double>& node_weights,
-              const std::vector<int>& context_labels, std::size_t classes,
-              const CrfSettings& settings, Eigen::VectorXd& theta, bool& converged,
-              double& value)
+              const Eigen::MatrixXd& context, std::size_t classes,
+              const CrfSettings& settings, bool edges_only, Eigen::VectorXd& theta,
+              bool& converged, double& value)
 {
+  if (!edges_only)
+  {
+    auto objective = [&] (const Eigen::VectorXd& x, Eigen::VectorXd& g) {
+      return pseudoLikelihood (graph, node_weights, context, x, classes, settings.sigma, g,
+                               settings.threads);
+    };
+    return minimiseLbfgs (objective, theta, settings.max_training_iterations, converged, value);
+  }
+  // The node blocks stay as they are: only the second half (the edge blocks) moves.
+  const Eigen::Index half = theta.size () / 2;
+  Eigen::VectorXd full = theta, edges = theta.tail (half), g_full;
   auto objective = [&] (const Eigen::VectorXd& x, Eigen::VectorXd& g) {
-    return pseudoLikelihood (graph, node_weights, context_labels, x, classes, settings.sigma, g,
-                             settings.threads);
+    full.tail (half) = x;
+    const double v = pseudoLikelihood (graph, node_weights, context, full, classes,
+                                       settings.sigma, g_full, settings.threads);
+    g = g_full.tail (half);
+    return v;
   };
-  return minimiseLbfgs (objective, theta, settings.max_training_iterations, converged, value);
+  const int it = minimiseLbfgs (objective, edges, settings.max_training_iterations, converged, value);
+  theta.tail (half) = edges;
+  return it;
 }
 }  // namespace crf
 }  // namespace pcl_ext

@@ -83,11 +83,30 @@ TEST (MultiscaleCrfOakland, ThreeModelsOnTheValidationChunks)
     oa[k] = m.overall_accuracy;
     ++k;
   }
-  // Parameters are the defaults, chosen on the street scenes only. The measured figures (see
-  // the printout) miss the goals: the local and multi-scale CRF fall below node-only here
-  // (mCRF loses vegetation to its neighbours), so only what holds is asserted: the node
-  // potentials alone reach 0.93 overall accuracy and 0.68 macro F1 on unseen chunks.
+  // Parameters are the defaults, none chosen on the validation chunks: the edge scale beta is
+  // fitted on the training chunks by train() (0.5 here; training on one of am / an and
+  // testing on the other puts the best macro F1 between 0.5 and 0.85).
+  // Measured (per-class F1; ctest --test-dir build -R MultiscaleCrfOakland -V):
+  //
+  //   model  vegetation trunk_pole facade ground  wire   macro F1  overall accuracy
+  //   node     0.865      0.298    0.804  0.993  0.495   0.6910      0.9339
+  //   crf      0.886      0.192    0.801  0.993  0.591   0.6926      0.9336
+  //   mcrf     0.913      0.189    0.796  0.993  0.717   0.7215      0.9379
+  //
+  // The goals: mCRF at least 3 points of macro F1 above node-only is met (+3.05);
+  // mCRF overall accuracy >= 0.95 and macro F1 >= 0.78 are not (CGAL's random forest with
+  // graph cut: about 0.96 / 0.79 when tuned on these chunks). The edges help vegetation and
+  // wires and cost trunk_pole (facade points near poles and trees are drawn to it), the class
+  // the node potentials already separate worst.
   EXPECT_GE (oa[0], 0.93);
   EXPECT_GE (macro[0], 0.68);
-  EXPECT_GE (oa[1], 0.85);
+  EXPECT_GE (oa[1], 0.93);
+  EXPECT_GE (macro[1], 0.68);
+  EXPECT_GE (oa[2], 0.935);
+  EXPECT_GE (macro[2], 0.71);
+  // The CRFs must not undo their own node potentials (before the fix, the mCRF fell to 0.68
+  // overall accuracy and 0.32 macro F1), and the regional edges must add to the local ones.
+  EXPECT_GE (oa[2], oa[0]);
+  EXPECT_GE (macro[2] - macro[0], 0.025);
+  EXPECT_GE (macro[2] - macro[1], 0.02);
 }

@@ -163,7 +163,7 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
   const std::vector<std::pair<const char*, std::string>> cases = {
       {"empty", ""},
       {"not a model", "hello world\n"},
-      {"other version", replaced ("pcl_ext_crf_model 1", "pcl_ext_crf_model 2")},
+      {"other version", replaced ("pcl_ext_crf_model 2", "pcl_ext_crf_model 1")},
       {"unknown mode", replaced ("mode mcrf", "mode best")},
       {"truncated", good.substr (0, good.size () / 2)},
       {"no end", replaced ("end\n", "")},
@@ -173,6 +173,8 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
       {"too few classes", replaced ("classes 5", "classes 4")},
       {"wrong matrix size", replaced ("weights local_edge 5", "weights local_edge 4")},
       {"NaN weight", replaced ("weights regional_edge 5 12\n", "weights regional_edge 5 12\nnan ")},
+      {"no edge scale", replaced ("edge_scale ", "edge_scales ")},
+      {"negative edge scale", replaced ("edge_scale ", "edge_scale -")},
   };
   for (const auto& [name, text] : cases)
   {

@@ -333,7 +333,7 @@ TEST_P (Matrix, Run)
   if (bad == Bad::MalformedModel)
   {
     f.model = f.dir + "/model.txt";
-    std::ofstream (f.model) << "pcl_ext_crf_model 1\nmode mcrf\nsupervoxels 15 0.2\n";
+    std::ofstream (f.model) << "pcl_ext_crf_model 2\nmode mcrf\nsupervoxels 15 0.2\n";
   }
   if (bad == Bad::OutputNotWritable)
     f.output = f.dir + "/no/such/folder/" + fs::path (f.output).filename ().string ();

@@ -51,6 +51,8 @@ struct CrfSettings
   double sigma = 1.0;                ///< sigma_C of the Gaussian prior, eq. 9; > 0
   bool balance_classes = true;       ///< weight training nodes by 1 / sqrt(class frequency)
   int max_training_iterations = 200; ///< L-BFGS iterations; >= 1
+  double edge_scale = 0.0;           ///< beta, the factor on the log edge potentials at inference
+                                     ///< (pcl_ext addition); 0: fitted at training (stage 3); >= 0
   double bp_damping = 0.5;           ///< message damping of loopy BP; [0, 1)
   int bp_iterations = 100;           ///< at most this many BP sweeps; >= 1
   double bp_tolerance = 1e-4;        ///< converged when no message moves more; > 0
@@ -93,13 +95,23 @@ struct CrfStatistics
   *
   * Training (eq. 9) maximises a pseudo-likelihood, not the likelihood, whose partition
   * function over a loopy graph is intractable, minus |lambda|^2 / (2 sigma^2), by L-BFGS (a
-  * quasi-Newton method; the paper used scaled conjugate gradients). Stage 1 fits the node
-  * potentials alone (exactly penalised logistic regression; all of NodeOnly). Stage 2 fits all
-  * weights by the pseudo-likelihood with each node conditioned on its neighbours' stage-1
-  * predictions instead of their true labels (stacked pseudo-likelihood): with true labels the
-  * neighbours nearly always agree, and the edges learnt then overwhelm the node potentials at
-  * inference. A super-voxel's training label is the majority label of its members; unlabelled
-  * nodes are not scored. With balance_classes, each node is weighted by
+  * quasi-Newton method; the paper used scaled conjugate gradients), in three stages.
+  * Stage 1 fits the node potentials alone (exactly penalised logistic regression; all of
+  * NodeOnly). Stage 2 fits the edge weights with the node weights held at stage 1: each node
+  * is scored with, from each neighbour, the message a first (undamped) BP sweep sends given that
+  * neighbour's stage-1 class probabilities q, log(1 + q(c) (e^d - 1)) (a stacked
+  * pseudo-likelihood). Refitting the node weights as well let the edges explain the labels
+  * alone (on Oakland the node potentials of the trained mCRF then labelled 2 % of the points
+  * right), and conditioning on the neighbours' labels rather than their probabilities gave
+  * rare classes edge potentials so large that a small belief in a neighbour already
+  * triggered them in BP: inference collapsed onto those classes. Stage 3 fits the weight
+  * beta of the edges against the nodes at inference (log edge potentials times beta), which
+  * the pseudo-likelihood cannot: it sees each neighbour once, while loopy BP hears the same
+  * evidence again around the graph's short cycles. beta is the value on the grid 0.1, 0.2,
+  * .., 1.5 that minimises the weighted negative log-likelihood of the labelled super-voxels
+  * under their BP marginals on the training graph (CrfSettings::edge_scale fixes it
+  * instead). A super-voxel's training label is the majority label of its members;
+  * unlabelled nodes are not scored. With balance_classes, each node is weighted by
   * 1/sqrt(frequency of its class) (pcl_ext addition: rare classes such as wires would
   * otherwise be given up).
   *
@@ -173,8 +185,8 @@ public:
   const CrfStatistics&
   getStatistics () const { return statistics_; }
 
-  /** \brief Write the model as versioned text (format "pcl_ext_crf_model 1": settings,
-    * classes, feature names and scaling, weights), atomically.
+  /** \brief Write the model as versioned text (format "pcl_ext_crf_model 2": settings,
+    * classes, feature names and scaling, weights, edge scale), atomically.
     * \return false with an untrained model or when the file cannot be written */
   bool
   saveModel (const std::string& path) const;

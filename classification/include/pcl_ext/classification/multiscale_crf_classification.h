@@ -53,6 +53,15 @@ public:
   void
   setSigma (double sigma) { model_.settings ().sigma = sigma; }
 
+  /** \brief beta, the factor on the log edge potentials in belief propagation (pcl_ext
+    * addition, see MultiscaleCrfModel). Default 0: fitted on the training data; else > 0.
+    * Takes effect at train(). */
+  void
+  setEdgeScale (double beta) { model_.settings ().edge_scale = beta; }
+
+  double
+  getEdgeScale () const { return model_.settings ().edge_scale; }
+
   /** \brief m, local edges per super-voxel (paper: 4). Default 4; >= 0. */
   void
   setNumberOfLocalEdges (int m) { model_.settings ().local_edges = m; }
