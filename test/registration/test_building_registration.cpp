@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <numeric>
 
 using namespace pcl_ext;
 
@@ -167,4 +168,52 @@ TEST (BuildingRegistration, BadInputDoesNotConverge)
   reg.setInputSource (blob);
   reg.align (out);  // no map and no target: pcl::Registration refuses
   EXPECT_FALSE (reg.hasConverged ());
+}
+
+// setIndices: the scan planes come from the indexed points only. The scan is followed by a
+// second copy of itself 300 m away; indexing the first copy gives the result of the first
+// copy alone, bit for bit, and inlier indices that index the whole cloud.
+TEST (BuildingRegistration, IndicesRestrictTheScanPlanes)
+{
+  const Building b = scanChecked (1, 0.02, 0, 0);
+  const Outcome alone = registerChecked (b);
+  ASSERT_TRUE (alone.converged);
+
+  Building doubled = b;
+  doubled.cloud.reset (new pcl::PointCloud<pcl::PointXYZ> (*b.cloud));
+  for (const auto& p : *b.cloud)
+    doubled.cloud->emplace_back (p.x + 300.f, p.y, p.z);
+  doubled.viewpoints.scanner_of_point.insert (doubled.viewpoints.scanner_of_point.end (),
+                                              b.viewpoints.scanner_of_point.begin (),
+                                              b.viewpoints.scanner_of_point.end ());
+  pcl::IndicesPtr first (new pcl::Indices (b.cloud->size ()));
+  std::iota (first->begin (), first->end (), 0);
+
+  PlaneMatchingRegistration<pcl::PointXYZ, pcl::PointXYZ> reg;
+  reg.setInputSource (doubled.cloud);
+  reg.setIndices (first);
+  reg.setSourceViewpoints (doubled.viewpoints);
+  reg.setOrientedNormals (true);
+  ASSERT_TRUE (reg.setFootprints ({test::footprintOf (b.scene)}));
+  pcl::PointCloud<pcl::PointXYZ> aligned;
+  reg.align (aligned);
+  ASSERT_TRUE (reg.hasConverged ());
+  EXPECT_EQ (aligned.size (), b.cloud->size ());
+  EXPECT_EQ (reg.getSourcePlanes ().size (), alone.scan_planes);
+  EXPECT_EQ (reg.getMatchingResult ().matches.size (), alone.matches);
+  Eigen::Matrix4d truth = b.scene.scan_to_map;
+  truth.topRightCorner<3, 1> () -= reg.getLocalOrigin ();
+  const auto error = computeTransformationError (reg.getFinalTransformationDouble (), truth, test::centroidOf (*b.cloud));
+  EXPECT_EQ (error.rotation_deg, alone.error.rotation_deg);
+  EXPECT_EQ (error.translation, alone.error.translation);
+  for (const auto& plane : reg.getSourcePlanes ())
+    for (const auto i : plane.inliers.indices)
+      ASSERT_LT (static_cast<std::size_t> (i), b.cloud->size ());
+
+  // An index past the end: refused before any point is read.
+  first->push_back (static_cast<pcl::index_t> (doubled.cloud->size ()));
+  reg.setIndices (first);
+  reg.align (aligned);
+  EXPECT_FALSE (reg.hasConverged ());
+  EXPECT_TRUE (aligned.empty ());
 }

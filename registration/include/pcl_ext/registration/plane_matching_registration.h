@@ -52,6 +52,18 @@ public:
 
   PlaneMatchingRegistration ();
 
+  /** \brief pcl::Registration::align, with the indices checked first: the base class copies
+    * the indexed points into \a output before anything else sees them. With setIndices(),
+    * the scan planes come from the indexed points only (their inlier indices still index the
+    * input cloud). An index out of range: PCL_ERROR, empty \a output, not converged. */
+  void
+  align (PointCloudSource& output)
+  {
+    align (output, Matrix4::Identity ());
+  }
+  void
+  align (PointCloudSource& output, const Matrix4& guess);
+
   /** \brief Map planes from footprints (section 3.1). The local origin is \a parameters.origin,
     * or when it is zero and \a choose_origin is true, chooseLocalOrigin() (bounding-box centre
     * rounded to metres); getLocalOrigin() reports it. Sets a target cloud of the walls' corners
@@ -175,7 +187,9 @@ public:
 
 protected:
   using Base::converged_;
+  using Base::fake_indices_;
   using Base::final_transformation_;
+  using Base::indices_;
   using Base::input_;
   using Base::reg_name_;
   using Base::target_;
@@ -187,6 +201,9 @@ protected:
 private:
   void
   setCornerTarget ();
+  /** \brief Source plane sets by the extractor, from the indexed points when indices are set. */
+  bool
+  extractSourcePlaneSets (std::vector<pcl::PointIndices>& sets) const;
 
   PlaneMatchingParameters parameters_;
   PlaneExtractor<PointSource> source_extractor_;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl_ext/classification/multiscale_crf_classification.h>
+#include <pcl_ext/common/indices.h>
 
 #include <pcl/console/print.h>
 
@@ -75,6 +76,11 @@ pcl_ext::MultiscaleCrfClassification<PointT>::classify (pcl::PointCloud<pcl::Lab
   }
   if (!initCompute ())
     return;
+  if (!indicesInRange (*indices_, input_->size (), "[pcl_ext::MultiscaleCrfClassification::classify]"))
+  {
+    deinitCompute ();
+    return;
+  }
   std::vector<std::uint32_t> all;
   Eigen::MatrixXf probabilities;
   if (model_.classify (makeInput (*input_, indices_.get ()), all, probabilities))

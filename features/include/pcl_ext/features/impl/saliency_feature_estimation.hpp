@@ -3,6 +3,7 @@
  */
 #pragma once
 
+#include <pcl_ext/common/indices.h>
 #include <pcl_ext/features/saliency_feature_estimation.h>
 
 #include <pcl/console/print.h>
@@ -71,14 +72,11 @@ pcl_ext::SaliencyFeatureEstimation<PointT>::compute (Eigen::MatrixXf& features)
     deinitCompute ();
     return;
   }
-  for (const auto i : *indices_)
-    if (i < 0 || static_cast<std::size_t> (i) >= input_->size ())
-    {
-      PCL_ERROR ("[pcl_ext::SaliencyFeatureEstimation::compute] Index %d is out of range (%zu "
-                 "points).\n", static_cast<int> (i), input_->size ());
-      deinitCompute ();
-      return;
-    }
+  if (!indicesInRange (*indices_, input_->size (), "[pcl_ext::SaliencyFeatureEstimation::compute]"))
+  {
+    deinitCompute ();
+    return;
+  }
   pcl::PointCloud<pcl::PointXYZ> xyz;
   std::vector<Eigen::Vector3f> colours;
   std::vector<float> intensity;

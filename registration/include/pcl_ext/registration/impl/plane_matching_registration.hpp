@@ -3,9 +3,11 @@
  */
 #pragma once
 
+#include <pcl_ext/common/indices.h>
 #include <pcl_ext/registration/impl/plane_extraction.hpp>
 #include <pcl_ext/registration/plane_matching_registration.h>
 
+#include <pcl/common/io.h>
 #include <pcl/common/transforms.h>
 #include <pcl/console/print.h>
 
@@ -17,6 +19,22 @@ PlaneMatchingRegistration<PointSource, PointTarget>::PlaneMatchingRegistration (
   reg_name_ = "PlaneMatchingRegistration";
   source_extractor_ = SACPlaneExtraction<PointSource> ().asExtractor ();
   target_extractor_ = SACPlaneExtraction<PointTarget> ().asExtractor ();
+}
+
+template <typename PointSource, typename PointTarget> void
+PlaneMatchingRegistration<PointSource, PointTarget>::align (PointCloudSource& output, const Matrix4& guess)
+{
+  if (input_ && indices_ && !indicesInRange (*indices_, input_->size (), "[pcl_ext::PlaneMatchingRegistration::align]"))
+  {
+    converged_ = false;
+    result_ = PlaneMatchingResult ();
+    distances_ = PlaneDistanceMetrics ();
+    final_transformation_.setIdentity ();
+    final_double_.setIdentity ();
+    output.clear ();
+    return;
+  }
+  Base::align (output, guess);
 }
 
 template <typename PointSource, typename PointTarget> bool
@@ -80,6 +98,27 @@ PlaneMatchingRegistration<PointSource, PointTarget>::setCornerTarget ()
   Base::setInputTarget (corners);
 }
 
+template <typename PointSource, typename PointTarget> bool
+PlaneMatchingRegistration<PointSource, PointTarget>::extractSourcePlaneSets (std::vector<pcl::PointIndices>& sets) const
+{
+  if (fake_indices_)
+    return source_extractor_ (input_, sets);
+  // setIndices: the extractor sees the indexed points only; its sets are mapped back to
+  // indices of the input, which the viewpoints and the plane fits use.
+  auto subset = pcl::make_shared<PointCloudSource> ();
+  pcl::copyPointCloud (*input_, *indices_, *subset);
+  if (!source_extractor_ (subset, sets))
+    return false;
+  for (auto& set : sets)
+    for (auto& i : set.indices)
+    {
+      if (i < 0 || static_cast<std::size_t> (i) >= indices_->size ())
+        return false;
+      i = (*indices_)[i];
+    }
+  return true;
+}
+
 template <typename PointSource, typename PointTarget> void
 PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (PointCloudSource& output,
                                                                              const Matrix4& guess)
@@ -99,7 +138,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (Poin
   if (!source_planes_given_)
   {
     std::vector<pcl::PointIndices> sets;
-    if (!source_extractor_ || !source_extractor_ (input_, sets) ||
+    if (!source_extractor_ || !extractSourcePlaneSets (sets) ||
         !fitScanPlanes (*input_, sets, source_viewpoints_, source_planes_))
     {
       PCL_ERROR ("[pcl_ext::%s::align] Plane extraction failed on the source.\n", reg_name_.c_str ());
@@ -145,7 +184,8 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (Poin
   computePlaneDistances (*input_, inliers, coefficients, matches, final_double_, distances_);
 
   final_transformation_ = transformation_ = final_double_.cast<float> ();
-  pcl::transformPointCloud (*input_, output, final_transformation_);
+  // pcl::Registration::align filled output with the indexed points.
+  pcl::transformPointCloud (output, output, final_transformation_);
   converged_ = true;
 }
 }  // namespace pcl_ext

@@ -3,6 +3,7 @@
  */
 #pragma once
 
+#include <pcl_ext/common/indices.h>
 #include <pcl_ext/segmentation/adaptive_supervoxel_segmentation.h>
 
 #include <pcl/console/print.h>
@@ -51,6 +52,11 @@ pcl_ext::AdaptiveSupervoxelSegmentation<PointT>::segment (SupervoxelSet& supervo
   }
   if (!initCompute ())
     return;
+  if (!indicesInRange (*indices_, input_->size (), "[pcl_ext::AdaptiveSupervoxelSegmentation::segment]"))
+  {
+    deinitCompute ();
+    return;
+  }
   auto xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
   std::vector<Eigen::Vector3f> colours;
   detail::copyXyzAndColour (*input_, *indices_, *xyz, colours);

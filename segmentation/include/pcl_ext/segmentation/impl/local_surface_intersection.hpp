@@ -3,6 +3,7 @@
  */
 #pragma once
 
+#include <pcl_ext/common/indices.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 
@@ -58,12 +59,8 @@ pcl_ext::LocalSurfaceIntersection<PointT>::checkInput () const
                normals_->size (), n);
     return false;
   }
-  for (const auto idx : *indices_)
-    if (idx < 0 || static_cast<std::size_t> (idx) >= n)
-    {
-      PCL_ERROR ("%s Index %d is out of range (%zu points).\n", name, idx, n);
-      return false;
-    }
+  if (!indicesInRange (*indices_, n, name))
+    return false;
   if (k_ < 3)
   {
     PCL_ERROR ("%s k = %d; a local plane needs at least 3 neighbours.\n", name, k_);
