@@ -169,3 +169,41 @@ TEST (ColourMaps, LabelsAreStableAndDistinct)
   const auto c = colourByClass ({2});
   EXPECT_EQ (c[0].r, 225);
 }
+
+TEST (OffscreenRenderer, LongTitlesStayInsideTheirPanel)
+{
+  ASSERT_TRUE (pcl_ext::visualization::displayAvailable ());
+  using namespace pcl_ext::visualization;
+  const auto cloud = sphereCloud (2000);
+  const std::vector<std::uint32_t> labels (cloud.size (), 1);
+  // At the height's font size (18 px) these 40 characters need about 400 of the panel's 320
+  // pixels; the second line is short.
+  const std::vector<View> views = {
+      makeLabelView ("variance_lsi (pcl_ext): IoU 0.711, 38 seg\n12 s", cloud, labels),
+      makeLabelView ("b", cloud, labels)};
+  const RenderOptions options = makeMontageOptions (views.size (), 320, 400, 2);
+  const std::string path = temporaryPng ("long_titles");
+  std::remove (path.c_str ());
+  ASSERT_TRUE (renderToPng (views, path, options));
+  auto reader = vtkSmartPointer<vtkPNGReader>::New ();
+  reader->SetFileName (path.c_str ());
+  reader->Update ();
+  vtkImageData* image = reader->GetOutput ();
+  int dims[3];
+  image->GetDimensions (dims);
+  ASSERT_EQ (dims[0], 640);
+  ASSERT_EQ (dims[1], 400);
+  // Text is black on white: count dark pixels in the first panel's title band (the top 70
+  // rows; VTK's rows start at the bottom), in its last 24 columns and elsewhere.
+  std::size_t title = 0, right_margin = 0;
+  for (int y = 400 - 70; y < 400; ++y)
+    for (int x = 0; x < 320; ++x)
+    {
+      const auto* px = static_cast<unsigned char*> (image->GetScalarPointer (x, y, 0));
+      if (px[0] < 128 && px[1] < 128 && px[2] < 128)
+        (x >= 320 - 24 ? right_margin : title) += 1;
+    }
+  EXPECT_GT (title, 100u);
+  EXPECT_EQ (right_margin, 0u);
+  std::remove (path.c_str ());
+}

@@ -132,10 +132,11 @@ makeCsv (const std::vector<MethodResult>& results, bool with_truth)
 std::string
 tileTitle (const MethodResult& r, bool with_truth)
 {
-  std::string title = r.name + " (" + r.library + "): ";
+  std::string title = r.name + " (" + r.library + ")\n";
   if (with_truth)
     title += "IoU " + format ("%.3f", r.metrics.mean_best_iou) + ", ";
-  return title + std::to_string (r.segments) + " segments, " + format ("%.2f", r.seconds) + " s";
+  return title + std::to_string (r.segments) + (r.segments == 1 ? " segment, " : " segments, ") +
+         format ("%.2f", r.seconds) + " s";
 }
 }  // namespace compare
 }  // namespace pcl_ext

@@ -12,6 +12,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -29,6 +30,28 @@ displayAvailable ()
 
 namespace
 {
+/** Font size (pixels) at which every line of \a title fits a panel of the given size: at most
+  * 22 and a 22nd of the panel height, smaller for long lines (VTK's default Arial: a character
+  * is at most about 0.6 of the font size wide on average), never below 8. */
+int
+titleFontSize (const std::string& title, int panel_width, int panel_height, int& lines)
+{
+  std::size_t longest = 0, line = 0;
+  lines = 1;
+  for (const char c : title)
+    if (c == '\n')
+    {
+      ++lines;
+      line = 0;
+    }
+    else
+      longest = std::max (longest, ++line);
+  int font = std::min (22, panel_height / 22);
+  if (longest > 0)
+    font = std::min (font, static_cast<int> ((panel_width - 16) / (0.6 * double (longest))));
+  return std::max (8, font);
+}
+
 /** Centre and radius of the bounding box of every finite point in every view. */
 bool
 sceneBounds (const std::vector<View>& views, Eigen::Vector3d& centre, double& radius)
@@ -135,10 +158,14 @@ renderToPng (const std::vector<View>& views, const std::string& path,
     }
     if (!views[v].title.empty ())
     {
-      const int panel_height = options.height / rows;
-      const int font = std::max (10, std::min (22, panel_height / 22));
-      viewer.addText (views[v].title, 8, panel_height - font - 8, font, text, text, text,
-                      "title" + std::to_string (v), viewport);
+      // Titles are one line or several ('\n'), sized to stay inside their own panel: a long
+      // one would otherwise run on under the next panel and be cut there.
+      const int panel_height = options.height / rows, panel_width = options.width / cols;
+      int lines = 1;
+      const int font = titleFontSize (views[v].title, panel_width, panel_height, lines);
+      const int top_line = panel_height - font - 8;
+      viewer.addText (views[v].title, 8, top_line - (lines - 1) * (font + font / 6), font, text,
+                      text, text, "title" + std::to_string (v), viewport);
     }
     viewer.setCameraPosition (eye.x (), eye.y (), eye.z (), centre.x (), centre.y (),
                               centre.z (), options.up.x (), options.up.y (), options.up.z (),

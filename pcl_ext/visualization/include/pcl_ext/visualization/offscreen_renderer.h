@@ -27,6 +27,8 @@ struct Layer
 /** \brief One panel of the image: a title and its layers. */
 struct View
 {
+  /** Written at the panel's top left, one line per '\n', in a font small enough for the
+    * longest line to fit the panel's width. */
   std::string title;
   std::vector<Layer> layers;
 };
