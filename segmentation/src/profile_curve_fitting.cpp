@@ -42,7 +42,7 @@ struct Gram
 /** Least squares over the basis functions listed in \a columns; the residual and the AIC. */
 template <int K> bool
 fitModel (const Gram& gram, const Eigen::Matrix<double, 5, 5>& g, const int (&columns)[K],
-          Eigen::Vector3d& terms, double& rss)
+          Eigen::Vector3d& terms, double& rss, Eigen::Matrix3d& covariance)
 {
   Eigen::Matrix<double, K, K> gs;
   Eigen::Matrix<double, K, 1> bs;
@@ -54,18 +54,27 @@ fitModel (const Gram& gram, const Eigen::Matrix<double, 5, 5>& g, const int (&co
   }
   // A tiny ridge keeps the t column solvable when the points share one t.
   gs.diagonal ().array () += 1e-10 * (gs.trace () / K + 1e-30);
-  const Eigen::Matrix<double, K, 1> a = gs.ldlt ().solve (bs);
+  const Eigen::LDLT<Eigen::Matrix<double, K, K>> ldlt (gs);
+  const Eigen::Matrix<double, K, 1> a = ldlt.solve (bs);
   if (!a.allFinite ())
     return false;
   terms = Eigen::Vector3d (a[1], K > 3 && columns[2] == 2 ? a[2] : 0.0,
                            K > 4 ? a[3] : 0.0);
   rss = std::max (gram.yy - 2.0 * a.dot (bs) + a.dot (gs * a), 0.0);
-  return true;
+  // (Phi^T Phi)^-1 for a1..a_degree (columns 1..K-2): their covariance per unit noise variance.
+  const Eigen::Matrix<double, K, K> inverse =
+      ldlt.solve (Eigen::Matrix<double, K, K>::Identity ());
+  covariance.setZero ();
+  for (int r = 1; r + 1 < K; ++r)
+    for (int c = 1; c + 1 < K; ++c)
+      covariance (r - 1, c - 1) = inverse (r, c);
+  return covariance.allFinite ();
 }
 
-/** Fits the three models (degrees 1 to 3, each with the t term) and keeps the lowest AIC. */
+/** Fits the three models (degrees 1 to 3, each with the t term) and keeps the lowest AIC
+  * (AICc when \a corrected). */
 PolynomialFit
-selectModel (const Gram& gram)
+selectModel (const Gram& gram, bool corrected)
 {
   static const int line[3] = {0, 1, 4}, parabola[4] = {0, 1, 2, 4}, cubic[5] = {0, 1, 2, 3, 4};
   const Eigen::Matrix<double, 5, 5> g = gram.g.selfadjointView<Eigen::Upper> ();
@@ -77,13 +86,17 @@ selectModel (const Gram& gram)
     if (gram.n < static_cast<std::size_t> (k + 1))
       break;
     Eigen::Vector3d terms;
+    Eigen::Matrix3d covariance;
     double rss = 0.0;
-    const bool ok = degree == 1   ? fitModel (gram, g, line, terms, rss)
-                    : degree == 2 ? fitModel (gram, g, parabola, terms, rss)
-                                  : fitModel (gram, g, cubic, terms, rss);
+    const bool ok = degree == 1   ? fitModel (gram, g, line, terms, rss, covariance)
+                    : degree == 2 ? fitModel (gram, g, parabola, terms, rss, covariance)
+                                  : fitModel (gram, g, cubic, terms, rss, covariance);
     if (!ok)
       continue;
-    const double aic = n * std::log (rss / n + 1e-12) + 2.0 * k;
+    // Hurvich & Tsai's small-sample term: a side holds about ten points, where plain AIC
+    // still picks the cubic for noise and the cubic's end slopes follow the noise.
+    const double aic = n * std::log (rss / n + 1e-12) + 2.0 * k +
+                       (corrected && n > k + 1 ? 2.0 * k * (k + 1) / (n - k - 1) : 0.0);
     if (best.degree < 0 || aic < best.aic)
     {
       best.degree = degree;
@@ -91,6 +104,7 @@ selectModel (const Gram& gram)
       best.terms = terms;
       best.rss = rss;
       best.aic = aic;
+      best.unit_covariance = covariance;
     }
   }
   return best;
@@ -99,17 +113,20 @@ selectModel (const Gram& gram)
 
 PolynomialFit
 fitPolynomialAic (const std::vector<double>& x, const std::vector<double>& y,
-                  const std::vector<double>& t, double scale)
+                  const std::vector<double>& t, double scale, bool corrected)
 {
   if (!(scale > 0.0) || x.size () != y.size () || x.size () != t.size ())
     return PolynomialFit ();
   Gram gram;
   for (std::size_t i = 0; i < x.size (); ++i)
     gram.add (x[i] / scale, y[i] / scale, t[i] / scale);
-  PolynomialFit fit = selectModel (gram);
+  PolynomialFit fit = selectModel (gram, corrected);
   fit.rss *= scale * scale;
   fit.terms[1] /= scale;
   fit.terms[2] /= scale * scale;
+  // y and the terms scale together, so (Phi^T Phi)^-1 scales as the terms squared over y^2.
+  const Eigen::Vector3d unscale (1.0 / scale, 1.0 / (scale * scale), 1.0 / (scale * scale * scale));
+  fit.unit_covariance = unscale.asDiagonal () * fit.unit_covariance * unscale.asDiagonal ();
   return fit;
 }
 
@@ -121,6 +138,7 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
   scores.evaluated.assign (n, 0);
   scores.turn.assign (n, 0.f);
   scores.rms.assign (n, 0.f);
+  scores.turn_sigma.assign (n, 0.f);
   const double window = parameters.window;
   const unsigned int min_side = std::max (parameters.min_side_points, 3u);
   if (n < 2 * min_side || !(window > 0.0) || !(parameters.tangent_radius > 0.0))
@@ -197,7 +215,8 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
     // A side shorter than 40% of the window is a curve end: nothing to compare with.
     if (side[0].n < min_side || side[1].n < min_side || reach[0] < 0.4 || reach[1] < 0.4)
       continue;
-    const PolynomialFit left = selectModel (side[0]), right = selectModel (side[1]);
+    const PolynomialFit left = selectModel (side[0], parameters.corrected_aic),
+                        right = selectModel (side[1], parameters.corrected_aic);
     if (left.degree < 0 || right.degree < 0)
       continue;
     // Normals compared at the middle of each side: a fitted polynomial's derivative is
@@ -208,7 +227,21 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
     const double sl = left.slopeAt (xl), sr = right.slopeAt (xr);
     const double bend = 0.5 * (left.secondDerivativeAt (xl) / (1.0 + sl * sl) +
                                right.secondDerivativeAt (xr) / (1.0 + sr * sr)) * (xr - xl);
+    // Standard error of the turn, to first order in the fitted terms of the two (independent)
+    // sides: turn = atan (sr) - atan (sl) - D/2 (kl + kr), k = y'' / (1 + y'^2), D = xr - xl.
+    const auto side_variance = [&] (const PolynomialFit& fit, double xm, double s, double sign) {
+      const double w = 1.0 / (1.0 + s * s), ypp = fit.secondDerivativeAt (xm);
+      const Eigen::Vector3d ds (1.0, 2.0 * xm, 3.0 * xm * xm), dypp (0.0, 2.0, 6.0 * xm);
+      const Eigen::Vector3d grad =
+          sign * w * ds - 0.5 * (xr - xl) * (w * dypp - 2.0 * ypp * s * w * w * ds);
+      return grad.dot (fit.unit_covariance * grad);
+    };
+    const double turn_variance =
+        side_variance (left, xl, sl, -1.0) + side_variance (right, xr, sr, 1.0);
     scores.evaluated[i] = 1;
+    // Per metre of noise: x and y were divided by the window.
+    scores.turn_sigma[i] =
+        static_cast<float> (std::sqrt (std::max (turn_variance, 0.0)) / scale);
     scores.turn[i] = static_cast<float> (std::abs (std::atan (sr) - std::atan (sl) - bend));
     scores.rms[i] = static_cast<float> (
         scale * std::sqrt (std::max (left.rss / side[0].n, right.rss / side[1].n)));

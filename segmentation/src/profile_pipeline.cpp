@@ -33,7 +33,8 @@ validParameters (const PipelineParameters& p)
     return false;
   if (p.method == ProfileMethod::CurveFitting &&
       (!(p.curve_window > 0.0) || !(p.tangent_radius > 0.0) || !(p.max_turn > 0.0) ||
-       !(p.residual_factor > 0.0) || !std::isfinite (p.curve_window)))
+       !(p.residual_factor > 0.0) || !std::isfinite (p.curve_window) ||
+       !(p.turn_significance >= 0.0) || !std::isfinite (p.turn_significance)))
     return false;
   return true;
 }
@@ -84,11 +85,13 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     scores.evaluated.assign (n, 0);
     scores.turn.assign (n, 0.f);
     scores.rms.assign (n, 0.f);
+    scores.turn_sigma.assign (n, 0.f);
   }
   CurveFitParameters fit;
   fit.threshold = parameters.threshold;
   fit.window = parameters.curve_window;
   fit.tangent_radius = parameters.tangent_radius;
+  fit.corrected_aic = parameters.corrected_aic;
 
   // One result slot per profile, concatenated in profile order afterwards: deterministic for
   // any number of threads.
@@ -132,6 +135,7 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
         {
           out.evaluated[members[i]] = scores.evaluated[i];
           out.turn[members[i]] = scores.turn[i];
+          out.turn_sigma[members[i]] = scores.turn_sigma[i];
           out.rms[members[i]] = scores.rms[i];
         }
       }
@@ -152,15 +156,21 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
   {
     // A point ends a curve in some stack when the normal turns sharply there, or when its
     // stretch of profile is not one curve (a junction): residual far above the stack's noise.
+    // A sharp turn must also be more than turn_significance standard errors: with the noise
+    // of a scan and about ten points a side, a 30 degree turn is often the noise alone, and
+    // such false ends, dense enough, cut a surface apart. The stack's median residual is the
+    // noise: a fit's own residual is inflated exactly where a side straddles a crease.
     result.breakpoints.assign (n, 0);
     for (const CurveScores& scores : stack_scores)
     {
-      const double tolerance = std::max (parameters.residual_factor *
-                                             medianResidual (scores.evaluated, scores.rms),
+      const double noise = medianResidual (scores.evaluated, scores.rms);
+      const double tolerance = std::max (parameters.residual_factor * noise,
                                          parameters.min_residual);
+      const double z = parameters.turn_significance * noise;
       for (std::size_t i = 0; i < n; ++i)
         if (scores.evaluated[i] &&
-            (scores.turn[i] > parameters.max_turn || scores.rms[i] > tolerance))
+            ((scores.turn[i] > parameters.max_turn && scores.turn[i] > z * scores.turn_sigma[i]) ||
+             scores.rms[i] > tolerance))
           result.breakpoints[i] = 1;
     }
   }

@@ -171,6 +171,26 @@ public:
   double
   getMaxTurnAngle () const { return max_turn_; }
 
+  /** \brief Curve fitting: a turn sharper than the maximum ends a curve only when it also
+    * exceeds this many standard errors, propagated from the two sides' fits with the stack's
+    * median residual as the noise. Default 3; valid: >= 0 (0: the angle alone decides, as in
+    * the paper). Not in the paper: on a scan whose noise is comparable to the point spacing
+    * (the generated \c coaxial scene: 5 mm range noise, 7.7 mm spacing) a 30 degree turn over
+    * a window of ten points a side is often noise, and the false curve ends cut surfaces
+    * apart. */
+  void
+  setTurnSignificance (double z) { turn_significance_ = z; }
+  double
+  getTurnSignificance () const { return turn_significance_; }
+
+  /** \brief Curve fitting: select the polynomial by AICc, the small-sample corrected AIC of
+    * Hurvich & Tsai (1989), rather than the paper's AIC. Default true: a side holds about ten
+    * points, where plain AIC picks the cubic for noise; AICc tends to AIC as the sides grow. */
+  void
+  setCorrectedAic (bool corrected) { corrected_aic_ = corrected; }
+  bool
+  getCorrectedAic () const { return corrected_aic_; }
+
   /** \brief Curve fitting: a side whose residual RMS exceeds this multiple of the stack's
     * median residual is not one curve (a junction). Default 3; valid: > 0. */
   void
@@ -257,6 +277,8 @@ protected:
   double curve_window_ = 0.0;
   double max_turn_ = M_PI / 6.0;
   double residual_factor_ = 3.0;
+  double turn_significance_ = 3.0;
+  bool corrected_aic_ = true;
   pcl::uindex_t min_size_ = 1;
   pcl::uindex_t max_size_ = std::numeric_limits<pcl::uindex_t>::max ();
   unsigned int threads_ = 0;

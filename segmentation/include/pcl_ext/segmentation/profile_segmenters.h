@@ -51,6 +51,7 @@ struct CurveFitParameters
   double window = 0.0;      ///< half length of the fitted stretch on each side of a point
   double tangent_radius = 0.0;  ///< radius of the neighbourhood giving the local direction
   unsigned int min_side_points = 5;  ///< fewer points on a side: a curve end, not judged
+  bool corrected_aic = true;  ///< select by AICc (small-sample AIC) rather than AIC
 };
 
 /** \brief What the curve fits say about each point of a profile. */
@@ -59,6 +60,9 @@ struct CurveScores
   std::vector<std::uint8_t> evaluated;  ///< 1 when both sides could be fitted
   std::vector<float> turn;              ///< angle between the two sides' normals (rad)
   std::vector<float> rms;               ///< larger residual RMS of the two sides
+  /** \brief Standard error of \a turn (rad) per metre of noise sigma, propagated to first order
+    * from the two fits' coefficients: how much of the turn the noise alone could make. */
+  std::vector<float> turn_sigma;
 };
 
 /** \brief One polynomial curve fit, chosen by the Akaike information criterion. */
@@ -68,7 +72,12 @@ struct PolynomialFit
   double slope = 0.0;  ///< dy/dx at x = 0
   Eigen::Vector3d terms = Eigen::Vector3d::Zero ();  ///< a1, a2, a3 (0 beyond the degree)
   double rss = 0.0;    ///< residual sum of squares
-  double aic = 0.0;    ///< n ln(rss / n) + 2 k
+  /** \brief n ln(rss / n) + 2 k, plus 2 k (k + 1) / (n - k - 1) when corrected (AICc), with k
+    * the number of fitted terms (the degree + 2: the constant and the t term). */
+  double aic = 0.0;
+  /** \brief (Phi^T Phi)^-1 restricted to (a1, a2, a3) (0 beyond the degree): their
+    * covariance is this times the noise variance of y. */
+  Eigen::Matrix3d unit_covariance = Eigen::Matrix3d::Zero ();
 
   /** \brief dy/dx at \a x. */
   double
@@ -83,16 +92,18 @@ struct PolynomialFit
   * AIC. The t term absorbs the slant of a surface crossing the profile obliquely (the profile
   * has a width), so the residuals measure the curve, not the profile's thickness.
   * \param[in] x, y, t sample coordinates (same length)
-  * \param[in] scale a length used to condition the normal equations (e.g. the window) */
+  * \param[in] scale a length used to condition the normal equations (e.g. the window)
+  * \param[in] corrected use AICc, the small-sample correction of Hurvich & Tsai (1989, "Regression
+  * and time series model selection in small samples"); false: the paper's plain AIC */
 PolynomialFit
 fitPolynomialAic (const std::vector<double>& x, const std::vector<double>& y,
-                  const std::vector<double>& t, double scale);
+                  const std::vector<double>& t, double scale, bool corrected = true);
 
 /** \brief Curve fitting (section 4.1.2), the scoring half: for every point, the points of its
   * chain within the window are split at the point by the local direction, a polynomial chosen
   * by AIC is fitted on each side, and the turn of the unit normal between the middles of the
   * two sides, less the turn the fitted curvature explains, is measured, with the worse fit's
-  * residual.
+  * residual and the turn's standard error per unit noise.
   * \param[in] chain_edges spanning-tree edges: only points of the same chain are fitted */
 void
 scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& chain_edges,

@@ -44,10 +44,11 @@ ProfileSegmentation<PointT>::prepare (std::vector<Eigen::Vector3f>& xyz)
     return false;
   }
   if (proximity_k_ == 0 || !(max_turn_ > 0.0) || !(max_turn_ <= M_PI / 2) ||
-      !(residual_factor_ > 0.0) || !std::isfinite (residual_factor_))
+      !(residual_factor_ > 0.0) || !std::isfinite (residual_factor_) ||
+      !(turn_significance_ >= 0.0) || !std::isfinite (turn_significance_))
   {
-    PCL_ERROR ("[pcl_ext::%s] Need proximity neighbours >= 1, a maximum turn in (0, pi/2] and "
-               "a residual factor > 0.\n", name);
+    PCL_ERROR ("[pcl_ext::%s] Need proximity neighbours >= 1, a maximum turn in (0, pi/2], "
+               "a residual factor > 0 and a turn significance >= 0.\n", name);
     return false;
   }
   if (min_size_ < 1 || max_size_ < min_size_)
@@ -144,6 +145,8 @@ ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
   p.method = method_;
   p.proximity_neighbours = proximity_k_;
   p.max_turn = max_turn_;
+  p.turn_significance = turn_significance_;
+  p.corrected_aic = corrected_aic_;
   p.residual_factor = residual_factor_;
   p.threads = resolveThreadCount (threads_);
 
