@@ -209,6 +209,31 @@ TEST (CurveFit, AicSelectsTheModel)
   EXPECT_EQ (d.degree, 1);
   EXPECT_LT (d.rss, 2.0 * 40 * 0.001 * 0.001);
   EXPECT_EQ (fitPolynomialAic ({0.0}, {0.0}, {0.0}, 1.0).degree, -1);
+  // With 40 points AICc and the paper's AIC agree.
+  EXPECT_EQ (fitPolynomialAic (x, parabola, t, 1.0, false).degree, 2);
+  EXPECT_EQ (fitPolynomialAic (x, cubic, t, 1.0, false).degree, 3);
+}
+
+TEST (CurveFit, SlopeStandardErrorOfALine)
+{
+  // Least squares: var (a1) = sigma^2 / sum (x - mean)^2 for a line; x is symmetric, t = 0
+  // (its column is decoupled). The same in any conditioning scale, and in metres.
+  std::vector<double> x, y, t;
+  double sxx = 0.0;
+  for (int i = 0; i < 21; ++i)
+  {
+    x.push_back (-0.1 + 0.01 * i);
+    y.push_back (0.2 * x.back () + ((i * 7) % 5 - 2) * 1e-4);
+    t.push_back (0.0);
+    sxx += x.back () * x.back ();
+  }
+  for (const double scale : {0.1, 1.0})
+  {
+    const PolynomialFit fit = fitPolynomialAic (x, y, t, scale);
+    ASSERT_EQ (fit.degree, 1);
+    EXPECT_NEAR (fit.unit_covariance (0, 0) * sxx, 1.0, 1e-6) << scale;
+    EXPECT_EQ (fit.unit_covariance (1, 1), 0.0);
+  }
 }
 
 TEST (CurveFit, CornerPointsTurnSharply)

@@ -373,6 +373,8 @@ TEST (ProfileSegmentation, NonsenseParameters)
   EXPECT_TRUE (fails ([] (Segmentation& s) { s.setMaxTurnAngle (0.0); }));
   EXPECT_TRUE (fails ([] (Segmentation& s) { s.setMaxTurnAngle (2.0); }));
   EXPECT_TRUE (fails ([] (Segmentation& s) { s.setResidualFactor (-1.0); }));
+  EXPECT_TRUE (fails ([] (Segmentation& s) { s.setTurnSignificance (-1.0); }));
+  EXPECT_TRUE (fails ([&] (Segmentation& s) { s.setTurnSignificance (nan); }));
   EXPECT_TRUE (fails ([] (Segmentation& s) { s.setMinClusterSize (0); }));
   EXPECT_TRUE (fails ([] (Segmentation& s) {
     s.setMinClusterSize (10);

@@ -57,7 +57,12 @@ namespace pcl_ext
   *   lowest AIC is kept per side, and the point ends a curve when the unit normals of the two
   *   sides differ by more than the maximum turn, or when a side is not one curve (residual far
   *   above the noise). Testing every point finds every split the repeated splitting would
-  *   find. The curve ends (breakpoints) of all stacks are removed from the graph before the
+  *   find. Two additions for noisy scans, both on by default and both switchable back to the
+  *   paper: the model is chosen by AICc, the small-sample AIC (setCorrectedAic), and a turn
+  *   ends a curve only when it is also significant, more than 3 standard errors of the fits
+  *   (setTurnSignificance). On the generated \c coaxial scene (5 mm range noise at 7.7 mm
+  *   spacing) the plain test marks 43% of the points as curve ends and cuts the surfaces
+  *   apart (mean best IoU 0.52 at the surface level); with both, 0.91 at width 2.5x. The curve ends (breakpoints) of all stacks are removed from the graph before the
   *   components are taken, and then rejoin the segment of most of their neighbours: a crease
   *   seen by one stack so also separates the profiles of the stacks that run along it.
   * - Points with non-finite coordinates are never segmented, whatever \c is_dense says.
@@ -116,7 +121,11 @@ public:
   getProfileWidth () const { return width_; }
 
   /** \brief Automatic width as a multiple of the average point spacing. Default 1.5 (section
-    * 5.3); valid: > 0. Figure 6: 0.5x over-segments, larger widths under-segment. */
+    * 5.3: "at least one and a half times"); valid: > 0. Figure 6: 0.5x over-segments, larger
+    * widths under-segment. Curve fitting on noisy scans wants about 2.5: the fits on either
+    * side of a point then hold about twice the points (the fit's term across the profile
+    * absorbs the extra width), enough to tell a crease from the noise (generated \c coaxial
+    * scene: mean best IoU 0.55 at 1.5x, 0.80 at 2x, 0.91 at 2.5x). */
   void
   setProfileWidthFactor (double factor) { width_factor_ = factor; }
   double
