@@ -108,7 +108,8 @@ main (int argc, char** argv)
   std::string method_name = "proximity", distribution = "hemisphere";
   unsigned int stacks = 4, threads = 0, neighbours = 4;
   double width = 0.0, width_factor = 1.5, threshold = 0.0, threshold_factor = 3.0;
-  double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0;
+  double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0, turn_significance = 3.0;
+  bool plain_aic = false;
   int min_size = 1;
   pcl_ext::tools::CommandLine cl (
       "pcl_ext_segment_profiles",
@@ -121,7 +122,8 @@ main (int argc, char** argv)
   cl.addOption ("distribution", distribution,
                 "stack normals over the 'hemisphere' or a 'horizontal' half circle");
   cl.addOption ("width", width, "profile width (0: width_factor * average point spacing)");
-  cl.addOption ("width_factor", width_factor, "profile width as a multiple of the spacing");
+  cl.addOption ("width_factor", width_factor,
+                "profile width as a multiple of the spacing (curve fitting on noisy scans: 2.5)");
   cl.addOption ("method", method_name, "profile segmenter: proximity, mst or curve");
   cl.addOption ("threshold", threshold,
                 "proximity threshold (0: threshold_factor * average point spacing)");
@@ -134,6 +136,12 @@ main (int argc, char** argv)
   cl.addOption ("residual_factor", residual_factor,
                 "curve fitting: a stretch whose residual exceeds this multiple of the median "
                 "is not one curve");
+  cl.addOption ("turn_significance", turn_significance,
+                "curve fitting: a sharp turn must also exceed this many standard errors of the "
+                "fits (0: the angle alone, as in the paper)");
+  cl.addSwitch ("plain_aic", plain_aic,
+                "curve fitting: select the polynomial by the paper's AIC, not the small-sample "
+                "AICc");
   cl.addOption ("min_size", min_size, "smallest segment kept");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
@@ -181,6 +189,8 @@ main (int argc, char** argv)
   seg.setMaxTurnAngle (max_turn_deg * M_PI / 180.0);
   seg.setCurveWindow (window);
   seg.setResidualFactor (residual_factor);
+  seg.setTurnSignificance (turn_significance);
+  seg.setCorrectedAic (!plain_aic);
   seg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
   seg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;
@@ -198,7 +208,10 @@ main (int argc, char** argv)
   std::cout << "spacing " << seg.getUsedPointSpacing () << ", width "
             << seg.getUsedProfileWidth () << ", threshold " << seg.getUsedDistanceThreshold ()
             << "; " << seg.getStackEdges ().size () << " stacks, " << edges << " edges, "
-            << clusters.size () << " segments\n";
+            << clusters.size () << " segments";
+  if (method == Segmentation::ProfileMethod::CurveFitting)
+    std::cout << ", " << seg.getBreakpoints ().size () << " curve ends";
+  std::cout << "\n";
 
   pcl::PointCloud<pcl::Label> labels;
   labels.resize (cloud->size ());

@@ -1,0 +1,101 @@
+/*
+ * pcl_ext_segment_profiles run as a command: the curve-fitting options reach the segmenter,
+ * usage errors, and no output on failure.
+ */
+#include "../app_test.h"
+
+#include "../segmentation/profile_test_clouds.h"
+
+#include <pcl_ext/evaluation/segmentation_metrics.h>
+
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+namespace
+{
+class SegmentProfilesApp : public pcl_ext::test::AppTest
+{
+protected:
+  SegmentProfilesApp () : AppTest (PCL_EXT_SEGMENT_PROFILES_EXE) {}
+
+  void
+  SetUp () override
+  {
+    AppTest::SetUp ();
+    if (HasFatalFailure ())
+      return;
+    // A pipe inside a coaxial pipe closed by an annular step: three touching surfaces.
+    profile_test::LabelledCloud scene;
+    std::mt19937 rng (2);
+    profile_test::addCylinderX (scene, -1.0, 1.0, 0.4, 0.015, 1, rng);
+    profile_test::addAnnulusX (scene, 1.0, 0.2, 0.4, 0.015, 2, rng);
+    profile_test::addCylinderX (scene, 1.0, 2.5, 0.2, 0.015, 3, rng);
+    truth_ = scene.labels;
+    ASSERT_EQ (pcl::io::savePCDFileBinary (path ("coaxial.pcd"), *scene.cloud), 0);
+  }
+
+  /** The number of curve ends the tool printed, or -1. */
+  long
+  curveEnds () const
+  {
+    const auto end = output_.find (" curve ends");
+    if (end == std::string::npos)
+      return -1;
+    const auto begin = output_.rfind (", ", end);
+    return std::stol (output_.substr (begin + 2, end - begin - 2));
+  }
+
+  std::vector<std::uint32_t> truth_;
+};
+}  // namespace
+
+TEST_F (SegmentProfilesApp, CurveFittingSeparatesTheCoaxialSurfaces)
+{
+  const std::string io = path ("coaxial.pcd") + " " + path ("out.pcd") + " -threads 2";
+  ASSERT_EQ (run (io + " -method curve"), 0) << output_;
+  EXPECT_NE (output_.find ("3 segments"), std::string::npos) << output_;
+  pcl::PointCloud<pcl::PointXYZL> out;
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
+  ASSERT_EQ (out.size (), truth_.size ());
+  std::vector<pcl::PointIndices> segments;
+  for (std::size_t i = 0; i < out.size (); ++i)
+    if (out[i].label > 0)
+    {
+      segments.resize (std::max<std::size_t> (segments.size (), out[i].label));
+      segments[out[i].label - 1].indices.push_back (static_cast<pcl::index_t> (i));
+    }
+  pcl_ext::SegmentationMetrics m;
+  ASSERT_TRUE (pcl_ext::evaluateSegmentation (segments, truth_, m));
+  EXPECT_EQ (m.correct, 3u);
+  EXPECT_GE (m.mean_best_iou, 0.9);
+  const long ends = curveEnds ();
+  EXPECT_GT (ends, 0) << output_;
+
+  // No turn is significant at 1e6 standard errors: only the residual test ends curves.
+  ASSERT_EQ (run (io + " -method curve -turn_significance 1e6"), 0) << output_;
+  EXPECT_LT (curveEnds (), ends) << output_;
+  // The paper's plain test (angle alone, AIC): this cloud has no noise across the surfaces,
+  // so the same segments.
+  ASSERT_EQ (run (io + " -method curve -turn_significance 0 -plain_aic"), 0) << output_;
+  EXPECT_NE (output_.find ("3 segments"), std::string::npos) << output_;
+  // Proximity does not fit curves and prints no curve ends.
+  ASSERT_EQ (run (io), 0) << output_;
+  EXPECT_EQ (curveEnds (), -1) << output_;
+}
+
+TEST_F (SegmentProfilesApp, BadUsageFailsWithoutOutput)
+{
+  const std::string io = path ("coaxial.pcd") + " " + path ("out.pcd");
+  EXPECT_EQ (run ("-h"), 0);
+  EXPECT_NE (output_.find ("-turn_significance"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-plain_aic"), std::string::npos) << output_;
+  EXPECT_EQ (run (io + " -method curve -turn_significance -1"), 1);
+  EXPECT_EQ (run (io + " -method bogus"), 1);
+  EXPECT_EQ (run (io + " -min_size 0"), 1);
+  EXPECT_FALSE (exists ("out.pcd"));
+}
