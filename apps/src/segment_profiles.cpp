@@ -108,8 +108,8 @@ main (int argc, char** argv)
   std::string method_name = "proximity", distribution = "hemisphere";
   unsigned int stacks = 4, threads = 0, neighbours = 4;
   double width = 0.0, width_factor = 1.5, threshold = 0.0, threshold_factor = 3.0;
-  double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0, turn_significance = 3.0;
-  bool plain_aic = false;
+  double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0, turn_significance = 0.0;
+  bool aicc = false;
   int min_size = 1;
   pcl_ext::tools::CommandLine cl (
       "pcl_ext_segment_profiles",
@@ -123,7 +123,7 @@ main (int argc, char** argv)
                 "stack normals over the 'hemisphere' or a 'horizontal' half circle");
   cl.addOption ("width", width, "profile width (0: width_factor * average point spacing)");
   cl.addOption ("width_factor", width_factor,
-                "profile width as a multiple of the spacing (curve fitting on noisy scans: 2.5)");
+                "profile width as a multiple of the spacing (curve fitting, noisy scans: 2.5)");
   cl.addOption ("method", method_name, "profile segmenter: proximity, mst or curve");
   cl.addOption ("threshold", threshold,
                 "proximity threshold (0: threshold_factor * average point spacing)");
@@ -138,10 +138,10 @@ main (int argc, char** argv)
                 "is not one curve");
   cl.addOption ("turn_significance", turn_significance,
                 "curve fitting: a sharp turn must also exceed this many standard errors of the "
-                "fits (0: the angle alone, as in the paper)");
-  cl.addSwitch ("plain_aic", plain_aic,
-                "curve fitting: select the polynomial by the paper's AIC, not the small-sample "
-                "AICc");
+                "fits (0: the angle alone, as in the paper; noisy scans: 3)");
+  cl.addSwitch ("aicc", aicc,
+                "curve fitting: select the polynomial by the small-sample AICc, not the "
+                "paper's AIC (noisy scans)");
   cl.addOption ("min_size", min_size, "smallest segment kept");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
@@ -190,7 +190,7 @@ main (int argc, char** argv)
   seg.setCurveWindow (window);
   seg.setResidualFactor (residual_factor);
   seg.setTurnSignificance (turn_significance);
-  seg.setCorrectedAic (!plain_aic);
+  seg.setCorrectedAic (aicc);
   seg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
   seg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;

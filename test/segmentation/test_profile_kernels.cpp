@@ -210,8 +210,9 @@ TEST (CurveFit, AicSelectsTheModel)
   EXPECT_LT (d.rss, 2.0 * 40 * 0.001 * 0.001);
   EXPECT_EQ (fitPolynomialAic ({0.0}, {0.0}, {0.0}, 1.0).degree, -1);
   // With 40 points AICc and the paper's AIC agree.
-  EXPECT_EQ (fitPolynomialAic (x, parabola, t, 1.0, false).degree, 2);
-  EXPECT_EQ (fitPolynomialAic (x, cubic, t, 1.0, false).degree, 3);
+  EXPECT_EQ (fitPolynomialAic (x, line, t, 1.0, true).degree, 1);
+  EXPECT_EQ (fitPolynomialAic (x, parabola, t, 1.0, true).degree, 2);
+  EXPECT_EQ (fitPolynomialAic (x, cubic, t, 1.0, true).degree, 3);
 }
 
 TEST (CurveFit, SlopeStandardErrorOfALine)

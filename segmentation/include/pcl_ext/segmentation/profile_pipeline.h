@@ -34,8 +34,8 @@ struct PipelineParameters
   double curve_window = 0.0;             ///< > 0 for CurveFitting
   double tangent_radius = 0.0;           ///< > 0 for CurveFitting
   double max_turn = 0.0;                 ///< radians
-  double turn_significance = 3.0;        ///< turns within this many standard errors are noise
-  bool corrected_aic = true;             ///< AICc rather than AIC
+  double turn_significance = 0.0;        ///< turns within this many standard errors are noise
+  bool corrected_aic = false;            ///< AICc rather than AIC
   double residual_factor = 3.0;
   double min_residual = 0.0;             ///< floor of the residual tolerance
   unsigned int threads = 1;

@@ -51,7 +51,7 @@ struct CurveFitParameters
   double window = 0.0;      ///< half length of the fitted stretch on each side of a point
   double tangent_radius = 0.0;  ///< radius of the neighbourhood giving the local direction
   unsigned int min_side_points = 5;  ///< fewer points on a side: a curve end, not judged
-  bool corrected_aic = true;  ///< select by AICc (small-sample AIC) rather than AIC
+  bool corrected_aic = false;  ///< select by AICc (small-sample AIC) rather than AIC
 };
 
 /** \brief What the curve fits say about each point of a profile. */
@@ -97,7 +97,7 @@ struct PolynomialFit
   * and time series model selection in small samples"); false: the paper's plain AIC */
 PolynomialFit
 fitPolynomialAic (const std::vector<double>& x, const std::vector<double>& y,
-                  const std::vector<double>& t, double scale, bool corrected = true);
+                  const std::vector<double>& t, double scale, bool corrected = false);
 
 /** \brief Curve fitting (section 4.1.2), the scoring half: for every point, the points of its
   * chain within the window are split at the point by the local direction, a polynomial chosen
