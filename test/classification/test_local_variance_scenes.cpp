@@ -40,6 +40,7 @@ struct Scene
   std::vector<std::uint32_t> truth;          ///< at the neighbourhood scale
   std::vector<std::uint32_t> curve_truth;    ///< the same from the scene's curves alone
   std::vector<std::uint32_t> default_truth;  ///< the scene's own (one scan spacing)
+  double noise = 0.0;                        ///< the scanner's range noise sigma (m)
 };
 
 const Scene&
@@ -52,6 +53,7 @@ scene (const std::string& name)
   s.reset (new Scene);
   pcl_ext::simulation::SceneParameters parameters;
   parameters.points = 300000;
+  s->noise = parameters.noise;
   EXPECT_TRUE (pcl_ext::simulation::generateScene (name, parameters, s->scene));
   const auto& sim = s->scene.cloud;
   for (const auto& p : sim)
@@ -91,14 +93,18 @@ scene (const std::string& name)
   return *s;
 }
 
+/** The labels with the paper's parameters; \a noise_aware: also the scene's range noise
+  * (setNoiseStandardDeviation). */
 std::vector<std::uint32_t>
-classify (const Scene& s, unsigned tests = Classifier::ALL_TESTS, double threshold = 0.0)
+classify (const Scene& s, unsigned tests = Classifier::ALL_TESTS, double threshold = 0.0,
+          bool noise_aware = false)
 {
   Classifier c;
   c.setInputCloud (s.cloud);
   c.setNeighbourhoods (s.nb);
   c.setTests (tests);
   c.setCurvatureThreshold (threshold);
+  c.setNoiseStandardDeviation (noise_aware ? s.noise : 0.0);
   pcl::PointCloud<pcl::Label> labels;
   c.classify (labels);
   std::vector<std::uint32_t> v;
@@ -148,27 +154,65 @@ TEST_P (LocalVarianceScenes, SurfaceF1MeetsTheGoal)
 {
   const Scene& s = scene (GetParam ());
   ASSERT_GT (s.cloud->size (), 100000u);
-  const auto predicted = classify (s);
-  const auto m = evaluate (predicted, s.truth);
-  printTable (GetParam (), m, evaluate (predicted, s.default_truth));
-  EXPECT_GE (f1 (m, PointClass::Surface), 0.90);
+  for (const bool noise_aware : {false, true})
+  {
+    const auto predicted = classify (s, Classifier::ALL_TESTS, 0.0, noise_aware);
+    const auto m = evaluate (predicted, s.truth);
+    std::cout << (noise_aware ? "With the scene's range noise (5 mm) removed from l0:\n"
+                              : "The paper's eq. 4:\n");
+    printTable (GetParam (), m, evaluate (predicted, s.default_truth));
+    EXPECT_GE (f1 (m, PointClass::Surface), 0.90);
+  }
 }
 
-// Goals not met yet (k = 50, the paper's 1e-4, confidence 0.95; 300,000 points): edge F1
-// 0.62 (indoor) and 0.70 (pipes), boundary F1 0.43 and 0.44 (precision 0.54 and 0.87, recall
-// 0.36 and 0.29; 0.25 and 0.39 before the shadow and blind-cone borders entered the truth). Of
-// the false edges 87% (indoor) and 97% (pipes) lie farther than 5 neighbourhood radii from any
-// true crease or border of their surface. On indoor, 99.7% of those false edges are within
-// 2 m of a scanner, where 50 neighbours span only a few centimetres and the 5 mm range noise
-// alone makes the curvature vary by more than the tolerance (the paper's remark on density
-// changes; it suggests thinning). On pipes they are at long range, where the neighbourhoods
-// grow to the pipes' radius, and at tangential pipe-beam contacts (45%). Variance tolerance
-// 3e-4 gives edge F1 0.75 / 0.74. Run with --gtest_also_run_disabled_tests.
-TEST_P (LocalVarianceScenes, DISABLED_EdgeAndBoundaryF1MeetTheGoal)
+// Removing the scanner's range noise from the smallest eigenvalue (setNoiseStandardDeviation)
+// raises the edge F1 on both scenes. Measured (k = 50, the paper's 1e-4, 300,000 points):
+// indoor 0.621 -> 0.883 (precision 0.52 -> 0.87, recall 0.77 -> 0.90), pipes 0.701 -> 0.713;
+// surface F1 0.926 -> 0.956 and 0.954 -> 0.954.
+TEST_P (LocalVarianceScenes, NoiseModelRaisesEdgeF1)
 {
   const Scene& s = scene (GetParam ());
-  const auto m = evaluate (classify (s), s.truth);
+  const double paper = f1 (evaluate (classify (s), s.truth), PointClass::Edge);
+  const double noise_aware =
+      f1 (evaluate (classify (s, Classifier::ALL_TESTS, 0.0, true), s.truth), PointClass::Edge);
+  std::cout << "[ " << GetParam () << " ] edge F1: paper " << paper << ", noise removed "
+            << noise_aware << "\n";
+  EXPECT_GT (noise_aware, paper);
+}
+
+// Edge goal met on indoor only, with the range noise removed (k = 50, the paper's 1e-4;
+// 300,000 points): edge F1 0.883 (indoor) and 0.713 (pipes); with the paper's eq. 4 0.621 and
+// 0.701. Without the noise model, 87% (indoor) and 97% (pipes) of the false edges lay farther
+// than 5 neighbourhood radii from any true crease or border, on indoor 99.7% of them within 2 m
+// of a scanner, where 50 neighbours span a few centimetres and the 5 mm range noise alone made
+// the curvature vary by more than the tolerance. On pipes the false edges remain: 70% of them
+// (4,862 of 6,915) are pipe points next to a shadow or silhouette at long range, where 50
+// neighbours span 0.27-0.37 m, as much as the pipe's radius, so the curvature changes across
+// the neighbourhood; the truth calls them boundary. A tolerance of 2e-4 or 4e-4 gives 0.894 /
+// 0.748 and 0.897 / 0.750. Run with --gtest_also_run_disabled_tests.
+TEST_P (LocalVarianceScenes, DISABLED_EdgeF1MeetsTheGoal)
+{
+  const Scene& s = scene (GetParam ());
+  const auto m = evaluate (classify (s, Classifier::ALL_TESTS, 0.0, true), s.truth);
   EXPECT_GE (f1 (m, PointClass::Edge), 0.80);
+}
+
+// Goal not met (k = 50, confidence 0.95, range noise removed; 300,000 points): boundary F1
+// 0.43 (indoor) and 0.44 (pipes), precision 0.52 and 0.88, recall 0.36 and 0.29. The eq. 6
+// statistic reaches the chi-squared quantile only within about half a neighbourhood radius of
+// a border: of the truth boundary points with a border of the scene's curves within r / 2,
+// 89% (indoor) and 94% (pipes) are found; the truth band is the whole radius, and 79% and 85%
+// of the truth boundary points are there only because a neighbour lies next to a shadow or
+// the blind cone (their recall 0.32 and 0.23). Checked: those marked borders are borders of the
+// merged scans (91% and 83% of the marked points have an angular gap above 90 degrees among
+// their same-surface neighbours from all scanners). Lower confidences trade precision for
+// recall: 0.8 gives F1 0.46 / 0.48, 0.5 gives 0.43 / 0.48. Testing the boundary before the
+// edge tests (so a border point called edge is re-tested) lowers both F1: edge 0.76 / 0.67,
+// boundary 0.38 / 0.49. Run with --gtest_also_run_disabled_tests.
+TEST_P (LocalVarianceScenes, DISABLED_BoundaryF1MeetsTheGoal)
+{
+  const Scene& s = scene (GetParam ());
+  const auto m = evaluate (classify (s, Classifier::ALL_TESTS, 0.0, true), s.truth);
   EXPECT_GE (f1 (m, PointClass::Boundary), 0.80);
 }
 

@@ -43,7 +43,8 @@ namespace pcl_ext
   * pcl_ext::ChiSquaredBoundaryEstimation, setScaleByNeighbourhoodSize); with indices, eq. 5
   * averages over the neighbours that are among the indices (only their kappa is computed); the
   * curvature threshold, which the paper leaves to the user, is derived from the data by
-  * default (setCurvatureThreshold).
+  * default (setCurvatureThreshold); optionally the scanner's range noise is removed from the
+  * smallest eigenvalue before eq. 4-5 (setNoiseStandardDeviation, off by default).
   *
   * \code
   * pcl_ext::LocalVarianceClassification<pcl::PointXYZ> lvc;
@@ -107,7 +108,9 @@ public:
     * (setCurvatureThresholdFactor). Most points of a TLS scene lie on smooth surfaces, so the
     * median kappa is the noise level of a smooth surface at the scene's typical spacing: for a
     * plane with range noise sigma and neighbourhood radius r (k = pi r^2 / s^2 at spacing s),
-    * kappa ~= 2 sigma^2 / r^2, which is also a way to set it by hand. Points below it are never
+    * kappa ~= 2 sigma^2 / r^2, which is also a way to set it by hand. r varies with range, so
+    * one threshold cannot fit a whole TLS scene: setNoiseStandardDeviation removes that part
+    * of kappa per neighbourhood. Points below it are never
     * re-checked, so a low value costs time, not accuracy. getCurvatureThresholdUsed() gives
     * the value of the last classify(). */
   void
@@ -135,6 +138,28 @@ public:
 
   double
   getVarianceThreshold () const { return variance_threshold_; }
+
+  /** \brief Range noise standard deviation sigma of the scanner, in the cloud's units, removed
+    * from the smallest eigenvalue before eq. 4-5: kappa = l0' / (l0' + l1 + l2) with
+    * l0' = max(l0 - sigma^2, 0). Default 0: the paper's eq. 4 exactly. Valid: finite, >= 0.
+    *
+    * Why: range noise adds up to sigma^2 (its component along the normal) to l0 of every
+    * neighbourhood, so a plane has kappa ~= sigma^2 / (l1 + l2), which depends on the
+    * neighbourhood's extent, not on the surface. Near a scanner k neighbours span a few
+    * centimetres, the noise dominates l0, and kappa and its variance (eq. 5) exceed the paper's
+    * tolerance on flat walls (section 2.1 notes that the threshold depends on range, incidence
+    * and the scanner's error, after Bae et al. 2005). A crease inside the neighbourhood raises
+    * l0 by a fraction of the neighbourhood's squared extent, far above sigma^2 wherever the
+    * neighbourhood is wider than a few sigma, so it still reaches the tests. Give the scanner's
+    * range noise (for several scanners the largest); overestimating it by half costs little
+    * (see the module README). With it set, most surface points get kappa = 0, so the derived
+    * curvature threshold is usually 0 and every point with kappa above the noise floor is
+    * re-checked by eq. 5. */
+  void
+  setNoiseStandardDeviation (double sigma) { noise_sigma_ = sigma; }
+
+  double
+  getNoiseStandardDeviation () const { return noise_sigma_; }
 
   /** \brief Confidence level of the boundary test (alpha of chi2_2(alpha), eq. 6). Default
     * 0.95; valid: 0 < confidence < 1. */
@@ -209,6 +234,7 @@ protected:
   double curvature_factor_ = 3.0;
   double curvature_threshold_used_ = 0.0;
   double variance_threshold_ = 1e-4;
+  double noise_sigma_ = 0.0;
   double confidence_ = 0.95;
   bool scale_by_size_ = true;
   unsigned int tests_ = ALL_TESTS;

@@ -42,6 +42,12 @@ pcl_ext::LocalVarianceClassification<PointT>::checkParameters () const
                variance_threshold_);
     return false;
   }
+  if (!(noise_sigma_ >= 0.0) || !std::isfinite (noise_sigma_))
+  {
+    PCL_ERROR ("%s noise standard deviation = %g; it must be finite and >= 0.\n", name,
+               noise_sigma_);
+    return false;
+  }
   if ((tests_ & BOUNDARY_TEST) && !std::isfinite (chiSquaredQuantile2 (confidence_)))
   {
     PCL_ERROR ("%s confidence = %g; it must lie strictly between 0 and 1.\n", name,
@@ -65,8 +71,9 @@ pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (const Neighbou
   const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size ());
   const bool boundary = (tests_ & BOUNDARY_TEST) != 0;
   const float nan = std::numeric_limits<float>::quiet_NaN ();
+  const double noise_variance = noise_sigma_ * noise_sigma_;
 #pragma omp parallel for num_threads(resolveThreadCount (threads_)) schedule(dynamic, 256) \
-    default(none) shared(nb, rows, boundary, nan)
+    default(none) shared(nb, rows, boundary, nan, noise_variance)
   for (std::ptrdiff_t r = 0; r < rows; ++r)
   {
     const pcl::index_t idx = (*indices_)[r];
@@ -84,7 +91,10 @@ pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (const Neighbou
       statistic_[r] = nan;
       continue;
     }
-    kappa_[idx] = static_cast<float> (surfaceVariance (local.eigen.values));
+    // The noise floor of l0 (setNoiseStandardDeviation); 0 leaves eq. 4 as printed.
+    Eigen::Vector3d values = local.eigen.values;
+    values[0] = std::max (values[0] - noise_variance, 0.0);
+    kappa_[idx] = static_cast<float> (surfaceVariance (values));
     statistic_[r] = boundary ? static_cast<float> (centroidOffsetStatistic (
                                    Eigen::Vector3d (p.x, p.y, p.z), local, scale_by_size_))
                              : 0.f;
