@@ -78,16 +78,24 @@ chiSquaredQuantile2 (double confidence);
   * \param[in] point the index point pt_i
   * \param[in] local its neighbourhood's covariance (must have a tangent plane)
   * \param[in] scale_by_size false gives the printed eq. 6 (no factor n)
+  * \param[in] noise_variance the variance sigma^2 of the index point's own position noise,
+  * added to l1 / n and l2 / n (to l1 and l2 without the factor): u^2 / (l1 / n + sigma^2) +
+  * v^2 / (l2 / n + sigma^2). The offset of the index point from the centroid is the centroid's
+  * sampling error plus the point's own noise; where the neighbourhood spans only a few sigma
+  * the noise alone would fail the test. Default 0: the statistic above.
   */
 inline double
 centroidOffsetStatistic (const Eigen::Vector3d& point, const LocalCovariance& local,
-                         bool scale_by_size = true)
+                         bool scale_by_size = true, double noise_variance = 0.0)
 {
   const Eigen::Vector3d d = point - local.centroid;
   const double u = local.eigen.vectors.col (1).dot (d);
   const double v = local.eigen.vectors.col (2).dot (d);
-  const double statistic = u * u / local.eigen.values[1] + v * v / local.eigen.values[2];
-  return scale_by_size ? statistic * static_cast<double> (local.size) : statistic;
+  const double n = scale_by_size ? static_cast<double> (local.size) : 1.0;
+  if (noise_variance == 0.0)
+    return (u * u / local.eigen.values[1] + v * v / local.eigen.values[2]) * n;
+  return u * u / (local.eigen.values[1] / n + noise_variance) +
+         v * v / (local.eigen.values[2] / n + noise_variance);
 }
 
 /** \brief Principal directions of Belton & Lichti section 5, from the neighbours' normals.

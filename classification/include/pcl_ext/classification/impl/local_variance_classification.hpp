@@ -96,7 +96,7 @@ pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (const Neighbou
     values[0] = std::max (values[0] - noise_variance, 0.0);
     kappa_[idx] = static_cast<float> (surfaceVariance (values));
     statistic_[r] = boundary ? static_cast<float> (centroidOffsetStatistic (
-                                   Eigen::Vector3d (p.x, p.y, p.z), local, scale_by_size_))
+                                   Eigen::Vector3d (p.x, p.y, p.z), local, scale_by_size_, noise_variance))
                              : 0.f;
   }
 }
@@ -140,9 +140,10 @@ pcl_ext::LocalVarianceClassification<PointT>::label (const Neighbourhoods<PointT
       continue;
     }
     bool edge = false;
+    const bool curved = k > threshold;
     if (curvature && !variance)
-      edge = k > threshold;
-    else if (variance && (!curvature || k > threshold))
+      edge = curved;
+    else if (variance && (!curvature || curved))
     {
       // Section 2.2: only points the curvature test calls edges are re-checked by eq. 5.
       const auto nn = nb[static_cast<std::size_t> (r)];
@@ -162,6 +163,33 @@ pcl_ext::LocalVarianceClassification<PointT>::label (const Neighbourhoods<PointT
       out = static_cast<std::uint32_t> (PointClass::Boundary);
     else
       out = static_cast<std::uint32_t> (PointClass::Surface);
+  }
+}
+
+template <typename PointT> void
+pcl_ext::LocalVarianceClassification<PointT>::widenBoundaries (
+    const Neighbourhoods<PointT>& nb, pcl::PointCloud<pcl::Label>& labels) const
+{
+  const auto boundary = static_cast<std::uint32_t> (PointClass::Boundary);
+  const auto surface = static_cast<std::uint32_t> (PointClass::Surface);
+  // The labels of pass 2 by cloud index (neighbours outside the indices have none), read-only
+  // below, so the result does not depend on the order the rows are visited in.
+  std::vector<std::uint8_t> seed (input_->size (), 0);
+  for (std::size_t r = 0; r < labels.size (); ++r)
+    seed[(*indices_)[r]] = labels[r].label == boundary;
+  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (labels.size ());
+#pragma omp parallel for num_threads(resolveThreadCount (threads_)) schedule(dynamic, 1024) \
+    default(none) shared(nb, labels, rows, seed, boundary, surface)
+  for (std::ptrdiff_t r = 0; r < rows; ++r)
+  {
+    if (labels[r].label != surface)
+      continue;
+    for (const auto j : nb[static_cast<std::size_t> (r)])
+      if (seed[j])
+      {
+        labels[r].label = boundary;
+        break;
+      }
   }
 }
 
@@ -213,6 +241,8 @@ pcl_ext::LocalVarianceClassification<PointT>::classify (pcl::PointCloud<pcl::Lab
     labels.height = input_->height;
   }
   label (*nb, labels);
+  if (boundary_band_ && (tests_ & BOUNDARY_TEST))
+    widenBoundaries (*nb, labels);
   labels.header = input_->header;
   labels.is_dense = true;
   source_.release ();
