@@ -41,7 +41,8 @@ main (int argc, char** argv)
   std::string input_path, output_path, png_path;
   int k = 50;
   double radius = 0.0, curvature_threshold = 0.0, curvature_factor = 3.0;
-  double variance_threshold = 1e-4, confidence = 0.95;
+  double variance_threshold = 1e-4, confidence = 0.95, noise_sigma = 0.0;
+  bool boundary_band = false;
   unsigned int threads = 0;
   pcl_ext::tools::CommandLine cl (
       "pcl_ext_classify_variance",
@@ -58,6 +59,10 @@ main (int argc, char** argv)
                 "multiple of the median curvature when the threshold is 0");
   cl.addOption ("variance_threshold", variance_threshold, "variance of curvature tolerance (eq. 5)");
   cl.addOption ("confidence", confidence, "confidence of the chi-squared boundary test (eq. 6)");
+  cl.addOption ("noise_sigma", noise_sigma,
+                "the scanner's range noise sigma, removed from eq. 4-6 (0: the paper's)");
+  cl.addSwitch ("boundary_band", boundary_band,
+                "also label boundary the surface points next to one eq. 6 finds");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png", png_path, "also render the labels to this PNG (blue surface, red edge, "
                                  "green boundary); needs an X display");
@@ -81,6 +86,8 @@ main (int argc, char** argv)
   classifier.setCurvatureThresholdFactor (curvature_factor);
   classifier.setVarianceThreshold (variance_threshold);
   classifier.setConfidence (confidence);
+  classifier.setNoiseStandardDeviation (noise_sigma);
+  classifier.setBoundaryBand (boundary_band);
   classifier.setNumberOfThreads (threads);
   pcl::PointCloud<pcl::Label> labels;
   pcl_ext::tools::StageTimer classify ("Classifying");
