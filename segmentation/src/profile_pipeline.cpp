@@ -169,7 +169,8 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
       const double z = parameters.turn_significance * noise;
       for (std::size_t i = 0; i < n; ++i)
         if (scores.evaluated[i] &&
-            ((scores.turn[i] > parameters.max_turn && scores.turn[i] > z * scores.turn_sigma[i]) ||
+            ((scores.turn[i] > parameters.max_turn &&
+              scores.turn[i] > z * scores.turn_sigma[i]) ||
              scores.rms[i] > tolerance))
           result.breakpoints[i] = 1;
     }

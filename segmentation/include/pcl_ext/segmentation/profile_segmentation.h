@@ -62,8 +62,8 @@ namespace pcl_ext
   *   significant, more than z standard errors of the fits (setTurnSignificance). On the
   *   generated \c coaxial scene (5 mm range noise at 7.7 mm spacing) the paper's test marks
   *   43% of the points as curve ends and cuts the surfaces apart (mean best IoU 0.52 at the
-  *   surface level); with both (z = 3) and width 2.5x, 0.91. The curve ends (breakpoints) of all stacks are removed from the graph before the
-  *   components are taken, and then rejoin the segment of most of their neighbours: a crease
+  *   surface level); with both (z = 3) and width 2.5x, 0.91. The curve ends (breakpoints) of
+  *   all stacks are removed from the graph before the components are taken, and then rejoin the segment of most of their neighbours: a crease
   *   seen by one stack so also separates the profiles of the stacks that run along it.
   * - Points with non-finite coordinates are never segmented, whatever \c is_dense says.
   * - Segments smaller than the minimum size are dropped (as pcl::RegionGrowing does); the

@@ -96,7 +96,8 @@ pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (const Neighbou
     values[0] = std::max (values[0] - noise_variance, 0.0);
     kappa_[idx] = static_cast<float> (surfaceVariance (values));
     statistic_[r] = boundary ? static_cast<float> (centroidOffsetStatistic (
-                                   Eigen::Vector3d (p.x, p.y, p.z), local, scale_by_size_, noise_variance))
+                                   Eigen::Vector3d (p.x, p.y, p.z), local, scale_by_size_,
+                                   noise_variance))
                              : 0.f;
   }
 }

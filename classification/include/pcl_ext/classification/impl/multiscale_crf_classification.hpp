@@ -76,7 +76,8 @@ pcl_ext::MultiscaleCrfClassification<PointT>::classify (pcl::PointCloud<pcl::Lab
   }
   if (!initCompute ())
     return;
-  if (!indicesInRange (*indices_, input_->size (), "[pcl_ext::MultiscaleCrfClassification::classify]"))
+  if (!indicesInRange (*indices_, input_->size (),
+                       "[pcl_ext::MultiscaleCrfClassification::classify]"))
   {
     deinitCompute ();
     return;

@@ -52,7 +52,8 @@ pcl_ext::AdaptiveSupervoxelSegmentation<PointT>::segment (SupervoxelSet& supervo
   }
   if (!initCompute ())
     return;
-  if (!indicesInRange (*indices_, input_->size (), "[pcl_ext::AdaptiveSupervoxelSegmentation::segment]"))
+  if (!indicesInRange (*indices_, input_->size (),
+                       "[pcl_ext::AdaptiveSupervoxelSegmentation::segment]"))
   {
     deinitCompute ();
     return;
