@@ -404,6 +404,13 @@ allCases ()
   return cases;
 }
 
+/** Names a case in gtest's messages (otherwise printed as the struct's bytes). */
+void
+PrintTo (const Case& c, std::ostream* os)
+{
+  *os << allTools ()[c.tool].name << " on " << kNames.at (c.bad);
+}
+
 std::string
 caseName (const ::testing::TestParamInfo<Case>& info)
 {

@@ -795,6 +795,13 @@ TEST_P (Matrix, Run)
   }
 }
 
+/** Names a case in gtest's messages (otherwise printed as the struct's bytes). */
+void
+PrintTo (const Case& c, std::ostream* os)
+{
+  *os << allSubjects ()[c.subject].name << " on " << kBadNames.at (c.bad);
+}
+
 std::string
 caseName (const ::testing::TestParamInfo<Case>& info)
 {
