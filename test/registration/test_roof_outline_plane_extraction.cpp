@@ -292,7 +292,51 @@ TEST (RoofOutlinePlaneExtraction, BadInputIsRefusedWithoutPlanes)
   auto walls = ready ();
   std::vector<pcl::PointIndices> sets;
   ::testing::internal::CaptureStderr ();
-  EXPECT_FALSE (walls.asExtractor () (roofs, sets));
+  EXPECT_FALSE (walls.asExtractor () (roofs, nullptr, sets));
   ::testing::internal::GetCapturedStderr ();
   EXPECT_TRUE (sets.empty ());
+}
+
+// As a PlaneExtractor with indices (how PlaneMatchingRegistration passes its setIndices): the
+// walls come from the indexed points only and index the whole cloud, whose labels still fit.
+// The scene is followed by a copy of itself 300 m away: indexing either copy gives the walls of
+// the scene alone, shifted by the copy's offset.
+TEST (RoofOutlinePlaneExtraction, AsExtractorTakesItsWallsAmongTheIndices)
+{
+  const Scene s = twoBuildings ();
+  RoofOutlinePlaneExtraction<pcl::PointXYZ> alone;
+  const std::vector<pcl::PointIndices> expected = extract (s, alone);
+  ASSERT_FALSE (expected.empty ());
+
+  const std::size_t n = s.cloud->size ();
+  Cloud::Ptr doubled (new Cloud (*s.cloud));
+  Labels::Ptr labels (new Labels (*s.labels));
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const auto& p = (*s.cloud)[i];
+    doubled->emplace_back (p.x + 300.f, p.y, p.z);
+    labels->push_back ((*s.labels)[i]);
+  }
+  RoofOutlinePlaneExtraction<pcl::PointXYZ> walls;
+  walls.setInputLabels (labels);
+  const auto extractor = walls.asExtractor ();
+  for (const std::size_t offset : {std::size_t (0), n})
+  {
+    pcl::IndicesPtr copy (new pcl::Indices (n));
+    for (std::size_t i = 0; i < n; ++i)
+      (*copy)[i] = static_cast<pcl::index_t> (offset + i);
+    std::vector<pcl::PointIndices> sets;
+    ASSERT_TRUE (extractor (doubled, copy, sets));
+    ASSERT_EQ (sets.size (), expected.size ()) << "copy at " << offset;
+    for (std::size_t w = 0; w < sets.size (); ++w)
+    {
+      ASSERT_EQ (sets[w].indices.size (), expected[w].indices.size ());
+      for (std::size_t k = 0; k < sets[w].indices.size (); ++k)
+        EXPECT_EQ (static_cast<std::size_t> (sets[w].indices[k]), offset + expected[w].indices[k]);
+    }
+  }
+  // Without indices: every point, so both copies' walls.
+  std::vector<pcl::PointIndices> both;
+  ASSERT_TRUE (extractor (doubled, nullptr, both));
+  EXPECT_GT (both.size (), expected.size ());
 }

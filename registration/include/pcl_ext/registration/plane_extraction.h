@@ -38,11 +38,16 @@ template <typename PointT> bool
 fitScanPlanes (const pcl::PointCloud<PointT>& cloud, const std::vector<pcl::PointIndices>& inliers,
                const ScanViewpoints& viewpoints, std::vector<ScanPlane>& planes);
 
-/** \brief A plane extractor: inlier sets of the planes of a cloud. Any segmenter fits (the
-  * Belton & Lichti region growing, a range-image segmentation as in the paper, ...). */
+/** \brief A plane extractor: inlier sets of the planes of a cloud, as indices of that cloud,
+  * taken among the given indices only (all points when the pointer is null; this is how
+  * PlaneMatchingRegistration passes its setIndices). Any segmenter fits (the Belton & Lichti
+  * region growing, a range-image segmentation as in the paper, ...). Passing the whole cloud
+  * with indices, rather than a copy of the indexed points, keeps per-point inputs of the
+  * extractor (labels, viewpoints) aligned with the cloud. */
 template <typename PointT>
 using PlaneExtractor =
-    std::function<bool (const typename pcl::PointCloud<PointT>::ConstPtr&, std::vector<pcl::PointIndices>&)>;
+    std::function<bool (const typename pcl::PointCloud<PointT>::ConstPtr&, const pcl::IndicesConstPtr&,
+                        std::vector<pcl::PointIndices>&)>;
 
 /** \brief Sequential RANSAC plane extraction with pcl::SACSegmentation: the largest plane,
   * then the largest of the rest, until \a max_planes or fewer than \a min_inliers remain.

@@ -86,7 +86,8 @@ public:
   setSourcePlanes (const std::vector<ScanPlane>& planes) { source_planes_ = planes; source_planes_given_ = true; }
 
   /** \brief The plane extractor for the source (and, scan to scan, the target). Default:
-    * SACPlaneExtraction with its defaults. */
+    * SACPlaneExtraction with its defaults. The source extractor gets the whole source cloud and
+    * the indices of setIndices (null without them); its planes must be taken among them. */
   void
   setPlaneExtractor (const PlaneExtractor<PointSource>& extractor) { source_extractor_ = extractor; }
   void

@@ -101,21 +101,14 @@ PlaneMatchingRegistration<PointSource, PointTarget>::setCornerTarget ()
 template <typename PointSource, typename PointTarget> bool
 PlaneMatchingRegistration<PointSource, PointTarget>::extractSourcePlaneSets (std::vector<pcl::PointIndices>& sets) const
 {
-  if (fake_indices_)
-    return source_extractor_ (input_, sets);
-  // setIndices: the extractor sees the indexed points only; its sets are mapped back to
-  // indices of the input, which the viewpoints and the plane fits use.
-  auto subset = pcl::make_shared<PointCloudSource> ();
-  pcl::copyPointCloud (*input_, *indices_, *subset);
-  if (!source_extractor_ (subset, sets))
+  // setIndices: the extractor takes its planes among the indexed points; its sets index the
+  // input, which the viewpoints and the plane fits use. An extractor that answers with an index
+  // outside the cloud is refused.
+  if (!source_extractor_ (input_, fake_indices_ ? pcl::IndicesConstPtr () : indices_, sets))
     return false;
-  for (auto& set : sets)
-    for (auto& i : set.indices)
-    {
-      if (i < 0 || static_cast<std::size_t> (i) >= indices_->size ())
-        return false;
-      i = (*indices_)[i];
-    }
+  for (const auto& set : sets)
+    if (!indicesInRange (set.indices, input_->size (), "[pcl_ext::PlaneMatchingRegistration::align] plane extractor:"))
+      return false;
   return true;
 }
 
@@ -151,7 +144,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (Poin
   else
   {
     std::vector<pcl::PointIndices> sets;
-    if (!target_extractor_ || !target_extractor_ (target_, sets) ||
+    if (!target_extractor_ || !target_extractor_ (target_, pcl::IndicesConstPtr (), sets) ||
         !fitScanPlanes (*target_, sets, target_viewpoints_, target_scan_planes_))
     {
       PCL_ERROR ("[pcl_ext::%s::align] Plane extraction failed on the target.\n", reg_name_.c_str ());

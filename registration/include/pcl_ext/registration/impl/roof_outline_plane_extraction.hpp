@@ -286,8 +286,11 @@ template <typename PointT> PlaneExtractor<PointT>
 RoofOutlinePlaneExtraction<PointT>::asExtractor () const
 {
   RoofOutlinePlaneExtraction<PointT> copy = *this;
-  return [copy] (const PointCloudConstPtr& cloud, std::vector<pcl::PointIndices>& planes) mutable {
+  return [copy] (const PointCloudConstPtr& cloud, const pcl::IndicesConstPtr& indices,
+                 std::vector<pcl::PointIndices>& planes) mutable {
     copy.setInputCloud (cloud);
+    // A null pointer resets to every point (PCLBase makes its own indices in initCompute).
+    copy.setIndices (indices ? pcl::make_shared<pcl::Indices> (*indices) : pcl::IndicesPtr ());
     return copy.extract (planes);
   };
 }
