@@ -3,6 +3,7 @@
  */
 #pragma once
 
+#include <pcl_ext/common/indices.h>
 #include <pcl_ext/common/neighbourhoods.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/search/nanoflann_kdtree.h>
@@ -70,14 +71,7 @@ pcl_ext::Neighbourhoods<PointT>::validate ()
                "finite.\n", radius_);
     return false;
   }
-  for (const auto idx : *indices_)
-    if (idx < 0 || static_cast<std::size_t> (idx) >= input_->size ())
-    {
-      PCL_ERROR ("[pcl_ext::Neighbourhoods::compute] Index %d is out of range for a cloud of "
-                 "%zu points.\n", static_cast<int> (idx), input_->size ());
-      return false;
-    }
-  return true;
+  return indicesInRange (*indices_, input_->size (), "[pcl_ext::Neighbourhoods::compute]");
 }
 
 template <typename PointT> bool

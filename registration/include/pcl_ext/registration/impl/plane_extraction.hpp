@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl_ext/common/covariance.h>
+#include <pcl_ext/common/indices.h>
 #include <pcl_ext/registration/plane_extraction.h>
 
 #include <pcl/ModelCoefficients.h>
@@ -117,15 +118,13 @@ SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
   // Finite points only: RANSAC would happily sample NaN. Sorted and unique, as the removal of
   // each plane's inliers below needs.
   pcl::IndicesPtr remaining (new pcl::Indices);
+  if (!indicesInRange (*indices_, input_->size (), "[pcl_ext::SACPlaneExtraction::extract]"))
+  {
+    this->deinitCompute ();
+    return false;
+  }
   for (const auto i : *indices_)
   {
-    if (i < 0 || static_cast<std::size_t> (i) >= input_->size ())
-    {
-      PCL_ERROR ("[pcl_ext::SACPlaneExtraction::extract] Index %d is out of range (%zu points).\n",
-                 static_cast<int> (i), input_->size ());
-      this->deinitCompute ();
-      return false;
-    }
     const PointT& p = (*input_)[i];
     if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
       remaining->push_back (i);

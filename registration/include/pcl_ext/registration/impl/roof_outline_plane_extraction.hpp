@@ -3,6 +3,7 @@
  */
 #pragma once
 
+#include <pcl_ext/common/indices.h>
 #include <pcl_ext/registration/roof_outline_plane_extraction.h>
 
 #include <pcl/console/print.h>
@@ -146,15 +147,13 @@ RoofOutlinePlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& pla
   // measure x and y only.
   pcl::PointCloud<pcl::PointXYZ>::Ptr flat (new pcl::PointCloud<pcl::PointXYZ>);
   pcl::PointCloud<pcl::PointXYZ>::Ptr others (new pcl::PointCloud<pcl::PointXYZ>);
+  if (!indicesInRange (*indices_, input_->size (), "[pcl_ext::RoofOutlinePlaneExtraction::extract]"))
+  {
+    this->deinitCompute ();
+    return false;
+  }
   for (const auto i : *indices_)
   {
-    if (i < 0 || static_cast<std::size_t> (i) >= input_->size ())
-    {
-      PCL_ERROR ("[pcl_ext::RoofOutlinePlaneExtraction::extract] Index %d is out of range (%zu points).\n",
-                 static_cast<int> (i), input_->size ());
-      this->deinitCompute ();
-      return false;
-    }
     const PointT& p = (*input_)[i];
     if (!std::isfinite (p.x) || !std::isfinite (p.y) || !std::isfinite (p.z))
       continue;
