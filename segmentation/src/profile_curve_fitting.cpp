@@ -161,18 +161,23 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
 
   detail::ProfileGrid grid;
   grid.build (profile.uv, static_cast<float> (std::max (parameters.threshold, window / 4)));
+  const std::vector<float>* window_scale =
+      parameters.window_scale && parameters.window_scale->size () == n ? parameters.window_scale
+                                                                       : nullptr;
   for (std::uint32_t i = 0; i < n; ++i)
   {
+    const double scale_i = window_scale ? std::max (1.0, double ((*window_scale)[i])) : 1.0;
+    const double window_i = window * scale_i, tangent_radius = parameters.tangent_radius * scale_i;
     // A chain shorter than two windows (a small closed curve where the profile grazes a
     // surface) cannot be judged: a turn within it is its shape, not a crease.
-    if ((hi[chain[i]] - lo[chain[i]]).norm () < 2.0 * window)
+    if ((hi[chain[i]] - lo[chain[i]]).norm () < 2.0 * window_i)
       continue;
     const Eigen::Vector2f& p = profile.uv[i];
     // Local direction of the curve: principal axis of the nearby points of the chain.
     Eigen::Vector2d mean = Eigen::Vector2d::Zero ();
     Eigen::Matrix2d cov = Eigen::Matrix2d::Zero ();
     std::size_t count = 0;
-    grid.forEachWithin (p, static_cast<float> (parameters.tangent_radius),
+    grid.forEachWithin (p, static_cast<float> (tangent_radius),
                         [&] (std::uint32_t j, float) {
                           if (chain[j] != chain[i])
                             return;
@@ -194,23 +199,58 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
 
     Gram side[2];
     double reach[2] = {0.0, 0.0};
-    const double scale = window;
-    grid.forEachWithin (p, static_cast<float> (window), [&] (std::uint32_t j, float) {
+    const double scale = window_i;
+    // Each side is fitted in its own frame, along the principal axis of its points: on a tight
+    // bend (the oblique section of a thin cylinder) a side turns by tens of degrees, and a
+    // polynomial in the frame of the point itself would have to follow steep slopes.
+    Eigen::Vector2d axis[2] = {e, e};
+    if (parameters.side_frames)
+    {
+      Eigen::Vector2d sum[2] = {Eigen::Vector2d::Zero (), Eigen::Vector2d::Zero ()};
+      Eigen::Matrix2d second[2] = {Eigen::Matrix2d::Zero (), Eigen::Matrix2d::Zero ()};
+      double count_side[2] = {0.0, 0.0};
+      grid.forEachWithin (p, static_cast<float> (window_i), [&] (std::uint32_t j, float) {
+        if (chain[j] != chain[i])
+          return;
+        const Eigen::Vector2d d = (profile.uv[j] - p).cast<double> () / scale;
+        for (int k = 0; k < 2; ++k)
+          if (k == 0 ? e.dot (d) <= 0.0 : e.dot (d) >= 0.0)
+          {
+            sum[k] += d;
+            second[k] += d * d.transpose ();
+            count_side[k] += 1.0;
+          }
+      });
+      for (int k = 0; k < 2; ++k)
+        if (count_side[k] >= 3.0)
+        {
+          const Eigen::Vector2d m = sum[k] / count_side[k];
+          const Eigen::Matrix2d c = second[k] / count_side[k] - m * m.transpose ();
+          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> side_eig (c);
+          Eigen::Vector2d a = side_eig.eigenvectors ().col (1);
+          if (a.dot (e) < 0.0)
+            a = -a;
+          if (a.allFinite () && a.dot (e) > 0.1)
+            axis[k] = a;
+        }
+    }
+    const Eigen::Vector2d normal_axis[2] = {Eigen::Vector2d (-axis[0][1], axis[0][0]),
+                                            Eigen::Vector2d (-axis[1][1], axis[1][0])};
+    double side_reach[2] = {0.0, 0.0};
+    grid.forEachWithin (p, static_cast<float> (window_i), [&] (std::uint32_t j, float) {
       if (chain[j] != chain[i])
         return;
       const Eigen::Vector2d d = (profile.uv[j] - p).cast<double> ();
-      const double x = e.dot (d) / scale, y = f.dot (d) / scale;
+      const double x = e.dot (d) / scale;
       const double t = (static_cast<double> (profile.t[j]) - profile.t[i]) / scale;
-      if (x <= 0.0)
-      {
-        side[0].add (x, y, t);
-        reach[0] = std::max (reach[0], -x);
-      }
-      if (x >= 0.0)
-      {
-        side[1].add (x, y, t);
-        reach[1] = std::max (reach[1], x);
-      }
+      for (int k = 0; k < 2; ++k)
+        if (k == 0 ? x <= 0.0 : x >= 0.0)
+        {
+          const double xs = axis[k].dot (d) / scale, ys = normal_axis[k].dot (d) / scale;
+          side[k].add (xs, ys, t);
+          reach[k] = std::max (reach[k], std::abs (x));
+          side_reach[k] = std::max (side_reach[k], k == 0 ? -xs : xs);
+        }
     });
     // A side shorter than 40% of the window is a curve end: nothing to compare with.
     if (side[0].n < min_side || side[1].n < min_side || reach[0] < 0.4 || reach[1] < 0.4)
@@ -221,19 +261,23 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
       continue;
     // Normals compared at the middle of each side: a fitted polynomial's derivative is
     // steady there and wild at the ends of its range, where noise decides the slope. The turn
-    // a smooth curve makes between the two middles (its curvature, dtheta/dx = y'' / (1 +
-    // y'^2), times their distance) is not a crease and is taken off.
-    const double xl = -0.5 * reach[0], xr = 0.5 * reach[1];
+    // a smooth curve makes from each middle to the point (its curvature, dtheta/dx = y'' /
+    // (1 + y'^2), times the distance) is not a crease and is taken off.
+    const double xl = -0.5 * side_reach[0], xr = 0.5 * side_reach[1];
     const double sl = left.slopeAt (xl), sr = right.slopeAt (xr);
-    const double bend = 0.5 * (left.secondDerivativeAt (xl) / (1.0 + sl * sl) +
-                               right.secondDerivativeAt (xr) / (1.0 + sr * sr)) * (xr - xl);
+    const double bend = left.secondDerivativeAt (xl) / (1.0 + sl * sl) * (-xl) +
+                        right.secondDerivativeAt (xr) / (1.0 + sr * sr) * xr;
+    // The angles of the two sides' axes from the point's direction.
+    const double offset = std::atan2 (f.dot (axis[1]), e.dot (axis[1])) -
+                          std::atan2 (f.dot (axis[0]), e.dot (axis[0]));
     // Standard error of the turn, to first order in the fitted terms of the two (independent)
-    // sides: turn = atan (sr) - atan (sl) - D/2 (kl + kr), k = y'' / (1 + y'^2), D = xr - xl.
+    // sides: turn = atan (sr) - atan (sl) - (kl Dl + kr Dr), k = y'' / (1 + y'^2), D the
+    // distance of a side's middle from the point.
     const auto side_variance = [&] (const PolynomialFit& fit, double xm, double s, double sign) {
       const double w = 1.0 / (1.0 + s * s), ypp = fit.secondDerivativeAt (xm);
       const Eigen::Vector3d ds (1.0, 2.0 * xm, 3.0 * xm * xm), dypp (0.0, 2.0, 6.0 * xm);
       const Eigen::Vector3d grad =
-          sign * w * ds - 0.5 * (xr - xl) * (w * dypp - 2.0 * ypp * s * w * w * ds);
+          sign * w * ds - std::abs (xm) * (w * dypp - 2.0 * ypp * s * w * w * ds);
       return grad.dot (fit.unit_covariance * grad);
     };
     const double turn_variance =
@@ -242,7 +286,8 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
     // Per metre of noise: x and y were divided by the window.
     scores.turn_sigma[i] =
         static_cast<float> (std::sqrt (std::max (turn_variance, 0.0)) / scale);
-    scores.turn[i] = static_cast<float> (std::abs (std::atan (sr) - std::atan (sl) - bend));
+    scores.turn[i] =
+        static_cast<float> (std::abs (offset + std::atan (sr) - std::atan (sl) - bend));
     scores.rms[i] = static_cast<float> (
         scale * std::sqrt (std::max (left.rss / side[0].n, right.rss / side[1].n)));
   }

@@ -31,6 +31,10 @@ validParameters (const PipelineParameters& p)
       return false;
   if (p.method == ProfileMethod::Proximity && p.proximity_neighbours == 0)
     return false;
+  if (p.local_threshold &&
+      (!(p.local_threshold_factor > 0.0) || !std::isfinite (p.local_threshold_factor) ||
+       !(p.max_threshold >= p.threshold) || !std::isfinite (p.max_threshold)))
+    return false;
   if (p.method == ProfileMethod::CurveFitting &&
       (!(p.curve_window > 0.0) || !(p.tangent_radius > 0.0) || !(p.max_turn > 0.0) ||
        !(p.residual_factor > 0.0) || !std::isfinite (p.curve_window) ||
@@ -92,6 +96,7 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
   fit.window = parameters.curve_window;
   fit.tangent_radius = parameters.tangent_radius;
   fit.corrected_aic = parameters.corrected_aic;
+  fit.side_frames = parameters.side_frames;
 
   // One result slot per profile, concatenated in profile order afterwards: deterministic for
   // any number of threads.
@@ -101,6 +106,16 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     ProfilePoints points;
     std::vector<LocalEdge> local;
     CurveScores scores;
+    std::vector<float> thresholds, window_scale;
+    LocalThresholdParameters local_parameters;
+    local_parameters.threshold = parameters.threshold;
+    local_parameters.factor = parameters.local_threshold_factor;
+    local_parameters.max_threshold = parameters.max_threshold;
+    CurveFitParameters point_fit = fit;
+    const bool adaptive =
+        parameters.local_threshold && parameters.max_threshold > parameters.threshold;
+    const double link_threshold = adaptive ? parameters.max_threshold : parameters.threshold;
+    const std::vector<float>* link_thresholds = adaptive ? &thresholds : nullptr;
 #pragma omp for schedule(dynamic, 4)
     for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (tasks.size ()); ++k)
     {
@@ -117,19 +132,30 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
         points.uv[i] = Eigen::Vector2f (stack.u.dot (p), stack.v.dot (p));
         points.t[i] = static_cast<float> (stack.normal.dot (p) - stack.origin);
       }
+      if (adaptive)
+        localThresholds (points, local_parameters, thresholds);
       switch (parameters.method)
       {
       case ProfileMethod::Proximity:
-        proximityEdges (points, parameters.threshold, parameters.proximity_neighbours, local);
+        proximityEdges (points, link_threshold, parameters.proximity_neighbours, local,
+                        link_thresholds);
         break;
       case ProfileMethod::MinimumSpanningTree:
       case ProfileMethod::CurveFitting:
-        spanningTreeEdges (points, parameters.threshold, local);
+        spanningTreeEdges (points, link_threshold, local, link_thresholds);
         break;
       }
       if (curves)
       {
-        scoreCurveTurns (points, local, fit, scores);
+        point_fit.window_scale = nullptr;
+        if (adaptive && parameters.threshold > 0.0)
+        {
+          window_scale.resize (m);
+          for (std::size_t i = 0; i < m; ++i)
+            window_scale[i] = static_cast<float> (thresholds[i] / parameters.threshold);
+          point_fit.window_scale = &window_scale;
+        }
+        scoreCurveTurns (points, local, point_fit, scores);
         CurveScores& out = stack_scores[tasks[k].stack];  // profiles of a stack are disjoint
         for (std::size_t i = 0; i < m; ++i)
         {

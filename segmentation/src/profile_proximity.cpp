@@ -16,7 +16,7 @@ namespace profiles
 {
 void
 proximityEdges (const ProfilePoints& profile, double threshold, unsigned int neighbours,
-                std::vector<LocalEdge>& edges)
+                std::vector<LocalEdge>& edges, const std::vector<float>* thresholds)
 {
   edges.clear ();
   const std::size_t n = profile.uv.size ();
@@ -27,8 +27,13 @@ proximityEdges (const ProfilePoints& profile, double threshold, unsigned int nei
   // the first rings, and the threshold only bounds the search in sparse parts.
   const float radius = static_cast<float> (threshold);
   detail::ProfileGrid grid;
-  grid.build (profile.uv, radius / 3.f);
-  const float r2 = radius * radius;
+  grid.build (profile.uv, (thresholds && !thresholds->empty ()
+                               ? std::min (*std::min_element (thresholds->begin (),
+                                                              thresholds->end ()), radius)
+                               : radius) / 3.f);
+  const auto limit = [&] (std::uint32_t i) {
+    return thresholds ? std::min ((*thresholds)[i], radius) : radius;
+  };
   const std::int64_t max_ring =
       static_cast<std::int64_t> (std::ceil (radius / grid.cellSize ())) + 1;
   const std::size_t k = neighbours;
@@ -41,8 +46,13 @@ proximityEdges (const ProfilePoints& profile, double threshold, unsigned int nei
     if (rep[i] != i)
       continue;
     best.clear ();
+    const float reach_i = limit (i);
+    const float r2 = reach_i * reach_i;
     const auto consider = [&] (std::uint32_t j, float d2) {
-      if (j == i || rep[j] != j || d2 > r2)
+      // With local thresholds a link must be within both ends' thresholds: a sparse point
+      // does not reach into a dense surface farther than that surface's own links do.
+      if (j == i || rep[j] != j || d2 > r2 ||
+          (thresholds && d2 > limit (j) * limit (j)))
         return;
       const std::pair<float, std::uint32_t> c (d2, j);
       if (best.size () == k && !(c < best.back ()))
@@ -55,7 +65,7 @@ proximityEdges (const ProfilePoints& profile, double threshold, unsigned int nei
     {
       grid.forEachInRing (profile.uv[i], ring, consider);
       const float reach = ring * grid.cellSize ();
-      if (reach >= radius || (best.size () == k && best.back ().first <= reach * reach))
+      if (reach >= reach_i || (best.size () == k && best.back ().first <= reach * reach))
         break;
     }
     sizes[i] = static_cast<std::uint32_t> (best.size ());

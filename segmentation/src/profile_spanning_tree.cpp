@@ -15,7 +15,7 @@ namespace profiles
 {
 void
 spanningTreeEdges (const ProfilePoints& profile, double threshold,
-                   std::vector<LocalEdge>& edges)
+                   std::vector<LocalEdge>& edges, const std::vector<float>* thresholds)
 {
   edges.clear ();
   const std::size_t n = profile.uv.size ();
@@ -26,7 +26,10 @@ spanningTreeEdges (const ProfilePoints& profile, double threshold,
   // representative with zero-length edges and take no part in the pair search.
   const std::vector<std::uint32_t> rep = detail::coincidentRepresentatives (profile.uv);
   detail::ProfileGrid grid;
-  grid.build (profile.uv, static_cast<float> (threshold));
+  // Cells of the shortest threshold: dense stretches are searched as without local thresholds.
+  grid.build (profile.uv, thresholds && !thresholds->empty ()
+                              ? *std::min_element (thresholds->begin (), thresholds->end ())
+                              : static_cast<float> (threshold));
   struct Pair
   {
     float d2;
@@ -40,11 +43,14 @@ spanningTreeEdges (const ProfilePoints& profile, double threshold,
       pairs.push_back ({0.f, rep[i], i});
       continue;
     }
-    grid.forEachWithin (profile.uv[i], static_cast<float> (threshold),
-                        [&] (std::uint32_t j, float d2) {
-                          if (j > i && rep[j] == j)
-                            pairs.push_back ({d2, i, j});
-                        });
+    // With local thresholds an edge must be within both ends' thresholds.
+    const float reach = thresholds ? std::min ((*thresholds)[i], static_cast<float> (threshold))
+                                   : static_cast<float> (threshold);
+    grid.forEachWithin (profile.uv[i], reach, [&] (std::uint32_t j, float d2) {
+      if (j > i && rep[j] == j &&
+          (!thresholds || d2 <= (*thresholds)[j] * (*thresholds)[j]))
+        pairs.push_back ({d2, i, j});
+    });
   }
   std::sort (pairs.begin (), pairs.end (), [] (const Pair& x, const Pair& y) {
     if (x.d2 != y.d2)

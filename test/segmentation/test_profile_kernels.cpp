@@ -175,6 +175,75 @@ TEST (ProfileSegmenters, ProximityAndSpanningTreeCutLongLinks)
   EXPECT_EQ (edges.size (), profile.uv.size () - 2);
 }
 
+TEST (ProfileSegmenters, LocalThresholdsFollowTheDensity)
+{
+  // A dense chain (gap 0.01) and, 0.3 further on, a sparse one (gap 0.06) whose every fourth
+  // gap is 0.09; the global threshold 0.05 suits the dense chain only.
+  ProfilePoints profile;
+  for (int i = 0; i < 40; ++i)
+    profile.uv.emplace_back (0.01f * i, 0.f);
+  const std::size_t sparse_begin = profile.uv.size ();
+  float x = 0.69f;
+  for (int i = 0; i < 20; ++i, x += (i % 4 == 0 ? 0.09f : 0.06f))
+    profile.uv.emplace_back (x, 0.f);
+  profile.t.assign (profile.uv.size (), 0.f);
+  LocalThresholdParameters parameters;
+  parameters.threshold = 0.05;
+  parameters.factor = 4.0;
+  parameters.max_threshold = 0.15;
+  std::vector<float> thresholds;
+  localThresholds (profile, parameters, thresholds);
+  ASSERT_EQ (thresholds.size (), profile.uv.size ());
+  // Dense: 4 x 0.01 is below the global threshold, which holds. Sparse: 4 x the median gap
+  // 0.06 (the wider gaps are a quarter), capped at the maximum.
+  for (std::size_t i = 0; i < sparse_begin; ++i)
+    EXPECT_FLOAT_EQ (thresholds[i], 0.05f) << i;
+  for (std::size_t i = sparse_begin; i < profile.uv.size (); ++i)
+    EXPECT_FLOAT_EQ (thresholds[i], 0.15f) << i;
+
+  const auto components = [&] (const std::vector<LocalEdge>& edges) {
+    std::vector<int> comp (profile.uv.size ());
+    for (std::size_t i = 0; i < comp.size (); ++i)
+      comp[i] = static_cast<int> (i);
+    for (std::size_t pass = 0; pass < comp.size (); ++pass)
+      for (const auto& e : edges)
+        comp[e.a] = comp[e.b] = std::min (comp[e.a], comp[e.b]);
+    return std::set<int> (comp.begin (), comp.end ()).size ();
+  };
+  std::vector<LocalEdge> edges;
+  for (int method = 0; method < 2; ++method)
+  {
+    // The global threshold cuts the sparse chain into single points.
+    if (method == 0)
+      proximityEdges (profile, 0.05, 4, edges);
+    else
+      spanningTreeEdges (profile, 0.05, edges);
+    EXPECT_EQ (components (edges), 21u) << "method " << method;
+    // Local thresholds keep it whole, and every link is within both its ends' thresholds.
+    if (method == 0)
+      proximityEdges (profile, 0.15, 4, edges, &thresholds);
+    else
+      spanningTreeEdges (profile, 0.15, edges, &thresholds);
+    EXPECT_EQ (components (edges), 2u) << "method " << method;
+    for (const auto& e : edges)
+      EXPECT_LE ((profile.uv[e.a] - profile.uv[e.b]).norm (),
+                 std::min (thresholds[e.a], thresholds[e.b]) + 1e-6f);
+  }
+  // A sparse point 0.08 from the dense chain's end: its threshold would reach the chain, the
+  // chain's does not, so the two stay apart.
+  profile.uv.emplace_back (0.47f, 0.f);
+  profile.t.push_back (0.f);
+  std::vector<float> with_point = thresholds;
+  with_point.push_back (0.15f);
+  spanningTreeEdges (profile, 0.15, edges, &with_point);
+  EXPECT_EQ (components (edges), 3u);
+  // Without a maximum above the threshold nothing changes.
+  parameters.max_threshold = 0.05;
+  localThresholds (profile, parameters, thresholds);
+  for (const float t : thresholds)
+    EXPECT_FLOAT_EQ (t, 0.05f);
+}
+
 TEST (CurveFit, AicSelectsTheModel)
 {
   std::mt19937 rng (5);

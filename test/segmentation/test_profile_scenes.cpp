@@ -161,20 +161,83 @@ TEST (ProfileSegmentationScenes, TreeTrunkIsSeparatedFromTheGroundByCurveFitting
   EXPECT_GE (static_cast<double> (t.overlap), 0.95 * t.predicted_size);
 }
 
+TEST (ProfileSegmentationScenes, SideFramesKeepTheTrunkWhole)
+{
+  // Why the trunk splits: every stack plane cuts the trunk (radius 0.26 m at the foot, 0.07 m
+  // at the top) obliquely, 55 degrees from the horizontal, in an ellipse whose radius of
+  // curvature at the ends of its long axis is 0.58 r, about the curve window (0.16 m). There a
+  // side of a point turns by tens of degrees, the polynomials in the point's frame cannot
+  // follow, and the residual and turn tests mark bands of curve ends along the trunk that cut
+  // it into pieces. Fitting each side along its own axis removes the bands where the trunk is
+  // thick. Scene: the tree with the ground cut to 1.5 m around the trunk, at the whole
+  // scene's spacing (0.027 m), which keeps the trunk-ground crease and the crown in a few
+  // seconds.
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
+  std::vector<std::uint32_t> truth, labels;
+  loadScene ("tree", true, cloud, truth, &labels);
+  const auto terrain = static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Terrain);
+  const auto trunk = dominantSegment (*cloud, truth, labels,
+                                      static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Trunk), 3.0f);
+  const auto ground = dominantSegment (*cloud, truth, labels, terrain, 1.0f);
+  pcl::IndicesPtr kept (new pcl::Indices);
+  std::vector<std::uint32_t> kept_truth (truth.size (), 0);
+  for (std::size_t i = 0; i < cloud->size (); ++i)
+  {
+    const auto& q = (*cloud)[i];
+    if (labels[i] != terrain || q.x * q.x + q.y * q.y < 1.5f * 1.5f)
+    {
+      kept->push_back (static_cast<pcl::index_t> (i));
+      kept_truth[i] = truth[i];
+    }
+  }
+  Segmentation seg;
+  seg.setInputCloud (cloud);
+  seg.setIndices (kept);
+  seg.setPointSpacing (0.027);
+  seg.setProfileSegmentation (Segmentation::ProfileMethod::CurveFitting);
+  seg.setProfileWidthFactor (kCurveWidthFactor);
+  seg.setCorrectedAic (true);
+  seg.setTurnSignificance (3.0);
+  seg.setSideFrames (true);
+  std::vector<pcl::PointIndices> clusters;
+  seg.extract (clusters);
+  pcl_ext::SegmentationMetrics m;
+  ASSERT_TRUE (pcl_ext::evaluateSegmentation (clusters, kept_truth, m));
+  // Measured: trunk 0.880 (without side frames 0.494: the trunk's pieces join the ground),
+  // ground 0.984.
+  EXPECT_GE (matchOf (m, trunk).iou, 0.85);
+  EXPECT_GE (matchOf (m, ground).iou, 0.95);
+  EXPECT_NE (matchOf (m, trunk).best_predicted, matchOf (m, ground).best_predicted);
+}
+
 TEST (ProfileSegmentationScenes, DISABLED_TreeTrunkIsOneSegment)
 {
   // Goal (figure 14: "the trunk and larger branches are successfully detected"). Not met:
   // curve fitting separates the trunk from the ground but splits it: best IoU 0.35 with the
   // settings for noisy scans, 0.27 with the paper's defaults; proximity merges it with the
-  // ground and the whole tree (0.02).
+  // ground and the whole tree (0.02). Fitting each side in its own frame (setSideFrames, see
+  // SideFramesKeepTheTrunkWhole) keeps the trunk whole up to 4 m: 0.76 (0.68 with the
+  // paper's settings); above, where the trunk's radius falls to 0.13-0.07 m and the sections'
+  // radius of curvature (0.04-0.08 m) is half the window or less, and the branches and the
+  // leaves cut in, it still splits. A shorter window (setCurveWindow) moves the figure between
+  // 0.78 and 0.88 without a trend (0.806, 0.856, 0.876, 0.779 at 0.10, 0.12, 0.13, 0.14 m).
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
   std::vector<std::uint32_t> truth, labels;
   loadScene ("tree", true, cloud, truth, &labels);
   const auto trunk = dominantSegment (*cloud, truth, labels,
                                       static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Trunk), 3.0f);
-  const auto curve = segment (cloud, truth, Segmentation::ProfileMethod::CurveFitting,
-                              kCurveWidthFactor, true);
-  EXPECT_GE (matchOf (curve, trunk).iou, 0.9);
+  Segmentation seg;
+  seg.setInputCloud (cloud);
+  seg.setProfileSegmentation (Segmentation::ProfileMethod::CurveFitting);
+  seg.setProfileWidthFactor (kCurveWidthFactor);
+  seg.setCorrectedAic (true);
+  seg.setTurnSignificance (3.0);
+  seg.setSideFrames (true);
+  std::vector<pcl::PointIndices> clusters;
+  seg.extract (clusters);
+  pcl_ext::SegmentationMetrics m;
+  ASSERT_TRUE (pcl_ext::evaluateSegmentation (clusters, truth, m));
+  EXPECT_GE (matchOf (m, trunk).iou, 0.9);
 }
 
 TEST (ProfileSegmentationScenes, PipesGroundIsOneSegment)
@@ -189,21 +252,79 @@ TEST (ProfileSegmentationScenes, PipesGroundIsOneSegment)
   EXPECT_GE (m.segments[0].iou, 0.9);  // object 1 is the ground
 }
 
+TEST (ProfileSegmentationScenes, LocalThresholdKeepsTheSparsePipesWhole)
+{
+  // The pipes lie 3.3 m up and 7 m or more from the scanners, sampled at 0.049 m, while the
+  // dense ground near the scanners sets the automatic spacing of the whole cloud (0.025 m).
+  // Segmented alone at the whole cloud's spacing (which isolates the effect of density: the
+  // pipes do not touch one another), their profiles break into short chains with one global
+  // threshold (measured: mean best IoU over the pipes 0.418); thresholds from the local gaps
+  // keep them whole (0.687; 0.824 at their own spacing, 0.049 m, with one threshold). What
+  // the local thresholds miss: two thin pipes 0.17 m apart are joined, and two pipes are each
+  // split in two (best IoU 0.54 and 0.56).
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
+  std::vector<std::uint32_t> truth, labels;
+  loadScene ("pipes", false, cloud, truth, &labels);
+  std::vector<Eigen::Vector3f> xyz;
+  for (const auto& q : *cloud)
+    xyz.push_back (q.getVector3fMap ());
+  const double spacing = pcl_ext::profiles::estimatePointSpacing (xyz);
+  EXPECT_NEAR (spacing, 0.025, 0.002);
+  constexpr std::uint32_t kPipe = 3;  // the scene's pipe label
+  pcl::IndicesPtr pipes (new pcl::Indices);
+  std::vector<std::uint32_t> pipe_truth (truth.size (), 0);
+  for (std::size_t i = 0; i < cloud->size (); ++i)
+    if (labels[i] == kPipe)
+    {
+      pipes->push_back (static_cast<pcl::index_t> (i));
+      pipe_truth[i] = truth[i];
+    }
+  const auto run = [&] (bool local) {
+    Segmentation seg;
+    seg.setInputCloud (cloud);
+    seg.setIndices (pipes);
+    seg.setPointSpacing (spacing);
+    seg.setLocalThreshold (local);
+    std::vector<pcl::PointIndices> clusters;
+    seg.extract (clusters);
+    pcl_ext::SegmentationMetrics m;
+    EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, pipe_truth, m));
+    EXPECT_EQ (m.num_truth_segments, 7u);
+    return m;
+  };
+  const auto global = run (false), local = run (true);
+  EXPECT_LT (global.mean_best_iou, 0.5);
+  EXPECT_GE (global.over_segmented, 5u);
+  EXPECT_GE (local.mean_best_iou, 0.65);
+  EXPECT_GE (local.correct, 3u);
+}
+
 TEST (ProfileSegmentationScenes, DISABLED_PipesAreOneSegmentEach)
 {
   // Goal: each pipe its own segment (object-level mean best IoU >= 0.85). Not met: 0.13 with
   // proximity, 0.18 with curve fitting and the settings for noisy scans at width 1.5x, 0.34 at
-  // width 2.5x (and 50 s). The
-  // pipes lie 3.3 m up and 7 m or more from the scanners: at the 0.3 degree step they are
-  // sampled at 4 cm or more, while the ground near the scanners sets the one automatic
-  // spacing (0.025 m, threshold 0.075 m). Their profiles break into short chains (each pipe
-  // split into pieces of a few hundred points), and with proximity a pipe resting on a beam
-  // is linked to the frame and through it to the ground. Needs a spacing that follows the
-  // local density.
+  // width 2.5x, 0.44 with local thresholds as well (setLocalThreshold; 90 s on this cloud).
+  // The pipes are sampled at 0.049 m, the ground near the scanners sets the automatic spacing
+  // (0.025 m): with one threshold their profiles break into short chains (see
+  // LocalThresholdKeepsTheSparsePipesWhole). What remains is the scene's contacts: the pipes
+  // rest on the beams and the columns stand on the ground, so proximity joins pipes, frames
+  // and ground into one segment; curve fitting cuts those creases but also the 90 degree
+  // edges of the frames' boxes, so a frame (3 of the 11 objects) is split into its faces
+  // (best IoU 0.16-0.25 each), which alone caps the mean at about 0.8 even with every pipe
+  // found.
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
   std::vector<std::uint32_t> truth;
   loadScene ("pipes", false, cloud, truth);
-  const auto m = segment (cloud, truth, Segmentation::ProfileMethod::CurveFitting,
-                          kCurveWidthFactor, true);
+  Segmentation seg;
+  seg.setInputCloud (cloud);
+  seg.setProfileSegmentation (Segmentation::ProfileMethod::CurveFitting);
+  seg.setProfileWidthFactor (kCurveWidthFactor);
+  seg.setCorrectedAic (true);
+  seg.setTurnSignificance (3.0);
+  seg.setLocalThreshold (true);
+  std::vector<pcl::PointIndices> clusters;
+  seg.extract (clusters);
+  pcl_ext::SegmentationMetrics m;
+  ASSERT_TRUE (pcl_ext::evaluateSegmentation (clusters, truth, m));
   EXPECT_GE (m.mean_best_iou, 0.85);
 }

@@ -31,11 +31,17 @@ struct PipelineParameters
   double threshold = 0.0;                ///< proximity threshold (>= 0)
   ProfileMethod method = ProfileMethod::Proximity;
   unsigned int proximity_neighbours = 4;
+  /** \brief Per-point thresholds from the local gaps of each profile (localThresholds), at
+    * least \a threshold and at most \a max_threshold; the curve window scales with them. */
+  bool local_threshold = false;
+  double local_threshold_factor = 4.0;   ///< local threshold / local gap (> 0)
+  double max_threshold = 0.0;            ///< >= threshold when local_threshold
   double curve_window = 0.0;             ///< > 0 for CurveFitting
   double tangent_radius = 0.0;           ///< > 0 for CurveFitting
   double max_turn = 0.0;                 ///< radians
   double turn_significance = 0.0;        ///< turns within this many standard errors are noise
   bool corrected_aic = false;            ///< AICc rather than AIC
+  bool side_frames = false;              ///< fit each side along its own principal axis
   double residual_factor = 3.0;
   double min_residual = 0.0;             ///< floor of the residual tolerance
   unsigned int threads = 1;

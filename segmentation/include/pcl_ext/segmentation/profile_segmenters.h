@@ -26,23 +26,51 @@ struct LocalEdge
   std::uint32_t b;
 };
 
+/** \brief Parameters of the local link thresholds (localThresholds). */
+struct LocalThresholdParameters
+{
+  double threshold = 0.0;      ///< the global threshold: no local threshold is shorter
+  double factor = 4.0;         ///< local threshold = factor x the local gap
+  double max_threshold = 0.0;  ///< no local threshold is longer (nor any gap searched farther)
+  unsigned int neighbours = 8; ///< the local gap is the median over this many nearest points
+};
+
+/** \brief Link thresholds that follow the local point density of a profile (not in the
+  * paper, which uses one threshold "slightly larger than the average point spacing").
+  *
+  * The gap of a point is the distance to its nearest distinct point of the profile. Its local
+  * gap is the median of the gaps of the point and its \a neighbours nearest points (within
+  * the maximum): a stretch of chain sparser than the rest (a surface far from the scanner,
+  * sampled at range x angular step) lengthens it, a single wide gap (a chain's end) does not.
+  * The threshold of the point is factor x local gap, clamped to [threshold, max_threshold]:
+  * where the cloud is as dense as the global spacing says, the paper's threshold holds.
+  * Coincident points share their representative's threshold. Deterministic.
+  * \param[out] thresholds one per point */
+void
+localThresholds (const ProfilePoints& profile, const LocalThresholdParameters& parameters,
+                 std::vector<float>& thresholds);
+
 /** \brief Proximity chaining (section 4.1.1): every point is linked to its \a neighbours
   * nearest points in the profile plane; links longer than \a threshold are cut.
   *
   * Coincident points are linked to one another first and chain as one point, so duplicates
   * cannot use up the links. Ties are broken by index: deterministic.
+  * \param[in] thresholds optional per-point thresholds (localThresholds) replacing \a
+  * threshold: a link i-j is kept when not longer than the smaller of the two; \a threshold
+  * must then be their maximum
   * \param[out] edges without duplicates */
 void
 proximityEdges (const ProfilePoints& profile, double threshold, unsigned int neighbours,
-                std::vector<LocalEdge>& edges);
+                std::vector<LocalEdge>& edges, const std::vector<float>* thresholds = nullptr);
 
 /** \brief Minimum spanning tree of the profile points with edges longer than \a threshold
   * cut (section 3: "segmentation of minimum spanning trees"). Its components are the
   * single-linkage clusters at \a threshold.
+  * \param[in] thresholds optional per-point thresholds, as for proximityEdges
   * \param[out] edges sorted, without duplicates */
 void
 spanningTreeEdges (const ProfilePoints& profile, double threshold,
-                   std::vector<LocalEdge>& edges);
+                   std::vector<LocalEdge>& edges, const std::vector<float>* thresholds = nullptr);
 
 /** \brief Parameters of the curve-fitting profile segmenter. */
 struct CurveFitParameters
@@ -52,6 +80,11 @@ struct CurveFitParameters
   double tangent_radius = 0.0;  ///< radius of the neighbourhood giving the local direction
   unsigned int min_side_points = 5;  ///< fewer points on a side: a curve end, not judged
   bool corrected_aic = false;  ///< select by AICc (small-sample AIC) rather than AIC
+  /** \brief Optional per-point multipliers of the window and the tangent radius (the local
+    * threshold over the global one, see localThresholds): the fits then span about as many
+    * points where the profile is sparse as where it is dense. */
+  const std::vector<float>* window_scale = nullptr;
+  bool side_frames = false;  ///< fit each side along its own principal axis
 };
 
 /** \brief What the curve fits say about each point of a profile. */

@@ -1,0 +1,88 @@
+/*
+ * pcl_ext: link thresholds that follow the local point density of a profile.
+ */
+#include <pcl_ext/segmentation/profile_segmenters.h>
+
+#include "profile_grid.h"
+#include "union_find.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace pcl_ext
+{
+namespace profiles
+{
+void
+localThresholds (const ProfilePoints& profile, const LocalThresholdParameters& parameters,
+                 std::vector<float>& thresholds)
+{
+  const std::size_t n = profile.uv.size ();
+  const float floor_value = static_cast<float> (parameters.threshold);
+  thresholds.assign (n, floor_value);
+  const float cap = static_cast<float> (std::max (parameters.max_threshold, parameters.threshold));
+  if (n < 2 || !(parameters.threshold > 0.0) || !(parameters.factor > 0.0) ||
+      parameters.neighbours == 0 || !(cap > floor_value))
+    return;
+  const std::vector<std::uint32_t> rep = detail::coincidentRepresentatives (profile.uv);
+  detail::ProfileGrid grid;
+  grid.build (profile.uv, floor_value / 2.f);
+  const std::int64_t max_ring = static_cast<std::int64_t> (std::ceil (cap / grid.cellSize ())) + 1;
+  const std::size_t m = parameters.neighbours;
+  const float cap2 = cap * cap;
+
+  // The m nearest distinct points of each representative within the cap (ties by index), and
+  // its nearest-neighbour gap: the distance to the first of them (the cap when none).
+  std::vector<std::uint32_t> lists (n * m);
+  std::vector<std::uint32_t> sizes (n, 0);
+  std::vector<float> gap (n, cap);
+  std::vector<std::pair<float, std::uint32_t>> best;
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    if (rep[i] != i)
+      continue;
+    best.clear ();
+    const auto consider = [&] (std::uint32_t j, float d2) {
+      if (j == i || rep[j] != j || d2 > cap2)
+        return;
+      const std::pair<float, std::uint32_t> c (d2, j);
+      if (best.size () == m && !(c < best.back ()))
+        return;
+      best.insert (std::upper_bound (best.begin (), best.end (), c), c);
+      if (best.size () > m)
+        best.pop_back ();
+    };
+    for (std::int64_t ring = 0; ring <= max_ring; ++ring)
+    {
+      grid.forEachInRing (profile.uv[i], ring, consider);
+      const float reach = ring * grid.cellSize ();
+      if (reach >= cap || (best.size () == m && best.back ().first <= reach * reach))
+        break;
+    }
+    sizes[i] = static_cast<std::uint32_t> (best.size ());
+    for (std::size_t k = 0; k < best.size (); ++k)
+      lists[i * m + k] = best[k].second;
+    if (!best.empty ())
+      gap[i] = std::sqrt (best.front ().first);
+  }
+  // The local gap is the median over the point and its neighbours: one wide gap (a chain's
+  // end, a hole) does not lengthen the threshold, a sparse stretch of chain does.
+  std::vector<float> values;
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    if (rep[i] != i)
+      continue;
+    values.assign (1, gap[i]);
+    for (std::uint32_t k = 0; k < sizes[i]; ++k)
+      values.push_back (gap[lists[i * m + k]]);
+    const auto middle = values.begin () + values.size () / 2;
+    std::nth_element (values.begin (), middle, values.end ());
+    const float local = static_cast<float> (parameters.factor) * *middle;
+    thresholds[i] = std::min (std::max (local, floor_value), cap);
+  }
+  for (std::uint32_t i = 0; i < n; ++i)
+    thresholds[i] = thresholds[rep[i]];
+}
+}  // namespace profiles
+}  // namespace pcl_ext
