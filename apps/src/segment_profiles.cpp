@@ -109,7 +109,8 @@ main (int argc, char** argv)
   unsigned int stacks = 4, threads = 0, neighbours = 4;
   double width = 0.0, width_factor = 1.5, threshold = 0.0, threshold_factor = 3.0;
   double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0, turn_significance = 0.0;
-  bool aicc = false;
+  double max_threshold_factor = 4.0;
+  bool aicc = false, local_threshold = false, side_frames = false;
   int min_size = 1;
   pcl_ext::tools::CommandLine cl (
       "pcl_ext_segment_profiles",
@@ -128,6 +129,12 @@ main (int argc, char** argv)
   cl.addOption ("threshold", threshold,
                 "proximity threshold (0: threshold_factor * average point spacing)");
   cl.addOption ("threshold_factor", threshold_factor, "threshold as a multiple of the spacing");
+  cl.addSwitch ("local_threshold", local_threshold,
+                "thresholds that follow the local density (the threshold times the local gap "
+                "in the profile over the mean gap), for clouds whose density varies (TLS: far "
+                "surfaces are sparser); not in the paper");
+  cl.addOption ("max_threshold_factor", max_threshold_factor,
+                "local thresholds: the longest, as a multiple of the threshold");
   cl.addOption ("k", neighbours, "proximity chaining: links per point");
   cl.addOption ("max_turn", max_turn_deg, "curve fitting: sharpest turn within a curve (deg)");
   cl.addOption ("window", window,
@@ -142,6 +149,9 @@ main (int argc, char** argv)
   cl.addSwitch ("aicc", aicc,
                 "curve fitting: select the polynomial by the small-sample AICc, not the "
                 "paper's AIC (noisy scans)");
+  cl.addSwitch ("side_frames", side_frames,
+                "curve fitting: fit each side of a point along its own axis (tight bends, "
+                "such as thin trunks cut obliquely); not in the paper");
   cl.addOption ("min_size", min_size, "smallest segment kept");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
@@ -185,12 +195,15 @@ main (int argc, char** argv)
   seg.setDistanceThreshold (threshold);
   seg.setDistanceThresholdFactor (threshold_factor);
   seg.setProfileSegmentation (method);
+  seg.setLocalThreshold (local_threshold);
+  seg.setMaxThresholdFactor (max_threshold_factor);
   seg.setProximityNeighbours (neighbours);
   seg.setMaxTurnAngle (max_turn_deg * M_PI / 180.0);
   seg.setCurveWindow (window);
   seg.setResidualFactor (residual_factor);
   seg.setTurnSignificance (turn_significance);
   seg.setCorrectedAic (aicc);
+  seg.setSideFrames (side_frames);
   seg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
   seg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;

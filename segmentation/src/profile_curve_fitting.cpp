@@ -265,23 +265,27 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
     // (1 + y'^2), times the distance) is not a crease and is taken off.
     const double xl = -0.5 * side_reach[0], xr = 0.5 * side_reach[1];
     const double sl = left.slopeAt (xl), sr = right.slopeAt (xr);
-    const double bend = left.secondDerivativeAt (xl) / (1.0 + sl * sl) * (-xl) +
-                        right.secondDerivativeAt (xr) / (1.0 + sr * sr) * xr;
+    // The distance from each side's middle to the point; in one frame the mean of the two
+    // (the sides' curvatures averaged over the whole stretch between the middles).
+    const double reach_left = parameters.side_frames ? -xl : 0.5 * (xr - xl);
+    const double reach_right = parameters.side_frames ? xr : 0.5 * (xr - xl);
+    const double bend = left.secondDerivativeAt (xl) / (1.0 + sl * sl) * reach_left +
+                        right.secondDerivativeAt (xr) / (1.0 + sr * sr) * reach_right;
     // The angles of the two sides' axes from the point's direction.
     const double offset = std::atan2 (f.dot (axis[1]), e.dot (axis[1])) -
                           std::atan2 (f.dot (axis[0]), e.dot (axis[0]));
     // Standard error of the turn, to first order in the fitted terms of the two (independent)
     // sides: turn = atan (sr) - atan (sl) - (kl Dl + kr Dr), k = y'' / (1 + y'^2), D the
-    // distance of a side's middle from the point.
-    const auto side_variance = [&] (const PolynomialFit& fit, double xm, double s, double sign) {
+    // distances above.
+    const auto side_variance = [&] (const PolynomialFit& fit, double xm, double s, double sign,
+                                    double reach) {
       const double w = 1.0 / (1.0 + s * s), ypp = fit.secondDerivativeAt (xm);
       const Eigen::Vector3d ds (1.0, 2.0 * xm, 3.0 * xm * xm), dypp (0.0, 2.0, 6.0 * xm);
-      const Eigen::Vector3d grad =
-          sign * w * ds - std::abs (xm) * (w * dypp - 2.0 * ypp * s * w * w * ds);
+      const Eigen::Vector3d grad = sign * w * ds - reach * (w * dypp - 2.0 * ypp * s * w * w * ds);
       return grad.dot (fit.unit_covariance * grad);
     };
-    const double turn_variance =
-        side_variance (left, xl, sl, -1.0) + side_variance (right, xr, sr, 1.0);
+    const double turn_variance = side_variance (left, xl, sl, -1.0, reach_left) +
+                                 side_variance (right, xr, sr, 1.0, reach_right);
     scores.evaluated[i] = 1;
     // Per metre of noise: x and y were divided by the window.
     scores.turn_sigma[i] =

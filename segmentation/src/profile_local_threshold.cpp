@@ -1,5 +1,5 @@
 /*
- * pcl_ext: link thresholds that follow the local point density of a profile.
+ * pcl_ext: the local gaps of a profile, for link thresholds that follow the point density.
  */
 #include <pcl_ext/segmentation/profile_segmenters.h>
 
@@ -15,21 +15,21 @@ namespace pcl_ext
 namespace profiles
 {
 void
-localThresholds (const ProfilePoints& profile, const LocalThresholdParameters& parameters,
-                 std::vector<float>& thresholds)
+localGaps (const ProfilePoints& profile, double max_distance, unsigned int neighbours,
+           std::vector<float>& gaps)
 {
   const std::size_t n = profile.uv.size ();
-  const float floor_value = static_cast<float> (parameters.threshold);
-  thresholds.assign (n, floor_value);
-  const float cap = static_cast<float> (std::max (parameters.max_threshold, parameters.threshold));
-  if (n < 2 || !(parameters.threshold > 0.0) || !(parameters.factor > 0.0) ||
-      parameters.neighbours == 0 || !(cap > floor_value))
+  const float cap = static_cast<float> (max_distance);
+  gaps.assign (n, cap);
+  if (n < 2 || !(cap > 0.f) || !std::isfinite (cap) || neighbours == 0)
     return;
   const std::vector<std::uint32_t> rep = detail::coincidentRepresentatives (profile.uv);
+  // Small cells searched ring by ring, as for proximity chaining: dense stretches stop after
+  // the first rings.
   detail::ProfileGrid grid;
-  grid.build (profile.uv, floor_value / 2.f);
+  grid.build (profile.uv, cap / 16.f);
   const std::int64_t max_ring = static_cast<std::int64_t> (std::ceil (cap / grid.cellSize ())) + 1;
-  const std::size_t m = parameters.neighbours;
+  const std::size_t m = neighbours;
   const float cap2 = cap * cap;
 
   // The m nearest distinct points of each representative within the cap (ties by index), and
@@ -67,7 +67,7 @@ localThresholds (const ProfilePoints& profile, const LocalThresholdParameters& p
       gap[i] = std::sqrt (best.front ().first);
   }
   // The local gap is the median over the point and its neighbours: one wide gap (a chain's
-  // end, a hole) does not lengthen the threshold, a sparse stretch of chain does.
+  // end, a hole) does not lengthen it, a sparse stretch of chain does.
   std::vector<float> values;
   for (std::uint32_t i = 0; i < n; ++i)
   {
@@ -78,11 +78,10 @@ localThresholds (const ProfilePoints& profile, const LocalThresholdParameters& p
       values.push_back (gap[lists[i * m + k]]);
     const auto middle = values.begin () + values.size () / 2;
     std::nth_element (values.begin (), middle, values.end ());
-    const float local = static_cast<float> (parameters.factor) * *middle;
-    thresholds[i] = std::min (std::max (local, floor_value), cap);
+    gaps[i] = *middle;
   }
   for (std::uint32_t i = 0; i < n; ++i)
-    thresholds[i] = thresholds[rep[i]];
+    gaps[i] = gaps[rep[i]];
 }
 }  // namespace profiles
 }  // namespace pcl_ext

@@ -14,6 +14,9 @@ namespace profiles
 {
 namespace
 {
+/** The local gap is the median over a point and this many nearest: four a side of a chain. */
+constexpr unsigned int kLocalGapNeighbours = 8;
+
 struct Task
 {
   std::uint32_t stack;
@@ -31,9 +34,7 @@ validParameters (const PipelineParameters& p)
       return false;
   if (p.method == ProfileMethod::Proximity && p.proximity_neighbours == 0)
     return false;
-  if (p.local_threshold &&
-      (!(p.local_threshold_factor > 0.0) || !std::isfinite (p.local_threshold_factor) ||
-       !(p.max_threshold >= p.threshold) || !std::isfinite (p.max_threshold)))
+  if (p.local_threshold && (!(p.max_threshold >= p.threshold) || !std::isfinite (p.max_threshold)))
     return false;
   if (p.method == ProfileMethod::CurveFitting &&
       (!(p.curve_window > 0.0) || !(p.tangent_radius > 0.0) || !(p.max_turn > 0.0) ||
@@ -98,6 +99,62 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
   fit.corrected_aic = parameters.corrected_aic;
   fit.side_frames = parameters.side_frames;
 
+  const auto load_profile = [&] (const Task& task, ProfilePoints& points) {
+    const Stack& stack = result.stacks[task.stack];
+    const std::uint32_t begin = stack.offsets[task.profile];
+    const std::uint32_t end = stack.offsets[task.profile + 1];
+    points.uv.resize (end - begin);
+    points.t.resize (end - begin);
+    for (std::uint32_t i = begin; i < end; ++i)
+    {
+      const Eigen::Vector3f& p = xyz[stack.order[i]];
+      points.uv[i - begin] = Eigen::Vector2f (stack.u.dot (p), stack.v.dot (p));
+      points.t[i - begin] = static_cast<float> (stack.normal.dot (p) - stack.origin);
+    }
+    return stack.order.data () + begin;
+  };
+
+  // Local thresholds: the local gap of every point in every stack first, then each stack's
+  // mean gap, the in-profile counterpart of the average spacing the threshold was set from.
+  const bool adaptive =
+      parameters.local_threshold && parameters.max_threshold > parameters.threshold &&
+      parameters.threshold > 0.0;
+  std::vector<std::vector<float>> stack_gaps (adaptive ? num_stacks : 0);
+  std::vector<double> mean_gap (num_stacks, 0.0);
+  if (adaptive)
+  {
+    for (auto& gaps : stack_gaps)
+      gaps.assign (n, 0.f);
+#pragma omp parallel num_threads(threads)
+    {
+      ProfilePoints points;
+      std::vector<float> gaps;
+#pragma omp for schedule(dynamic, 4)
+      for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (tasks.size ()); ++k)
+      {
+        const std::uint32_t* members = load_profile (tasks[k], points);
+        localGaps (points, parameters.max_threshold, kLocalGapNeighbours, gaps);
+        std::vector<float>& out = stack_gaps[tasks[k].stack];  // profiles are disjoint
+        for (std::size_t i = 0; i < gaps.size (); ++i)
+          out[members[i]] = gaps[i];
+      }
+    }
+    // Points with no neighbour within reach (gap at the maximum) are left out of the mean.
+    const float cap = static_cast<float> (parameters.max_threshold);
+    for (std::size_t s = 0; s < num_stacks; ++s)
+    {
+      double sum = 0.0;
+      std::size_t count = 0;
+      for (const float g : stack_gaps[s])
+        if (g < cap)
+        {
+          sum += g;
+          ++count;
+        }
+      mean_gap[s] = count ? sum / static_cast<double> (count) : 0.0;
+    }
+  }
+
   // One result slot per profile, concatenated in profile order afterwards: deterministic for
   // any number of threads.
   std::vector<std::vector<GraphEdge>> task_edges (tasks.size ());
@@ -107,33 +164,27 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     std::vector<LocalEdge> local;
     CurveScores scores;
     std::vector<float> thresholds, window_scale;
-    LocalThresholdParameters local_parameters;
-    local_parameters.threshold = parameters.threshold;
-    local_parameters.factor = parameters.local_threshold_factor;
-    local_parameters.max_threshold = parameters.max_threshold;
     CurveFitParameters point_fit = fit;
-    const bool adaptive =
-        parameters.local_threshold && parameters.max_threshold > parameters.threshold;
-    const double link_threshold = adaptive ? parameters.max_threshold : parameters.threshold;
-    const std::vector<float>* link_thresholds = adaptive ? &thresholds : nullptr;
 #pragma omp for schedule(dynamic, 4)
     for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (tasks.size ()); ++k)
     {
-      const Stack& stack = result.stacks[tasks[k].stack];
-      const std::uint32_t begin = stack.offsets[tasks[k].profile];
-      const std::uint32_t end = stack.offsets[tasks[k].profile + 1];
-      const std::uint32_t* members = stack.order.data () + begin;
-      const std::size_t m = end - begin;
-      points.uv.resize (m);
-      points.t.resize (m);
-      for (std::size_t i = 0; i < m; ++i)
+      const std::uint32_t* members = load_profile (tasks[k], points);
+      const std::size_t m = points.uv.size ();
+      // The threshold scaled by how much sparser than the stack's mean the point's stretch
+      // of profile is; never below the global threshold, never above the maximum.
+      const bool local_here = adaptive && mean_gap[tasks[k].stack] > 0.0;
+      if (local_here)
       {
-        const Eigen::Vector3f& p = xyz[members[i]];
-        points.uv[i] = Eigen::Vector2f (stack.u.dot (p), stack.v.dot (p));
-        points.t[i] = static_cast<float> (stack.normal.dot (p) - stack.origin);
+        const std::vector<float>& gaps = stack_gaps[tasks[k].stack];
+        const double ratio = parameters.threshold / mean_gap[tasks[k].stack];
+        thresholds.resize (m);
+        for (std::size_t i = 0; i < m; ++i)
+          thresholds[i] = static_cast<float> (
+              std::clamp (ratio * gaps[members[i]], parameters.threshold,
+                          parameters.max_threshold));
       }
-      if (adaptive)
-        localThresholds (points, local_parameters, thresholds);
+      const double link_threshold = local_here ? parameters.max_threshold : parameters.threshold;
+      const std::vector<float>* link_thresholds = local_here ? &thresholds : nullptr;
       switch (parameters.method)
       {
       case ProfileMethod::Proximity:
@@ -148,7 +199,7 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
       if (curves)
       {
         point_fit.window_scale = nullptr;
-        if (adaptive && parameters.threshold > 0.0)
+        if (local_here)
         {
           window_scale.resize (m);
           for (std::size_t i = 0; i < m; ++i)

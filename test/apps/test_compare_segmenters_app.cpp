@@ -180,6 +180,27 @@ TEST_F (CompareSegmentersApp, MontageHasOneTilePerResultAndTheTruth)
   EXPECT_EQ (big_endian (20), 200);
 }
 
+TEST_F (CompareSegmentersApp, ProfileOptionsReachTheSegmenter)
+{
+  // The options not in the paper change what the profile segmenters return.
+  const auto labels_of = [&] (const std::string& options, const std::string& method) {
+    EXPECT_EQ (run (path ("cubes.pcd") + " -threads 2 -methods " + method + " -labels " +
+                    path ("l.pcd") + options), 0) << output_;
+    pcl::PCLPointCloud2 labelled;
+    std::vector<std::uint32_t> labels;
+    EXPECT_TRUE (pcl_ext::tools::loadCloud (path ("l.pcd"), labelled));
+    EXPECT_TRUE (pcl_ext::io::getLabelField (labelled, method, labels));
+    return labels;
+  };
+  const auto curve = labels_of ("", "curve");
+  ASSERT_FALSE (curve.empty ());
+  EXPECT_NE (labels_of (" -aicc -turn_significance 3", "curve"), curve);
+  EXPECT_NE (labels_of (" -side_frames", "curve"), curve);
+  const auto proximity = labels_of ("", "proximity");
+  ASSERT_FALSE (proximity.empty ());
+  EXPECT_NE (labels_of (" -local_threshold", "proximity"), proximity);
+}
+
 TEST_F (CompareSegmentersApp, BadUsageFailsWithoutOutput)
 {
   const std::string cubes = path ("cubes.pcd"), csv = path ("t.csv");
@@ -201,6 +222,7 @@ TEST_F (CompareSegmentersApp, BadUsageFailsWithoutOutput)
   EXPECT_EQ (run (cubes + " -methods euclidean -labels " + path ("no_dir/l.pcd")), 1);
   EXPECT_EQ (run (cubes + " -k 0 -csv " + csv), 1);
   EXPECT_EQ (run (cubes + " -tolerance -1 -csv " + csv), 1);
+  EXPECT_EQ (run (cubes + " -turn_significance -1 -csv " + csv), 1);
   EXPECT_EQ (run (cubes + " -no_such_option 1 -csv " + csv), 1);
   EXPECT_EQ (run (""), 1);
   EXPECT_FALSE (fs::exists (csv));

@@ -88,13 +88,54 @@ TEST_F (SegmentProfilesApp, CurveFittingSeparatesTheCoaxialSurfaces)
   EXPECT_EQ (curveEnds (), -1) << output_;
 }
 
+TEST_F (SegmentProfilesApp, LocalThresholdJoinsTheSparseSurface)
+{
+  // A dense square (1 cm grid) sets the automatic spacing; a square 3 m away sampled at 4 cm,
+  // like a surface far from the scanner, breaks into pieces with the one threshold.
+  profile_test::LabelledCloud scene;
+  std::mt19937 rng (3);
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX (), y = Eigen::Vector3d::UnitY ();
+  profile_test::addRectangle (scene, Eigen::Vector3d::Zero (), x, y, 1.0, 1.0, 0.01, 1, rng);
+  profile_test::addRectangle (scene, Eigen::Vector3d (4, 0, 0), x, y, 1.0, 1.0, 0.04, 2, rng);
+  ASSERT_EQ (pcl::io::savePCDFileBinary (path ("density.pcd"), *scene.cloud), 0);
+  const auto best_iou_of_sparse = [&] () {
+    pcl::PointCloud<pcl::PointXYZL> out;
+    EXPECT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
+    std::vector<pcl::PointIndices> segments;
+    for (std::size_t i = 0; i < out.size (); ++i)
+      if (out[i].label > 0)
+      {
+        segments.resize (std::max<std::size_t> (segments.size (), out[i].label));
+        segments[out[i].label - 1].indices.push_back (static_cast<pcl::index_t> (i));
+      }
+    pcl_ext::SegmentationMetrics m;
+    EXPECT_TRUE (pcl_ext::evaluateSegmentation (segments, scene.labels, m));
+    EXPECT_EQ (m.segments.size (), 2u);
+    EXPECT_GE (m.segments[0].iou, 0.99);  // the dense square is whole either way
+    return m.segments[1].iou;
+  };
+  const std::string io = path ("density.pcd") + " " + path ("out.pcd") + " -threads 2";
+  ASSERT_EQ (run (io), 0) << output_;
+  const double global = best_iou_of_sparse ();
+  ASSERT_EQ (run (io + " -local_threshold"), 0) << output_;
+  const double local = best_iou_of_sparse ();
+  EXPECT_LT (global, 0.5);
+  EXPECT_GE (local, 0.99);
+  // A maximum equal to the threshold turns the local thresholds off.
+  ASSERT_EQ (run (io + " -local_threshold -max_threshold_factor 1"), 0) << output_;
+  EXPECT_DOUBLE_EQ (best_iou_of_sparse (), global);
+}
+
 TEST_F (SegmentProfilesApp, BadUsageFailsWithoutOutput)
 {
   const std::string io = path ("coaxial.pcd") + " " + path ("out.pcd");
   EXPECT_EQ (run ("-h"), 0);
   EXPECT_NE (output_.find ("-turn_significance"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-aicc"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-local_threshold"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-side_frames"), std::string::npos) << output_;
   EXPECT_EQ (run (io + " -method curve -turn_significance -1"), 1);
+  EXPECT_EQ (run (io + " -local_threshold -max_threshold_factor 0.5"), 1);
   EXPECT_EQ (run (io + " -method bogus"), 1);
   EXPECT_EQ (run (io + " -min_size 0"), 1);
   EXPECT_FALSE (exists ("out.pcd"));

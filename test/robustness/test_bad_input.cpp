@@ -541,6 +541,27 @@ subjects ()
     return segments (in, clusters);
   }});
 
+  // The same with the options not in the paper: curve fitting in side frames, local
+  // thresholds. Parameter: the maximum threshold factor (>= 1).
+  s.push_back ({"ProfileSegmentationLocalThresholdsSideFrames", kCloudInputs,
+                {{Bad::Collinear, Expect::Computed}}, [] (const Input& in) {
+    ProfileSegmentation<Point> seg;
+    seg.setInputCloud (in.cloud);
+    if (in.indices)
+      seg.setIndices (in.indices);
+    seg.setNumberOfThreads (2);
+    seg.setProfileSegmentation (ProfileSegmentation<Point>::ProfileMethod::CurveFitting);
+    seg.setLocalThreshold (true);
+    seg.setSideFrames (true);
+    if (in.param)
+      seg.setMaxThresholdFactor (*in.param);
+    if (in.nan_param)
+      seg.setMaxThresholdFactor (std::numeric_limits<double>::quiet_NaN ());
+    std::vector<pcl::PointIndices> clusters;
+    seg.extract (clusters);
+    return segments (in, clusters);
+  }});
+
   // Parameter: the confidence of the boundary test, in (0, 1). A line has no surface point
   // to grow from: refused with a message.
   s.push_back ({"VarianceRegionGrowing", with (kCloudInputs, {Bad::KLargerThanCloud}),

@@ -175,7 +175,7 @@ TEST (ProfileSegmenters, ProximityAndSpanningTreeCutLongLinks)
   EXPECT_EQ (edges.size (), profile.uv.size () - 2);
 }
 
-TEST (ProfileSegmenters, LocalThresholdsFollowTheDensity)
+TEST (ProfileSegmenters, LocalGapsAndThresholds)
 {
   // A dense chain (gap 0.01) and, 0.3 further on, a sparse one (gap 0.06) whose every fourth
   // gap is 0.09; the global threshold 0.05 suits the dense chain only.
@@ -186,21 +186,27 @@ TEST (ProfileSegmenters, LocalThresholdsFollowTheDensity)
   float x = 0.69f;
   for (int i = 0; i < 20; ++i, x += (i % 4 == 0 ? 0.09f : 0.06f))
     profile.uv.emplace_back (x, 0.f);
+  profile.uv.push_back (profile.uv[20]);  // a duplicate of point 20
   profile.t.assign (profile.uv.size (), 0.f);
-  LocalThresholdParameters parameters;
-  parameters.threshold = 0.05;
-  parameters.factor = 4.0;
-  parameters.max_threshold = 0.15;
-  std::vector<float> thresholds;
-  localThresholds (profile, parameters, thresholds);
-  ASSERT_EQ (thresholds.size (), profile.uv.size ());
-  // Dense: 4 x 0.01 is below the global threshold, which holds. Sparse: 4 x the median gap
-  // 0.06 (the wider gaps are a quarter), capped at the maximum.
+  std::vector<float> gaps;
+  localGaps (profile, 0.2, 8, gaps);
+  ASSERT_EQ (gaps.size (), profile.uv.size ());
+  // The median over a point and its 8 nearest: the wider gaps (a quarter) do not count.
   for (std::size_t i = 0; i < sparse_begin; ++i)
-    EXPECT_FLOAT_EQ (thresholds[i], 0.05f) << i;
-  for (std::size_t i = sparse_begin; i < profile.uv.size (); ++i)
-    EXPECT_FLOAT_EQ (thresholds[i], 0.15f) << i;
+    EXPECT_NEAR (gaps[i], 0.01f, 1e-5f) << i;
+  for (std::size_t i = sparse_begin; i + 1 < profile.uv.size (); ++i)
+    EXPECT_NEAR (gaps[i], 0.06f, 1e-5f) << i;
+  EXPECT_EQ (gaps.back (), gaps[20]);  // duplicates share their twin's
+  // Nothing within reach: the maximum.
+  localGaps (profile, 0.005, 8, gaps);
+  for (std::size_t i = 0; i + 1 < profile.uv.size (); ++i)
+    EXPECT_FLOAT_EQ (gaps[i], 0.005f) << i;
 
+  // Thresholds proportional to the local gap (0.05 for the dense chain, 0.3 for the sparse
+  // one, capped at 0.15), as the pipeline makes them.
+  std::vector<float> thresholds (profile.uv.size ());
+  for (std::size_t i = 0; i < thresholds.size (); ++i)
+    thresholds[i] = i < sparse_begin || i + 1 == thresholds.size () ? 0.05f : 0.15f;
   const auto components = [&] (const std::vector<LocalEdge>& edges) {
     std::vector<int> comp (profile.uv.size ());
     for (std::size_t i = 0; i < comp.size (); ++i)
@@ -233,15 +239,15 @@ TEST (ProfileSegmenters, LocalThresholdsFollowTheDensity)
   // chain's does not, so the two stay apart.
   profile.uv.emplace_back (0.47f, 0.f);
   profile.t.push_back (0.f);
-  std::vector<float> with_point = thresholds;
-  with_point.push_back (0.15f);
-  spanningTreeEdges (profile, 0.15, edges, &with_point);
-  EXPECT_EQ (components (edges), 3u);
-  // Without a maximum above the threshold nothing changes.
-  parameters.max_threshold = 0.05;
-  localThresholds (profile, parameters, thresholds);
-  for (const float t : thresholds)
-    EXPECT_FLOAT_EQ (t, 0.05f);
+  thresholds.push_back (0.15f);
+  for (int method = 0; method < 2; ++method)
+  {
+    if (method == 0)
+      proximityEdges (profile, 0.15, 4, edges, &thresholds);
+    else
+      spanningTreeEdges (profile, 0.15, edges, &thresholds);
+    EXPECT_EQ (components (edges), 3u) << "method " << method;
+  }
 }
 
 TEST (CurveFit, AicSelectsTheModel)

@@ -135,16 +135,22 @@ TEST (ProfileSegmentation, CurveFittingSeparatesTouchingCoaxialSurfaces)
 TEST (ProfileSegmentation, DeterministicForAnyThreadCount)
 {
   const LabelledCloud scene = coaxialPipes ();
-  for (const auto method : {Segmentation::ProfileMethod::Proximity,
-                            Segmentation::ProfileMethod::CurveFitting})
+  // The options not in the paper (local thresholds, side frames) with each method as well.
+  for (int run = 0; run < 4; ++run)
   {
+    const auto method = run % 2 ? Segmentation::ProfileMethod::CurveFitting
+                                : Segmentation::ProfileMethod::Proximity;
     std::vector<std::vector<pcl::PointIndices>> results;
     std::vector<std::size_t> edge_counts;
-    for (unsigned int threads : {1u, 2u, 3u})
+    // (Two thread counts for the options: curve fitting with local thresholds is slow here.)
+    for (unsigned int threads : run < 2 ? std::vector<unsigned int>{1u, 2u, 3u}
+                                        : std::vector<unsigned int>{1u, 3u})
     {
       Segmentation seg;
       seg.setInputCloud (scene.cloud);
       seg.setProfileSegmentation (method);
+      seg.setLocalThreshold (run >= 2);
+      seg.setSideFrames (run >= 2);
       seg.setNumberOfThreads (threads);
       std::vector<pcl::PointIndices> clusters;
       seg.extract (clusters);
@@ -381,6 +387,11 @@ TEST (ProfileSegmentation, NonsenseParameters)
     s.setMaxClusterSize (5);
   }));
   EXPECT_TRUE (fails ([] (Segmentation& s) { s.setCurveWindow (-1.0); }));
+  EXPECT_TRUE (fails ([&] (Segmentation& s) { s.setMaxThresholdFactor (nan); }));
+  EXPECT_TRUE (fails ([] (Segmentation& s) { s.setMaxThresholdFactor (0.5); }));
+  EXPECT_TRUE (fails ([] (Segmentation& s) {
+    s.setMaxThresholdFactor (std::numeric_limits<double>::infinity ());
+  }));
   // One stack is valid (documented): profiles cannot join, so segments are profile chains.
   EXPECT_FALSE (fails ([] (Segmentation& s) { s.setNumberOfStacks (1); }));
 }

@@ -159,6 +159,15 @@ main (int argc, char** argv)
   cl.addOption ("voxel", s.voxel, "lccp supervoxel voxel resolution / s");
   cl.addOption ("seed", s.seed, "lccp supervoxel seed resolution / s");
   cl.addOption ("concavity", s.concavity, "lccp concavity tolerance in degrees");
+  cl.addSwitch ("aicc", s.profile_aicc,
+                "profile curve fitting: polynomials chosen by AICc, not the paper's AIC");
+  cl.addOption ("turn_significance", s.profile_turn_significance,
+                "profile curve fitting: a sharp turn must also exceed this many standard errors "
+                "(0: the paper's angle alone)");
+  cl.addSwitch ("side_frames", s.profile_side_frames,
+                "profile curve fitting: each side of a point fitted along its own axis");
+  cl.addSwitch ("local_threshold", s.profile_local_threshold,
+                "profile segmenters: thresholds that follow the local point density");
   cl.addOption ("timeout", timeout, "seconds after which a method is stopped (0: none)");
   cl.addOption ("csv", csv_path, "also write the table to this CSV file");
   cl.addOption ("labels", labels_path,
@@ -190,6 +199,8 @@ main (int argc, char** argv)
     bad = "-angle must be in (0, 90) and -concavity in (0, 180) degrees";
   else if (!positive (s.curvature))
     bad = "-curvature must be positive";
+  else if (!(std::isfinite (s.profile_turn_significance) && s.profile_turn_significance >= 0.0))
+    bad = "-turn_significance must be 0 or positive";
   else if (s.max_planes < 1)
     bad = "-max_planes must be at least 1";
   else if (!(std::isfinite (timeout) && timeout >= 0.0))

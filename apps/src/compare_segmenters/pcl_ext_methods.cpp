@@ -87,6 +87,10 @@ profileRunner (profiles::ProfileMethod method)
     seg.setDistanceThresholdFactor (s.tolerance);
     seg.setProfileSegmentation (method);
     seg.setMinClusterSize (static_cast<pcl::uindex_t> (s.min_size));
+    seg.setCorrectedAic (s.profile_aicc);
+    seg.setTurnSignificance (s.profile_turn_significance);
+    seg.setSideFrames (s.profile_side_frames);
+    seg.setLocalThreshold (s.profile_local_threshold);
     seg.setNumberOfThreads (s.threads);
     seg.extract (clusters);
     return true;

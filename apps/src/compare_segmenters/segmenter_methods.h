@@ -42,6 +42,11 @@ struct SegmenterSettings
   double voxel = 2.0;            ///< SupervoxelClustering voxel resolution / s
   double seed = 8.0;             ///< SupervoxelClustering seed resolution / s
   double concavity = 10.0;       ///< LCCP concavity tolerance (deg)
+  // Profile segmentation options that are not the paper's (all off: the paper).
+  bool profile_aicc = false;             ///< curve fitting: polynomials chosen by AICc
+  double profile_turn_significance = 0;  ///< curve fitting: turns must exceed z standard errors
+  bool profile_side_frames = false;      ///< curve fitting: each side fitted in its own frame
+  bool profile_local_threshold = false;  ///< thresholds that follow the local density
 };
 
 /** \brief One method of the comparison. */

@@ -31,10 +31,10 @@ struct PipelineParameters
   double threshold = 0.0;                ///< proximity threshold (>= 0)
   ProfileMethod method = ProfileMethod::Proximity;
   unsigned int proximity_neighbours = 4;
-  /** \brief Per-point thresholds from the local gaps of each profile (localThresholds), at
-    * least \a threshold and at most \a max_threshold; the curve window scales with them. */
+  /** \brief Per-point thresholds: \a threshold times the point's local gap (localGaps) over
+    * the stack's mean local gap, at least \a threshold and at most \a max_threshold; the
+    * curve window scales with them. */
   bool local_threshold = false;
-  double local_threshold_factor = 4.0;   ///< local threshold / local gap (> 0)
   double max_threshold = 0.0;            ///< >= threshold when local_threshold
   double curve_window = 0.0;             ///< > 0 for CurveFitting
   double tangent_radius = 0.0;           ///< > 0 for CurveFitting

@@ -149,34 +149,31 @@ public:
     * threshold for the whole cloud, as in the paper (section 5.3).
     *
     * Not in the paper, for scans whose density varies (TLS density falls with the square of
-    * the range): the one automatic spacing is set by the dense surfaces near the scanner and
-    * the profiles of far surfaces break into short chains. With this option every point of a
-    * profile gets the threshold max(threshold, factor x local gap), at most the maximum
-    * threshold factor x threshold, where the local gap is the median nearest-neighbour
-    * distance in the profile over the point and its 8 nearest (see profiles::localThresholds);
-    * a link must be within the thresholds of both its ends, and the curve window grows with
-    * the threshold. On the generated \c pipes scene (pipes 7 m and more from the scanners,
-    * spacing 0.049 m against 0.025 m for the whole cloud) the pipes alone, at the whole cloud's
-    * spacing, reach a mean best IoU of 0.69 instead of 0.42 with proximity (0.82 at their own
-    * spacing), and the whole scene with curve fitting for noisy scans at width 2.5x 0.44
-    * instead of 0.34. Not the default: it costs about twice the time of proximity chaining,
-    * joins sparse neighbours closer than the longer threshold (two pipes 0.17 m apart), and
-    * lowers the generated \c coaxial figure of setTurnSignificance from 0.913 to 0.896 and
-    * the tree trunk's from 0.35 to 0.12 (the longer windows straddle creases); on \c cubes
-    * and \c spheres it changes little (0.985 to 0.995, 0.997 to 1.000). */
+    * the range): the one automatic spacing is set by the dense surfaces near the scanners, and
+    * the profiles of far, sparse surfaces break into short chains. With this option the
+    * paper's average spacing is in effect computed per neighbourhood: every point gets the
+    * threshold scaled by the ratio of its local gap (the median nearest-neighbour distance in
+    * its profile over the point and its 8 nearest, profiles::localGaps) to the stack's mean
+    * local gap, never below the threshold nor above the maximum threshold factor times it; a
+    * link must be within the thresholds of both its ends (a sparse point does not reach into
+    * a dense surface), and the curve window grows with the threshold.
+    *
+    * On the generated \c pipes scene (pipes 7 m and more from the scanners, sampled at
+    * 0.049 m, against 0.025 m for the whole cloud) the pipes alone, at the whole cloud's
+    * spacing, reach a mean best IoU of 0.66 instead of 0.42 with proximity (0.82 at their own
+    * spacing); the whole scene with curve fitting for noisy scans at width 2.5x 0.43 instead
+    * of 0.34. Not the default: proximity chaining takes about 2.5 times as long (the gaps
+    * need a nearest-neighbour search in every profile), and on the scenes with creases the
+    * longer windows of the sparse parts straddle them: the \c coaxial figure of
+    * setTurnSignificance falls from 0.913 to 0.892 and the tree trunk's from 0.35 to 0.09. On
+    * \c cubes and \c spheres it changes little (0.985 to 0.998, 0.997 to 1.000). */
   void
   setLocalThreshold (bool local) { local_threshold_ = local; }
   bool
   getLocalThreshold () const { return local_threshold_; }
 
-  /** \brief Local thresholds: the multiple of a point's local gap. Default 4; valid: > 0. */
-  void
-  setLocalThresholdFactor (double factor) { local_threshold_factor_ = factor; }
-  double
-  getLocalThresholdFactor () const { return local_threshold_factor_; }
-
   /** \brief Local thresholds: the longest, as a multiple of the distance threshold. Default
-    * 4; valid: >= 1. */
+    * 4; valid: >= 1 (1: the local thresholds are all the distance threshold). */
   void
   setMaxThresholdFactor (double factor) { max_threshold_factor_ = factor; }
   double
@@ -340,7 +337,6 @@ protected:
   double threshold_factor_ = 3.0;
   double spacing_ = 0.0;
   bool local_threshold_ = false;
-  double local_threshold_factor_ = 4.0;
   double max_threshold_factor_ = 4.0;
   ProfileMethod method_ = ProfileMethod::Proximity;
   unsigned int proximity_k_ = 4;

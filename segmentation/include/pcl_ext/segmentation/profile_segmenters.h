@@ -26,36 +26,27 @@ struct LocalEdge
   std::uint32_t b;
 };
 
-/** \brief Parameters of the local link thresholds (localThresholds). */
-struct LocalThresholdParameters
-{
-  double threshold = 0.0;      ///< the global threshold: no local threshold is shorter
-  double factor = 4.0;         ///< local threshold = factor x the local gap
-  double max_threshold = 0.0;  ///< no local threshold is longer (nor any gap searched farther)
-  unsigned int neighbours = 8; ///< the local gap is the median over this many nearest points
-};
-
-/** \brief Link thresholds that follow the local point density of a profile (not in the
-  * paper, which uses one threshold "slightly larger than the average point spacing").
+/** \brief The local gap of every point of a profile, for link thresholds that follow the
+  * local point density (not in the paper, which uses one threshold "slightly larger than the
+  * average point spacing"; see ProfileSegmentation::setLocalThreshold).
   *
-  * The gap of a point is the distance to its nearest distinct point of the profile. Its local
-  * gap is the median of the gaps of the point and its \a neighbours nearest points (within
-  * the maximum): a stretch of chain sparser than the rest (a surface far from the scanner,
-  * sampled at range x angular step) lengthens it, a single wide gap (a chain's end) does not.
-  * The threshold of the point is factor x local gap, clamped to [threshold, max_threshold]:
-  * where the cloud is as dense as the global spacing says, the paper's threshold holds.
-  * Coincident points share their representative's threshold. Deterministic.
-  * \param[out] thresholds one per point */
+  * The gap of a point is the distance to its nearest distinct point of the profile (at most
+  * \a max_distance, which also bounds the search). The local gap is the median of the gaps of
+  * the point and its \a neighbours nearest points within \a max_distance: a stretch of chain
+  * sparser than the rest (a surface far from the scanner) lengthens it, a single wide gap (a
+  * chain's end, a hole) does not. Coincident points share their representative's value.
+  * Deterministic.
+  * \param[out] gaps one per point */
 void
-localThresholds (const ProfilePoints& profile, const LocalThresholdParameters& parameters,
-                 std::vector<float>& thresholds);
+localGaps (const ProfilePoints& profile, double max_distance, unsigned int neighbours,
+           std::vector<float>& gaps);
 
 /** \brief Proximity chaining (section 4.1.1): every point is linked to its \a neighbours
   * nearest points in the profile plane; links longer than \a threshold are cut.
   *
   * Coincident points are linked to one another first and chain as one point, so duplicates
   * cannot use up the links. Ties are broken by index: deterministic.
-  * \param[in] thresholds optional per-point thresholds (localThresholds) replacing \a
+  * \param[in] thresholds optional per-point thresholds (see localGaps) replacing \a
   * threshold: a link i-j is kept when not longer than the smaller of the two; \a threshold
   * must then be their maximum
   * \param[out] edges without duplicates */
@@ -81,7 +72,7 @@ struct CurveFitParameters
   unsigned int min_side_points = 5;  ///< fewer points on a side: a curve end, not judged
   bool corrected_aic = false;  ///< select by AICc (small-sample AIC) rather than AIC
   /** \brief Optional per-point multipliers of the window and the tangent radius (the local
-    * threshold over the global one, see localThresholds): the fits then span about as many
+    * threshold over the global one, see localGaps): the fits then span about as many
     * points where the profile is sparse as where it is dense. */
   const std::vector<float>* window_scale = nullptr;
   bool side_frames = false;  ///< fit each side along its own principal axis

@@ -43,11 +43,9 @@ ProfileSegmentation<PointT>::prepare (std::vector<Eigen::Vector3f>& xyz)
     PCL_ERROR ("[pcl_ext::%s] Width and threshold factors must be finite and > 0.\n", name);
     return false;
   }
-  if (!(local_threshold_factor_ > 0.0) || !std::isfinite (local_threshold_factor_) ||
-      !(max_threshold_factor_ >= 1.0) || !std::isfinite (max_threshold_factor_))
+  if (!(max_threshold_factor_ >= 1.0) || !std::isfinite (max_threshold_factor_))
   {
-    PCL_ERROR ("[pcl_ext::%s] Need a local threshold factor > 0 and a maximum threshold "
-               "factor >= 1 (finite).\n", name);
+    PCL_ERROR ("[pcl_ext::%s] The maximum threshold factor must be finite and >= 1.\n", name);
     return false;
   }
   if (proximity_k_ == 0 || !(max_turn_ > 0.0) || !(max_turn_ <= M_PI / 2) ||
@@ -152,7 +150,6 @@ ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
   p.method = method_;
   p.proximity_neighbours = proximity_k_;
   p.local_threshold = local_threshold_;
-  p.local_threshold_factor = local_threshold_factor_;
   p.max_threshold = max_threshold_factor_ * used_threshold_;
   p.max_turn = max_turn_;
   p.turn_significance = turn_significance_;
