@@ -269,11 +269,16 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
     // (the sides' curvatures averaged over the whole stretch between the middles).
     const double reach_left = parameters.side_frames ? -xl : 0.5 * (xr - xl);
     const double reach_right = parameters.side_frames ? xr : 0.5 * (xr - xl);
-    const double bend = left.secondDerivativeAt (xl) / (1.0 + sl * sl) * reach_left +
-                        right.secondDerivativeAt (xr) / (1.0 + sr * sr) * reach_right;
+    const double curvature_left = left.secondDerivativeAt (xl) / (1.0 + sl * sl),
+                 curvature_right = right.secondDerivativeAt (xr) / (1.0 + sr * sr);
+    const double bend = parameters.side_frames
+                            ? curvature_left * reach_left + curvature_right * reach_right
+                            : 0.5 * (curvature_left + curvature_right) * (xr - xl);
     // The angles of the two sides' axes from the point's direction.
-    const double offset = std::atan2 (f.dot (axis[1]), e.dot (axis[1])) -
-                          std::atan2 (f.dot (axis[0]), e.dot (axis[0]));
+    const double offset = parameters.side_frames
+                              ? std::atan2 (f.dot (axis[1]), e.dot (axis[1])) -
+                                    std::atan2 (f.dot (axis[0]), e.dot (axis[0]))
+                              : 0.0;
     // Standard error of the turn, to first order in the fitted terms of the two (independent)
     // sides: turn = atan (sr) - atan (sl) - (kl Dl + kr Dr), k = y'' / (1 + y'^2), D the
     // distances above.

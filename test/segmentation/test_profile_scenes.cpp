@@ -176,8 +176,8 @@ TEST (ProfileSegmentationScenes, SideFramesKeepTheTrunkWhole)
   std::vector<std::uint32_t> truth, labels;
   loadScene ("tree", true, cloud, truth, &labels);
   const auto terrain = static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Terrain);
-  const auto trunk = dominantSegment (*cloud, truth, labels,
-                                      static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Trunk), 3.0f);
+  const auto trunk_label = static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Trunk);
+  const auto trunk = dominantSegment (*cloud, truth, labels, trunk_label, 3.0f);
   const auto ground = dominantSegment (*cloud, truth, labels, terrain, 1.0f);
   pcl::IndicesPtr kept (new pcl::Indices);
   std::vector<std::uint32_t> kept_truth (truth.size (), 0);
