@@ -135,22 +135,22 @@ TEST (ProfileSegmentation, CurveFittingSeparatesTouchingCoaxialSurfaces)
 TEST (ProfileSegmentation, DeterministicForAnyThreadCount)
 {
   const LabelledCloud scene = coaxialPipes ();
-  // The options not in the paper (local thresholds, side frames) with each method as well.
-  for (int run = 0; run < 4; ++run)
+  // Then the options not in the paper: local thresholds with proximity and spanning trees,
+  // side frames with curve fitting.
+  for (int run = 0; run < 5; ++run)
   {
-    const auto method = run % 2 ? Segmentation::ProfileMethod::CurveFitting
-                                : Segmentation::ProfileMethod::Proximity;
+    const auto method = run == 3   ? Segmentation::ProfileMethod::MinimumSpanningTree
+                        : run % 2  ? Segmentation::ProfileMethod::CurveFitting
+                                   : Segmentation::ProfileMethod::Proximity;
     std::vector<std::vector<pcl::PointIndices>> results;
     std::vector<std::size_t> edge_counts;
-    // (Two thread counts for the options: curve fitting with local thresholds is slow here.)
-    for (unsigned int threads : run < 2 ? std::vector<unsigned int>{1u, 2u, 3u}
-                                        : std::vector<unsigned int>{1u, 3u})
+    for (unsigned int threads : {1u, 2u, 3u})
     {
       Segmentation seg;
       seg.setInputCloud (scene.cloud);
       seg.setProfileSegmentation (method);
-      seg.setLocalThreshold (run >= 2);
-      seg.setSideFrames (run >= 2);
+      seg.setLocalThreshold (run == 2 || run == 3);
+      seg.setSideFrames (run == 4);
       seg.setNumberOfThreads (threads);
       std::vector<pcl::PointIndices> clusters;
       seg.extract (clusters);
