@@ -65,6 +65,10 @@ namespace pcl_ext
   *   surface level); with both (z = 3) and width 2.5x, 0.91. The curve ends (breakpoints) of
   *   all stacks are removed from the graph before the components are taken, and then rejoin the segment of most of their neighbours: a crease
   *   seen by one stack so also separates the profiles of the stacks that run along it.
+  * - Two more options, off by default (the paper), for what one global spacing and one frame
+  *   per point miss: thresholds that follow the local point density (setLocalThreshold: a
+  *   TLS scan is sparser far from the scanner) and curve fits along each side's own axis
+  *   (setSideFrames: tight smooth bends such as a thin trunk cut obliquely).
   * - Points with non-finite coordinates are never segmented, whatever \c is_dense says.
   * - Segments smaller than the minimum size are dropped (as pcl::RegionGrowing does); the
   *   others are ordered by decreasing size.
