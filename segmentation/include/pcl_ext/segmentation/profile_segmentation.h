@@ -166,7 +166,7 @@ public:
     * 0.049 m, against 0.025 m for the whole cloud) the pipes alone, at the whole cloud's
     * spacing, reach a mean best IoU of 0.66 instead of 0.42 with proximity (0.82 at their own
     * spacing); the whole scene with curve fitting for noisy scans at width 2.5x 0.43 instead
-    * of 0.34. Not the default: proximity chaining takes about 2.5 times as long (the gaps
+    * of 0.34. Not the default: proximity chaining takes 2.5 to 3 times as long (the gaps
     * need a nearest-neighbour search in every profile), and on the scenes with creases the
     * longer windows of the sparse parts straddle them: the \c coaxial figure of
     * setTurnSignificance falls from 0.913 to 0.892 and the tree trunk's from 0.35 to 0.09. On
