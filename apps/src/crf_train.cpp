@@ -9,12 +9,14 @@
 #include <pcl/console/print.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
+#include <sstream>
 
 int
 main (int argc, char** argv)
 {
-  std::string output, classes_file, mode_text = "mcrf";
+  std::string output, classes_file, mode_text = "mcrf", scales_text = "0.5,1,2";
   double sigma = 1.0, noise = 0.0;
   int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200;
   unsigned int threads = 0, seed = 1;
@@ -27,6 +29,8 @@ main (int argc, char** argv)
   cl.addOption ("o", output, "the model file to write (required)");
   cl.addOption ("classes", classes_file, "class file: 'id name : source labels' per line");
   cl.addOption ("mode", mode_text, "node | crf | mcrf (node-only, local CRF, multi-scale CRF)");
+  cl.addOption ("scales", scales_text, "radii (m) of the multi-scale features, ascending, "
+               "comma-separated; 'none': the paper's single-scale features");
   cl.addOption ("sigma", sigma, "sigma of the Gaussian prior on the weights (eq. 9)");
   cl.addOption ("noise", noise, "noise constant sigma of eq. 3 in metres (0: estimate)");
   cl.addOption ("max_k", max_k, "k threshold that stops the super-voxel radius growing");
@@ -101,6 +105,22 @@ main (int argc, char** argv)
   auto& s = model.settings ();
   s.mode = mode;
   s.sigma = sigma;
+  s.features.scales.clear ();
+  if (scales_text != "none")
+  {
+    std::istringstream in (scales_text);
+    for (std::string item; std::getline (in, item, ',');)
+    {
+      char* end = nullptr;
+      const float r = std::strtof (item.c_str (), &end);
+      if (item.empty () || *end != '\0')
+      {
+        std::cerr << "pcl_ext_crf_train: -scales takes radii separated by commas, or none\n";
+        return 1;
+      }
+      s.features.scales.push_back (r);
+    }
+  }
   s.supervoxels.radius.noise = noise;
   s.supervoxels.radius.max_k = max_k;
   s.supervoxels.adjacency = regional_edges;

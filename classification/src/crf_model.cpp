@@ -59,6 +59,8 @@ checkCrfSettings (const CrfSettings& s, const char* caller)
            || s.features.ground_reach < 0 || !s.features.up.allFinite ()
            || s.features.up.norm () == 0.f)
     bad = "the ground grid needs a positive cell, a reach >= 0 and a non-zero up axis";
+  else if (!validFeatureScales (s.features.scales))
+    bad = "the feature scales must be positive, finite and ascending";
   if (bad)
   {
     PCL_ERROR ("[pcl_ext::%s] Invalid CRF settings: %s.\n", caller, bad);

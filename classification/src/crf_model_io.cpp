@@ -20,7 +20,7 @@ namespace pcl_ext
 namespace
 {
 constexpr const char* kMagic = "pcl_ext_crf_model";
-constexpr int kVersion = 2;
+constexpr int kVersion = 3;
 
 std::string
 num (double v)
@@ -91,6 +91,9 @@ public:
 
   const std::string&
   word (std::size_t i) const { return words_[i]; }
+
+  std::size_t
+  size () const { return words_.size (); }
 
   bool
   fail (const std::string& message)
@@ -174,6 +177,10 @@ MultiscaleCrfModel::toText () const
   out << "ground " << num (s.features.up.x ()) << ' ' << num (s.features.up.y ()) << ' '
       << num (s.features.up.z ()) << ' ' << num (s.features.ground_cell) << ' '
       << s.features.ground_reach << '\n';
+  out << "feature_scales " << s.features.scales.size ();
+  for (const float r : s.features.scales)
+    out << ' ' << num (r);
+  out << '\n';
   out << "prior_sigma " << num (s.sigma) << '\n';
   out << "belief_propagation " << num (s.bp_damping) << ' ' << s.bp_iterations << ' '
       << num (s.bp_tolerance) << '\n';
@@ -282,6 +289,24 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
     s.features.ground_cell = static_cast<float> (v[3]);
     if (!rd.integer (5, s.features.ground_reach, 0, 1 << 20))
       return false;
+    std::size_t num_scales = 0;
+    if (!rd.next ("feature_scales"))
+      return false;
+    if (rd.size () < 2 || rd.word (0) != "feature_scales")
+      return rd.fail ("expected 'feature_scales N r1 .. rN'");
+    if (!rd.integer (1, num_scales, 0, 64)
+        || !rd.expect ("feature_scales", num_scales + 1))
+      return false;
+    s.features.scales.clear ();
+    for (std::size_t k = 0; k < num_scales; ++k)
+    {
+      double scale = 0.0;
+      if (!rd.number (k + 2, scale))
+        return false;
+      s.features.scales.push_back (static_cast<float> (scale));
+    }
+    if (!validFeatureScales (s.features.scales))
+      return rd.fail ("feature scales must be positive, finite and ascending");
     if (!rd.next ("prior_sigma") || !rd.expect ("prior_sigma", 1) || !rd.number (1, s.sigma))
       return false;
     if (!rd.next ("belief_propagation") || !rd.expect ("belief_propagation", 3)

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace pcl_ext
@@ -17,7 +18,57 @@ namespace
 {
 constexpr double kTiny = 1e-12;
 constexpr std::size_t kMinRegion = 5;
+const char* const kScaleFeatures[] = {"clutterness", "surfaceness", "curveness", "linearity",
+                                      "planarity", "scattering", "normal_angle", "tangent_angle",
+                                      "log_density", "top_above", "bottom_below"};
+constexpr std::size_t kNumScaleFeatures = sizeof (kScaleFeatures) / sizeof (kScaleFeatures[0]);
+
+/** Eq. 12, the dimensionality features and the angles of the eigen-decomposition of the
+  * points \a nn over radius \a r, into out(0 .. 7). */
+template <typename Row> void
+eigenFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::Indices& nn, double r,
+               const Eigen::Vector3d& up, Row&& out)
+{
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
+  Eigen::Vector3d centroid;
+  EigenDecomposition eig;
+  computeLocalCovariance (cloud, nn, cov, centroid);
+  computeEigenDecomposition (cov, eig);
+  const Eigen::Vector3d& l = eig.values;
+  out (0) = static_cast<float> (std::log (std::max (l (0), kTiny)));
+  out (1) = static_cast<float> (std::log (std::max (l (1) / r - l (0), kTiny)));
+  out (2) = static_cast<float> (std::log (std::max (l (2) / r - l (1) / r, kTiny)));
+  const double l3 = std::max (l (2), kTiny);
+  out (3) = static_cast<float> (std::max (0.0, l (2) - l (1)) / l3);
+  out (4) = static_cast<float> (std::max (0.0, l (1) - l (0)) / l3);
+  out (5) = static_cast<float> (std::max (0.0, l (0)) / l3);
+  out (6) = static_cast<float> (std::acos (std::min (1.0, std::abs (eig.vectors.col (0).dot (up)))));
+  out (7) = static_cast<float> (std::acos (std::min (1.0, std::abs (eig.vectors.col (2).dot (up)))));
+}
 }  // namespace
+
+std::vector<float>
+defaultFeatureScales ()
+{
+  return {0.5f, 1.f, 2.f};
+}
+
+std::string
+featureScaleSuffix (float radius)
+{
+  char buf[32];
+  std::snprintf (buf, sizeof (buf), "@%g", static_cast<double> (radius));
+  return buf;
+}
+
+bool
+validFeatureScales (const std::vector<float>& scales)
+{
+  for (std::size_t k = 0; k < scales.size (); ++k)
+    if (!(scales[k] > 0.f) || !std::isfinite (scales[k]) || (k > 0 && !(scales[k] > scales[k - 1])))
+      return false;
+  return true;
+}
 
 void
 LocalGround::build (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Vector3f& up,
@@ -98,6 +149,9 @@ saliencyFeatureNames (const SaliencyFeatureOptions& options)
     names.insert (names.end (), {"red", "green", "blue"});
   if (options.intensity)
     names.emplace_back ("intensity");
+  for (const float r : options.scales)
+    for (const char* name : kScaleFeatures)
+      names.push_back (name + featureScaleSuffix (r));
   return names;
 }
 
@@ -120,6 +174,8 @@ computeSaliencyFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
     bad = "intensity features need one intensity per point";
   else if (tree.size () == 0)
     bad = "the search tree is empty";
+  else if (!validFeatureScales (options.scales))
+    bad = "feature scales must be positive, finite and ascending";
   if (bad)
   {
     PCL_ERROR ("[pcl_ext::computeSaliencyFeatures] %s.\n", bad);
@@ -131,8 +187,8 @@ computeSaliencyFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
   const int nthreads = static_cast<int> (resolveThreadCount (threads));
 #pragma omp parallel num_threads(nthreads)
   {
-    pcl::Indices nn;
-    std::vector<float> d2;
+    pcl::Indices nn, wide, at;
+    std::vector<float> d2, wide_d2;
 #pragma omp for schedule(dynamic, 64)
     for (std::ptrdiff_t row = 0; row < static_cast<std::ptrdiff_t> (centres.size ()); ++row)
     {
@@ -177,6 +233,41 @@ computeSaliencyFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
         for (const auto i : nn)
           sum += intensity[static_cast<std::size_t> (i)];
         out (col) = static_cast<float> (sum / std::max<std::size_t> (1, nn.size ()));
+        ++col;
+      }
+      if (options.scales.empty ())
+        continue;
+      // One search at the largest radius; the smaller ones are its subsets.
+      const Eigen::Vector3f pv = p.getVector3fMap ();
+      tree.radiusSearch (p.data, options.scales.back (), wide, wide_d2);
+      for (const float R : options.scales)
+      {
+        at.clear ();
+        const float R2 = R * R;
+        for (std::size_t k = 0; k < wide.size (); ++k)
+          if (wide_d2[k] <= R2)
+            at.push_back (wide[k]);
+        const double density = static_cast<double> (at.size ());
+        if (at.size () < kMinRegion)
+        {
+          const std::size_t k = std::min (kMinRegion, tree.size ());
+          at.resize (k);
+          std::vector<float> kd2 (k);
+          at.resize (tree.nearestKSearch (p.data, k, at.data (), kd2.data ()));
+        }
+        eigenFeatures (cloud, at, R, up.cast<double> (), out.segment<8> (col));
+        float top = 0.f, bottom = 0.f;
+        const float h = pv.dot (up);
+        for (const auto i : at)
+        {
+          const float hi = cloud[static_cast<std::size_t> (i)].getVector3fMap ().dot (up);
+          top = std::max (top, hi - h);
+          bottom = std::max (bottom, h - hi);
+        }
+        out (col + 8) = static_cast<float> (std::log (std::max (density, 1.0)));
+        out (col + 9) = top;
+        out (col + 10) = bottom;
+        col += static_cast<Eigen::Index> (kNumScaleFeatures);
       }
     }
   }

@@ -160,10 +160,11 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
     EXPECT_NE (at, std::string::npos) << from;
     return at == std::string::npos ? t : t.replace (at, from.size (), to);
   };
+  const std::string cols = std::to_string (trained (CrfMode::MultiscaleCrf).getFeatureNames ().size () + 1);
   const std::vector<std::pair<const char*, std::string>> cases = {
       {"empty", ""},
       {"not a model", "hello world\n"},
-      {"other version", replaced ("pcl_ext_crf_model 2", "pcl_ext_crf_model 1")},
+      {"other version", replaced ("pcl_ext_crf_model 3", "pcl_ext_crf_model 2")},
       {"unknown mode", replaced ("mode mcrf", "mode best")},
       {"truncated", good.substr (0, good.size () / 2)},
       {"no end", replaced ("end\n", "")},
@@ -172,7 +173,14 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
       {"other feature set", replaced ("feature clutterness", "feature spin_image")},
       {"too few classes", replaced ("classes 5", "classes 4")},
       {"wrong matrix size", replaced ("weights local_edge 5", "weights local_edge 4")},
-      {"NaN weight", replaced ("weights regional_edge 5 12\n", "weights regional_edge 5 12\nnan ")},
+      {"NaN weight", replaced ("weights regional_edge 5 " + cols + "\n",
+                               "weights regional_edge 5 " + cols + "\nnan ")},
+      // The feature set follows the scales: features of other radii, or none, are refused.
+      {"other feature scales", replaced ("feature_scales 3 0.5 1 2", "feature_scales 3 0.5 1 3")},
+      {"single-scale header", replaced ("feature_scales 3 0.5 1 2", "feature_scales 0")},
+      {"descending scales", replaced ("feature_scales 3 0.5 1 2", "feature_scales 3 2 1 0.5")},
+      {"scale count", replaced ("feature_scales 3 0.5 1 2", "feature_scales 2 0.5 1 2")},
+      {"no scales line", replaced ("feature_scales 3 0.5 1 2\n", "")},
       {"no edge scale", replaced ("edge_scale ", "edge_scales ")},
       {"negative edge scale", replaced ("edge_scale ", "edge_scale -")},
   };

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 using pcl_ext::SaliencyFeatureEstimation;
@@ -154,5 +156,62 @@ TEST (SaliencyFeatures, BadInputGivesEmptyOutput)
   mismatch.setInputCloud (cloud);
   mismatch.setRadii ({0.1f, 0.2f});  // two radii, all points indexed
   mismatch.compute (f);
+  EXPECT_EQ (f.size (), 0);
+}
+
+TEST (SaliencyFeatures, MultiScaleFeaturesTellPolesWiresAndGround)
+{
+  // A 1 cm-spaced vertical pole 4 m tall, a horizontal wire 6 m above the ground, and a
+  // 5 cm-spaced ground plane under both, far enough from each other for the 2 m scale.
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  for (int x = 0; x < 400; ++x)
+    for (int y = 0; y < 200; ++y)
+      cloud->push_back (pcl::PointXYZ (x * 0.05f, y * 0.05f, 0.f));
+  const pcl::index_t ground = 100 * 200 + 100;  // (5, 5, 0)
+  const pcl::index_t pole = static_cast<pcl::index_t> (cloud->size ()) + 200;  // (5, 2, 2)
+  for (int z = 1; z <= 400; ++z)
+    cloud->push_back (pcl::PointXYZ (5.f, 2.f, z * 0.01f));
+  const pcl::index_t wire = static_cast<pcl::index_t> (cloud->size ()) + 500;  // (15, 7.5, 6)
+  for (int x = 0; x <= 1000; ++x)
+    cloud->push_back (pcl::PointXYZ (10.f + x * 0.01f, 7.5f, 6.f));
+  SaliencyFeatureEstimation<pcl::PointXYZ> est;
+  est.setInputCloud (cloud);
+  est.setIndices (pcl::make_shared<pcl::Indices> (pcl::Indices {ground, pole, wire}));
+  est.setRadius (0.3f);
+  est.setFeatureScales (pcl_ext::defaultFeatureScales ());
+  Eigen::MatrixXf f;
+  est.compute (f);
+  const auto& names = est.getFeatureNames ();
+  ASSERT_EQ (f.rows (), 3);
+  ASSERT_EQ (f.cols (), static_cast<Eigen::Index> (names.size ()));
+  ASSERT_EQ (names.size (), 7u + 3u * 11u);
+  auto col = [&] (const std::string& name) {
+    const auto it = std::find (names.begin (), names.end (), name);
+    EXPECT_NE (it, names.end ()) << name;
+    return it - names.begin ();
+  };
+  for (const char* s : {"@0.5", "@1", "@2"})
+  {
+    const std::string at = s;
+    EXPECT_NEAR (f (0, col ("planarity" + at)), 1.f, 0.02f) << at;
+    EXPECT_NEAR (f (0, col ("normal_angle" + at)), 0.f, 0.01f) << at;
+    EXPECT_NEAR (f (0, col ("top_above" + at)), 0.f, 1e-5f) << at;
+    EXPECT_NEAR (f (1, col ("linearity" + at)), 1.f, 0.02f) << at;
+    EXPECT_NEAR (f (1, col ("tangent_angle" + at)), 0.f, 0.01f) << at;  // vertical
+    EXPECT_NEAR (f (2, col ("linearity" + at)), 1.f, 1e-3f) << at;
+    EXPECT_NEAR (f (2, col ("tangent_angle" + at)), M_PI / 2, 0.01f) << at;  // horizontal
+    // A wire has nothing above or below it; the pole's middle sees its own points both ways.
+    EXPECT_NEAR (f (2, col ("top_above" + at)), 0.f, 1e-5f) << at;
+    EXPECT_NEAR (f (2, col ("bottom_below" + at)), 0.f, 1e-5f) << at;
+  }
+  // Within 0.5 m and 1 m the pole centre (2 m up) sees only the pole; at 2 m it reaches the
+  // ground, and its extent both ways is the radius.
+  EXPECT_NEAR (f (1, col ("top_above@1")), 1.f, 0.011f);
+  EXPECT_NEAR (f (1, col ("bottom_below@2")), 2.f, 0.011f);
+  // The density is the count within R: 101 wire points within 0.5 m at 1 cm.
+  EXPECT_NEAR (f (2, col ("log_density@0.5")), std::log (101.f), 0.02f);
+  // Scales not ascending are refused.
+  est.setFeatureScales ({1.f, 0.5f});
+  est.compute (f);
   EXPECT_EQ (f.size (), 0);
 }

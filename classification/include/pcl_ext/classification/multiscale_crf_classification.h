@@ -78,6 +78,15 @@ public:
   void
   setSeed (std::uint64_t seed) { model_.settings ().supervoxels.seed = seed; }
 
+  /** \brief Fixed radii (m, ascending, > 0) of the multi-scale features (pcl_ext addition,
+    * see computeSaliencyFeatures). Default defaultFeatureScales(): 0.5, 1 and 2 m; empty: the
+    * paper's single-scale feature set. Takes effect at train(); a loaded model brings its own. */
+  void
+  setFeatureScales (const std::vector<float>& radii) { model_.settings ().features.scales = radii; }
+
+  const std::vector<float>&
+  getFeatureScales () const { return model_.settings ().features.scales; }
+
   /** \brief The scanner's up axis (eq. 10 and height). Default (0, 0, 1). */
   void
   setUpAxis (const Eigen::Vector3f& up) { model_.settings ().features.up = up; }

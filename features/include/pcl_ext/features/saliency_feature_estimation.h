@@ -23,8 +23,8 @@ namespace pcl_ext
   * getFeatureNames() names the columns.
   *
   * Errors (PCL_ERROR, empty output): empty cloud, no finite point, a radius that is not
-  * positive and finite, radii not matching the indices, an index out of range, a non-finite
-  * indexed point.
+  * positive and finite, feature scales that are not positive, finite and ascending, radii
+  * not matching the indices, an index out of range, a non-finite indexed point.
   */
 template <typename PointT>
 class SaliencyFeatureEstimation : public pcl::PCLBase<PointT>
@@ -56,6 +56,15 @@ public:
   /** \brief Local ground grid: cell (m, default 1, > 0) and reach (cells, default 3, >= 0). */
   void
   setGroundGrid (float cell, int reach) { options_.ground_cell = cell; options_.ground_reach = reach; }
+
+  /** \brief Fixed radii (m, ascending, > 0) at which the multi-scale features are added (see
+    * computeSaliencyFeatures; defaultFeatureScales() gives 0.5, 1, 2 m). Default empty: the
+    * paper's single-scale set. */
+  void
+  setFeatureScales (const std::vector<float>& radii) { options_.scales = radii; }
+
+  const std::vector<float>&
+  getFeatureScales () const { return options_.scales; }
 
   void
   setNumberOfThreads (unsigned int threads) { threads_ = threads; }

@@ -52,11 +52,30 @@ struct SaliencyFeatureOptions
   bool intensity = false;  ///< intensity (needs intensity)
   float ground_cell = 1.f; ///< LocalGround cell (m)
   int ground_reach = 3;    ///< LocalGround cells on each side
+  /** Fixed neighbourhood radii (m) of the multi-scale features, ascending, each > 0; empty:
+    * the single-scale set (the paper's features at the region's own radius only). */
+  std::vector<float> scales;
 };
+
+/** \brief Feature radii (m) of the multi-scale set (pcl_ext addition): 0.5, 1 and 2 m, about
+  * a pole's or a wire's width, a trunk's crown and a facade bay on street scans. */
+std::vector<float>
+defaultFeatureScales ();
+
+/** \brief The name suffix of the features at one fixed radius: "@" and the radius ("%g"). */
+std::string
+featureScaleSuffix (float radius);
+
+/** \brief Checks that \a scales are positive, finite and strictly ascending. */
+bool
+validFeatureScales (const std::vector<float>& scales);
 
 /** \brief Column names of the feature vectors for \a options, in order:
   * clutterness, surfaceness, curveness (eq. 12), normal_angle (eq. 10), tangent_angle,
-  * height, log_radius, then red green blue and intensity when asked for. */
+  * height, log_radius, then red green blue and intensity when asked for, then for each fixed
+  * radius R of options.scales the eleven multi-scale features named with the suffix "@R":
+  * clutterness, surfaceness, curveness, linearity, planarity, scattering, normal_angle,
+  * tangent_angle, log_density, top_above, bottom_below. */
 std::vector<std::string>
 saliencyFeatureNames (const SaliencyFeatureOptions& options);
 
@@ -71,6 +90,16 @@ saliencyFeatureNames (const SaliencyFeatureOptions& options);
   * height above LocalGround; log_radius = log r (pcl_ext addition: the super-voxel size is
   * itself telling, large on flat ground); colour and intensity are neighbourhood means.
   * Regions of fewer than 5 points use the 5 nearest points instead.
+  *
+  * Multi-scale features (pcl_ext addition, after the multi-scale eigen features of Weinmann
+  * et al. and CGAL's Classification): for each fixed radius R, over the points within R of the
+  * centre: eq. 12 with r = R; the dimensionality features linearity = (l3 - l2) / l3,
+  * planarity = (l2 - l1) / l3, scattering = l1 / l3, which do not depend on the point density
+  * as the logs of eq. 12 do; the normal and tangent angles at R; log_density = log of the
+  * number of points within R; top_above and bottom_below, the height of the highest
+  * neighbour above the centre and of the centre above the lowest (a wire has nothing under it
+  * within R, a pole has its own points above and below). A single region radius cannot see a
+  * pole's length or a wire's isolation: the super-voxels of thin structures are small.
   *
   * \param[in] tree a KdTree3f over the finite points of \a cloud (point indices as given)
   * \param[in] colours normalised RGB per point (empty unless options.colour)
