@@ -16,7 +16,7 @@
 int
 main (int argc, char** argv)
 {
-  std::string output, classes_file, mode_text = "mcrf", scales_text = "0.5,1,2";
+  std::string output, classes_file, mode_text = "mcrf", scales_text = "none";
   double sigma = 1.0, noise = 0.0;
   int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200;
   unsigned int threads = 0, seed = 1;
@@ -30,7 +30,7 @@ main (int argc, char** argv)
   cl.addOption ("classes", classes_file, "class file: 'id name : source labels' per line");
   cl.addOption ("mode", mode_text, "node | crf | mcrf (node-only, local CRF, multi-scale CRF)");
   cl.addOption ("scales", scales_text, "radii (m) of the multi-scale features, ascending, "
-               "comma-separated; 'none': the paper's single-scale features");
+               "comma-separated, e.g. 0.5,1,2; 'none': the paper's single-scale features");
   cl.addOption ("sigma", sigma, "sigma of the Gaussian prior on the weights (eq. 9)");
   cl.addOption ("noise", noise, "noise constant sigma of eq. 3 in metres (0: estimate)");
   cl.addOption ("max_k", max_k, "k threshold that stops the super-voxel radius growing");

@@ -175,12 +175,11 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
       {"wrong matrix size", replaced ("weights local_edge 5", "weights local_edge 4")},
       {"NaN weight", replaced ("weights regional_edge 5 " + cols + "\n",
                                "weights regional_edge 5 " + cols + "\nnan ")},
-      // The feature set follows the scales: features of other radii, or none, are refused.
-      {"other feature scales", replaced ("feature_scales 3 0.5 1 2", "feature_scales 3 0.5 1 3")},
-      {"single-scale header", replaced ("feature_scales 3 0.5 1 2", "feature_scales 0")},
-      {"descending scales", replaced ("feature_scales 3 0.5 1 2", "feature_scales 3 2 1 0.5")},
-      {"scale count", replaced ("feature_scales 3 0.5 1 2", "feature_scales 2 0.5 1 2")},
-      {"no scales line", replaced ("feature_scales 3 0.5 1 2\n", "")},
+      // The feature set follows the scales: a single-scale model claiming scales is refused.
+      {"other feature scales", replaced ("feature_scales 0", "feature_scales 1 0.5")},
+      {"negative scale", replaced ("feature_scales 0", "feature_scales 1 -1")},
+      {"scale count", replaced ("feature_scales 0", "feature_scales 1")},
+      {"no scales line", replaced ("feature_scales 0\n", "")},
       {"no edge scale", replaced ("edge_scale ", "edge_scales ")},
       {"negative edge scale", replaced ("edge_scale ", "edge_scale -")},
   };
