@@ -16,9 +16,10 @@
 int
 main (int argc, char** argv)
 {
-  std::string output, classes_file, mode_text = "mcrf", scales_text = "none";
+  std::string output, classes_file, mode_text = "mcrf", scales_text = "none",
+              expansion_text = "linear";
   double sigma = 1.0, noise = 0.0;
-  int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200;
+  int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200, knots = 4;
   unsigned int threads = 0, seed = 1;
   bool no_balance = false;
   pcl_ext::tools::CommandLine cl (
@@ -31,6 +32,10 @@ main (int argc, char** argv)
   cl.addOption ("mode", mode_text, "node | crf | mcrf (node-only, local CRF, multi-scale CRF)");
   cl.addOption ("scales", scales_text, "radii (m) of the multi-scale features, ascending, "
                "comma-separated, e.g. 0.5,1,2; 'none': the paper's single-scale features");
+  cl.addOption ("expansion", expansion_text, "inputs of the node model: linear (the paper's), "
+               "spline (piecewise-linear in each feature) or spline_products (and products of "
+               "feature pairs)");
+  cl.addOption ("knots", knots, "hinges per feature of the spline expansions");
   cl.addOption ("sigma", sigma, "sigma of the Gaussian prior on the weights (eq. 9)");
   cl.addOption ("noise", noise, "noise constant sigma of eq. 3 in metres (0: estimate)");
   cl.addOption ("max_k", max_k, "k threshold that stops the super-voxel radius growing");
@@ -59,10 +64,13 @@ main (int argc, char** argv)
   if (const int code = cl.parse (static_cast<int> (args.size ()), args.data ()); code >= 0)
     return code;
   pcl_ext::CrfMode mode;
-  if (output.empty () || inputs.empty () || !pcl_ext::parseCrfMode (mode_text, mode))
+  pcl_ext::CrfNodeExpansion expansion;
+  if (output.empty () || inputs.empty () || !pcl_ext::parseCrfMode (mode_text, mode)
+      || !pcl_ext::parseCrfNodeExpansion (expansion_text, expansion))
   {
-    std::cerr << "pcl_ext_crf_train: need -o model.txt, at least one training cloud and a mode "
-                 "among node, crf, mcrf (see -h)\n";
+    std::cerr << "pcl_ext_crf_train: need -o model.txt, at least one training cloud, a mode "
+                 "among node, crf, mcrf and an expansion among linear, spline, spline_products "
+                 "(see -h)\n";
     return 1;
   }
   if (!pcl_ext::tools::checkWritable (output))
@@ -105,6 +113,8 @@ main (int argc, char** argv)
   auto& s = model.settings ();
   s.mode = mode;
   s.sigma = sigma;
+  s.node_expansion = expansion;
+  s.spline_knots = knots;
   s.features.scales.clear ();
   if (scales_text != "none")
   {

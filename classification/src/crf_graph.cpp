@@ -149,30 +149,94 @@ finishGraph (const Eigen::MatrixXf& raw, const Eigen::VectorXd& mean,
   }
 }
 
+std::vector<std::vector<double>>
+fitKnots (const Eigen::MatrixXf& z, CrfNodeExpansion expansion, int knots)
+{
+  std::vector<std::vector<double>> out (static_cast<std::size_t> (z.cols ()));
+  if (expansion == CrfNodeExpansion::Linear || z.rows () == 0)
+    return out;
+  std::vector<float> v (static_cast<std::size_t> (z.rows ()));
+  for (Eigen::Index d = 0; d < z.cols (); ++d)
+  {
+    for (Eigen::Index n = 0; n < z.rows (); ++n)
+      v[static_cast<std::size_t> (n)] = z (n, d);
+    std::sort (v.begin (), v.end ());
+    auto& t = out[static_cast<std::size_t> (d)];
+    for (int k = 1; k <= knots; ++k)
+    {
+      const double q = static_cast<double> (k) / (knots + 1);
+      const double x = v[static_cast<std::size_t> (q * (v.size () - 1) + 0.5)];
+      // Knots at a (clamped) extreme, or repeated where a feature takes few values, would add
+      // inputs that are zero or copies of another.
+      if (x > v.front () && x < v.back () && (t.empty () || x > t.back () + 1e-6))
+        t.push_back (x);
+    }
+  }
+  return out;
+}
+
+std::size_t
+expandedSize (std::size_t dims, CrfNodeExpansion expansion,
+              const std::vector<std::vector<double>>& knots)
+{
+  std::size_t n = dims;
+  if (expansion != CrfNodeExpansion::Linear)
+    for (const auto& t : knots)
+      n += t.size ();
+  if (expansion == CrfNodeExpansion::SplineProducts)
+    n += dims * (dims - 1) / 2;
+  return n;
+}
+
+void
+expandFeatures (CrfNodeExpansion expansion, const std::vector<std::vector<double>>& knots,
+                Graph& graph)
+{
+  const Eigen::Index D = graph.z.cols ();
+  const Eigen::Index Dn = static_cast<Eigen::Index> (
+      expandedSize (static_cast<std::size_t> (D), expansion, knots));
+  graph.phi.resize (graph.z.rows (), Dn);
+  for (Eigen::Index n = 0; n < graph.z.rows (); ++n)
+  {
+    const auto z = graph.z.row (n);
+    auto out = graph.phi.row (n);
+    out.head (D) = z;
+    Eigen::Index col = D;
+    if (expansion != CrfNodeExpansion::Linear)
+      for (Eigen::Index d = 0; d < D; ++d)
+        for (const double t : knots[static_cast<std::size_t> (d)])
+          out (col++) = std::max (0.f, z (d) - static_cast<float> (t));
+    if (expansion == CrfNodeExpansion::SplineProducts)
+      for (Eigen::Index a = 0; a < D; ++a)
+        for (Eigen::Index b = a + 1; b < D; ++b)
+          out (col++) = z (a) * z (b);
+  }
+}
+
 Eigen::VectorXd
 packWeights (const MultiscaleCrfModel::Weights& w)
 {
-  const Eigen::Index block = w.node_s.size ();
-  Eigen::VectorXd theta (4 * block);
-  theta.segment (0, block) = Eigen::Map<const Eigen::VectorXd> (w.node_s.data (), block);
-  theta.segment (block, block) = Eigen::Map<const Eigen::VectorXd> (w.node_x.data (), block);
-  theta.segment (2 * block, block) = Eigen::Map<const Eigen::VectorXd> (w.local_edge.data (), block);
-  theta.segment (3 * block, block) =
-      Eigen::Map<const Eigen::VectorXd> (w.regional_edge.data (), block);
+  const Eigen::Index nb = w.node_s.size (), eb = w.local_edge.size ();
+  Eigen::VectorXd theta (2 * nb + 2 * eb);
+  theta.segment (0, nb) = Eigen::Map<const Eigen::VectorXd> (w.node_s.data (), nb);
+  theta.segment (nb, nb) = Eigen::Map<const Eigen::VectorXd> (w.node_x.data (), nb);
+  theta.segment (2 * nb, eb) = Eigen::Map<const Eigen::VectorXd> (w.local_edge.data (), eb);
+  theta.segment (2 * nb + eb, eb) = Eigen::Map<const Eigen::VectorXd> (w.regional_edge.data (), eb);
   return theta;
 }
 
 void
-unpackWeights (const Eigen::VectorXd& theta, std::size_t classes, std::size_t dims,
-               MultiscaleCrfModel::Weights& w)
+unpackWeights (const Eigen::VectorXd& theta, std::size_t classes, std::size_t node_dims,
+               std::size_t edge_dims, MultiscaleCrfModel::Weights& w)
 {
   const Eigen::Index C = static_cast<Eigen::Index> (classes);
-  const Eigen::Index D1 = static_cast<Eigen::Index> (dims) + 1;
-  const Eigen::Index block = C * D1;
-  w.node_s = Eigen::Map<const Eigen::MatrixXd> (theta.data (), C, D1);
-  w.node_x = Eigen::Map<const Eigen::MatrixXd> (theta.data () + block, C, D1);
-  w.local_edge = Eigen::Map<const Eigen::MatrixXd> (theta.data () + 2 * block, C, D1);
-  w.regional_edge = Eigen::Map<const Eigen::MatrixXd> (theta.data () + 3 * block, C, D1);
+  const Eigen::Index N1 = static_cast<Eigen::Index> (node_dims) + 1;
+  const Eigen::Index E1 = static_cast<Eigen::Index> (edge_dims) + 1;
+  const Eigen::Index nb = C * N1, eb = C * E1;
+  w.node_s = Eigen::Map<const Eigen::MatrixXd> (theta.data (), C, N1);
+  w.node_x = Eigen::Map<const Eigen::MatrixXd> (theta.data () + nb, C, N1);
+  w.local_edge = Eigen::Map<const Eigen::MatrixXd> (theta.data () + 2 * nb, C, E1);
+  w.regional_edge = Eigen::Map<const Eigen::MatrixXd> (theta.data () + 2 * nb + eb, C, E1);
 }
 }  // namespace crf
 }  // namespace pcl_ext

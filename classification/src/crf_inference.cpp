@@ -44,8 +44,8 @@ beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
   for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n)
   {
     const Eigen::MatrixXd& W = static_cast<std::size_t> (n) < graph.num_supervoxels ? w.node_s : w.node_x;
-    const Eigen::VectorXd z = graph.z.row (n).transpose ().cast<double> ();
-    unary.col (n) = W.col (0) + W.rightCols (D) * z;
+    const Eigen::VectorXd x = graph.phi.row (n).transpose ().cast<double> ();
+    unary.col (n) = W.col (0) + W.rightCols (graph.phi.cols ()) * x;
   }
 #pragma omp parallel for num_threads(threads) schedule(static)
   for (std::ptrdiff_t e = 0; e < static_cast<std::ptrdiff_t> (E); ++e)

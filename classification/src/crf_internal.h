@@ -14,11 +14,14 @@
 
 namespace pcl_ext
 {
-/** Standardisation and the four weight blocks, each C x (D + 1) (column 0: the bias). */
+/** Standardisation, the node expansion and the four weight blocks (column 0: the bias): the
+  * node blocks C x (Dn + 1) over the expanded features, the edge blocks C x (D + 1). */
 struct MultiscaleCrfModel::Weights
 {
   std::vector<std::string> feature_names;
   Eigen::VectorXd mean, scale;  // z = clamp((f - mean) / scale, -kClamp, kClamp)
+  CrfNodeExpansion expansion = CrfNodeExpansion::Linear;
+  std::vector<std::vector<double>> knots;  // per feature, ascending (spline expansions only)
   Eigen::MatrixXd node_s, node_x, local_edge, regional_edge;
   double edge_scale = 1.0;  // beta: the log edge potentials are multiplied by it (stage 3)
 };
@@ -51,7 +54,8 @@ edgeFeature (float a, float b)
 struct Graph
 {
   std::size_t num_supervoxels = 0;
-  Eigen::MatrixXf z;                      // one standardised feature row per node
+  Eigen::MatrixXf z;                      // one standardised feature row per node (edges)
+  Eigen::MatrixXf phi;                    // its expansion (CrfNodeExpansion), the node inputs
   std::vector<pcl::index_t> node_point;   // the point each node describes
   std::vector<std::uint32_t> edge_a, edge_b;
   std::vector<char> edge_regional;        // 1: regional (eq. 7), 0: local (eq. 6)
@@ -77,13 +81,30 @@ void
 finishGraph (const Eigen::MatrixXf& raw, const Eigen::VectorXd& mean,
              const Eigen::VectorXd& scale, Graph& graph);
 
-/** Parameter vector layout: [node_s, node_x, local_edge, regional_edge], each C x (D+1). */
+/** The knots of the spline expansions: per feature (column of \a z), the K quantiles
+  * k / (K + 1) of its values, without repeats and without the column's extremes (a hinge there
+  * is zero or linear everywhere). Empty lists for the linear expansion. */
+std::vector<std::vector<double>>
+fitKnots (const Eigen::MatrixXf& z, CrfNodeExpansion expansion, int knots);
+
+/** Number of node inputs of an expansion of \a dims features with \a knots. */
+std::size_t
+expandedSize (std::size_t dims, CrfNodeExpansion expansion,
+              const std::vector<std::vector<double>>& knots);
+
+/** graph.phi from graph.z (see CrfNodeExpansion). */
+void
+expandFeatures (CrfNodeExpansion expansion, const std::vector<std::vector<double>>& knots,
+                Graph& graph);
+
+/** Parameter vector layout: [node_s, node_x] each C x (Dn + 1), then [local_edge,
+  * regional_edge] each C x (D + 1). */
 Eigen::VectorXd
 packWeights (const MultiscaleCrfModel::Weights& w);
 
 void
-unpackWeights (const Eigen::VectorXd& theta, std::size_t classes, std::size_t dims,
-               MultiscaleCrfModel::Weights& w);
+unpackWeights (const Eigen::VectorXd& theta, std::size_t classes, std::size_t node_dims,
+               std::size_t edge_dims, MultiscaleCrfModel::Weights& w);
 
 /** Penalised negative pseudo-log-likelihood and its gradient (see crf_model.h); each node
   * hears from each neighbour o the message BP's first sweep would send given o's class

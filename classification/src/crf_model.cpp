@@ -37,6 +37,30 @@ parseCrfMode (const std::string& text, CrfMode& mode)
   return false;
 }
 
+const char*
+crfNodeExpansionName (CrfNodeExpansion expansion)
+{
+  switch (expansion)
+  {
+    case CrfNodeExpansion::Linear: return "linear";
+    case CrfNodeExpansion::Spline: return "spline";
+    default: return "spline_products";
+  }
+}
+
+bool
+parseCrfNodeExpansion (const std::string& text, CrfNodeExpansion& expansion)
+{
+  for (const CrfNodeExpansion e : {CrfNodeExpansion::Linear, CrfNodeExpansion::Spline,
+                                   CrfNodeExpansion::SplineProducts})
+    if (text == crfNodeExpansionName (e))
+    {
+      expansion = e;
+      return true;
+    }
+  return false;
+}
+
 bool
 checkCrfSettings (const CrfSettings& s, const char* caller)
 {
@@ -47,6 +71,8 @@ checkCrfSettings (const CrfSettings& s, const char* caller)
     bad = "the number of local edges m must be >= 0";
   else if (!(s.sigma > 0.0) || !std::isfinite (s.sigma))
     bad = "the prior's sigma must be positive and finite";
+  else if (s.spline_knots < 1 || s.spline_knots > 64)
+    bad = "the number of spline knots must be in [1, 64]";
   else if (s.max_training_iterations < 1 || s.bp_iterations < 1)
     bad = "iteration limits must be at least 1";
   else if (!(s.edge_scale >= 0.0) || !std::isfinite (s.edge_scale))
@@ -274,6 +300,10 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
     scale (d) = var > 1e-12 ? std::sqrt (var) : 1.0;
   }
   crf::finishGraph (raw, mean, scale, graph);
+  const std::vector<std::vector<double>> knots =
+      crf::fitKnots (graph.z, settings.node_expansion, settings.spline_knots);
+  crf::expandFeatures (settings.node_expansion, knots, graph);
+  const Eigen::Index Dn = graph.phi.cols ();
 
   // Node weights: nodes that take part in this mode, balanced by class frequency.
   std::vector<double> node_weights (graph.size (), 0.0);
@@ -306,7 +336,8 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
         node_weights[n] = std::sqrt (total / (C * count[graph.labels[n]]));
 
   auto t0 = std::chrono::steady_clock::now ();
-  Eigen::VectorXd theta = Eigen::VectorXd::Zero (static_cast<Eigen::Index> (4 * C * (D + 1)));
+  Eigen::VectorXd theta =
+      Eigen::VectorXd::Zero (static_cast<Eigen::Index> (2 * C * (Dn + 1) + 2 * C * (D + 1)));
   bool converged = false;
   double value = 0.0;
   // Stage 1: node potentials alone (multinomial logistic regression; all of NodeOnly).
@@ -321,7 +352,7 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
     // edges explain the labels alone: the node potentials lost their meaning, rare classes got
     // large edge potentials that a small belief already triggers in BP, and inference
     // collapsed onto those classes.
-    const Eigen::Index D1 = D + 1;
+    const Eigen::Index D1 = Dn + 1;
     const Eigen::Map<const Eigen::MatrixXd> ws (theta.data (), static_cast<Eigen::Index> (C), D1);
     const Eigen::Map<const Eigen::MatrixXd> wx (theta.data () + C * D1, static_cast<Eigen::Index> (C), D1);
     Eigen::MatrixXd context (static_cast<Eigen::Index> (C), static_cast<Eigen::Index> (graph.size ()));
@@ -329,7 +360,7 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
     {
       const auto& W = n < graph.num_supervoxels ? ws : wx;
       const Eigen::VectorXd score =
-          W.col (0) + W.rightCols (D) * graph.z.row (static_cast<Eigen::Index> (n)).transpose ().cast<double> ();
+          W.col (0) + W.rightCols (Dn) * graph.phi.row (static_cast<Eigen::Index> (n)).transpose ().cast<double> ();
       const Eigen::VectorXd p = (score.array () - score.maxCoeff ()).exp ().matrix ();
       context.col (static_cast<Eigen::Index> (n)) = p / p.sum ();
     }
@@ -340,7 +371,9 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
   w.feature_names = saliencyFeatureNames (settings.features);
   w.mean = mean;
   w.scale = scale;
-  crf::unpackWeights (theta, C, static_cast<std::size_t> (D), w);
+  w.expansion = settings.node_expansion;
+  w.knots = knots;
+  crf::unpackWeights (theta, C, static_cast<std::size_t> (Dn), static_cast<std::size_t> (D), w);
   // Stage 3: the weight of the edges against the nodes at inference (see crf_model.h).
   w.edge_scale = settings.edge_scale > 0.0 ? settings.edge_scale : 1.0;
   if (settings.mode != CrfMode::NodeOnly && settings.edge_scale == 0.0)
@@ -394,6 +427,7 @@ MultiscaleCrfModel::classify (const CrfInput& input, std::vector<std::uint32_t>&
   if (!crf::buildGraph (input, settings_, svs, raw, graph, stats))
     return false;
   crf::finishGraph (raw, weights_->mean, weights_->scale, graph);
+  crf::expandFeatures (weights_->expansion, weights_->knots, graph);
   auto t0 = std::chrono::steady_clock::now ();
   Eigen::MatrixXf marginals;
   crf::beliefPropagation (graph, *weights_, settings_, marginals, stats.iterations, stats.converged);

@@ -182,6 +182,8 @@ MultiscaleCrfModel::toText () const
     out << ' ' << num (r);
   out << '\n';
   out << "prior_sigma " << num (s.sigma) << '\n';
+  out << "node_expansion " << crfNodeExpansionName (s.node_expansion) << ' ' << s.spline_knots
+      << '\n';
   out << "belief_propagation " << num (s.bp_damping) << ' ' << s.bp_iterations << ' '
       << num (s.bp_tolerance) << '\n';
   out << "classes " << class_ids_.size () << '\n';
@@ -192,6 +194,14 @@ MultiscaleCrfModel::toText () const
   for (std::size_t d = 0; d < w.feature_names.size (); ++d)
     out << "feature " << w.feature_names[d] << ' ' << num (w.mean (d)) << ' ' << num (w.scale (d))
         << '\n';
+  if (w.expansion != CrfNodeExpansion::Linear)
+    for (std::size_t d = 0; d < w.feature_names.size (); ++d)
+    {
+      out << "knots " << w.feature_names[d] << ' ' << w.knots[d].size ();
+      for (const double t : w.knots[d])
+        out << ' ' << num (t);
+      out << '\n';
+    }
   writeMatrix (out, "node_supervoxel", w.node_s);
   writeMatrix (out, "node_point", w.node_x);
   writeMatrix (out, "local_edge", w.local_edge);
@@ -309,6 +319,14 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
       return rd.fail ("feature scales must be positive, finite and ascending");
     if (!rd.next ("prior_sigma") || !rd.expect ("prior_sigma", 1) || !rd.number (1, s.sigma))
       return false;
+    if (!rd.next ("node_expansion") || !rd.expect ("node_expansion", 2))
+      return false;
+    if (!parseCrfNodeExpansion (rd.word (1), s.node_expansion))
+      return rd.fail ("unknown node expansion '" + rd.word (1)
+                      + "' (linear, spline or spline_products)");
+    if (!rd.integer (2, s.spline_knots, 1, 64))
+      return false;
+    w.expansion = s.node_expansion;
     if (!rd.next ("belief_propagation") || !rd.expect ("belief_propagation", 3)
         || !rd.number (1, s.bp_damping) || !rd.integer (2, s.bp_iterations, 1, 1 << 20)
         || !rd.number (3, s.bp_tolerance))
@@ -350,9 +368,34 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
                       "(a model from another feature set?)");
     s.features.colour = options.colour;
     s.features.intensity = options.intensity;
+    // The knots of the spline expansions: one line per feature, in the features' order, at
+    // most spline_knots ascending values each.
+    w.knots.assign (D, {});
+    if (w.expansion != CrfNodeExpansion::Linear)
+      for (std::size_t d = 0; d < D; ++d)
+      {
+        std::size_t K = 0;
+        if (!rd.next ("knots"))
+          return false;
+        if (rd.size () < 3 || rd.word (0) != "knots" || rd.word (1) != w.feature_names[d])
+          return rd.fail ("expected 'knots " + w.feature_names[d] + " K t1 .. tK'");
+        if (!rd.integer (2, K, 0, s.spline_knots) || !rd.expect ("knots", K + 2))
+          return false;
+        for (std::size_t k = 0; k < K; ++k)
+        {
+          double t = 0.0;
+          if (!rd.number (k + 3, t))
+            return false;
+          if (!w.knots[d].empty () && !(t > w.knots[d].back ()))
+            return rd.fail ("knots must be strictly ascending");
+          w.knots[d].push_back (t);
+        }
+      }
+    const std::size_t Dn = crf::expandedSize (D, w.expansion, w.knots);
     const Eigen::Index rows = static_cast<Eigen::Index> (C), cols = static_cast<Eigen::Index> (D + 1);
-    if (!readMatrix (rd, "node_supervoxel", rows, cols, w.node_s)
-        || !readMatrix (rd, "node_point", rows, cols, w.node_x)
+    const Eigen::Index node_cols = static_cast<Eigen::Index> (Dn + 1);
+    if (!readMatrix (rd, "node_supervoxel", rows, node_cols, w.node_s)
+        || !readMatrix (rd, "node_point", rows, node_cols, w.node_x)
         || !readMatrix (rd, "local_edge", rows, cols, w.local_edge)
         || !readMatrix (rd, "regional_edge", rows, cols, w.regional_edge))
       return false;

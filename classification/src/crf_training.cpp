@@ -37,10 +37,12 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
                   unsigned int threads)
 {
   const std::size_t C = classes;
-  const Eigen::Index D = graph.z.cols ();
+  const Eigen::Index D = graph.z.cols ();     // edge features
+  const Eigen::Index Dn = graph.phi.cols ();  // node inputs
   const std::size_t D1 = static_cast<std::size_t> (D) + 1;
-  const std::size_t block = C * D1;
-  // theta block b, class c, feature d (d = 0: bias), column-major C x D1
+  const std::size_t block = C * (static_cast<std::size_t> (Dn) + 1);  // a node block
+  const std::size_t edge_block = C * D1;
+  // node block b, class c, input d (d = 0: bias), column-major C x (Dn + 1)
   auto at = [&] (std::size_t b, std::size_t c, std::size_t d) { return b * block + d * C + c; };
   const std::size_t N = graph.size ();
   const std::size_t E = graph.edge_a.size ();
@@ -58,7 +60,7 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
     exp_potential.resize (Ci, static_cast<Eigen::Index> (E));
     slope.resize (Ci, static_cast<Eigen::Index> (E));
     const Eigen::Map<const Eigen::MatrixXd> local (theta.data () + 2 * block, Ci, D1);
-    const Eigen::Map<const Eigen::MatrixXd> regional (theta.data () + 3 * block, Ci, D1);
+    const Eigen::Map<const Eigen::MatrixXd> regional (theta.data () + 2 * block + edge_block, Ci, D1);
 #pragma omp parallel for num_threads(nthreads) schedule(static)
     for (std::ptrdiff_t e = 0; e < static_cast<std::ptrdiff_t> (E); ++e)
     {
@@ -96,11 +98,11 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
       if (y < 0 || w <= 0.0)
         continue;
       const std::size_t nb = n < graph.num_supervoxels ? 0 : 1;
-      const auto z = graph.z.row (static_cast<Eigen::Index> (n));
+      const auto z = graph.phi.row (static_cast<Eigen::Index> (n));
       for (std::size_t c = 0; c < C; ++c)
       {
         double s = theta[at (nb, c, 0)];
-        for (Eigen::Index d = 0; d < D; ++d)
+        for (Eigen::Index d = 0; d < Dn; ++d)
           s += theta[at (nb, c, d + 1)] * z (d);
         score[c] = s;
       }
@@ -131,7 +133,7 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
       {
         const double r = w * p[c];
         g[at (nb, c, 0)] += r;
-        for (Eigen::Index d = 0; d < D; ++d)
+        for (Eigen::Index d = 0; d < Dn; ++d)
           g[at (nb, c, d + 1)] += r * z (d);
       }
       for (std::size_t a = a0; a < a1; ++a)
@@ -170,7 +172,7 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
       }
     }
     Eigen::Map<Eigen::MatrixXd> g_local (gradient.data () + 2 * block, Ci, D1);
-    Eigen::Map<Eigen::MatrixXd> g_regional (gradient.data () + 3 * block, Ci, D1);
+    Eigen::Map<Eigen::MatrixXd> g_regional (gradient.data () + 2 * block + edge_block, Ci, D1);
     for (std::size_t ch = 0; ch < echunks; ++ch)
     {
       g_local += local[ch];
@@ -283,8 +285,8 @@ trainWeights (const Graph& graph, const std::vector<double>& node_weights,
     };
     return minimiseLbfgs (objective, theta, settings.max_training_iterations, converged, value);
   }
-  // The node blocks stay as they are: only the second half (the edge blocks) moves.
-  const Eigen::Index half = theta.size () / 2;
+  // The node blocks stay as they are: only the edge blocks at the end move.
+  const Eigen::Index half = 2 * static_cast<Eigen::Index> (classes) * (graph.z.cols () + 1);
   Eigen::VectorXd full = theta, edges = theta.tail (half), g_full;
   auto objective = [&] (const Eigen::VectorXd& x, Eigen::VectorXd& g) {
     full.tail (half) = x;

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 using pcl_ext::CrfMode;
 using pcl_ext::MultiscaleCrfModel;
@@ -180,6 +181,7 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
       {"negative scale", replaced ("feature_scales 0", "feature_scales 1 -1")},
       {"scale count", replaced ("feature_scales 0", "feature_scales 1")},
       {"no scales line", replaced ("feature_scales 0\n", "")},
+      {"no expansion line", replaced ("node_expansion linear 4\n", "")},
       {"no edge scale", replaced ("edge_scale ", "edge_scales ")},
       {"negative edge scale", replaced ("edge_scale ", "edge_scale -")},
   };
@@ -196,6 +198,82 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
   ASSERT_TRUE (kept.parseModel (good, "good"));
   EXPECT_FALSE (kept.parseModel (cases[4].second, "truncated"));
   EXPECT_EQ (kept.toText (), good);
+}
+
+TEST (MultiscaleCrf, NodeExpansionsAreStoredAndRefusedWhenInconsistent)
+{
+  // The spline expansion with products: a knots line per feature, node weights over the
+  // expanded inputs, edge weights over the features alone.
+  MultiscaleCrfModel m;
+  m.settings ().mode = CrfMode::MultiscaleCrf;
+  m.settings ().node_expansion = pcl_ext::CrfNodeExpansion::SplineProducts;
+  m.settings ().spline_knots = 3;
+  ASSERT_TRUE (m.train ({street (1).input}, {street (1).labels}));
+  EXPECT_GE (accuracy (m, street (2)), 0.95);
+  const std::string good = m.toText ();
+  const std::size_t D = m.getFeatureNames ().size ();
+  std::size_t knots = 0, lines = 0;
+  for (std::size_t at = good.find ("\nknots "); at != std::string::npos;
+       at = good.find ("\nknots ", at + 1))
+  {
+    std::istringstream line (good.substr (at + 7, good.find ('\n', at + 1) - at - 7));
+    std::string name;
+    std::size_t n = 0;
+    line >> name >> n;
+    EXPECT_EQ (name, m.getFeatureNames ()[lines]);
+    EXPECT_LE (n, 3u);
+    double previous = -6.0, t = 0.0;
+    for (std::size_t k = 0; k < n && line >> t; ++k)
+    {
+      EXPECT_GT (t, previous) << name;
+      EXPECT_LT (t, 5.0) << name;
+      previous = t;
+    }
+    knots += n;
+    ++lines;
+  }
+  EXPECT_EQ (lines, D);
+  EXPECT_GT (knots, D) << "most features take more than two values";
+  const std::string node_cols = std::to_string (D + knots + D * (D - 1) / 2 + 1);
+  const std::string edge_cols = std::to_string (D + 1);
+  EXPECT_NE (good.find ("weights node_supervoxel 5 " + node_cols + "\n"), std::string::npos);
+  EXPECT_NE (good.find ("weights regional_edge 5 " + edge_cols + "\n"), std::string::npos);
+  MultiscaleCrfModel loaded;
+  ASSERT_TRUE (loaded.parseModel (good, "spline model"));
+  EXPECT_EQ (loaded.toText (), good);
+  std::vector<std::uint32_t> la, lb;
+  Eigen::MatrixXf pa, pb;
+  ASSERT_TRUE (m.classify (street (2).input, la, pa));
+  ASSERT_TRUE (loaded.classify (street (2).input, lb, pb));
+  EXPECT_EQ (la, lb);
+
+  auto replaced = [&] (const std::string& from, const std::string& to) {
+    std::string t = good;
+    const auto at = t.find (from);
+    EXPECT_NE (at, std::string::npos) << from;
+    return at == std::string::npos ? t : t.replace (at, from.size (), to);
+  };
+  const std::string first = good.substr (good.find ("knots clutterness"));
+  const std::string first_line = first.substr (0, first.find ('\n') + 1);
+  const std::vector<std::pair<const char*, std::string>> cases = {
+      {"unknown expansion", replaced ("node_expansion spline_products", "node_expansion cubic")},
+      {"no knots", replaced (first_line, "")},
+      {"more knots than K", replaced ("node_expansion spline_products 3", "node_expansion spline_products 1")},
+      {"knots descending", replaced (first_line, "knots clutterness 2 1 0\n")},
+      {"knots of another feature", replaced (first_line, "knots height 1 0\n")},
+      {"NaN knot", replaced (first_line, "knots clutterness 1 nan\n")},
+      // The linear model has fewer node inputs than these weights.
+      {"linear with spline weights", replaced ("node_expansion spline_products 3", "node_expansion linear 3")},
+  };
+  for (const auto& [name, text] : cases)
+  {
+    MultiscaleCrfModel bad;
+    EXPECT_FALSE (bad.parseModel (text, name)) << name;
+    EXPECT_FALSE (bad.isTrained ()) << name;
+  }
+  MultiscaleCrfModel bad_knots;
+  bad_knots.settings ().spline_knots = 0;
+  EXPECT_FALSE (bad_knots.train ({street (1).input}, {street (1).labels}));
 }
 
 TEST (MultiscaleCrf, BadTrainingInput)

@@ -32,6 +32,27 @@ crfModeName (CrfMode mode);
 bool
 parseCrfMode (const std::string& text, CrfMode& mode);
 
+/** \brief The inputs of the node potentials' multinomial logistic regression (eq. 8).
+  *
+  * The regression stays the paper's (one weight vector per class, the Gaussian prior of eq. 9
+  * on every weight); what changes is the fixed map from the standardised features z to its
+  * inputs (pcl_ext addition). The edge potentials (eq. 6-7) always use z itself. */
+enum class CrfNodeExpansion
+{
+  Linear,         ///< z itself: the paper's linear model
+  Spline,         ///< z and the hinges max(0, z_d - t_dk) at K training quantiles t_dk of each
+                  ///< feature: a piecewise-linear function of each feature per class
+  SplineProducts  ///< Spline plus the products z_a z_b of every pair of features
+};
+
+/** \brief "linear", "spline", "spline_products". */
+const char*
+crfNodeExpansionName (CrfNodeExpansion expansion);
+
+/** \brief Parses "linear", "spline", "spline_products"; false for anything else. */
+bool
+parseCrfNodeExpansion (const std::string& text, CrfNodeExpansion& expansion);
+
 /** \brief A cloud as the CRF sees it: xyz (non-finite points are skipped), normalised RGB and
   * intensity per point (each empty when absent). */
 struct CrfInput
@@ -53,6 +74,8 @@ struct CrfSettings
     * but -3 points on the validation chunks, and about ten times the feature time). */
   SaliencyFeatureOptions features;
   double sigma = 1.0;                ///< sigma_C of the Gaussian prior, eq. 9; > 0
+  CrfNodeExpansion node_expansion = CrfNodeExpansion::Linear;  ///< inputs of the node model
+  int spline_knots = 4;              ///< K, hinges per feature of the spline expansions; >= 1
   bool balance_classes = true;       ///< weight training nodes by 1 / sqrt(class frequency)
   int max_training_iterations = 200; ///< L-BFGS iterations; >= 1
   double edge_scale = 0.0;           ///< beta, the factor on the log edge potentials at inference

@@ -53,6 +53,21 @@ public:
   void
   setSigma (double sigma) { model_.settings ().sigma = sigma; }
 
+  /** \brief The inputs of the node potentials' logistic regression (pcl_ext addition, see
+    * CrfNodeExpansion). Default Linear. Takes effect at train(); a loaded model brings its own. */
+  void
+  setNodeExpansion (CrfNodeExpansion expansion) { model_.settings ().node_expansion = expansion; }
+
+  CrfNodeExpansion
+  getNodeExpansion () const { return model_.settings ().node_expansion; }
+
+  /** \brief K, the hinges per feature of the spline expansions. Default 4; in [1, 64]. */
+  void
+  setSplineKnots (int knots) { model_.settings ().spline_knots = knots; }
+
+  int
+  getSplineKnots () const { return model_.settings ().spline_knots; }
+
   /** \brief beta, the factor on the log edge potentials in belief propagation (pcl_ext
     * addition, see MultiscaleCrfModel). Default 0: fitted on the training data; else > 0.
     * Takes effect at train(). */
