@@ -19,7 +19,7 @@ main (int argc, char** argv)
   std::string output, classes_file, mode_text = "mcrf", scales_text = "none",
               expansion_text = "linear";
   double sigma = 1.0, noise = 0.0;
-  int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200, knots = 4;
+  int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200, knots = 2;
   unsigned int threads = 0, seed = 1;
   bool no_balance = false;
   pcl_ext::tools::CommandLine cl (
@@ -32,9 +32,9 @@ main (int argc, char** argv)
   cl.addOption ("mode", mode_text, "node | crf | mcrf (node-only, local CRF, multi-scale CRF)");
   cl.addOption ("scales", scales_text, "radii (m) of the multi-scale features, ascending, "
                "comma-separated, e.g. 0.5,1,2; 'none': the paper's single-scale features");
-  cl.addOption ("expansion", expansion_text, "inputs of the node model: linear (the paper's), "
-               "spline (piecewise-linear in each feature) or spline_products (and products of "
-               "feature pairs)");
+  cl.addOption ("expansion", expansion_text, "inputs of the node model: linear "
+               "(the paper's), spline (piecewise-linear in each feature) or spline_products "
+               "(spline and the products of feature pairs)");
   cl.addOption ("knots", knots, "hinges per feature of the spline expansions");
   cl.addOption ("sigma", sigma, "sigma of the Gaussian prior on the weights (eq. 9)");
   cl.addOption ("noise", noise, "noise constant sigma of eq. 3 in metres (0: estimate)");

@@ -123,11 +123,13 @@ trainWeights (const Graph& graph, const std::vector<double>& node_weights,
               const CrfSettings& settings, bool edges_only, Eigen::VectorXd& theta,
               bool& converged, double& value);
 
-/** Loopy BP marginals of the super-voxel nodes (rows) over classes. */
+/** Loopy BP marginals of the super-voxel nodes (rows) over classes. \a messages, when given
+  * and of the graph's size (C x 2E, log messages), are the starting messages (else all zero),
+  * and receive the last ones. */
 void
 beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
                    const CrfSettings& settings, Eigen::MatrixXf& marginals, int& iterations,
-                   bool& converged);
+                   bool& converged, Eigen::MatrixXd* messages = nullptr);
 
 /** Stage 3 of training: the factor beta on the log edge potentials that minimises the
   * weighted negative log-likelihood of the labelled super-voxels under their BP marginals on

@@ -181,7 +181,7 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
       {"negative scale", replaced ("feature_scales 0", "feature_scales 1 -1")},
       {"scale count", replaced ("feature_scales 0", "feature_scales 1")},
       {"no scales line", replaced ("feature_scales 0\n", "")},
-      {"no expansion line", replaced ("node_expansion linear 4\n", "")},
+      {"no expansion line", replaced ("node_expansion linear 2\n", "")},
       {"no edge scale", replaced ("edge_scale ", "edge_scales ")},
       {"negative edge scale", replaced ("edge_scale ", "edge_scale -")},
   };

@@ -36,7 +36,11 @@ parseCrfMode (const std::string& text, CrfMode& mode);
   *
   * The regression stays the paper's (one weight vector per class, the Gaussian prior of eq. 9
   * on every weight); what changes is the fixed map from the standardised features z to its
-  * inputs (pcl_ext addition). The edge potentials (eq. 6-7) always use z itself. */
+  * inputs (pcl_ext addition). The edge potentials (eq. 6-7) always use z itself. With Spline,
+  * each class's log node potential is a piecewise-linear function of each feature (an
+  * additive model) instead of a linear one: a linear score cannot single out the middle of a
+  * feature's range (wires and facades between the ground and the tree tops in height, say).
+  * The knots are fitted on the training features and saved with the model. */
 enum class CrfNodeExpansion
 {
   Linear,         ///< z itself: the paper's linear model
@@ -74,8 +78,9 @@ struct CrfSettings
     * but -3 points on the validation chunks, and about ten times the feature time). */
   SaliencyFeatureOptions features;
   double sigma = 1.0;                ///< sigma_C of the Gaussian prior, eq. 9; > 0
-  CrfNodeExpansion node_expansion = CrfNodeExpansion::Linear;  ///< inputs of the node model
-  int spline_knots = 4;              ///< K, hinges per feature of the spline expansions; >= 1
+  /** Inputs of the node model: Linear (the paper's, the default) or a spline expansion. */
+  CrfNodeExpansion node_expansion = CrfNodeExpansion::Linear;
+  int spline_knots = 2;              ///< K, hinges per feature of the spline expansions; [1, 64]
   bool balance_classes = true;       ///< weight training nodes by 1 / sqrt(class frequency)
   int max_training_iterations = 200; ///< L-BFGS iterations; >= 1
   double edge_scale = 0.0;           ///< beta, the factor on the log edge potentials at inference
@@ -116,8 +121,10 @@ struct CrfStatistics
   * (CrfSettings::features; see there). The model file stores the feature set, and a model
   * of another set is refused.
   *
-  * Potentials (as eq. 6-8): node psi_i(c) = exp(lambda_i^c . [1, s_i]) for super-voxels and
-  * exp(lambda_x^c . [1, x_j]) for local points (multinomial logistic regression); edges
+  * Potentials (as eq. 6-8): node psi_i(c) = exp(lambda_i^c . [1, phi(s_i)]) for super-voxels
+  * and exp(lambda_x^c . [1, phi(x_j)]) for local points (multinomial logistic regression),
+  * phi the node expansion of the standardised features (CrfNodeExpansion: the paper's
+  * phi(s) = s by default; Spline adds K hinges per feature at its training quantiles); edges
   * psi_ij(c_i, c_j) = exp([c_i = c_j] softplus(lambda_e^c . [1, z_i (.) z_j])) with (.) the
   * element-wise product of the standardised features, clamped to [-3, 3] (eq. 6 local, eq. 7
   * regional, each with its own weights). Departures: the constant 1 (a per-class bias), the
@@ -142,7 +149,7 @@ struct CrfStatistics
   * evidence again around the graph's short cycles. beta is the value on the grid 0.1, 0.2,
   * .., 1.5 that minimises the weighted negative log-likelihood of the labelled super-voxels
   * under their BP marginals on the training graph (CrfSettings::edge_scale fixes it
-  * instead). A super-voxel's training label is the majority label of its members;
+  * instead); each grid point's BP starts from the previous one's messages. A super-voxel's training label is the majority label of its members;
   * unlabelled nodes are not scored. With balance_classes, each node is weighted by
   * 1/sqrt(frequency of its class) (pcl_ext addition: rare classes such as wires would
   * otherwise be given up).

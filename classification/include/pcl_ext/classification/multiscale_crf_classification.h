@@ -54,14 +54,15 @@ public:
   setSigma (double sigma) { model_.settings ().sigma = sigma; }
 
   /** \brief The inputs of the node potentials' logistic regression (pcl_ext addition, see
-    * CrfNodeExpansion). Default Linear. Takes effect at train(); a loaded model brings its own. */
+    * CrfNodeExpansion). Default Linear (the paper's). Takes effect at train(); a
+    * loaded model brings its own. */
   void
   setNodeExpansion (CrfNodeExpansion expansion) { model_.settings ().node_expansion = expansion; }
 
   CrfNodeExpansion
   getNodeExpansion () const { return model_.settings ().node_expansion; }
 
-  /** \brief K, the hinges per feature of the spline expansions. Default 4; in [1, 64]. */
+  /** \brief K, the hinges per feature of the spline expansions. Default 2; in [1, 64]. */
   void
   setSplineKnots (int knots) { model_.settings ().spline_knots = knots; }
 
