@@ -72,13 +72,14 @@ beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
 #pragma omp parallel for num_threads(threads) schedule(static)
     for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n)
     {
-      Eigen::VectorXd sum = Eigen::VectorXd::Zero (C);
+      // Summed in place: a temporary vector per node and sweep cost more than the sum.
+      auto sum = incoming.col (n);
+      sum.setZero ();
       for (std::size_t a = graph.adj_offsets[n]; a < graph.adj_offsets[n + 1]; ++a)
       {
         const std::uint32_t e = graph.adj_edge[a];
         sum += msg.col (2 * e + (graph.edge_a[e] == static_cast<std::uint32_t> (n) ? 1 : 0));
       }
-      incoming.col (n) = sum;
     }
     double change = 0.0;
 #pragma omp parallel num_threads(threads)
@@ -104,10 +105,17 @@ beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
           sum += h[c];
         }
         // The potential is diagonal: sum over c_a of exp(h + [c_a = c_b] d) is the plain sum
-        // with the c_b term scaled by exp(d), O(C) per message instead of O(C^2).
+        // with the c_b term scaled by exp(d), O(C) per message instead of O(C^2). Normalised
+        // in the linear domain (the terms are >= 1 after the shift by mx): one log each.
+        double total = 0.0;
         for (std::size_t cb = 0; cb < C; ++cb)
-          out[cb] = mx + std::log (sum + h[cb] * (exp_diag (cb, e) - 1.0));
-        normaliseLog (out.data (), C);
+        {
+          out[cb] = sum + h[cb] * (exp_diag (cb, e) - 1.0);
+          total += out[cb];
+        }
+        const double log_total = std::log (total);
+        for (std::size_t cb = 0; cb < C; ++cb)
+          out[cb] = std::log (out[cb]) - log_total;
         for (std::size_t c = 0; c < C; ++c)
         {
           const double v = (1.0 - damping) * out[c] + damping * msg (c, m);

@@ -360,7 +360,8 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
     {
       const auto& W = n < graph.num_supervoxels ? ws : wx;
       const Eigen::VectorXd score =
-          W.col (0) + W.rightCols (Dn) * graph.phi.row (static_cast<Eigen::Index> (n)).transpose ().cast<double> ();
+          W.col (0)
+          + W.rightCols (Dn) * graph.phi.row (static_cast<Eigen::Index> (n)).transpose ().cast<double> ();
       const Eigen::VectorXd p = (score.array () - score.maxCoeff ()).exp ().matrix ();
       context.col (static_cast<Eigen::Index> (n)) = p / p.sum ();
     }

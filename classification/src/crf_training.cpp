@@ -60,7 +60,8 @@ pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
     exp_potential.resize (Ci, static_cast<Eigen::Index> (E));
     slope.resize (Ci, static_cast<Eigen::Index> (E));
     const Eigen::Map<const Eigen::MatrixXd> local (theta.data () + 2 * block, Ci, D1);
-    const Eigen::Map<const Eigen::MatrixXd> regional (theta.data () + 2 * block + edge_block, Ci, D1);
+    const Eigen::Map<const Eigen::MatrixXd> regional (theta.data () + 2 * block + edge_block, Ci,
+                                                      D1);
 #pragma omp parallel for num_threads(nthreads) schedule(static)
     for (std::ptrdiff_t e = 0; e < static_cast<std::ptrdiff_t> (E); ++e)
     {

@@ -34,12 +34,17 @@ load (const std::string& chunk, const pcl_ext::io::ClassMapping& mapping, pcl_ex
   mapping.apply (labels);
   return !labels.empty ();
 }
-}  // namespace
 
-TEST (MultiscaleCrfOakland, ThreeModelsOnTheValidationChunks)
+struct Scores
 {
-  if (!std::ifstream (kDir + "/classes.txt").good ())
-    GTEST_SKIP () << "Oakland 3-D data not found in " << kDir;
+  double macro[3] = {0, 0, 0}, oa[3] = {0, 0, 0};
+};
+
+/** Trains the three models on am + an with the node inputs \a expansion (K = 2 hinges for
+  * the splines) and scores them on the validation chunks, printing the table. */
+void
+threeModels (pcl_ext::CrfNodeExpansion expansion, Scores& out)
+{
   pcl_ext::io::ClassMapping mapping;
   mapping.load (kDir + "/classes.txt");
   std::vector<pcl_ext::CrfInput> train (2);
@@ -51,13 +56,14 @@ TEST (MultiscaleCrfOakland, ThreeModelsOnTheValidationChunks)
   std::vector<std::vector<std::uint32_t>> truth (5);
   for (int c = 0; c < 5; ++c)
     ASSERT_TRUE (load (chunks[c], mapping, test[c], truth[c]));
-  double macro[3] = {0, 0, 0}, oa[3] = {0, 0, 0};
   int k = 0;
   for (const pcl_ext::CrfMode mode :
        {pcl_ext::CrfMode::NodeOnly, pcl_ext::CrfMode::LocalCrf, pcl_ext::CrfMode::MultiscaleCrf})
   {
     pcl_ext::MultiscaleCrfModel model;
     model.settings ().mode = mode;
+    model.settings ().node_expansion = expansion;
+    model.settings ().spline_knots = 2;
     model.setClassNames (mapping.names ());
     ASSERT_TRUE (model.train (train, train_labels));
     const double train_s = (model.getStatistics ().supervoxels_ms + model.getStatistics ().features_ms
@@ -73,20 +79,34 @@ TEST (MultiscaleCrfOakland, ThreeModelsOnTheValidationChunks)
     }
     pcl_ext::ClassificationMetrics m;
     ASSERT_TRUE (pcl_ext::evaluateClassification (all_pred, all_truth, m, mapping.names ()));
-    std::printf ("Oakland %-4s (training %.1f s):", pcl_ext::crfModeName (mode), train_s);
+    std::printf ("Oakland %-4s %-6s (training %.1f s):", pcl_ext::crfModeName (mode),
+                 pcl_ext::crfNodeExpansionName (expansion), train_s);
     for (const auto& c : m.classes)
       std::printf (" %s F1 %.3f |", c.name.c_str (), c.f1);
     std::printf (" macro F1 %.4f, overall accuracy %.4f (BP on the last chunk: %d sweeps%s)\n",
                  m.macro_f1, m.overall_accuracy, model.getStatistics ().iterations,
                  model.getStatistics ().converged ? ", converged" : ", not converged");
-    macro[k] = m.macro_f1;
-    oa[k] = m.overall_accuracy;
+    std::fflush (stdout);
+    out.macro[k] = m.macro_f1;
+    out.oa[k] = m.overall_accuracy;
     ++k;
   }
+}
+}  // namespace
+
+TEST (MultiscaleCrfOakland, ThreeModelsOnTheValidationChunks)
+{
+  if (!std::ifstream (kDir + "/classes.txt").good ())
+    GTEST_SKIP () << "Oakland 3-D data not found in " << kDir;
+  // The defaults: the paper's linear node model.
+  Scores s;
+  threeModels (pcl_ext::CrfNodeExpansion::Linear, s);
+  const double* macro = s.macro;
+  const double* oa = s.oa;
   // Parameters are the defaults, none chosen on the validation chunks: the edge scale beta is
   // fitted on the training chunks by train() (0.5 here; training on one of am / an and
   // testing on the other puts the best macro F1 between 0.5 and 0.85).
-  // Measured (per-class F1; ctest --test-dir build -R MultiscaleCrfOakland -V):
+  // Measured (per-class F1; ctest --test-dir build/test/crf -R Oakland -V):
   //
   //   model  vegetation trunk_pole facade ground  wire   macro F1  overall accuracy
   //   node     0.865      0.298    0.804  0.993  0.495   0.6910      0.9339
@@ -95,9 +115,10 @@ TEST (MultiscaleCrfOakland, ThreeModelsOnTheValidationChunks)
   //
   // The goals: mCRF at least 3 points of macro F1 above node-only is met (+3.05);
   // mCRF overall accuracy >= 0.95 and macro F1 >= 0.78 are not (CGAL's random forest with
-  // graph cut: about 0.96 / 0.79 when tuned on these chunks). The edges help vegetation and
-  // wires and cost trunk_pole (facade points near poles and trees are drawn to it), the class
-  // the node potentials already separate worst.
+  // graph cut: about 0.96 / 0.79 when tuned on these chunks; the spline node model below
+  // does not reach them either). The edges help vegetation and wires and cost trunk_pole
+  // (facade points near poles and trees are drawn to it), the class the node potentials
+  // already separate worst.
   EXPECT_GE (oa[0], 0.93);
   EXPECT_GE (macro[0], 0.68);
   EXPECT_GE (oa[1], 0.93);
@@ -109,4 +130,31 @@ TEST (MultiscaleCrfOakland, ThreeModelsOnTheValidationChunks)
   EXPECT_GE (oa[2], oa[0]);
   EXPECT_GE (macro[2] - macro[0], 0.025);
   EXPECT_GE (macro[2] - macro[1], 0.02);
+}
+
+// The goals with the spline node model (K = 2 hinges per feature, chosen by
+// cross-validation between am and an: train on one, test on the other; see the README):
+// mCRF overall accuracy >= 0.95, macro F1 >= 0.78, and mCRF at least 3 points of macro F1
+// above node-only. Cross-validation (macro F1 / overall accuracy, am -> an and an -> am):
+// node 0.681 / 0.904 and 0.753 / 0.947, crf 0.774 / 0.933 and 0.814 / 0.963, mcrf
+// 0.809 / 0.945 and 0.816 / 0.966 (the linear model: node 0.637 / 0.886 and 0.629 / 0.900,
+// mcrf 0.732 / 0.918 and 0.772 / 0.955). On the validation chunks it measured
+//
+//   model  vegetation trunk_pole facade ground  wire   macro F1  overall accuracy
+//   node     0.842      0.269    0.763  0.993  0.567   0.6866      0.9226
+//   crf      0.867      0.207    0.770  0.992  0.709   0.7091      0.9260
+//   mcrf     0.886      0.165    0.768  0.992  0.811   0.7247      0.9258
+//
+// wires much better, vegetation and facades worse than the linear model: the gain seen
+// between am and an does not carry over to the other chunks, and the goals are not met
+// (mCRF - node-only: +3.8 points). Disabled until a node model meets them.
+TEST (MultiscaleCrfOakland, DISABLED_SplineNodeModelMeetsTheGoals)
+{
+  if (!std::ifstream (kDir + "/classes.txt").good ())
+    GTEST_SKIP () << "Oakland 3-D data not found in " << kDir;
+  Scores s;
+  threeModels (pcl_ext::CrfNodeExpansion::Spline, s);
+  EXPECT_GE (s.oa[2], 0.95);
+  EXPECT_GE (s.macro[2], 0.78);
+  EXPECT_GE (s.macro[2] - s.macro[0], 0.03);
 }

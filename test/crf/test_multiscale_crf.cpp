@@ -161,7 +161,8 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
     EXPECT_NE (at, std::string::npos) << from;
     return at == std::string::npos ? t : t.replace (at, from.size (), to);
   };
-  const std::string cols = std::to_string (trained (CrfMode::MultiscaleCrf).getFeatureNames ().size () + 1);
+  const std::string cols =
+      std::to_string (trained (CrfMode::MultiscaleCrf).getFeatureNames ().size () + 1);
   const std::vector<std::pair<const char*, std::string>> cases = {
       {"empty", ""},
       {"not a model", "hello world\n"},
@@ -258,12 +259,14 @@ TEST (MultiscaleCrf, NodeExpansionsAreStoredAndRefusedWhenInconsistent)
   const std::vector<std::pair<const char*, std::string>> cases = {
       {"unknown expansion", replaced ("node_expansion spline_products", "node_expansion cubic")},
       {"no knots", replaced (first_line, "")},
-      {"more knots than K", replaced ("node_expansion spline_products 3", "node_expansion spline_products 1")},
+      {"more knots than K",
+       replaced ("node_expansion spline_products 3", "node_expansion spline_products 1")},
       {"knots descending", replaced (first_line, "knots clutterness 2 1 0\n")},
       {"knots of another feature", replaced (first_line, "knots height 1 0\n")},
       {"NaN knot", replaced (first_line, "knots clutterness 1 nan\n")},
       // The linear model has fewer node inputs than these weights.
-      {"linear with spline weights", replaced ("node_expansion spline_products 3", "node_expansion linear 3")},
+      {"linear with spline weights",
+       replaced ("node_expansion spline_products 3", "node_expansion linear 3")},
   };
   for (const auto& [name, text] : cases)
   {

@@ -149,10 +149,10 @@ struct CrfStatistics
   * evidence again around the graph's short cycles. beta is the value on the grid 0.1, 0.2,
   * .., 1.5 that minimises the weighted negative log-likelihood of the labelled super-voxels
   * under their BP marginals on the training graph (CrfSettings::edge_scale fixes it
-  * instead); each grid point's BP starts from the previous one's messages. A super-voxel's training label is the majority label of its members;
-  * unlabelled nodes are not scored. With balance_classes, each node is weighted by
-  * 1/sqrt(frequency of its class) (pcl_ext addition: rare classes such as wires would
-  * otherwise be given up).
+  * instead); each grid point's BP starts from the previous one's messages. A super-voxel's
+  * training label is the majority label of its members; unlabelled nodes are not scored.
+  * With balance_classes, each node is weighted by 1/sqrt(frequency of its class) (pcl_ext
+  * addition: rare classes such as wires would otherwise be given up).
   *
   * Inference: sum-product loopy belief propagation with damped, synchronous message updates
   * (so the result does not depend on the thread count), stopped when no message changes by
@@ -225,8 +225,8 @@ public:
   getStatistics () const { return statistics_; }
 
   /** \brief Write the model as versioned text (format "pcl_ext_crf_model 3": settings with the
-    * feature scales,
-    * classes, feature names and scaling, weights, edge scale), atomically.
+    * feature scales and the node expansion, classes, feature names and scaling, the knots of
+    * a spline expansion, weights, edge scale), atomically. Other versions are refused.
     * \return false with an untrained model or when the file cannot be written */
   bool
   saveModel (const std::string& path) const;

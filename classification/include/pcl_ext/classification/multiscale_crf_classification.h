@@ -96,7 +96,8 @@ public:
 
   /** \brief Fixed radii (m, ascending, > 0) of the multi-scale features (pcl_ext addition,
     * see computeSaliencyFeatures), e.g. defaultFeatureScales(): 0.5, 1 and 2 m. Default empty:
-    * the paper's single-scale feature set. Takes effect at train(); a loaded model brings its own. */
+    * the paper's single-scale feature set. Takes effect at train(); a loaded model brings its
+    * own. */
   void
   setFeatureScales (const std::vector<float>& radii) { model_.settings ().features.scales = radii; }
 
