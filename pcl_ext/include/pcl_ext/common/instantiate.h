@@ -9,7 +9,10 @@
 #include <boost/preprocessor/seq/for_each.hpp>
 
 /** \brief XYZ point types that src/ files instantiate precompiled classes for. Other types
-  * work through PCL_NO_PRECOMPILE, which makes the headers include their implementations. */
+  * work through PCL_NO_PRECOMPILE, which makes the headers include their implementations.
+  * A build can give its own list (CMake option PCL_EXT_POINT_TYPES, which defines this macro
+  * for the libraries' sources): each type costs compile time in every src/ file. */
+#ifndef PCL_EXT_XYZ_POINT_TYPES
 #define PCL_EXT_XYZ_POINT_TYPES \
   (pcl::PointXYZ)               \
   (pcl::PointXYZI)              \
@@ -20,6 +23,7 @@
   (pcl::PointNormal)            \
   (pcl::PointXYZINormal)        \
   (pcl::PointXYZRGBNormal)
+#endif
 
 /** \brief PCL_EXT_INSTANTIATE(Name, TYPES) expands PCL_EXT_INSTANTIATE_Name(T) for each type,
   * as PCL_INSTANTIATE does for PCL's own classes; nothing under PCL_NO_PRECOMPILE. */
