@@ -40,7 +40,7 @@ main (int argc, char** argv)
 {
   std::string input_path, output_path, png_path;
   int k = 50;
-  double radius = 0.0, curvature_threshold = 0.0, curvature_factor = 3.0;
+  double radius = 0.0, max_radius = 0.0, curvature_threshold = 0.0, curvature_factor = 3.0;
   double variance_threshold = 1e-4, confidence = 0.95, noise_sigma = 0.0;
   bool boundary_band = false;
   unsigned int threads = 0;
@@ -53,6 +53,8 @@ main (int argc, char** argv)
   cl.addPositional ("output.pcd", output_path, "output cloud with a 'label' field");
   cl.addOption ("k", k, "neighbours per point (the paper's k)");
   cl.addOption ("radius", radius, "neighbourhood radius instead of k (0: use k)");
+  cl.addOption ("max_radius", max_radius,
+                "with k: keep only the neighbours within this distance (0: no cap, the paper's)");
   cl.addOption ("curvature_threshold", curvature_threshold,
                 "curvature (eq. 4) threshold; 0: factor * median curvature");
   cl.addOption ("curvature_factor", curvature_factor,
@@ -81,7 +83,10 @@ main (int argc, char** argv)
   if (cl.given ("radius"))
     classifier.setRadiusSearch (radius);
   else
+  {
     classifier.setKSearch (k);
+    classifier.setMaxRadius (max_radius);
+  }
   classifier.setCurvatureThreshold (curvature_threshold);
   classifier.setCurvatureThresholdFactor (curvature_factor);
   classifier.setVarianceThreshold (variance_threshold);

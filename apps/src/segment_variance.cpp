@@ -30,7 +30,8 @@ main (int argc, char** argv)
   int k = 50, min_size = 50;
   double curvature_threshold = 0.0, curvature_factor = 3.0, variance_threshold = 1e-4;
   double confidence = 0.95, max_distance = 0.0, max_distance_factor = 3.0, parallel_angle = 10.0;
-  bool reintegrate = false;
+  double noise_sigma = 0.0, max_radius = 0.0;
+  bool reintegrate = false, boundary_band = false;
   unsigned int threads = 0;
   pcl_ext::tools::CommandLine cl (
       "pcl_ext_segment_variance",
@@ -41,12 +42,18 @@ main (int argc, char** argv)
   cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
   cl.addPositional ("output.pcd", output_path, "output cloud with a 'label' field");
   cl.addOption ("k", k, "neighbours per point (the paper's k)");
+  cl.addOption ("max_radius", max_radius,
+                "keep only the k neighbours within this distance (0: no cap, the paper's)");
   cl.addOption ("curvature_threshold", curvature_threshold,
                 "curvature (eq. 4) threshold; 0: factor * median curvature");
   cl.addOption ("curvature_factor", curvature_factor,
                 "multiple of the median curvature when the threshold is 0");
   cl.addOption ("variance_threshold", variance_threshold, "variance of curvature tolerance (eq. 5)");
   cl.addOption ("confidence", confidence, "confidence of the chi-squared boundary test (eq. 6)");
+  cl.addOption ("noise_sigma", noise_sigma,
+                "the scanner's range noise sigma, removed from eq. 4-6 (0: the paper's)");
+  cl.addSwitch ("boundary_band", boundary_band,
+                "also label boundary the surface points next to one eq. 6 finds");
   cl.addOption ("max_distance", max_distance,
                 "longest link from a seed to a neighbour (0: no limit beyond the k neighbours)");
   cl.addOption ("max_distance_factor", max_distance_factor,
@@ -73,6 +80,16 @@ main (int argc, char** argv)
   if (min_size < 1)
   {
     std::cerr << "Error: -min_size must be at least 1.\n";
+    return 1;
+  }
+  if (!(max_radius >= 0.0) || !std::isfinite (max_radius))
+  {
+    std::cerr << "Error: -max_radius must be finite and >= 0.\n";
+    return 1;
+  }
+  if (!(noise_sigma >= 0.0) || !std::isfinite (noise_sigma))
+  {
+    std::cerr << "Error: -noise_sigma must be finite and >= 0.\n";
     return 1;
   }
   if (!(max_distance >= 0.0))
@@ -102,7 +119,13 @@ main (int argc, char** argv)
   // One neighbourhood search for the segmentation and the intersections.
   auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>> ();
   nb->setInputCloud (cloud);
-  nb->setKSearch (k);
+  if (max_radius > 0.0)
+  {
+    nb->setRadiusSearch (max_radius);
+    nb->setMaxNeighbours (static_cast<unsigned int> (k));
+  }
+  else
+    nb->setKSearch (k);
   nb->setNumberOfThreads (threads);
   pcl_ext::tools::StageTimer search ("Searching " + std::to_string (k) + " neighbours");
   if (!nb->compute ())
@@ -119,6 +142,8 @@ main (int argc, char** argv)
   rg.setCurvatureThresholdFactor (curvature_factor);
   rg.setVarianceThreshold (variance_threshold);
   rg.setConfidence (confidence);
+  rg.setNoiseStandardDeviation (noise_sigma);
+  rg.setBoundaryBand (boundary_band);
   rg.setMaxDistance (max_distance);
   rg.setMaxDistanceFactor (max_distance_factor);
   rg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));

@@ -1,6 +1,7 @@
 /*
  * pcl_ext_segment_variance run as a command: segments of a cube written into the `label` field
- * next to the input's own fields, usage errors, and no output on failure.
+ * next to the input's own fields, the classifier's options beyond the paper (-noise_sigma,
+ * -boundary_band, -max_radius), usage errors, and no output on failure.
  */
 #include "../app_test.h"
 
@@ -71,6 +72,46 @@ TEST_F (SegmentVarianceApp, CubeFacesAreLabelledSegments)
   // A minimum size above a face leaves nothing: an error, and no output written.
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("none.pcd") + " -min_size 5000"), 1);
   EXPECT_FALSE (exists ("none.pcd"));
+}
+
+TEST_F (SegmentVarianceApp, ClassifierOptionsReachTheSegmentation)
+{
+  // The options beyond the paper pass through to the classification: with the cube's 1 mm
+  // noise removed and the boundary band on, the faces are still the 6 segments; a radius cap
+  // below the k = 50 neighbourhood radius (about 0.1 m at this spacing) narrows the edge band
+  // the segments stop at.
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("noise.pcd") +
+                  " -threads 2 -noise_sigma 0.001 -boundary_band"),
+             0)
+      << output_;
+  EXPECT_NE (output_.find ("6 segments"), std::string::npos) << output_;
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("capped.pcd") + " -threads 2 -max_radius 0.06"),
+             0)
+      << output_;
+  EXPECT_NE (output_.find ("6 segments"), std::string::npos) << output_;
+  pcl::PointCloud<pcl::PointXYZRGBL> noise, capped;
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("noise.pcd"), noise), 0);
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("capped.pcd"), capped), 0);
+  ASSERT_EQ (capped.size (), crease_distance_.size ());
+  ASSERT_EQ (noise.size (), crease_distance_.size ());
+  std::size_t unsegmented = 0, far_capped = 0, far_uncapped = 0;
+  for (std::size_t i = 0; i < capped.size (); ++i)
+  {
+    unsegmented += capped[i].label == 0;
+    far_capped += capped[i].label == 0 && crease_distance_[i] > 0.07;
+    far_uncapped += noise[i].label == 0 && crease_distance_[i] > 0.07;
+  }
+  EXPECT_GT (unsegmented, 0u);
+  EXPECT_EQ (far_capped, 0u);
+  EXPECT_GT (far_uncapped, 1000u);  // measured 1,326
+  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -noise_sigma -0.001"), 1);
+  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -noise_sigma nan"), 1);
+  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -max_radius -1"), 1);
+  EXPECT_FALSE (exists ("out.pcd"));
+  EXPECT_EQ (run ("-h"), 0);
+  EXPECT_NE (output_.find ("-noise_sigma"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-boundary_band"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-max_radius"), std::string::npos) << output_;
 }
 
 TEST_F (SegmentVarianceApp, RendersThePng)

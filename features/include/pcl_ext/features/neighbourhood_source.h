@@ -38,11 +38,13 @@ public:
     * Shared neighbourhoods computed for this cloud and these indices win (k and radius are then
     * theirs). Otherwise a search runs with exactly one of \a k, \a radius set (the other 0).
     * \param[in] caller "Class::method", for messages
+    * \param[in] max_radius with \a k: keep only the neighbours within this distance (the k
+    *            nearest within it); 0: no such cap
     * \return null after a PCL_ERROR when neither is possible */
   const NeighbourhoodsT*
   prepare (const std::string& caller, const typename NeighbourhoodsT::PointCloudConstPtr& cloud,
            const pcl::IndicesConstPtr& indices, int k, double radius, const SearchPtr& search,
-           unsigned int threads)
+           unsigned int threads, double max_radius = 0.0)
   {
     own_.reset ();
     if (shared_)
@@ -63,7 +65,12 @@ public:
     own_->setInputCloud (cloud);
     if (indices)
       own_->setIndices (indices);
-    if (k != 0)
+    if (k != 0 && max_radius > 0.0)
+    {
+      own_->setRadiusSearch (max_radius);
+      own_->setMaxNeighbours (static_cast<unsigned int> (k));
+    }
+    else if (k != 0)
       own_->setKSearch (k);
     else
       own_->setRadiusSearch (radius);

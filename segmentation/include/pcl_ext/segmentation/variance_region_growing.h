@@ -156,6 +156,18 @@ public:
   double
   getRadiusSearch () const { return radius_; }
 
+  /** \brief With k: keep only the neighbours within this distance, in the cloud's units (the k
+    * nearest within it), for the classification and the walk. Default 0: no cap, the paper's
+    * k nearest; valid: finite, >= 0; ignored with a radius or shared neighbourhoods. See
+    * LocalVarianceClassification::setMaxRadius: where k neighbours of a sparse surface reach
+    * a second one (the other face of a thin wall) its points are edges, and no segment grows
+    * on it. */
+  void
+  setMaxRadius (double radius) { max_radius_ = radius; }
+
+  double
+  getMaxRadius () const { return max_radius_; }
+
   /** \brief Search for the neighbourhoods. Default null: pcl_ext::search::NanoflannKdTree. */
   void
   setSearchMethod (const SearchPtr& search) { search_ = search; }
@@ -215,6 +227,25 @@ public:
 
   double
   getConfidence () const { return confidence_; }
+
+  /** \brief Range noise standard deviation sigma of the scanner, in the cloud's units, for
+    * the classification. Default 0: the paper's eq. 4-6 exactly; valid: finite, >= 0. See
+    * LocalVarianceClassification::setNoiseStandardDeviation: it removes the noise's share of
+    * the smallest eigenvalue, which otherwise makes false edges, and so false cut lines,
+    * where k neighbours span only a few centimetres near a scanner. */
+  void
+  setNoiseStandardDeviation (double sigma) { noise_sigma_ = sigma; }
+
+  double
+  getNoiseStandardDeviation () const { return noise_sigma_; }
+
+  /** \brief Give the classification's boundary class the reach of its edge class (see
+    * LocalVarianceClassification::setBoundaryBand). Default false (the paper). */
+  void
+  setBoundaryBand (bool band) { boundary_band_ = band; }
+
+  bool
+  getBoundaryBand () const { return boundary_band_; }
 
   /** \brief Longest distance from a seed to a neighbour it may link to (the paper's "limit"
     * on the distance from the seed point). Default 0: no limit beyond the neighbourhood;
@@ -316,6 +347,7 @@ protected:
 
   int k_ = 50;
   double radius_ = 0.0;
+  double max_radius_ = 0.0;
   SearchPtr search_;
   NeighbourhoodsConstPtr neighbourhoods_;
   LabelCloudConstPtr classes_;
@@ -323,6 +355,8 @@ protected:
   double curvature_factor_ = 3.0;
   double variance_threshold_ = 1e-4;
   double confidence_ = 0.95;
+  double noise_sigma_ = 0.0;
+  bool boundary_band_ = false;
   double max_distance_ = 0.0;
   double max_distance_factor_ = 3.0;
   pcl::uindex_t min_size_ = 1;

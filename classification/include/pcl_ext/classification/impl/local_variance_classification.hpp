@@ -48,6 +48,12 @@ pcl_ext::LocalVarianceClassification<PointT>::checkParameters () const
                noise_sigma_);
     return false;
   }
+  if (!(max_radius_ >= 0.0) || !std::isfinite (max_radius_))
+  {
+    PCL_ERROR ("%s maximum radius = %g; it must be finite and >= 0 (0: none).\n", name,
+               max_radius_);
+    return false;
+  }
   if ((tests_ & BOUNDARY_TEST) && !std::isfinite (chiSquaredQuantile2 (confidence_)))
   {
     PCL_ERROR ("%s confidence = %g; it must lie strictly between 0 and 1.\n", name,
@@ -218,7 +224,7 @@ pcl_ext::LocalVarianceClassification<PointT>::classify (pcl::PointCloud<pcl::Lab
   const Neighbourhoods<PointT>* nb =
       source_.prepare ("LocalVarianceClassification::classify", input_,
                        fake_indices_ ? pcl::IndicesConstPtr () : indices_, k_, radius_, search_,
-                       threads_);
+                       threads_, max_radius_);
   if (!nb)
   {
     deinitCompute ();

@@ -67,6 +67,12 @@ pcl_ext::VarianceRegionGrowing<PointT>::checkParameters () const
                name, max_distance_factor_);
     return false;
   }
+  if (!(max_radius_ >= 0.0) || !std::isfinite (max_radius_))
+  {
+    PCL_ERROR ("%s maximum radius = %g; it must be finite and >= 0 (0: none).\n", name,
+               max_radius_);
+    return false;
+  }
   if (min_size_ < 1 || max_size_ < min_size_)
   {
     PCL_ERROR ("%s Need 1 <= minimum cluster size (%u) <= maximum cluster size (%u).\n", name,
@@ -110,7 +116,12 @@ pcl_ext::VarianceRegionGrowing<PointT>::prepareNeighbourhoods () const
   own->setInputCloud (input_);
   if (indices)
     own->setIndices (indices);
-  if (k_ != 0)
+  if (k_ != 0 && max_radius_ > 0.0)
+  {
+    own->setRadiusSearch (max_radius_);
+    own->setMaxNeighbours (static_cast<unsigned int> (k_));
+  }
+  else if (k_ != 0)
     own->setKSearch (k_);
   else
     own->setRadiusSearch (radius_);
@@ -150,6 +161,8 @@ pcl_ext::VarianceRegionGrowing<PointT>::prepareClasses (const NeighbourhoodsCons
   classifier.setCurvatureThresholdFactor (curvature_factor_);
   classifier.setVarianceThreshold (variance_threshold_);
   classifier.setConfidence (confidence_);
+  classifier.setNoiseStandardDeviation (noise_sigma_);
+  classifier.setBoundaryBand (boundary_band_);
   classifier.setNumberOfThreads (threads_);
   classifier.classify (used_classes_);
   if (used_classes_.size () != indices_->size ())
