@@ -119,13 +119,8 @@ main (int argc, char** argv)
   // One neighbourhood search for the segmentation and the intersections.
   auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>> ();
   nb->setInputCloud (cloud);
-  if (max_radius > 0.0)
-  {
-    nb->setRadiusSearch (max_radius);
-    nb->setMaxNeighbours (static_cast<unsigned int> (k));
-  }
-  else
-    nb->setKSearch (k);
+  nb->setKSearch (k);
+  nb->setMaxRadius (max_radius);
   nb->setNumberOfThreads (threads);
   pcl_ext::tools::StageTimer search ("Searching " + std::to_string (k) + " neighbours");
   if (!nb->compute ())

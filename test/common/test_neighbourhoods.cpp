@@ -124,6 +124,44 @@ TEST (Neighbourhoods, RadiusAgreesWithBruteForce)
   }
 }
 
+TEST (Neighbourhoods, MaxRadiusCutsTheKNearestRows)
+{
+  // k nearest within a radius: the rows of a radius search limited to k, from the k search.
+  const auto cloud = randomCloud (1500, 4);
+  pcl_ext::Neighbourhoods<Point> capped, radius;
+  capped.setInputCloud (cloud);
+  capped.setKSearch (20);
+  capped.setMaxRadius (0.08);
+  ASSERT_TRUE (capped.compute ());
+  radius.setInputCloud (cloud);
+  radius.setRadiusSearch (0.08);
+  radius.setMaxNeighbours (20);
+  ASSERT_TRUE (radius.compute ());
+  ASSERT_EQ (capped.size (), cloud->size ());
+  std::size_t cut = 0;
+  for (std::size_t r = 0; r < cloud->size (); ++r)
+  {
+    const auto truth = bruteForce (*cloud, (*cloud)[r]);
+    std::size_t expected = 0;
+    while (expected < 20 && expected < truth.size () && truth[expected].d2 <= 0.08f * 0.08f)
+      ++expected;
+    cut += expected < 20;
+    // Points exactly on the sphere may fall either side in float arithmetic.
+    EXPECT_NEAR (static_cast<double> (capped[r].size ()), static_cast<double> (expected), 1.0);
+    EXPECT_NEAR (static_cast<double> (capped[r].size ()), static_cast<double> (radius[r].size ()),
+                 1.0);
+    for (std::size_t i = 0; i < capped[r].size (); ++i)
+    {
+      EXPECT_NEAR (capped[r].sqr_distances[i], truth[i].d2, 1e-6f);
+      EXPECT_LE (capped[r].sqr_distances[i], 0.08f * 0.08f);
+    }
+  }
+  EXPECT_GT (cut, 100u);  // the cap matters for this cloud
+  capped.setMaxRadius (-1.0);
+  EXPECT_FALSE (capped.compute ());
+  EXPECT_TRUE (capped.empty ());
+}
+
 TEST (Neighbourhoods, IndicesSelectRowsButSearchTheWholeCloud)
 {
   const auto cloud = randomCloud (800, 3);

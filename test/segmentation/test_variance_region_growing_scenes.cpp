@@ -2,10 +2,15 @@
  * VarianceRegionGrowing on the generated `indoor` scene against its ground-truth surfaces (the
  * `segment` field: one id per connected visible piece of a true surface), next to
  * pcl::RegionGrowing (k = 30, smoothness 3 degrees, curvature threshold 1.0) on the normals
- * and curvatures of the same k = 50 neighbourhoods, computed in the same run. Both keep
+ * and curvatures of the paper's k = 50 neighbourhoods, computed in the same run. Both keep
  * segments of at least 50 points. The paper's whole workflow (region growing, then section 4's
  * re-integration of the edge and boundary points by LocalSurfaceIntersection, defaults) is
- * measured and printed too.
+ * measured and printed too, with the best IoU of every true piece.
+ *
+ * Ours runs with the paper's k = 50 and 1e-4 and two documented options beyond the paper: the
+ * scene's 5 mm range noise removed from eq. 4-6 (setNoiseStandardDeviation) and the k = 50
+ * neighbours capped at 0.1 m, half the thickness of the scene's interior wall, the smallest
+ * detail to keep (setMaxRadius; section 2.1 sizes the neighbourhood by the level of detail).
  */
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/features/covariance_features.h>
@@ -28,15 +33,18 @@ using Point = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Point>;
 
 constexpr pcl::uindex_t kMinSize = 50;
+constexpr double kMaxRadius = 0.1;  ///< half the interior wall's thickness (0.2 m)
 
 struct Indoor
 {
   pcl_ext::simulation::SyntheticScene scene;
   Cloud::Ptr cloud {new Cloud};
-  pcl_ext::Neighbourhoods<Point>::Ptr nb {new pcl_ext::Neighbourhoods<Point>};
+  pcl_ext::Neighbourhoods<Point>::Ptr nb {new pcl_ext::Neighbourhoods<Point>};  ///< k = 50
+  pcl_ext::Neighbourhoods<Point>::Ptr capped {new pcl_ext::Neighbourhoods<Point>};
   std::vector<std::uint32_t> truth;  ///< the true surface of every point
   std::vector<pcl::PointIndices> ours, stock;
   std::vector<std::uint32_t> workflow;  ///< ours with the edge points re-integrated
+  pcl::PointCloud<pcl::Label> classes;  ///< the classification ours grew on
   pcl_ext::SegmentationMetrics m_ours, m_stock, m_workflow;
 };
 
@@ -90,22 +98,28 @@ indoor ()
   s->nb->setInputCloud (s->cloud);
   s->nb->setKSearch (50);
   EXPECT_TRUE (s->nb->compute ());
+  s->capped->setInputCloud (s->cloud);
+  s->capped->setKSearch (50);
+  s->capped->setMaxRadius (kMaxRadius);
+  EXPECT_TRUE (s->capped->compute ());
 
-  // Ours, with the paper's parameters (k = 50, variance tolerance 1e-4).
+  // Ours: the paper's k = 50 and 1e-4, the range noise removed, the radius capped.
   pcl_ext::VarianceRegionGrowing<Point> rg;
   rg.setInputCloud (s->cloud);
-  rg.setNeighbourhoods (s->nb);
+  rg.setNeighbourhoods (s->capped);
+  rg.setNoiseStandardDeviation (s->scene.noise);
   rg.setMinClusterSize (kMinSize);
   rg.extract (s->ours);
+  s->classes = rg.getClassification ();
 
   // Section 4: edge and boundary points re-integrated into the segments they fit.
   pcl::PointCloud<pcl::Label>::Ptr labels (new pcl::PointCloud<pcl::Label>);
   rg.getSegmentLabels (*labels);
   pcl_ext::LocalSurfaceIntersection<Point> lsi;
   lsi.setInputCloud (s->cloud);
-  lsi.setNeighbourhoods (s->nb);
+  lsi.setNeighbourhoods (s->capped);
   lsi.setSegmentLabels (labels);
-  lsi.setPointClasses (pcl::make_shared<pcl::PointCloud<pcl::Label>> (rg.getClassification ()));
+  lsi.setPointClasses (pcl::make_shared<pcl::PointCloud<pcl::Label>> (s->classes));
   pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> intersections;
   pcl::PointCloud<pcl::Label> merged;
   EXPECT_TRUE (lsi.compute (intersections, merged));
@@ -113,7 +127,7 @@ indoor ()
     s->workflow.push_back (l.label);
 
   // Stock PCL on the normals and curvatures (l0 / (l0 + l1 + l2), PCL's definition) of the
-  // same neighbourhoods.
+  // paper's k = 50 neighbourhoods (those of the capped ones give it less: 0.569).
   pcl::PointCloud<pcl_ext::CovarianceFeatures> features;
   pcl_ext::CovarianceFeatureEstimation<Point> fe;
   fe.setInputCloud (s->cloud);
@@ -140,6 +154,22 @@ indoor ()
   print ("VarianceRegionGrowing", s->m_ours, purity (s->ours, s->truth));
   print ("  + section 4", s->m_workflow, -1.0);
   print ("pcl::RegionGrowing", s->m_stock, purity (s->stock, s->truth));
+  // Where the mean is lost: every true piece, its share of surface points (the bound of
+  // section 3 alone) and its best IoU in each segmentation.
+  std::map<std::uint32_t, std::size_t> surface;
+  for (std::size_t i = 0; i < s->truth.size (); ++i)
+    surface[s->truth[i]] +=
+        s->classes[i].label == static_cast<std::uint32_t> (pcl_ext::PointClass::Surface);
+  std::cout << "  piece (surface) points: surface share, best IoU ours / + section 4 / stock\n";
+  for (std::size_t t = 0; t < s->m_ours.segments.size (); ++t)
+  {
+    const auto& m = s->m_ours.segments[t];
+    std::cout << "  " << std::setw (3) << m.truth_label << " (" << std::setw (2)
+              << s->scene.surface_of_segment[m.truth_label] << ") " << std::setw (6)
+              << m.truth_size << ": " << double (surface[m.truth_label]) / m.truth_size << ", "
+              << m.iou << " / " << s->m_workflow.segments[t].iou << " / "
+              << s->m_stock.segments[t].iou << "\n";
+  }
   return *s;
 }
 }  // namespace
@@ -155,13 +185,16 @@ TEST (VarianceRegionGrowingScenes, IndoorSegmentsStopAtCreases)
   ASSERT_FALSE (s.ours.empty ());
   EXPECT_GE (purity (s.ours, s.truth), 0.98);
   // The floor, the largest surface seen whole from both rooms through the door, is one
-  // segment less its crease bands (measured IoU 0.923).
+  // segment less its crease bands (measured IoU 0.948; 0.923 with the paper's eq. 4 and
+  // uncapped neighbourhoods).
   ASSERT_FALSE (s.m_ours.segments.empty ());
   EXPECT_EQ (s.m_ours.segments[0].truth_label, 1u);
   EXPECT_GE (s.m_ours.segments[0].iou, 0.9);
   // The two faces of the 0.2 m interior wall (surfaces 7 and 8, x = 7.9 and 8.1) are two
-  // segments: the sparser face's k = 50 neighbourhoods reach the other, but no walk goes
-  // farther than 3 local spacings (setMaxDistanceFactor); without that limit they were one.
+  // segments. The paper's k = 50 neighbourhoods of the sparser face reach the other face
+  // (which made 54% of its points edges, range noise removed); the 0.1 m cap keeps them on their face, and the
+  // walk's limit of 3 local spacings (setMaxDistanceFactor) keeps the walks there (without
+  // it and without the cap the two faces were one segment).
   std::map<std::uint32_t, std::uint32_t> best;
   for (const auto& m : s.m_ours.segments)
     best[m.truth_label] = m.best_predicted;
@@ -170,27 +203,41 @@ TEST (VarianceRegionGrowingScenes, IndoorSegmentsStopAtCreases)
   EXPECT_NE (best[7], best[8]);
 }
 
-// Goal not met. 300,000 points (this test), paper parameters: mean best IoU 0.479 against
-// 0.620 for pcl::RegionGrowing (33 true surface pieces); the whole workflow, with section 4's
-// re-integration, 0.627. 1,000,000 points (this fixture with parameters.points = 1000000):
-// 0.624, whole workflow 0.765, pcl::RegionGrowing 0.716. Why:
-// - Section 3 leaves edge and boundary points out of every segment (they are cut lines until
-//   section 4 re-integrates them), so a piece's best IoU is at most its share of points the
-//   classifier calls surface: averaged over the pieces that bound is 0.526 here (0.681 at
-//   1,000,000 points; 0.878 with the scene's true classes). Region growing cannot reach 0.85
-//   on its own; the gap is the classifier's edge bands (a neighbourhood wide along every
-//   crease and silhouette, all of a box face of 62 points or a door jamb) and its false
-//   edges where the 5 mm noise is large against small neighbourhoods near the scanners (30 %
-//   of the ceiling at 1,000,000 points).
-// - Pipes: silhouettes called boundaries (half the points of the cross pipe), and straight
-//   parts and elbows meeting tangentially, which no region growing separates.
-// Before the ground truth had one segment per connected visible piece (one id per surface,
-// the ceiling and the long walls cut in two by the interior wall) and before the walk's
-// distance limit (3 local spacings), the figures were 0.384 and 0.532 (0.509 with section 4).
-// Run with --gtest_also_run_disabled_tests.
+// The whole workflow (sections 3 and 4) beats pcl::RegionGrowing. Measured (300,000 points,
+// 33 true pieces): mean best IoU 0.681 against 0.620; section 3 alone 0.602.
+TEST (VarianceRegionGrowingScenes, IndoorWorkflowBeatsPclRegionGrowing)
+{
+  const Indoor& s = indoor ();
+  EXPECT_GT (s.m_workflow.mean_best_iou, s.m_stock.mean_best_iou);
+  EXPECT_GT (s.m_workflow.weighted_mean_best_iou, s.m_stock.weighted_mean_best_iou);
+}
+
+// Goal not met. 300,000 points (this test), mean best IoU over the 33 true pieces, section 3
+// alone / with section 4's re-integration, against 0.620 for pcl::RegionGrowing:
+//   paper's parameters (k = 50, 1e-4, no cap)       0.479 / 0.627
+//   range noise removed                              0.477 / 0.633
+//   noise removed, boundary band                     0.377 / 0.561
+//   noise removed, neighbours capped at 0.15 m       0.547 / 0.694
+//   noise removed, capped at 0.1 m (this fixture)    0.602 / 0.681 (weighted 0.929 / 0.973)
+// (minimum size 10 instead of 50: 0.650 / 0.731; no limit on the walk's distance: unchanged;
+// pcl::RegionGrowing on the normals of the capped neighbourhoods: 0.569.) Where it is lost
+// (the table printed above): the large pieces reach 0.93-0.99 with section 4, which re-
+// integrates the crease bands; no segment is merged across a crease (purity 0.997). But
+// - 7 pieces stay below IoU 0.05: the door's jambs and lintel (122, 45 and 50 points, 0.2 m
+//   deep: no neighbourhood fits one of them alone, all edges) and four crate faces of 29-139
+//   points seen at grazing incidence, whose surface points break into groups below the
+//   50-point minimum (piece 21: 106 surface points in 6 groups). Section 4 re-integrates
+//   points into segments that exist; it creates none. With every other piece perfect the
+//   mean would be 26 / 33 = 0.79, short of 0.85 (pcl::RegionGrowing, whose k = 30 normals
+//   need no plane across a piece, finds two of them in part: 0.42 and 0.53).
+// - The L-shaped pipe run: its straight parts and elbow meet tangentially and are one
+//   segment (IoU 0.30, 0.09, 0.51), which no region growing separates.
+// Before the ground truth had one segment per connected visible piece and before the walk's
+// distance limit, the figures were 0.384 and 0.532 (0.509 with section 4). Run with
+// --gtest_also_run_disabled_tests.
 TEST (VarianceRegionGrowingScenes, DISABLED_IndoorMeanBestIoUBeatsPclRegionGrowing)
 {
   const Indoor& s = indoor ();
-  EXPECT_GE (s.m_ours.mean_best_iou, 0.85);
-  EXPECT_GE (s.m_ours.mean_best_iou, s.m_stock.mean_best_iou + 0.10);
+  EXPECT_GE (s.m_workflow.mean_best_iou, 0.85);
+  EXPECT_GE (s.m_workflow.mean_best_iou, s.m_stock.mean_best_iou + 0.10);
 }

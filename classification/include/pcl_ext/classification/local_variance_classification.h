@@ -97,8 +97,8 @@ public:
 
   /** \brief With k: keep only the neighbours within this distance, in the cloud's units (the k
     * nearest within it). Default 0: no cap, the paper's k nearest. Valid: finite, >= 0; ignored
-    * with a radius (setRadiusSearch) or shared neighbourhoods (build those with
-    * pcl_ext::Neighbourhoods::setRadiusSearch and setMaxNeighbours instead).
+    * with a radius (setRadiusSearch) or shared neighbourhoods (give those
+    * pcl_ext::Neighbourhoods::setMaxRadius instead).
     *
     * Why: section 2.1 chooses the neighbourhood "based on the resolution of the scan and the
     * level of detail ... so that small details are not smoothed over", but a TLS scan's

@@ -65,13 +65,11 @@ public:
     own_->setInputCloud (cloud);
     if (indices)
       own_->setIndices (indices);
-    if (k != 0 && max_radius > 0.0)
+    if (k != 0)
     {
-      own_->setRadiusSearch (max_radius);
-      own_->setMaxNeighbours (static_cast<unsigned int> (k));
-    }
-    else if (k != 0)
       own_->setKSearch (k);
+      own_->setMaxRadius (max_radius);
+    }
     else
       own_->setRadiusSearch (radius);
     if (search)

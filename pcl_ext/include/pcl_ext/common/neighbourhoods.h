@@ -88,6 +88,15 @@ public:
   unsigned int
   getMaxNeighbours () const { return max_nn_; }
 
+  /** \brief With k: keep only the neighbours within this distance, so each row holds the k
+    * nearest within it (the same rows as a radius search limited to k, found at the cost of
+    * the k search). Default 0: none; valid: finite, >= 0; ignored with a radius. */
+  void
+  setMaxRadius (double radius) { max_radius_ = radius; }
+
+  double
+  getMaxRadius () const { return max_radius_; }
+
   /** \brief Search method; the default (null) builds a NanoflannKdTree. */
   void
   setSearchMethod (const SearchPtr& search) { search_ = search; }
@@ -170,9 +179,14 @@ protected:
   void
   searchRadiusBlocked ();
 
+  /** \brief Cut every row at the maximum radius (rows are sorted by distance). */
+  void
+  capRows ();
+
   int k_ = 0;
   double radius_ = 0.0;
   unsigned int max_nn_ = 0;
+  double max_radius_ = 0.0;
   unsigned int threads_ = 0;
   SearchPtr search_;
 

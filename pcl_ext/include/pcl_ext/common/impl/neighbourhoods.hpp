@@ -71,6 +71,12 @@ pcl_ext::Neighbourhoods<PointT>::validate ()
                "finite.\n", radius_);
     return false;
   }
+  if (!(max_radius_ >= 0.0 && std::isfinite (max_radius_)))
+  {
+    PCL_ERROR ("[pcl_ext::Neighbourhoods::compute] maximum radius = %g; it must be finite and "
+               ">= 0 (0: none).\n", max_radius_);
+    return false;
+  }
   return indicesInRange (*indices_, input_->size (), "[pcl_ext::Neighbourhoods::compute]");
 }
 
@@ -115,6 +121,8 @@ pcl_ext::Neighbourhoods<PointT>::compute ()
     searchWithTree ();
   else
     searchWithSearchMethod ();
+  if (k_ > 0 && max_radius_ > 0.0)
+    capRows ();
 
   if (!fake_indices_)
   {
@@ -128,6 +136,31 @@ pcl_ext::Neighbourhoods<PointT>::compute ()
   computed_fake_indices_ = fake_indices_;
   deinitCompute ();
   return true;
+}
+
+template <typename PointT> void
+pcl_ext::Neighbourhoods<PointT>::capRows ()
+{
+  // In place, front to back: a row only moves towards the front. The comparison is the one a
+  // radius search makes (squared distance <= squared radius, in float).
+  const float limit = static_cast<float> (max_radius_ * max_radius_);
+  const std::size_t rows = offsets_.size () - 1;
+  std::size_t out = 0;
+  for (std::size_t r = 0; r < rows; ++r)
+  {
+    const std::size_t begin = offsets_[r], end = offsets_[r + 1];
+    offsets_[r] = out;
+    for (std::size_t j = begin; j < end && sqr_distances_[j] <= limit; ++j, ++out)
+    {
+      indices_flat_[out] = indices_flat_[j];
+      sqr_distances_[out] = sqr_distances_[j];
+    }
+  }
+  offsets_[rows] = out;
+  indices_flat_.resize (out);
+  sqr_distances_.resize (out);
+  indices_flat_.shrink_to_fit ();
+  sqr_distances_.shrink_to_fit ();
 }
 
 template <typename PointT> void

@@ -116,13 +116,11 @@ pcl_ext::VarianceRegionGrowing<PointT>::prepareNeighbourhoods () const
   own->setInputCloud (input_);
   if (indices)
     own->setIndices (indices);
-  if (k_ != 0 && max_radius_ > 0.0)
+  if (k_ != 0)
   {
-    own->setRadiusSearch (max_radius_);
-    own->setMaxNeighbours (static_cast<unsigned int> (k_));
-  }
-  else if (k_ != 0)
     own->setKSearch (k_);
+    own->setMaxRadius (max_radius_);
+  }
   else
     own->setRadiusSearch (radius_);
   if (search_)
