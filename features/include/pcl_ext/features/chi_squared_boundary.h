@@ -64,6 +64,18 @@ public:
   bool
   getScaleByNeighbourhoodSize () const { return scale_by_size_; }
 
+  /** \brief Range noise standard deviation sigma of the scanner, in the cloud's units.
+    * Default 0: eq. 6 as above. Valid: finite, >= 0. With it, u^2 and v^2 are compared with
+    * l1 / n + sigma^2 and l2 / n + sigma^2 (see pcl_ext::centroidOffsetStatistic): the index
+    * point's own noise displaces it from the centroid by up to sigma, which eq. 6 alone
+    * can read as a border where k neighbours span only a few sigma (near a scanner). It only
+    * widens the region: it removes boundary points, never adds one. The same test as LocalVarianceClassification::setNoiseStandardDeviation. */
+  void
+  setNoiseStandardDeviation (double sigma) { noise_sigma_ = sigma; }
+
+  double
+  getNoiseStandardDeviation () const { return noise_sigma_; }
+
 protected:
   using Base::input_;
   using Base::indices_;
@@ -81,6 +93,7 @@ protected:
 
   double confidence_ = 0.95;
   bool scale_by_size_ = true;
+  double noise_sigma_ = 0.0;
 };
 }  // namespace pcl_ext
 

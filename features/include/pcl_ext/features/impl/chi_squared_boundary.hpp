@@ -17,6 +17,12 @@ pcl_ext::ChiSquaredBoundaryEstimation<PointInT, PointOutT>::checkInputs ()
                "1.\n", this->feature_name_.c_str (), confidence_);
     return false;
   }
+  if (!(noise_sigma_ >= 0.0) || !std::isfinite (noise_sigma_))
+  {
+    PCL_ERROR ("[pcl_ext::%s::compute] noise standard deviation = %g; it must be finite and "
+               ">= 0.\n", this->feature_name_.c_str (), noise_sigma_);
+    return false;
+  }
   return true;
 }
 
@@ -32,7 +38,8 @@ pcl_ext::ChiSquaredBoundaryEstimation<PointInT, PointOutT>::computePoint (std::s
     return false;
   const PointInT& p = (*input_)[(*indices_)[row]];
   const double statistic =
-      centroidOffsetStatistic (Eigen::Vector3d (p.x, p.y, p.z), local, scale_by_size_);
+      centroidOffsetStatistic (Eigen::Vector3d (p.x, p.y, p.z), local, scale_by_size_,
+                               noise_sigma_ * noise_sigma_);
   out.boundary_point = statistic > quantile ? 1 : 0;
   return true;
 }
