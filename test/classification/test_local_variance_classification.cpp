@@ -273,6 +273,58 @@ TEST (LocalVarianceClassification, DeterministicForAnyThreadCountAndSharedNeighb
   EXPECT_EQ (values (band_one), values (band_shared));
 }
 
+TEST (LocalVarianceClassification, MaxRadiusKeepsASparseFaceOffTheDenseOne)
+{
+  // Two parallel faces 0.1 apart, as the faces of a thin wall seen from two scanners: one on
+  // a 3 cm grid, the other on a 1 cm grid. The k = 50 neighbourhoods of the sparse face reach
+  // about 0.1, so they take in a dozen points of the dense face and its points are not
+  // surface; capped at 0.08 they hold about 22 points of their own face only.
+  Cloud::Ptr cloud (new Cloud);
+  std::size_t sparse = 0;
+  for (int i = 0; i <= 33; ++i)
+    for (int j = 0; j <= 33; ++j, ++sparse)
+      cloud->push_back (pcl::PointXYZ (0.03f * i, 0.03f * j, 0.1f));
+  for (int i = 0; i <= 100; ++i)
+    for (int j = 0; j <= 100; ++j)
+      cloud->push_back (pcl::PointXYZ (0.01f * i, 0.01f * j, 0.f));
+  const auto interiorSurfaceShare = [&] (const Labels& labels) {
+    std::size_t n = 0, surface = 0;
+    for (std::size_t i = 0; i < sparse; ++i)
+    {
+      const auto& p = (*cloud)[i];
+      if (std::min ({p.x, p.y, 0.99f - p.x, 0.99f - p.y}) < 0.15f)
+        continue;
+      ++n;
+      surface += labels[i].label == static_cast<std::uint32_t> (PointClass::Surface);
+    }
+    return double (surface) / n;
+  };
+  Classifier c;
+  c.setInputCloud (cloud);
+  c.setVarianceThreshold (1e-4);
+  Labels paper, capped, capped_two, shared;
+  c.setNumberOfThreads (1);
+  c.classify (paper);
+  c.setMaxRadius (0.08);
+  c.classify (capped);
+  c.setNumberOfThreads (2);
+  c.classify (capped_two);
+  auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>> ();
+  nb->setInputCloud (cloud);
+  nb->setKSearch (50);
+  nb->setMaxRadius (0.08);
+  ASSERT_TRUE (nb->compute ());
+  c.setNeighbourhoods (nb);
+  c.classify (shared);
+  ASSERT_EQ (capped.size (), cloud->size ());
+  std::cout << "sparse face interior called surface: " << interiorSurfaceShare (paper)
+            << " (k = 50), " << interiorSurfaceShare (capped) << " (capped at 0.08)\n";
+  EXPECT_LT (interiorSurfaceShare (paper), 0.5);
+  EXPECT_GE (interiorSurfaceShare (capped), 0.95);
+  EXPECT_EQ (values (capped), values (capped_two));
+  EXPECT_EQ (values (capped), values (shared));
+}
+
 TEST (LocalVarianceClassification, ExtractListsEveryClassAndHonoursIndices)
 {
   const auto cube = pcl_ext::test::makeCube (1.0, 0.04);
@@ -358,6 +410,10 @@ TEST (LocalVarianceClassificationBadInput, BadParametersGiveEmptyOutput)
   expectEmpty ("k larger than the cloud");
   c.setRadiusSearch (-0.1);
   expectEmpty ("negative radius");
+  c.setMaxRadius (-0.1);
+  expectEmpty ("negative maximum radius");
+  c.setMaxRadius (std::numeric_limits<double>::infinity ());
+  expectEmpty ("infinite maximum radius");
 }
 
 TEST (LocalVarianceClassificationBadInput, NonFiniteDuplicateAndCollinearPointsAreUnknown)

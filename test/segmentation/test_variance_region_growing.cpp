@@ -4,6 +4,7 @@
  */
 #include "../features/analytic_clouds.h"
 
+#include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 
@@ -380,6 +381,55 @@ TEST (VarianceRegionGrowing, SharedNeighbourhoodsGiveTheSameSegments)
   ASSERT_EQ (a.size (), b.size ());
 }
 
+TEST (VarianceRegionGrowing, ClassifierOptionsPassThrough)
+{
+  // The options beyond the paper reach the classification: the segmenter's classes are those
+  // of LocalVarianceClassification with the same options, with its own search (k = 50 capped
+  // at a radius) or with shared neighbourhoods, for 1 and 2 threads.
+  const auto cube = pcl_ext::test::makeCube (1.0, 0.02, 0.003);
+  pcl_ext::LocalVarianceClassification<Point> lvc;
+  lvc.setInputCloud (cube.cloud);
+  lvc.setNoiseStandardDeviation (0.003);
+  lvc.setBoundaryBand (true);
+  lvc.setMaxRadius (0.06);
+  pcl::PointCloud<pcl::Label> expected;
+  lvc.classify (expected);
+  ASSERT_EQ (expected.size (), cube.cloud->size ());
+  auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<Point>> ();
+  nb->setInputCloud (cube.cloud);
+  nb->setKSearch (50);
+  nb->setMaxRadius (0.06);
+  ASSERT_TRUE (nb->compute ());
+  std::vector<pcl::PointIndices> reference;
+  for (const unsigned threads : {1u, 2u})
+    for (const bool shared : {false, true})
+    {
+      Growing rg;
+      rg.setInputCloud (cube.cloud);
+      rg.setNoiseStandardDeviation (0.003);
+      rg.setBoundaryBand (true);
+      rg.setMaxRadius (0.06);
+      rg.setNumberOfThreads (threads);
+      rg.setMinClusterSize (100);
+      if (shared)
+        rg.setNeighbourhoods (nb);
+      std::vector<pcl::PointIndices> clusters;
+      rg.extract (clusters);
+      EXPECT_EQ (clusters.size (), 6u);  // the faces
+      const auto& classes = rg.getClassification ();
+      ASSERT_EQ (classes.size (), expected.size ());
+      std::size_t differ = 0;
+      for (std::size_t i = 0; i < classes.size (); ++i)
+        differ += classes[i].label != expected[i].label;
+      EXPECT_EQ (differ, 0u) << threads << " threads, shared " << shared;
+      if (reference.empty ())
+        reference = clusters;
+      ASSERT_EQ (clusters.size (), reference.size ());
+      for (std::size_t c = 0; c < clusters.size (); ++c)
+        EXPECT_EQ (clusters[c].indices, reference[c].indices);
+    }
+}
+
 TEST (VarianceRegionGrowing, OutputsLabelsAndColours)
 {
   // An organised 2-row cloud: the labels keep its layout.
@@ -607,6 +657,10 @@ TEST (VarianceRegionGrowingBadInput, NonsenseParameters)
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxDistanceFactor (-1.0); }));
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxDistanceFactor (std::nan ("")); }));
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxDistanceFactor (INFINITY); }));
+  EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxRadius (-1.0); }));
+  EXPECT_TRUE (fails ([] (Growing& rg) { rg.setMaxRadius (std::nan ("")); }));
+  EXPECT_TRUE (fails ([] (Growing& rg) { rg.setNoiseStandardDeviation (-0.001); }));
+  EXPECT_TRUE (fails ([] (Growing& rg) { rg.setNoiseStandardDeviation (std::nan ("")); }));
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setKSearch (2); }));
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setKSearch (-5); }));
   EXPECT_TRUE (fails ([] (Growing& rg) { rg.setKSearch (100000); }));
