@@ -11,6 +11,8 @@
 #include <pcl/pcl_base.h>
 #include <pcl/point_types.h>
 
+#include <Eigen/Core>
+
 #include <vector>
 
 namespace pcl_ext
@@ -40,8 +42,9 @@ namespace pcl_ext
   * neighbours, fewer than 3 valid curvatures for eq. 5) are 0, "unknown".
   *
   * Options beyond the paper, off by default: the scanner's range noise removed from eq. 4-6
-  * (setNoiseStandardDeviation) and boundary labels over the whole neighbourhood band
-  * (setBoundaryBand).
+  * (setNoiseStandardDeviation), boundary labels over the whole neighbourhood band
+  * (setBoundaryBand), edges required to bend the normals (setCreaseAngle) and the k
+  * neighbours capped at a radius (setMaxRadius).
   *
   * Departures from the text: eq. 6 is scaled by the neighbourhood size (see
   * pcl_ext::ChiSquaredBoundaryEstimation, setScaleByNeighbourhoodSize); with indices, eq. 5
@@ -193,6 +196,30 @@ public:
   double
   getNoiseStandardDeviation () const { return noise_sigma_; }
 
+  /** \brief Smallest crease an edge must show, as the angle between normals, in radians: a
+    * point the variance test (eq. 5) calls an edge stays one only when some neighbour's
+    * normal differs from its own by more than this angle; otherwise it goes on through the
+    * workflow as a surface point (the boundary test). Default 0: off, the paper's workflow;
+    * valid: 0 .. pi/2 (normals are unoriented, so angles above pi/2 are folded).
+    *
+    * Why: eq. 5 measures how much kappa (eq. 4) varies, and on a curved surface kappa also
+    * varies with the shape of the neighbourhood, not only with a crease: next to a shadow or
+    * the end of a pipe the neighbourhood becomes one-sided and kappa changes, though every
+    * normal in it lies on one smooth cylinder. The paper's own principal-direction analysis
+    * (section 5) and its closing remark (interrogating index points "with regards to the
+    * principle curvature directions, not just the normal directions") point to the normals
+    * for this. A crease the classifier should find bends the normals across the
+    * neighbourhood: pi/4, halfway to a right angle, keeps the right-angled creases of walls,
+    * boxes and beams. Measured (k = 50, noise removed, boundary band, 300,000 points; see the
+    * module README): edge F1 0.713 -> 0.78 on the generated pipes scene and 0.883 -> 0.89 on
+    * indoor. Each normal is the eigenvector of l0 of its own neighbourhood (already computed),
+    * so the check costs one pass over the neighbours of the edge candidates. */
+  void
+  setCreaseAngle (double radians) { crease_angle_ = radians; }
+
+  double
+  getCreaseAngle () const { return crease_angle_; }
+
   /** \brief Confidence level of the boundary test (alpha of chi2_2(alpha), eq. 6). Default
     * 0.95; valid: 0 < confidence < 1. */
   void
@@ -275,6 +302,10 @@ protected:
   double
   deriveCurvatureThreshold () const;
 
+  /** \brief setCreaseAngle: cosine of the widest angle between two normals of a row. */
+  template <typename Row> float
+  widestNormalCosine (const Row& nn, const Eigen::Vector3f& own) const;
+
   int k_ = 50;
   double radius_ = 0.0;
   double max_radius_ = 0.0;
@@ -286,6 +317,7 @@ protected:
   double variance_threshold_ = 1e-4;
   double noise_sigma_ = 0.0;
   bool boundary_band_ = false;
+  double crease_angle_ = 0.0;
   double confidence_ = 0.95;
   bool scale_by_size_ = true;
   unsigned int tests_ = ALL_TESTS;
@@ -293,6 +325,7 @@ protected:
 
   std::vector<float> kappa_;      ///< per point of the cloud; NaN when not computed
   std::vector<float> statistic_;  ///< eq. 6 per row
+  std::vector<Eigen::Vector3f> normals_;  ///< per point of the cloud, with setCreaseAngle
 };
 }  // namespace pcl_ext
 

@@ -156,6 +156,15 @@ public:
   double
   getRadiusSearch () const { return radius_; }
 
+  /** \brief Smallest crease an edge must show, as the angle between normals, in radians, for
+    * the classification (see LocalVarianceClassification::setCreaseAngle). Default 0: off, the
+    * paper's workflow; valid: 0 .. pi/2. */
+  void
+  setCreaseAngle (double radians) { crease_angle_ = radians; }
+
+  double
+  getCreaseAngle () const { return crease_angle_; }
+
   /** \brief With k: keep only the neighbours within this distance, in the cloud's units (the k
     * nearest within it), for the classification and the walk. Default 0: no cap, the paper's
     * k nearest; valid: finite, >= 0; ignored with a radius or shared neighbourhoods. See
@@ -357,6 +366,7 @@ protected:
   double confidence_ = 0.95;
   double noise_sigma_ = 0.0;
   bool boundary_band_ = false;
+  double crease_angle_ = 0.0;
   double max_distance_ = 0.0;
   double max_distance_factor_ = 3.0;
   pcl::uindex_t min_size_ = 1;

@@ -54,6 +54,12 @@ pcl_ext::LocalVarianceClassification<PointT>::checkParameters () const
                max_radius_);
     return false;
   }
+  if (!(crease_angle_ >= 0.0 && crease_angle_ <= 0.5 * M_PI))
+  {
+    PCL_ERROR ("%s crease angle = %g; it must lie between 0 and pi/2 (0: off).\n", name,
+               crease_angle_);
+    return false;
+  }
   if ((tests_ & BOUNDARY_TEST) && !std::isfinite (chiSquaredQuantile2 (confidence_)))
   {
     PCL_ERROR ("%s confidence = %g; it must lie strictly between 0 and 1.\n", name,
@@ -101,6 +107,8 @@ pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (const Neighbou
     Eigen::Vector3d values = local.eigen.values;
     values[0] = std::max (values[0] - noise_variance, 0.0);
     kappa_[idx] = static_cast<float> (surfaceVariance (values));
+    if (!normals_.empty ())
+      normals_[idx] = local.eigen.vectors.col (0).template cast<float> ();
     statistic_[r] = boundary ? static_cast<float> (centroidOffsetStatistic (
                                    Eigen::Vector3d (p.x, p.y, p.z), local, scale_by_size_,
                                    noise_variance))
@@ -123,6 +131,34 @@ pcl_ext::LocalVarianceClassification<PointT>::deriveCurvatureThreshold () const
   return curvature_factor_ * static_cast<double> (*middle);
 }
 
+template <typename PointT>
+template <typename Row>
+float
+pcl_ext::LocalVarianceClassification<PointT>::widestNormalCosine (const Row& nn,
+                                                                  const Eigen::Vector3f& own) const
+{
+  // Normals are unoriented: |cos|. First the neighbour normal farthest from the point's own,
+  // then the one farthest from that: the two ends of the spread (exact for normals along one
+  // arc, as across a crease or around a pipe).
+  float farthest = 1.f;
+  Eigen::Vector3f end = own;
+  for (const auto j : nn)
+    if (std::isfinite (kappa_[j]))
+    {
+      const float c = std::abs (own.dot (normals_[j]));
+      if (c < farthest)
+      {
+        farthest = c;
+        end = normals_[j];
+      }
+    }
+  float widest = farthest;
+  for (const auto j : nn)
+    if (std::isfinite (kappa_[j]))
+      widest = std::min (widest, std::abs (end.dot (normals_[j])));
+  return widest;
+}
+
 template <typename PointT> void
 pcl_ext::LocalVarianceClassification<PointT>::label (const Neighbourhoods<PointT>& nb,
                                                      pcl::PointCloud<pcl::Label>& labels) const
@@ -134,9 +170,10 @@ pcl_ext::LocalVarianceClassification<PointT>::label (const Neighbourhoods<PointT
   const double threshold = curvature_threshold_used_;
   const double quantile = boundary ? chiSquaredQuantile2 (confidence_) : 0.0;
   const float* const kappa = kappa_.data ();
+  const float min_cosine = static_cast<float> (std::cos (crease_angle_));
 #pragma omp parallel for num_threads(resolveThreadCount (threads_)) schedule(dynamic, 1024) \
     default(none) shared(nb, labels, rows, curvature, variance, boundary, threshold, quantile, \
-                         kappa)
+                         kappa, min_cosine)
   for (std::ptrdiff_t r = 0; r < rows; ++r)
   {
     auto& out = labels[r].label;
@@ -163,6 +200,12 @@ pcl_ext::LocalVarianceClassification<PointT>::label (const Neighbourhoods<PointT
         continue;
       }
       edge = var > variance_threshold_;
+      // setCreaseAngle: an edge must bend the normals across its neighbourhood. The widest
+      // angle between two of its normals, found from the normal farthest from the point's
+      // own (on a crease the point's own normal is a blend of the two faces', so the angle to
+      // it can be half the crease's).
+      if (edge && !normals_.empty ())
+        edge = widestNormalCosine (nn, normals_[(*indices_)[r]]) < min_cosine;
     }
     if (edge)
       out = static_cast<std::uint32_t> (PointClass::Edge);
@@ -233,6 +276,11 @@ pcl_ext::LocalVarianceClassification<PointT>::classify (pcl::PointCloud<pcl::Lab
 
   kappa_.assign (input_->size (), std::numeric_limits<float>::quiet_NaN ());
   statistic_.resize (indices_->size ());
+  // Normals only where the crease check needs them (every point whose kappa is computed).
+  if (crease_angle_ > 0.0 && (tests_ & VARIANCE_TEST))
+    normals_.assign (input_->size (), Eigen::Vector3f::Zero ());
+  else
+    normals_.clear ();
   if (input_->is_dense)
     computeCovariances<true> (*nb);
   else
@@ -248,6 +296,8 @@ pcl_ext::LocalVarianceClassification<PointT>::classify (pcl::PointCloud<pcl::Lab
     labels.height = input_->height;
   }
   label (*nb, labels);
+  normals_.clear ();
+  normals_.shrink_to_fit ();
   if (boundary_band_ && (tests_ & BOUNDARY_TEST))
     widenBoundaries (*nb, labels);
   labels.header = input_->header;

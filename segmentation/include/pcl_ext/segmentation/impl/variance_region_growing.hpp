@@ -161,6 +161,7 @@ pcl_ext::VarianceRegionGrowing<PointT>::prepareClasses (const NeighbourhoodsCons
   classifier.setConfidence (confidence_);
   classifier.setNoiseStandardDeviation (noise_sigma_);
   classifier.setBoundaryBand (boundary_band_);
+  classifier.setCreaseAngle (crease_angle_);
   classifier.setNumberOfThreads (threads_);
   classifier.classify (used_classes_);
   if (used_classes_.size () != indices_->size ())
