@@ -17,6 +17,7 @@
 #include <pcl/conversions.h>
 
 #include <cstring>
+#include <cmath>
 #include <iostream>
 
 namespace
@@ -41,7 +42,7 @@ main (int argc, char** argv)
   std::string input_path, output_path, png_path;
   int k = 50;
   double radius = 0.0, max_radius = 0.0, curvature_threshold = 0.0, curvature_factor = 3.0;
-  double variance_threshold = 1e-4, confidence = 0.95, noise_sigma = 0.0;
+  double variance_threshold = 1e-4, confidence = 0.95, noise_sigma = 0.0, crease_angle = 0.0;
   bool boundary_band = false;
   unsigned int threads = 0;
   pcl_ext::tools::CommandLine cl (
@@ -65,11 +66,18 @@ main (int argc, char** argv)
                 "the scanner's range noise sigma, removed from eq. 4-6 (0: the paper's)");
   cl.addSwitch ("boundary_band", boundary_band,
                 "also label boundary the surface points next to one eq. 6 finds");
+  cl.addOption ("crease_angle", crease_angle,
+                "an edge of eq. 5 must bend the normals by more than this (degrees; 0: off)");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png", png_path, "also render the labels to this PNG (blue surface, red edge, "
                                  "green boundary); needs an X display");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
+  if (!(crease_angle >= 0.0 && crease_angle <= 90.0))
+  {
+    std::cerr << "Error: -crease_angle must lie between 0 and 90 degrees.\n";
+    return 1;
+  }
   if (!pcl_ext::tools::checkOutputsWritable (output_path, {png_path}))
     return 1;
 
@@ -93,6 +101,7 @@ main (int argc, char** argv)
   classifier.setConfidence (confidence);
   classifier.setNoiseStandardDeviation (noise_sigma);
   classifier.setBoundaryBand (boundary_band);
+  classifier.setCreaseAngle (crease_angle * M_PI / 180.0);
   classifier.setNumberOfThreads (threads);
   pcl::PointCloud<pcl::Label> labels;
   pcl_ext::tools::StageTimer classify ("Classifying");

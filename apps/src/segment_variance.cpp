@@ -30,7 +30,7 @@ main (int argc, char** argv)
   int k = 50, min_size = 50;
   double curvature_threshold = 0.0, curvature_factor = 3.0, variance_threshold = 1e-4;
   double confidence = 0.95, max_distance = 0.0, max_distance_factor = 3.0, parallel_angle = 10.0;
-  double noise_sigma = 0.0, max_radius = 0.0;
+  double noise_sigma = 0.0, max_radius = 0.0, crease_angle = 0.0;
   bool reintegrate = false, boundary_band = false;
   unsigned int threads = 0;
   pcl_ext::tools::CommandLine cl (
@@ -54,6 +54,8 @@ main (int argc, char** argv)
                 "the scanner's range noise sigma, removed from eq. 4-6 (0: the paper's)");
   cl.addSwitch ("boundary_band", boundary_band,
                 "also label boundary the surface points next to one eq. 6 finds");
+  cl.addOption ("crease_angle", crease_angle,
+                "an edge of eq. 5 must bend the normals by more than this (degrees; 0: off)");
   cl.addOption ("max_distance", max_distance,
                 "longest link from a seed to a neighbour (0: no limit beyond the k neighbours)");
   cl.addOption ("max_distance_factor", max_distance_factor,
@@ -72,6 +74,11 @@ main (int argc, char** argv)
   cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
+  if (!(crease_angle >= 0.0 && crease_angle <= 90.0))
+  {
+    std::cerr << "Error: -crease_angle must lie between 0 and 90 degrees.\n";
+    return 1;
+  }
   if (k < 3)
   {
     std::cerr << "Error: -k must be at least 3.\n";
@@ -139,6 +146,7 @@ main (int argc, char** argv)
   rg.setConfidence (confidence);
   rg.setNoiseStandardDeviation (noise_sigma);
   rg.setBoundaryBand (boundary_band);
+  rg.setCreaseAngle (crease_angle * M_PI / 180.0);
   rg.setMaxDistance (max_distance);
   rg.setMaxDistanceFactor (max_distance_factor);
   rg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));

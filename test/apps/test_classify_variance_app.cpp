@@ -1,6 +1,7 @@
 /*
  * pcl_ext_classify_variance run as a command: labels of a cube written into the `label` field
- * next to the input's own fields, the options beyond the paper (-noise_sigma, -boundary_band),
+ * next to the input's own fields, the options beyond the paper (-noise_sigma, -boundary_band,
+ * -crease_angle),
  * usage errors, and no output on failure.
  */
 #include "../app_test.h"
@@ -82,6 +83,14 @@ TEST_F (ClassifyVarianceApp, CubeCreasesAreEdgesWithAndWithoutTheNoiseModel)
   const auto noise = check ("noise.pcd");
   EXPECT_EQ (noise.first, 1.0);
   EXPECT_GT (noise.second, 0.95);
+  // The crease angle keeps the cube's right-angled creases.
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("crease.pcd") +
+                  " -threads 2 -noise_sigma 0.001 -crease_angle 45"),
+             0)
+      << output_;
+  const auto crease = check ("crease.pcd");
+  EXPECT_EQ (crease.first, 1.0);
+  EXPECT_GT (crease.second, 0.95);
 }
 
 TEST_F (ClassifyVarianceApp, BadUsageFailsWithoutOutput)
@@ -90,8 +99,12 @@ TEST_F (ClassifyVarianceApp, BadUsageFailsWithoutOutput)
   EXPECT_EQ (run ("-h"), 0);
   EXPECT_NE (output_.find ("-noise_sigma"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-boundary_band"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-crease_angle"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-max_radius"), std::string::npos) << output_;
   EXPECT_EQ (run (io + " -noise_sigma -0.001"), 1);
   EXPECT_EQ (run (io + " -noise_sigma nan"), 1);
+  EXPECT_EQ (run (io + " -crease_angle 91"), 1);
+  EXPECT_EQ (run (io + " -crease_angle -1"), 1);
   EXPECT_EQ (run (io + " -variance_threshold -1"), 1);
   EXPECT_EQ (run (io + " -k 2"), 1);
   EXPECT_FALSE (exists ("out.pcd"));

@@ -1,7 +1,7 @@
 /*
  * pcl_ext_segment_variance run as a command: segments of a cube written into the `label` field
  * next to the input's own fields, the classifier's options beyond the paper (-noise_sigma,
- * -boundary_band, -max_radius), usage errors, and no output on failure.
+ * -boundary_band, -crease_angle, -max_radius), usage errors, and no output on failure.
  */
 #include "../app_test.h"
 
@@ -77,11 +77,12 @@ TEST_F (SegmentVarianceApp, CubeFacesAreLabelledSegments)
 TEST_F (SegmentVarianceApp, ClassifierOptionsReachTheSegmentation)
 {
   // The options beyond the paper pass through to the classification: with the cube's 1 mm
-  // noise removed and the boundary band on, the faces are still the 6 segments; a radius cap
+  // noise removed, the boundary band on and a 45 degree crease angle, the faces are still the
+  // 6 segments; a radius cap
   // below the k = 50 neighbourhood radius (about 0.1 m at this spacing) narrows the edge band
   // the segments stop at.
   ASSERT_EQ (run (path ("cube.pcd") + " " + path ("noise.pcd") +
-                  " -threads 2 -noise_sigma 0.001 -boundary_band"),
+                  " -threads 2 -noise_sigma 0.001 -boundary_band -crease_angle 45"),
              0)
       << output_;
   EXPECT_NE (output_.find ("6 segments"), std::string::npos) << output_;
@@ -107,11 +108,13 @@ TEST_F (SegmentVarianceApp, ClassifierOptionsReachTheSegmentation)
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -noise_sigma -0.001"), 1);
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -noise_sigma nan"), 1);
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -max_radius -1"), 1);
+  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -crease_angle 91"), 1);
   EXPECT_FALSE (exists ("out.pcd"));
   EXPECT_EQ (run ("-h"), 0);
   EXPECT_NE (output_.find ("-noise_sigma"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-boundary_band"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-max_radius"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-crease_angle"), std::string::npos) << output_;
 }
 
 TEST_F (SegmentVarianceApp, RendersThePng)
