@@ -192,9 +192,9 @@ TEST (VarianceRegionGrowingScenes, IndoorSegmentsStopAtCreases)
   EXPECT_GE (s.m_ours.segments[0].iou, 0.9);
   // The two faces of the 0.2 m interior wall (surfaces 7 and 8, x = 7.9 and 8.1) are two
   // segments. The paper's k = 50 neighbourhoods of the sparser face reach the other face
-  // (which made 54% of its points edges, range noise removed); the 0.1 m cap keeps them on their face, and the
-  // walk's limit of 3 local spacings (setMaxDistanceFactor) keeps the walks there (without
-  // it and without the cap the two faces were one segment).
+  // (which made 54% of its points edges, range noise removed); the 0.1 m cap keeps them on
+  // their face, and the walk's limit of 3 local spacings (setMaxDistanceFactor) keeps the
+  // walks there (without it and without the cap the two faces were one segment).
   std::map<std::uint32_t, std::uint32_t> best;
   for (const auto& m : s.m_ours.segments)
     best[m.truth_label] = m.best_predicted;

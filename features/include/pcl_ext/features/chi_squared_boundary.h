@@ -69,7 +69,8 @@ public:
     * l1 / n + sigma^2 and l2 / n + sigma^2 (see pcl_ext::centroidOffsetStatistic): the index
     * point's own noise displaces it from the centroid by up to sigma, which eq. 6 alone
     * can read as a border where k neighbours span only a few sigma (near a scanner). It only
-    * widens the region: it removes boundary points, never adds one. The same test as LocalVarianceClassification::setNoiseStandardDeviation. */
+    * widens the region: it removes boundary points, never adds one. The same test as
+    * LocalVarianceClassification::setNoiseStandardDeviation. */
   void
   setNoiseStandardDeviation (double sigma) { noise_sigma_ = sigma; }
 
