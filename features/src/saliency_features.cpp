@@ -23,11 +23,11 @@ const char* const kScaleFeatures[] = {"clutterness", "surfaceness", "curveness",
                                       "log_density", "top_above", "bottom_below"};
 constexpr std::size_t kNumScaleFeatures = sizeof (kScaleFeatures) / sizeof (kScaleFeatures[0]);
 
-/** Eq. 12, the dimensionality features and the angles of the eigen-decomposition of the
-  * points \a nn over radius \a r, into out(0 .. 7). */
-template <typename Row> void
-eigenFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::Indices& nn, double r,
-               const Eigen::Vector3d& up, Row&& out)
+/** The eigen-decomposition of the points \a nn and their eq. 12 saliencies over radius \a r
+  * (clutterness, surfaceness, curveness) into out(0 .. 2). */
+template <typename Row> EigenDecomposition
+saliencies (const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::Indices& nn, double r,
+            Row& out)
 {
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
   Eigen::Vector3d centroid;
@@ -38,6 +38,17 @@ eigenFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::Indices& 
   out (0) = static_cast<float> (std::log (std::max (l (0), kTiny)));
   out (1) = static_cast<float> (std::log (std::max (l (1) / r - l (0), kTiny)));
   out (2) = static_cast<float> (std::log (std::max (l (2) / r - l (1) / r, kTiny)));
+  return eig;
+}
+
+/** Eq. 12, the dimensionality features and the angles of the eigen-decomposition of the
+  * points \a nn over radius \a r, into out(0 .. 7). */
+template <typename Row> void
+eigenFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::Indices& nn, double r,
+               const Eigen::Vector3d& up, Row&& out)
+{
+  const EigenDecomposition eig = saliencies (cloud, nn, r, out);
+  const Eigen::Vector3d& l = eig.values;
   const double l3 = std::max (l (2), kTiny);
   out (3) = static_cast<float> (std::max (0.0, l (2) - l (1)) / l3);
   out (4) = static_cast<float> (std::max (0.0, l (1) - l (0)) / l3);
@@ -202,16 +213,8 @@ computeSaliencyFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
         d2.resize (k);
         nn.resize (tree.nearestKSearch (p.data, k, nn.data (), d2.data ()));
       }
-      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
-      Eigen::Vector3d centroid;
-      EigenDecomposition eig;
-      computeLocalCovariance (cloud, nn, cov, centroid);
-      computeEigenDecomposition (cov, eig);
-      const Eigen::Vector3d& l = eig.values;
       auto out = features.row (row);
-      out (0) = static_cast<float> (std::log (std::max (l (0), kTiny)));
-      out (1) = static_cast<float> (std::log (std::max (l (1) / r - l (0), kTiny)));
-      out (2) = static_cast<float> (std::log (std::max (l (2) / r - l (1) / r, kTiny)));
+      const EigenDecomposition eig = saliencies (cloud, nn, r, out);
       const double cn = std::min (1.0, std::abs (eig.vectors.col (0).dot (up.cast<double> ())));
       const double ct = std::min (1.0, std::abs (eig.vectors.col (2).dot (up.cast<double> ())));
       out (3) = static_cast<float> (std::acos (cn));
