@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace pcl_ext
@@ -141,6 +142,34 @@ public:
     {
       visit_row (y, cx - ring, cx - ring);
       visit_row (y, cx + ring, cx + ring);
+    }
+  }
+
+  /** \brief The (at most) \a k nearest points to \a q within \a reach that accept(j,
+    * squared distance) takes, into \a best as (squared distance, index), nearest first, ties
+    * by index. Rings of cells are searched outward until the k-th is nearer than the next ring
+    * or the ring passes the reach (\a max_ring at most). */
+  template <typename Accept> void
+  nearestInRings (const Eigen::Vector2f& q, std::size_t k, float reach, std::int64_t max_ring,
+                  Accept accept, std::vector<std::pair<float, std::uint32_t>>& best) const
+  {
+    best.clear ();
+    const auto consider = [&] (std::uint32_t j, float d2) {
+      if (!accept (j, d2))
+        return;
+      const std::pair<float, std::uint32_t> c (d2, j);
+      if (best.size () == k && !(c < best.back ()))
+        return;
+      best.insert (std::upper_bound (best.begin (), best.end (), c), c);
+      if (best.size () > k)
+        best.pop_back ();
+    };
+    for (std::int64_t ring = 0; ring <= max_ring; ++ring)
+    {
+      forEachInRing (q, ring, consider);
+      const float ring_reach = ring * cell_;
+      if (ring_reach >= reach || (best.size () == k && best.back ().first <= ring_reach * ring_reach))
+        break;
     }
   }
 

@@ -42,24 +42,9 @@ localGaps (const ProfilePoints& profile, double max_distance, unsigned int neigh
   {
     if (rep[i] != i)
       continue;
-    best.clear ();
-    const auto consider = [&] (std::uint32_t j, float d2) {
-      if (j == i || rep[j] != j || d2 > cap2)
-        return;
-      const std::pair<float, std::uint32_t> c (d2, j);
-      if (best.size () == m && !(c < best.back ()))
-        return;
-      best.insert (std::upper_bound (best.begin (), best.end (), c), c);
-      if (best.size () > m)
-        best.pop_back ();
-    };
-    for (std::int64_t ring = 0; ring <= max_ring; ++ring)
-    {
-      grid.forEachInRing (profile.uv[i], ring, consider);
-      const float reach = ring * grid.cellSize ();
-      if (reach >= cap || (best.size () == m && best.back ().first <= reach * reach))
-        break;
-    }
+    grid.nearestInRings (
+        profile.uv[i], m, cap, max_ring,
+        [&] (std::uint32_t j, float d2) { return j != i && rep[j] == j && d2 <= cap2; }, best);
     sizes[i] = static_cast<std::uint32_t> (best.size ());
     for (std::size_t k = 0; k < best.size (); ++k)
       lists[i * m + k] = best[k].second;

@@ -45,29 +45,16 @@ proximityEdges (const ProfilePoints& profile, double threshold, unsigned int nei
   {
     if (rep[i] != i)
       continue;
-    best.clear ();
     const float reach_i = limit (i);
     const float r2 = reach_i * reach_i;
-    const auto consider = [&] (std::uint32_t j, float d2) {
-      // With local thresholds a link must be within both ends' thresholds: a sparse point
-      // does not reach into a dense surface farther than that surface's own links do.
-      if (j == i || rep[j] != j || d2 > r2 ||
-          (thresholds && d2 > limit (j) * limit (j)))
-        return;
-      const std::pair<float, std::uint32_t> c (d2, j);
-      if (best.size () == k && !(c < best.back ()))
-        return;
-      best.insert (std::upper_bound (best.begin (), best.end (), c), c);
-      if (best.size () > k)
-        best.pop_back ();
-    };
-    for (std::int64_t ring = 0; ring <= max_ring; ++ring)
-    {
-      grid.forEachInRing (profile.uv[i], ring, consider);
-      const float reach = ring * grid.cellSize ();
-      if (reach >= reach_i || (best.size () == k && best.back ().first <= reach * reach))
-        break;
-    }
+    // With local thresholds a link must be within both ends' thresholds: a sparse point does
+    // not reach into a dense surface farther than that surface's own links do.
+    grid.nearestInRings (profile.uv[i], k, reach_i, max_ring,
+                         [&] (std::uint32_t j, float d2) {
+                           return j != i && rep[j] == j && d2 <= r2 &&
+                                  !(thresholds && d2 > limit (j) * limit (j));
+                         },
+                         best);
     sizes[i] = static_cast<std::uint32_t> (best.size ());
     for (std::size_t m = 0; m < best.size (); ++m)
       lists[i * k + m] = best[m].second;
