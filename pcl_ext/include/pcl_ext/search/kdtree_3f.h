@@ -55,6 +55,26 @@ public:
                   float* sqr_distances,
                   float sqr_bound = std::numeric_limits<float>::max ()) const;
 
+  /** \brief Position ranges [first, last) of the tree's leaves, in position order. Each
+    * holds at most the leaf size of points lying close together. */
+  std::vector<std::pair<std::size_t, std::size_t>>
+  leafRanges () const;
+
+  /** \brief The k nearest neighbours of each tree point at positions [first, last), closest
+    * first, equal distances in tree-position order.
+    *
+    * Exact, and the same for a point whatever range it is searched in. Meant for a run of
+    * nearby points such as a leaf: the exact k-th distance of one of them bounds every
+    * other's (triangle inequality), so the candidates of all are gathered by one radius
+    * search and each point only ranks those, instead of walking the tree again.
+    * \param[out] indices (last - first) * k point indices (as given to build), k per point in
+    * position order
+    * \param[out] sqr_distances squared distances, the same layout
+    * \return the k used, min(k, size()) */
+  std::size_t
+  nearestKSearchOfPoints (std::size_t first, std::size_t last, std::size_t k,
+                          pcl::index_t* indices, float* sqr_distances) const;
+
   /** \brief All neighbours within \a radius of \a query.
     * \param[in] max_nn keep only the max_nn closest (0: all)
     * \param[in] sorted sort by distance (always done when max_nn limits the result) */

@@ -178,18 +178,45 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree ()
   indices_flat_.resize (offsets_[rows]);
   sqr_distances_.resize (offsets_[rows]);
 
-  // For the whole cloud, visit the points in the tree's leaf order: consecutive queries then
-  // walk the same branches and leaves, and each query's k-th distance bounds the next one's
-  // (|q' - x| <= |q' - q| + |q - x|), so the search prunes from its first step. Work is split
-  // into fixed runs of queries, each started without a bound, so the result (ties included)
-  // is the same for any number of threads.
-  const bool tree_order = fake_indices_ && tree.size () == searchable_;
-  const std::size_t n = tree_order ? tree.size () : rows;
+  const unsigned int threads = resolveThreadCount (threads_);
+  // For the whole cloud, search leaf by leaf: the points of a leaf share most of their
+  // neighbours, and the tree ranks one gathered set of candidates for all of them (see
+  // KdTree3f::nearestKSearchOfPoints). Each point's result, ties included, does not depend
+  // on the leaf or the thread it is searched in.
+  if (fake_indices_ && tree.size () == searchable_)
+  {
+    const auto leaves = tree.leafRanges ();
+#pragma omp parallel num_threads(threads) default(none) shared(tree, k, leaves)
+    {
+      pcl::Indices nn;
+      std::vector<float> d2;
+#pragma omp for schedule(dynamic, 64)
+      for (std::ptrdiff_t l = 0; l < static_cast<std::ptrdiff_t> (leaves.size ()); ++l)
+      {
+        const std::size_t first = leaves[l].first, last = leaves[l].second;
+        nn.resize ((last - first) * k);
+        d2.resize (nn.size ());
+        tree.nearestKSearchOfPoints (first, last, k, nn.data (), d2.data ());
+        for (std::size_t pos = first; pos < last; ++pos)
+        {
+          const std::size_t at = offsets_[static_cast<std::size_t> (tree.pointIndex (pos))];
+          std::copy_n (&nn[(pos - first) * k], k, &indices_flat_[at]);
+          std::copy_n (&d2[(pos - first) * k], k, &sqr_distances_[at]);
+        }
+      }
+    }
+    return;
+  }
+
+  // Indexed rows: the queries in index order. Each query's k-th distance bounds the next
+  // one's (|q' - x| <= |q' - q| + |q - x|), so the search prunes from its first step. Work is
+  // split into fixed runs of queries, each started without a bound, so the result (ties
+  // included) is the same for any number of threads.
+  const std::size_t n = rows;
   constexpr std::size_t run = 256;
   const std::ptrdiff_t num_runs = static_cast<std::ptrdiff_t> ((n + run - 1) / run);
-  const unsigned int threads = resolveThreadCount (threads_);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1) default(none) \
-    shared(tree, k, n, num_runs, tree_order)
+    shared(tree, k, n, num_runs)
   for (std::ptrdiff_t r = 0; r < num_runs; ++r)
   {
     float previous[3] = {0, 0, 0};
@@ -197,21 +224,11 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree ()
     const std::size_t last = std::min (n, static_cast<std::size_t> (r + 1) * run);
     for (std::size_t j = static_cast<std::size_t> (r) * run; j < last; ++j)
     {
-      std::size_t row;
-      float q[3];
-      if (tree_order)
-      {
-        row = static_cast<std::size_t> (tree.pointIndex (j));
-        std::copy_n (tree.point (j), 3, q);
-      }
-      else
-      {
-        row = j;
-        const PointT& p = (*input_)[(*indices_)[row]];
-        if (!pcl::isFinite (p))
-          continue;
-        q[0] = p.x; q[1] = p.y; q[2] = p.z;
-      }
+      const std::size_t row = j;
+      const PointT& p = (*input_)[(*indices_)[row]];
+      if (!pcl::isFinite (p))
+        continue;
+      const float q[3] = {p.x, p.y, p.z};
       float bound = std::numeric_limits<float>::max ();
       if (previous_kth >= 0.0f)
       {
