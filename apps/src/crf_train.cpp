@@ -17,8 +17,9 @@ int
 main (int argc, char** argv)
 {
   std::string output, classes_file, mode_text = "mcrf", scales_text = "none",
-              expansion_text = "linear";
+              expansion_text = "linear", ground_text = "lowest_in_block";
   double sigma = 1.0, noise = 0.0;
+  int ground_reach = 3;
   int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200, knots = 2;
   unsigned int threads = 0, seed = 1;
   bool no_balance = false;
@@ -35,6 +36,10 @@ main (int argc, char** argv)
   cl.addOption ("expansion", expansion_text, "inputs of the node model: linear "
                "(the paper's), spline (piecewise-linear in each feature) or spline_products "
                "(spline and the products of feature pairs)");
+  cl.addOption ("ground", ground_text, "local ground under the height feature: "
+               "lowest_in_block (lowest point of the cells around) or opening (morphological "
+               "opening of the cells' lowest points)");
+  cl.addOption ("ground_reach", ground_reach, "cells (1 m) on each side of the local ground block");
   cl.addOption ("knots", knots, "hinges per feature of the spline expansions");
   cl.addOption ("sigma", sigma, "sigma of the Gaussian prior on the weights (eq. 9)");
   cl.addOption ("noise", noise, "noise constant sigma of eq. 3 in metres (0: estimate)");
@@ -65,12 +70,14 @@ main (int argc, char** argv)
     return code;
   pcl_ext::CrfMode mode;
   pcl_ext::CrfNodeExpansion expansion;
+  pcl_ext::GroundEstimate ground;
   if (output.empty () || inputs.empty () || !pcl_ext::parseCrfMode (mode_text, mode)
-      || !pcl_ext::parseCrfNodeExpansion (expansion_text, expansion))
+      || !pcl_ext::parseCrfNodeExpansion (expansion_text, expansion)
+      || !pcl_ext::parseGroundEstimate (ground_text, ground))
   {
     std::cerr << "pcl_ext_crf_train: need -o model.txt, at least one training cloud, a mode "
-                 "among node, crf, mcrf and an expansion among linear, spline, spline_products "
-                 "(see -h)\n";
+                 "among node, crf, mcrf, an expansion among linear, spline, spline_products "
+                 "and a ground among lowest_in_block, opening (see -h)\n";
     return 1;
   }
   if (!pcl_ext::tools::checkWritable (output))
@@ -115,6 +122,8 @@ main (int argc, char** argv)
   s.sigma = sigma;
   s.node_expansion = expansion;
   s.spline_knots = knots;
+  s.features.ground_estimate = ground;
+  s.features.ground_reach = ground_reach;
   s.features.scales.clear ();
   if (scales_text != "none")
   {

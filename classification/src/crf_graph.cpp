@@ -91,7 +91,7 @@ buildGraph (const CrfInput& input, const CrfSettings& settings, SupervoxelSet& s
   t0 = std::chrono::steady_clock::now ();
   LocalGround ground;
   ground.build (*input.xyz, settings.features.up, settings.features.ground_cell,
-                settings.features.ground_reach);
+                settings.features.ground_reach, settings.features.ground_estimate);
   if (!computeSaliencyFeatures (*input.xyz, estimator.tree (), input.colours, input.intensity,
                                 ground, graph.node_point, radii, settings.features, raw,
                                 settings.threads))

@@ -20,7 +20,7 @@ namespace pcl_ext
 namespace
 {
 constexpr const char* kMagic = "pcl_ext_crf_model";
-constexpr int kVersion = 3;
+constexpr int kVersion = 4;
 
 std::string
 num (double v)
@@ -176,7 +176,7 @@ MultiscaleCrfModel::toText () const
   out << "local_edges " << s.local_edges << '\n';
   out << "ground " << num (s.features.up.x ()) << ' ' << num (s.features.up.y ()) << ' '
       << num (s.features.up.z ()) << ' ' << num (s.features.ground_cell) << ' '
-      << s.features.ground_reach << '\n';
+      << s.features.ground_reach << ' ' << groundEstimateName (s.features.ground_estimate) << '\n';
   out << "feature_scales " << s.features.scales.size ();
   for (const float r : s.features.scales)
     out << ' ' << num (r);
@@ -290,7 +290,7 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
     if (!rd.next ("local_edges") || !rd.expect ("local_edges", 1)
         || !rd.integer (1, s.local_edges, 0, 1 << 20))
       return false;
-    if (!rd.next ("ground") || !rd.expect ("ground", 5))
+    if (!rd.next ("ground") || !rd.expect ("ground", 6))
       return false;
     for (std::size_t k = 0; k < 4; ++k)
       if (!rd.number (k + 1, v[k]))
@@ -299,6 +299,9 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
     s.features.ground_cell = static_cast<float> (v[3]);
     if (!rd.integer (5, s.features.ground_reach, 0, 1 << 20))
       return false;
+    if (!parseGroundEstimate (rd.word (6), s.features.ground_estimate))
+      return rd.fail ("unknown ground estimate '" + rd.word (6)
+                      + "' (lowest_in_block or opening)");
     std::size_t num_scales = 0;
     if (!rd.next ("feature_scales"))
       return false;

@@ -81,9 +81,63 @@ validFeatureScales (const std::vector<float>& scales)
   return true;
 }
 
+namespace
+{
+/** Block minimum (\a take_min) or maximum of \a in over the (2 reach + 1)^2 cells around each
+  * cell of a w x h grid, separably (rows, then columns); +inf cells are left out. */
+std::vector<float>
+blockExtremum (const std::vector<float>& in, int w, int h, int reach, bool take_min)
+{
+  const float inf = std::numeric_limits<float>::infinity ();
+  auto pick = [take_min] (float m, float c) {
+    if (!std::isfinite (c))
+      return m;
+    if (!std::isfinite (m))
+      return c;
+    return take_min ? std::min (m, c) : std::max (m, c);
+  };
+  std::vector<float> rows (in.size (), inf), out (in.size (), inf);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+    {
+      float m = inf;
+      for (int dx = std::max (0, x - reach); dx <= std::min (w - 1, x + reach); ++dx)
+        m = pick (m, in[static_cast<std::size_t> (y) * w + dx]);
+      rows[static_cast<std::size_t> (y) * w + x] = m;
+    }
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+    {
+      float m = inf;
+      for (int dy = std::max (0, y - reach); dy <= std::min (h - 1, y + reach); ++dy)
+        m = pick (m, rows[static_cast<std::size_t> (dy) * w + x]);
+      out[static_cast<std::size_t> (y) * w + x] = m;
+    }
+  return out;
+}
+}  // namespace
+
+const char*
+groundEstimateName (GroundEstimate estimate)
+{
+  return estimate == GroundEstimate::Opening ? "opening" : "lowest_in_block";
+}
+
+bool
+parseGroundEstimate (const std::string& text, GroundEstimate& estimate)
+{
+  if (text == "lowest_in_block")
+    estimate = GroundEstimate::LowestInBlock;
+  else if (text == "opening")
+    estimate = GroundEstimate::Opening;
+  else
+    return false;
+  return true;
+}
+
 void
 LocalGround::build (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Vector3f& up,
-                    float cell, int reach)
+                    float cell, int reach, GroundEstimate estimate)
 {
   up_ = up.normalized ();
   u_ = up_.unitOrthogonal ();
@@ -99,7 +153,7 @@ LocalGround::build (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Ve
       lo = lo.cwiseMin (q);
       hi = hi.cwiseMax (q);
     }
-  lowest_.clear ();
+  ground_.clear ();
   size_ = Eigen::Vector2i::Zero ();
   if (lo.x () > hi.x ())
     return;
@@ -116,38 +170,22 @@ LocalGround::build (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Ve
       float& c = cells[static_cast<std::size_t> (cy) * size_.x () + cx];
       c = std::min (c, q.dot (up_));
     }
-  // Separable block minimum: rows, then columns.
-  std::vector<float> rows (cells.size (), inf);
-  for (int y = 0; y < size_.y (); ++y)
-    for (int x = 0; x < size_.x (); ++x)
-    {
-      float m = inf;
-      for (int dx = std::max (0, x - reach_); dx <= std::min (size_.x () - 1, x + reach_); ++dx)
-        m = std::min (m, cells[static_cast<std::size_t> (y) * size_.x () + dx]);
-      rows[static_cast<std::size_t> (y) * size_.x () + x] = m;
-    }
-  lowest_.assign (cells.size (), inf);
-  for (int y = 0; y < size_.y (); ++y)
-    for (int x = 0; x < size_.x (); ++x)
-    {
-      float m = inf;
-      for (int dy = std::max (0, y - reach_); dy <= std::min (size_.y () - 1, y + reach_); ++dy)
-        m = std::min (m, rows[static_cast<std::size_t> (dy) * size_.x () + x]);
-      lowest_[static_cast<std::size_t> (y) * size_.x () + x] = m;
-    }
+  ground_ = blockExtremum (cells, size_.x (), size_.y (), reach_, true);
+  if (estimate == GroundEstimate::Opening)
+    ground_ = blockExtremum (ground_, size_.x (), size_.y (), reach_, false);
 }
 
 float
 LocalGround::heightAbove (const Eigen::Vector3f& p) const
 {
   const float h = p.dot (up_);
-  if (lowest_.empty ())
+  if (ground_.empty ())
     return 0.f;
   const int cx = static_cast<int> (std::floor (p.dot (u_) / cell_)) - origin_.x ();
   const int cy = static_cast<int> (std::floor (p.dot (v_) / cell_)) - origin_.y ();
   if (cx < 0 || cy < 0 || cx >= size_.x () || cy >= size_.y ())
     return 0.f;
-  const float g = lowest_[static_cast<std::size_t> (cy) * size_.x () + cx];
+  const float g = ground_[static_cast<std::size_t> (cy) * size_.x () + cx];
   return std::isfinite (g) ? h - g : 0.f;
 }
 

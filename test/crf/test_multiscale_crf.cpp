@@ -166,7 +166,9 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
   const std::vector<std::pair<const char*, std::string>> cases = {
       {"empty", ""},
       {"not a model", "hello world\n"},
-      {"other version", replaced ("pcl_ext_crf_model 3", "pcl_ext_crf_model 2")},
+      {"other version", replaced ("pcl_ext_crf_model 4", "pcl_ext_crf_model 3")},
+      {"unknown ground estimate", replaced (" lowest_in_block\n", " lowest\n")},
+      {"no ground estimate", replaced (" lowest_in_block\n", "\n")},
       {"unknown mode", replaced ("mode mcrf", "mode best")},
       {"truncated", good.substr (0, good.size () / 2)},
       {"no end", replaced ("end\n", "")},

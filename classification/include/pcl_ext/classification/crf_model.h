@@ -75,7 +75,10 @@ struct CrfSettings
   /** Colour / intensity are decided at training. features.scales: empty (the default) is the
     * paper's single-scale set; defaultFeatureScales() adds the multi-scale features (pcl_ext
     * addition: +5 points of node-only macro F1 in cross-validation between Oakland chunks,
-    * but -3 points on the validation chunks, and about ten times the feature time). */
+    * but -3 points on the validation chunks, and about ten times the feature time).
+    * features.ground_estimate: LowestInBlock (the default) or Opening, which puts Oakland's
+    * ground points 0.06 m instead of 0.4 m above their estimated ground (median) but did not
+    * change the mCRF's cross-validation macro F1 between Oakland chunks (see the README). */
   SaliencyFeatureOptions features;
   double sigma = 1.0;                ///< sigma_C of the Gaussian prior, eq. 9; > 0
   /** Inputs of the node model: Linear (the paper's, the default) or a spline expansion. */
@@ -224,8 +227,8 @@ public:
   const CrfStatistics&
   getStatistics () const { return statistics_; }
 
-  /** \brief Write the model as versioned text (format "pcl_ext_crf_model 3": settings with the
-    * feature scales and the node expansion, classes, feature names and scaling, the knots of
+  /** \brief Write the model as versioned text (format "pcl_ext_crf_model 4": settings with the
+    * ground estimate, the feature scales and the node expansion, classes, feature names and scaling, the knots of
     * a spline expansion, weights, edge scale), atomically. Other versions are refused.
     * \return false with an untrained model or when the file cannot be written */
   bool

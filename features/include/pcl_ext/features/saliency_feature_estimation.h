@@ -57,6 +57,13 @@ public:
   void
   setGroundGrid (float cell, int reach) { options_.ground_cell = cell; options_.ground_reach = reach; }
 
+  /** \brief How the local ground is found (see GroundEstimate). Default LowestInBlock. */
+  void
+  setGroundEstimate (GroundEstimate estimate) { options_.ground_estimate = estimate; }
+
+  GroundEstimate
+  getGroundEstimate () const { return options_.ground_estimate; }
+
   /** \brief Fixed radii (m, ascending, > 0) at which the multi-scale features are added (see
     * computeSaliencyFeatures; defaultFeatureScales() gives 0.5, 1, 2 m). Default empty: the
     * paper's single-scale set. */
