@@ -18,7 +18,7 @@ main (int argc, char** argv)
 {
   std::string output, classes_file, mode_text = "mcrf", scales_text = "none",
               expansion_text = "linear", ground_text = "lowest_in_block";
-  double sigma = 1.0, noise = 0.0;
+  double sigma = 1.0, noise = 0.0, min_radius = 0.5;
   int ground_reach = 3;
   int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200, knots = 2;
   unsigned int threads = 0, seed = 1;
@@ -43,6 +43,8 @@ main (int argc, char** argv)
   cl.addOption ("knots", knots, "hinges per feature of the spline expansions");
   cl.addOption ("sigma", sigma, "sigma of the Gaussian prior on the weights (eq. 9)");
   cl.addOption ("noise", noise, "noise constant sigma of eq. 3 in metres (0: estimate)");
+  cl.addOption ("min_radius", min_radius, "lower bound on the super-voxel radius in metres "
+               "(0: none, the paper's; 0.5 was chosen by cross-validation on Oakland)");
   cl.addOption ("max_k", max_k, "k threshold that stops the super-voxel radius growing");
   cl.addOption ("m", local_edges, "local edges per super-voxel");
   cl.addOption ("l", regional_edges, "regional edges per super-voxel");
@@ -142,6 +144,7 @@ main (int argc, char** argv)
   }
   s.supervoxels.radius.noise = noise;
   s.supervoxels.radius.max_k = max_k;
+  s.supervoxels.radius.min_radius = min_radius;
   s.supervoxels.adjacency = regional_edges;
   s.supervoxels.seed = seed;
   s.local_edges = local_edges;

@@ -233,7 +233,8 @@ TEST (SaliencyFeatures, LocalGroundOnASlope)
     for (int a = 0; a < 8; ++a)
       cloud.push_back (pcl::PointXYZ (px + 0.1f * std::cos (a * M_PI / 4),
                                       py + 0.1f * std::sin (a * M_PI / 4), base + 0.1f * k));
-  for (const auto estimate : {pcl_ext::GroundEstimate::LowestInBlock, pcl_ext::GroundEstimate::Opening})
+  for (const auto estimate :
+       {pcl_ext::GroundEstimate::LowestInBlock, pcl_ext::GroundEstimate::Opening})
   {
     pcl_ext::LocalGround ground;
     ground.build (cloud, Eigen::Vector3f::UnitZ (), 1.f, 3, estimate);

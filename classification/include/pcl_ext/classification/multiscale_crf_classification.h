@@ -86,7 +86,8 @@ public:
   void
   setNumberOfRegionalEdges (int l) { model_.settings ().supervoxels.adjacency = l; }
 
-  /** \brief Super-voxel radius parameters (eq. 1-4; see AdaptiveRadiusParameters). */
+  /** \brief Super-voxel radius parameters (eq. 1-4; see AdaptiveRadiusParameters). Default:
+    * defaultCrfSupervoxelParameters ().radius (the paper's, with min_radius 0.5 m). */
   void
   setRadiusParameters (const AdaptiveRadiusParameters& p) { model_.settings ().supervoxels.radius = p; }
 

@@ -104,7 +104,8 @@ pcl_ext::SaliencyFeatureEstimation<PointT>::compute (Eigen::MatrixXf& features)
   search::KdTree3f tree;
   tree.build (std::move (flat), std::move (ids));
   LocalGround ground;
-  ground.build (xyz, options.up, options.ground_cell, options.ground_reach, options.ground_estimate);
+  ground.build (xyz, options.up, options.ground_cell, options.ground_reach,
+                options.ground_estimate);
   if (computeSaliencyFeatures (xyz, tree, colours, intensity, ground, *indices_, radii, options,
                                features, threads_))
     names_ = saliencyFeatureNames (options);
