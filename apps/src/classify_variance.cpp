@@ -3,6 +3,8 @@
  * (0) by local variance (Belton & Lichti 2006, section 2) and writes the input points with a
  * `label` field.
  */
+#include "variance/variance_options.h"
+
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/tools/cloud_io.h>
@@ -41,9 +43,8 @@ main (int argc, char** argv)
 {
   std::string input_path, output_path, png_path;
   int k = 50;
-  double radius = 0.0, max_radius = 0.0, curvature_threshold = 0.0, curvature_factor = 3.0;
-  double variance_threshold = 1e-4, confidence = 0.95, noise_sigma = 0.0, crease_angle = 0.0;
-  bool boundary_band = false;
+  double radius = 0.0, max_radius = 0.0;
+  pcl_ext::apps::VarianceClassificationOptions options;
   unsigned int threads = 0;
   pcl_ext::tools::CommandLine cl (
       "pcl_ext_classify_variance",
@@ -56,28 +57,14 @@ main (int argc, char** argv)
   cl.addOption ("radius", radius, "neighbourhood radius instead of k (0: use k)");
   cl.addOption ("max_radius", max_radius,
                 "with k: keep only the neighbours within this distance (0: no cap, the paper's)");
-  cl.addOption ("curvature_threshold", curvature_threshold,
-                "curvature (eq. 4) threshold; 0: factor * median curvature");
-  cl.addOption ("curvature_factor", curvature_factor,
-                "multiple of the median curvature when the threshold is 0");
-  cl.addOption ("variance_threshold", variance_threshold, "variance of curvature tolerance (eq. 5)");
-  cl.addOption ("confidence", confidence, "confidence of the chi-squared boundary test (eq. 6)");
-  cl.addOption ("noise_sigma", noise_sigma,
-                "the scanner's range noise sigma, removed from eq. 4-6 (0: the paper's)");
-  cl.addSwitch ("boundary_band", boundary_band,
-                "also label boundary the surface points next to one eq. 6 finds");
-  cl.addOption ("crease_angle", crease_angle,
-                "an edge of eq. 5 must bend the normals by more than this (degrees; 0: off)");
+  options.addTo (cl);
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png", png_path, "also render the labels to this PNG (blue surface, red edge, "
                                  "green boundary); needs an X display");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (!(crease_angle >= 0.0 && crease_angle <= 90.0))
-  {
-    std::cerr << "Error: -crease_angle must lie between 0 and 90 degrees.\n";
+  if (!options.valid ())
     return 1;
-  }
   if (!pcl_ext::tools::checkOutputsWritable (output_path, {png_path}))
     return 1;
 
@@ -95,13 +82,7 @@ main (int argc, char** argv)
     classifier.setKSearch (k);
     classifier.setMaxRadius (max_radius);
   }
-  classifier.setCurvatureThreshold (curvature_threshold);
-  classifier.setCurvatureThresholdFactor (curvature_factor);
-  classifier.setVarianceThreshold (variance_threshold);
-  classifier.setConfidence (confidence);
-  classifier.setNoiseStandardDeviation (noise_sigma);
-  classifier.setBoundaryBand (boundary_band);
-  classifier.setCreaseAngle (crease_angle * M_PI / 180.0);
+  options.applyTo (classifier);
   classifier.setNumberOfThreads (threads);
   pcl::PointCloud<pcl::Label> labels;
   pcl_ext::tools::StageTimer classify ("Classifying");

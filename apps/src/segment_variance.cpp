@@ -6,6 +6,8 @@
  * Optionally intersects the segments locally (section 4): writes the intersection points and
  * puts edge and boundary points back into the segments they fit.
  */
+#include "variance/variance_options.h"
+
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
@@ -28,10 +30,10 @@ main (int argc, char** argv)
 {
   std::string input_path, output_path, png_path, intersections_path;
   int k = 50, min_size = 50;
-  double curvature_threshold = 0.0, curvature_factor = 3.0, variance_threshold = 1e-4;
-  double confidence = 0.95, max_distance = 0.0, max_distance_factor = 3.0, parallel_angle = 10.0;
-  double noise_sigma = 0.0, max_radius = 0.0, crease_angle = 0.0;
-  bool reintegrate = false, boundary_band = false;
+  double max_distance = 0.0, max_distance_factor = 3.0, parallel_angle = 10.0;
+  double max_radius = 0.0;
+  bool reintegrate = false;
+  pcl_ext::apps::VarianceClassificationOptions options;
   unsigned int threads = 0;
   pcl_ext::tools::CommandLine cl (
       "pcl_ext_segment_variance",
@@ -44,18 +46,7 @@ main (int argc, char** argv)
   cl.addOption ("k", k, "neighbours per point (the paper's k)");
   cl.addOption ("max_radius", max_radius,
                 "keep only the k neighbours within this distance (0: no cap, the paper's)");
-  cl.addOption ("curvature_threshold", curvature_threshold,
-                "curvature (eq. 4) threshold; 0: factor * median curvature");
-  cl.addOption ("curvature_factor", curvature_factor,
-                "multiple of the median curvature when the threshold is 0");
-  cl.addOption ("variance_threshold", variance_threshold, "variance of curvature tolerance (eq. 5)");
-  cl.addOption ("confidence", confidence, "confidence of the chi-squared boundary test (eq. 6)");
-  cl.addOption ("noise_sigma", noise_sigma,
-                "the scanner's range noise sigma, removed from eq. 4-6 (0: the paper's)");
-  cl.addSwitch ("boundary_band", boundary_band,
-                "also label boundary the surface points next to one eq. 6 finds");
-  cl.addOption ("crease_angle", crease_angle,
-                "an edge of eq. 5 must bend the normals by more than this (degrees; 0: off)");
+  options.addTo (cl);
   cl.addOption ("max_distance", max_distance,
                 "longest link from a seed to a neighbour (0: no limit beyond the k neighbours)");
   cl.addOption ("max_distance_factor", max_distance_factor,
@@ -74,11 +65,8 @@ main (int argc, char** argv)
   cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (!(crease_angle >= 0.0 && crease_angle <= 90.0))
-  {
-    std::cerr << "Error: -crease_angle must lie between 0 and 90 degrees.\n";
+  if (!options.valid ())
     return 1;
-  }
   if (k < 3)
   {
     std::cerr << "Error: -k must be at least 3.\n";
@@ -92,11 +80,6 @@ main (int argc, char** argv)
   if (!(max_radius >= 0.0) || !std::isfinite (max_radius))
   {
     std::cerr << "Error: -max_radius must be finite and >= 0.\n";
-    return 1;
-  }
-  if (!(noise_sigma >= 0.0) || !std::isfinite (noise_sigma))
-  {
-    std::cerr << "Error: -noise_sigma must be finite and >= 0.\n";
     return 1;
   }
   if (!(max_distance >= 0.0))
@@ -140,13 +123,7 @@ main (int argc, char** argv)
   pcl_ext::VarianceRegionGrowing<pcl::PointXYZ> rg;
   rg.setInputCloud (cloud);
   rg.setNeighbourhoods (nb);
-  rg.setCurvatureThreshold (curvature_threshold);
-  rg.setCurvatureThresholdFactor (curvature_factor);
-  rg.setVarianceThreshold (variance_threshold);
-  rg.setConfidence (confidence);
-  rg.setNoiseStandardDeviation (noise_sigma);
-  rg.setBoundaryBand (boundary_band);
-  rg.setCreaseAngle (crease_angle * M_PI / 180.0);
+  options.applyTo (rg);
   rg.setMaxDistance (max_distance);
   rg.setMaxDistanceFactor (max_distance_factor);
   rg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl_ext/common/parallel.h>
+#include <pcl_ext/common/segment_colours.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
 
 #include <pcl/common/point_tests.h>
@@ -217,40 +218,9 @@ ProfileSegmentation<PointT>::getProfileOfPoints (std::size_t s) const
 template <typename PointT> pcl::PointCloud<pcl::PointXYZRGB>::Ptr
 ProfileSegmentation<PointT>::getColoredCloud () const
 {
-  pcl::PointCloud<pcl::PointXYZRGB>::Ptr coloured (new pcl::PointCloud<pcl::PointXYZRGB>);
-  if (!input_ || clusters_.empty ())
-    return coloured;
-  coloured->resize (input_->size ());
-  coloured->width = input_->width;
-  coloured->height = input_->height;
-  coloured->is_dense = input_->is_dense;
-  for (std::size_t i = 0; i < input_->size (); ++i)
-  {
-    auto& q = (*coloured)[i];
-    q.x = (*input_)[i].x;
-    q.y = (*input_)[i].y;
-    q.z = (*input_)[i].z;
-    q.r = q.g = q.b = 255;
-  }
-  // Hues a golden-ratio step apart: neighbouring segment numbers get distinct colours.
-  for (std::size_t c = 0; c < clusters_.size (); ++c)
-  {
-    const double h = std::fmod (0.11 + 0.618033988749895 * static_cast<double> (c), 1.0) * 6.0;
-    const double v = c % 2 ? 0.75 : 0.95, s = 0.85;
-    const int sector = static_cast<int> (h);
-    const double f = h - sector, lo = v * (1 - s), fall = v * (1 - s * f),
-                 rise = v * (1 - s * (1 - f));
-    const double rgb[6][3] = {{v, rise, lo}, {fall, v, lo}, {lo, v, rise},
-                              {lo, fall, v}, {rise, lo, v}, {v, lo, fall}};
-    for (const auto index : clusters_[c].indices)
-    {
-      auto& q = (*coloured)[index];
-      q.r = static_cast<std::uint8_t> (255 * rgb[sector % 6][0]);
-      q.g = static_cast<std::uint8_t> (255 * rgb[sector % 6][1]);
-      q.b = static_cast<std::uint8_t> (255 * rgb[sector % 6][2]);
-    }
-  }
-  return coloured;
+  if (!input_)
+    return pcl::PointCloud<pcl::PointXYZRGB>::Ptr (new pcl::PointCloud<pcl::PointXYZRGB>);
+  return colourBySegment (*input_, clusters_);
 }
 }  // namespace pcl_ext
 
