@@ -89,6 +89,33 @@ TEST (Neighbourhoods, KnnAgreesWithBruteForce)
     EXPECT_EQ (nb[r].sqr_distances[0], 0.0f);
 }
 
+// From 24 neighbours the whole-cloud pass searches leaf by leaf (a different code path).
+TEST (Neighbourhoods, KnnAgreesWithBruteForceLeafByLeaf)
+{
+  auto cloud = randomCloud (1500, 2);
+  for (std::size_t i = 0; i < 100; ++i)
+  {
+    const Point twin = (*cloud)[i];  // some points twice: equal distances
+    cloud->push_back (twin);
+  }
+  for (const int k : {24, 40})
+  {
+    pcl_ext::Neighbourhoods<Point> one, two;
+    for (auto* nb : {&one, &two})
+    {
+      nb->setInputCloud (cloud);
+      nb->setKSearch (k);
+    }
+    one.setNumberOfThreads (1);
+    two.setNumberOfThreads (2);
+    ASSERT_TRUE (one.compute ());
+    ASSERT_TRUE (two.compute ());
+    expectKnnMatchesBruteForce (*cloud, one, k);
+    EXPECT_EQ (one.getNeighbourIndices (), two.getNeighbourIndices ());
+    EXPECT_EQ (one.getSquaredDistances (), two.getSquaredDistances ());
+  }
+}
+
 TEST (Neighbourhoods, RadiusAgreesWithBruteForce)
 {
   const auto cloud = randomCloud (1500, 2);

@@ -24,10 +24,11 @@ namespace pcl_ext
   * Feature does the same when no search surface is set).
   *
   * The default search is pcl_ext::search::NanoflannKdTree; any pcl::search::Search works
-  * through setSearchMethod(). With the default and k neighbours of the whole cloud, the pass
-  * searches the tree leaf by leaf (KdTree3f::nearestKSearchOfPoints), which shares one
-  * gathering of candidates among a leaf's points and orders equal distances by the tree's
-  * spatial order, so every row is the same for any number of threads.
+  * through setSearchMethod(). With the default and k >= 24 neighbours of the whole cloud, the
+  * pass searches the tree leaf by leaf (KdTree3f::nearestKSearchOfPoints), which shares one
+  * gathering of candidates among a leaf's points; otherwise it searches point by point in
+  * the tree's spatial order, each query bounded by the previous one's k-th distance. Either
+  * way every row is the same for any number of threads.
   *
   * Errors (PCL_ERROR, empty result, compute() returns false): no input, an empty cloud, no
   * finite point, neither or both of k and radius set, k < 1, k larger than the number of
@@ -171,6 +172,9 @@ protected:
 
   bool
   validate ();
+
+  /** \brief The smallest k for which the whole-cloud pass searches leaf by leaf. */
+  static constexpr std::size_t kMinNeighboursPerLeafSearch = 24;
 
   void
   searchWithTree ();

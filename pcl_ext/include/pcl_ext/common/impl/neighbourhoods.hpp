@@ -182,8 +182,11 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree ()
   // For the whole cloud, search leaf by leaf: the points of a leaf share most of their
   // neighbours, and the tree ranks one gathered set of candidates for all of them (see
   // KdTree3f::nearestKSearchOfPoints). Each point's result, ties included, does not depend
-  // on the leaf or the thread it is searched in.
-  if (fake_indices_ && tree.size () == searchable_)
+  // on the leaf or the thread it is searched in. Below about a leaf's worth of neighbours
+  // the shared candidates are mostly other points' and one search per point is faster
+  // (indoor scene, 500,000 points, 2 threads: 0.55 s against 0.43 s at k = 10, even at 20).
+  const bool whole_cloud = fake_indices_ && tree.size () == searchable_;
+  if (whole_cloud && k >= kMinNeighboursPerLeafSearch)
   {
     const auto leaves = tree.leafRanges ();
 #pragma omp parallel num_threads(threads) default(none) shared(tree, k, leaves)
@@ -208,15 +211,16 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree ()
     return;
   }
 
-  // Indexed rows: the queries in index order. Each query's k-th distance bounds the next
-  // one's (|q' - x| <= |q' - q| + |q - x|), so the search prunes from its first step. Work is
-  // split into fixed runs of queries, each started without a bound, so the result (ties
-  // included) is the same for any number of threads.
-  const std::size_t n = rows;
+  // One search per point, in the tree's leaf order for the whole cloud (consecutive queries
+  // then walk the same branches and leaves) and in index order otherwise. Each query's k-th
+  // distance bounds the next one's (|q' - x| <= |q' - q| + |q - x|), so the search prunes
+  // from its first step. Work is split into fixed runs of queries, each started without a
+  // bound, so the result (ties included) is the same for any number of threads.
+  const std::size_t n = whole_cloud ? tree.size () : rows;
   constexpr std::size_t run = 256;
   const std::ptrdiff_t num_runs = static_cast<std::ptrdiff_t> ((n + run - 1) / run);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1) default(none) \
-    shared(tree, k, n, num_runs)
+    shared(tree, k, n, num_runs, whole_cloud)
   for (std::ptrdiff_t r = 0; r < num_runs; ++r)
   {
     float previous[3] = {0, 0, 0};
@@ -224,11 +228,21 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree ()
     const std::size_t last = std::min (n, static_cast<std::size_t> (r + 1) * run);
     for (std::size_t j = static_cast<std::size_t> (r) * run; j < last; ++j)
     {
-      const std::size_t row = j;
-      const PointT& p = (*input_)[(*indices_)[row]];
-      if (!pcl::isFinite (p))
-        continue;
-      const float q[3] = {p.x, p.y, p.z};
+      std::size_t row;
+      float q[3];
+      if (whole_cloud)
+      {
+        row = static_cast<std::size_t> (tree.pointIndex (j));
+        std::copy_n (tree.point (j), 3, q);
+      }
+      else
+      {
+        row = j;
+        const PointT& p = (*input_)[(*indices_)[row]];
+        if (!pcl::isFinite (p))
+          continue;
+        q[0] = p.x; q[1] = p.y; q[2] = p.z;
+      }
       float bound = std::numeric_limits<float>::max ();
       if (previous_kth >= 0.0f)
       {
