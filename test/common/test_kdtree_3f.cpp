@@ -149,6 +149,17 @@ TEST (KdTree3f, SearchOfPointsHandlesEdgeCases)
   EXPECT_EQ (empty.nearestKSearchOfPoints (0, 1, 1, &index, &d2), 0u);
   EXPECT_TRUE (empty.leafRanges ().empty ());
 
+  // k = 0 finds nothing; an empty range writes nothing.
+  pcl_ext::search::KdTree3f one;
+  one.build ({0, 0, 0}, {4});
+  EXPECT_EQ (one.nearestKSearchOfPoints (0, 1, 0, &index, &d2), 0u);
+  EXPECT_EQ (one.nearestKSearchOfPoints (1, 1, 1, &index, &d2), 1u);
+  EXPECT_EQ (index, -1);
+  EXPECT_EQ (d2, -1.0f);
+  ASSERT_EQ (one.nearestKSearchOfPoints (0, 1, 1, &index, &d2), 1u);
+  EXPECT_EQ (index, 4);
+  EXPECT_EQ (d2, 0.0f);
+
   // k larger than the tree: every point, k clamped; a range past the end is clamped too.
   pcl_ext::search::KdTree3f three;
   three.build ({0, 0, 0, 1, 0, 0, 1, 0, 0}, {7, 8, 9});
