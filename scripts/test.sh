@@ -86,10 +86,12 @@ fi
 pcl_ext_install_packages
 cmake -S "$root" -B "$build_dir" "${cmake_args[@]}"
 if [ "$mode" = "--sanitize-quick" ]; then
-  # The Makefile of a folder builds its targets and what they need, nothing else.
+  # The unit tests of those folders and what they need, nothing else (test/CMakeLists.txt).
+  quick_targets=()
   for d in "${quick_dirs[@]}"; do
-    make -C "$build_dir/test/$d" -j "$jobs" --no-print-directory
+    quick_targets+=("pcl_ext_unit_tests_$d")
   done
+  cmake --build "$build_dir" -j "$jobs" --target "${quick_targets[@]}"
 else
   cmake --build "$build_dir" -j "$jobs"
 fi
@@ -99,9 +101,11 @@ pcl_ext_start_display
 cd "$build_dir"
 if [ "$mode" = "--sanitize-quick" ]; then
   status=0
+  # The labelled tests were not built: ctest lists each of their programs as one
+  # <program>_NOT_BUILT entry, without the label.
   for d in "${quick_dirs[@]}"; do
     ctest --test-dir "test/$d" --output-on-failure -j "$jobs" --timeout "$timeout" -LE 'data|quality' \
-      || status=1
+      -E '_NOT_BUILT$' || status=1
   done
   exit "$status"
 fi

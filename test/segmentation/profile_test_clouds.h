@@ -116,4 +116,26 @@ addAnnulusX (LabelledCloud& out, double x0, double r0, double r1, double s, std:
     }
   }
 }
+
+/** A pipe of radius 0.2 inside a coaxial pipe of radius 0.4 closed by an annular step at x = 1:
+  * three surfaces that touch along two creases (the paper's figures 9 and 13), sampled every
+  * \a spacing. */
+inline LabelledCloud
+coaxialPipes (double spacing = 0.015)
+{
+  LabelledCloud scene;
+  std::mt19937 rng (2);
+  addCylinderX (scene, -1.0, 1.0, 0.4, spacing, 1, rng);
+  addAnnulusX (scene, 1.0, 0.2, 0.4, spacing, 2, rng);
+  addCylinderX (scene, 1.0, 2.5, 0.2, spacing, 3, rng);
+  return scene;
+}
+
+/** The coaxial pipes sampled coarsely enough (about 8,000 points) for the determinism tests to
+  * stay short in the sanitized build, where curve fitting runs some thirty times slower. */
+inline LabelledCloud
+coarseCoaxialPipes ()
+{
+  return coaxialPipes (0.03);
+}
 }  // namespace profile_test

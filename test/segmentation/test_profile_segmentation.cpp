@@ -41,18 +41,6 @@ threeCubes ()
   return scene;
 }
 
-/** A pipe of radius 0.2 inside a coaxial pipe of radius 0.4 closed by an annular step at x = 1:
-  * three surfaces that touch along two creases (the paper's figures 9 and 13). */
-LabelledCloud
-coaxialPipes ()
-{
-  LabelledCloud scene;
-  std::mt19937 rng (2);
-  addCylinderX (scene, -1.0, 1.0, 0.4, 0.015, 1, rng);
-  addAnnulusX (scene, 1.0, 0.2, 0.4, 0.015, 2, rng);
-  addCylinderX (scene, 1.0, 2.5, 0.2, 0.015, 3, rng);
-  return scene;
-}
 }  // namespace
 
 TEST (ProfileSegmentation, SeparatedCubesAreOneSegmentEach)
@@ -91,47 +79,6 @@ TEST (ProfileSegmentation, SeparatedCubesAreOneSegmentEach)
   EXPECT_NE ((*coloured)[clusters[0].indices[0]].rgba, (*coloured)[clusters[1].indices[0]].rgba);
 }
 
-TEST (ProfileSegmentation, NestedSpheresAreSeparate)
-{
-  LabelledCloud scene;
-  addSphere (scene, {0, 0, 0}, 1.0, 0.02, 1);
-  addSphere (scene, {0.05, 0, 0}, 0.6, 0.02, 2);
-  addSphere (scene, {0.1, 0.05, 0}, 0.25, 0.02, 3);
-  for (const auto method : {Segmentation::ProfileMethod::Proximity,
-                            Segmentation::ProfileMethod::MinimumSpanningTree,
-                            Segmentation::ProfileMethod::CurveFitting})
-  {
-    Segmentation seg;
-    seg.setInputCloud (scene.cloud);
-    seg.setProfileSegmentation (method);
-    std::vector<pcl::PointIndices> clusters;
-    seg.extract (clusters);
-    const auto m = evaluate (clusters, scene);
-    EXPECT_GE (m.mean_best_iou, 0.99) << static_cast<int> (method);
-    EXPECT_EQ (m.correct, 3u) << static_cast<int> (method);
-  }
-}
-
-TEST (ProfileSegmentation, CurveFittingSeparatesTouchingCoaxialSurfaces)
-{
-  const LabelledCloud scene = coaxialPipes ();
-  Segmentation seg;
-  seg.setInputCloud (scene.cloud);
-  std::vector<pcl::PointIndices> clusters;
-  // Proximity links across the creases: the three surfaces are one segment.
-  seg.extract (clusters);
-  const auto proximity = evaluate (clusters, scene);
-  EXPECT_EQ (clusters.size (), 1u);
-  EXPECT_EQ (proximity.under_segmented, 3u);
-  // Curve fitting ends the curves at the creases.
-  seg.setProfileSegmentation (Segmentation::ProfileMethod::CurveFitting);
-  seg.extract (clusters);
-  const auto curve = evaluate (clusters, scene);
-  EXPECT_GE (curve.mean_best_iou, 0.90);
-  EXPECT_EQ (curve.correct, 3u);
-  EXPECT_FALSE (seg.getBreakpoints ().empty ());
-}
-
 namespace
 {
 /** Same segments and profile edges on 1, 2 and 3 threads, for one method and options. */
@@ -154,6 +101,9 @@ expectDeterministic (const LabelledCloud& scene, Segmentation::ProfileMethod met
     results.push_back (clusters);
     edge_counts.push_back (seg.getStackEdges ()[1].size ());
   }
+  // Curve fitting splits the coarse pipes too, so its splitting code is part of the check.
+  if (method == Segmentation::ProfileMethod::CurveFitting)
+    EXPECT_GT (results[0].size (), 1u);
   for (std::size_t r = 1; r < results.size (); ++r)
   {
     EXPECT_EQ (edge_counts[r], edge_counts[0]) << static_cast<int> (method);
@@ -168,7 +118,7 @@ expectDeterministic (const LabelledCloud& scene, Segmentation::ProfileMethod met
 // slow part, and several times slower in the sanitized build).
 TEST (ProfileSegmentation, DeterministicForAnyThreadCount)
 {
-  const LabelledCloud scene = coaxialPipes ();
+  const LabelledCloud scene = coarseCoaxialPipes ();
   expectDeterministic (scene, Segmentation::ProfileMethod::Proximity, false, false);
   expectDeterministic (scene, Segmentation::ProfileMethod::CurveFitting, false, false);
 }
@@ -177,7 +127,7 @@ TEST (ProfileSegmentation, DeterministicForAnyThreadCount)
 // frames with curve fitting.
 TEST (ProfileSegmentation, DeterministicForAnyThreadCountWithTheOptions)
 {
-  const LabelledCloud scene = coaxialPipes ();
+  const LabelledCloud scene = coarseCoaxialPipes ();
   expectDeterministic (scene, Segmentation::ProfileMethod::Proximity, true, false);
   expectDeterministic (scene, Segmentation::ProfileMethod::MinimumSpanningTree, true, false);
   expectDeterministic (scene, Segmentation::ProfileMethod::CurveFitting, false, true);

@@ -1,0 +1,67 @@
+/*
+ * Tests of pcl_ext::ProfileSegmentation on analytic shapes sampled finely: nested spheres with
+ * every profile method, touching coaxial surfaces with curve fitting. Labelled `quality`: the
+ * sanitized quick run leaves them out (curve fitting runs some thirty times slower there), and
+ * the determinism tests of test_profile_segmentation cover the same code on coarser pipes.
+ */
+#include <pcl_ext/evaluation/segmentation_metrics.h>
+#include <pcl_ext/segmentation/profile_segmentation.h>
+
+#include "profile_test_clouds.h"
+
+#include <gtest/gtest.h>
+
+using namespace profile_test;
+using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
+
+namespace
+{
+pcl_ext::SegmentationMetrics
+evaluate (const std::vector<pcl::PointIndices>& clusters, const LabelledCloud& scene)
+{
+  pcl_ext::SegmentationMetrics metrics;
+  EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, scene.labels, metrics));
+  return metrics;
+}
+}  // namespace
+
+TEST (ProfileSegmentationShapes, NestedSpheresAreSeparate)
+{
+  LabelledCloud scene;
+  addSphere (scene, {0, 0, 0}, 1.0, 0.02, 1);
+  addSphere (scene, {0.05, 0, 0}, 0.6, 0.02, 2);
+  addSphere (scene, {0.1, 0.05, 0}, 0.25, 0.02, 3);
+  for (const auto method : {Segmentation::ProfileMethod::Proximity,
+                            Segmentation::ProfileMethod::MinimumSpanningTree,
+                            Segmentation::ProfileMethod::CurveFitting})
+  {
+    Segmentation seg;
+    seg.setInputCloud (scene.cloud);
+    seg.setProfileSegmentation (method);
+    std::vector<pcl::PointIndices> clusters;
+    seg.extract (clusters);
+    const auto m = evaluate (clusters, scene);
+    EXPECT_GE (m.mean_best_iou, 0.99) << static_cast<int> (method);
+    EXPECT_EQ (m.correct, 3u) << static_cast<int> (method);
+  }
+}
+
+TEST (ProfileSegmentationShapes, CurveFittingSeparatesTouchingCoaxialSurfaces)
+{
+  const LabelledCloud scene = coaxialPipes ();
+  Segmentation seg;
+  seg.setInputCloud (scene.cloud);
+  std::vector<pcl::PointIndices> clusters;
+  // Proximity links across the creases: the three surfaces are one segment.
+  seg.extract (clusters);
+  const auto proximity = evaluate (clusters, scene);
+  EXPECT_EQ (clusters.size (), 1u);
+  EXPECT_EQ (proximity.under_segmented, 3u);
+  // Curve fitting ends the curves at the creases.
+  seg.setProfileSegmentation (Segmentation::ProfileMethod::CurveFitting);
+  seg.extract (clusters);
+  const auto curve = evaluate (clusters, scene);
+  EXPECT_GE (curve.mean_best_iou, 0.90);
+  EXPECT_EQ (curve.correct, 3u);
+  EXPECT_FALSE (seg.getBreakpoints ().empty ());
+}
