@@ -4,7 +4,9 @@
 # the tools and benchmarks another (a precompiled header is only used with the macros and
 # options it was made with, so each group has its own, made by a small provider target with
 # the group's flags). -Winvalid-pch reports a source that could not use it (it then parses the
-# headers itself: slower, never wrong).
+# headers itself: slower, never wrong). The flags that differ between our executables are made
+# the same across a group: -fPIC (which PCL's io and visualization targets add to their users)
+# and OpenMP (which sets _REENTRANT, a macro the system headers test).
 option(PCL_EXT_PRECOMPILED_HEADERS "Precompile the PCL, Eigen and gtest headers" ON)
 
 set(PCL_EXT_PCH_HEADERS <algorithm> <cmath> <cstdint> <memory> <string> <vector>
@@ -41,7 +43,14 @@ function(pcl_ext_share_precompiled_headers target group)
       target_link_libraries(${provider} PRIVATE pcl_ext::common)
     endif()
     target_precompile_headers(${provider} PRIVATE ${headers})
+    pcl_ext_align_executable_flags(${provider})
   endif()
   target_precompile_headers(${target} REUSE_FROM ${provider})
   target_compile_options(${target} PRIVATE -Winvalid-pch)
+  pcl_ext_align_executable_flags(${target})
+endfunction()
+
+function(pcl_ext_align_executable_flags target)
+  target_compile_options(${target} PRIVATE -fPIC)
+  target_link_libraries(${target} PRIVATE OpenMP::OpenMP_CXX)
 endfunction()
