@@ -8,7 +8,6 @@ add_library(pcl_ext_segmenter_comparison STATIC
 target_include_directories(pcl_ext_segmenter_comparison PUBLIC
   ${CMAKE_CURRENT_SOURCE_DIR}/src/compare_segmenters)
 target_compile_options(pcl_ext_segmenter_comparison PRIVATE -Wall -Wextra)
-pcl_ext_precompile_headers(pcl_ext_segmenter_comparison)
 target_link_libraries(pcl_ext_segmenter_comparison PUBLIC
   pcl_ext::segmentation
   ${PCL_SEGMENTATION_LIBRARIES} ${PCL_SAMPLE_CONSENSUS_LIBRARIES} ${PCL_FEATURES_LIBRARIES}

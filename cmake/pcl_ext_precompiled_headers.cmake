@@ -1,29 +1,22 @@
-# Precompiled headers. Every source of ours includes PCL's point types and Eigen, which take
-# about 3.5 of the 8 to 15 seconds a source compiles in; gtest.h takes 2 more in a test.
-# A library precompiles them once for its sources; the tests share one precompiled header, and
-# the tools and benchmarks another (a precompiled header is only used with the macros and
-# options it was made with, so each group has its own, made by a small provider target with
-# the group's flags). -Winvalid-pch reports a source that could not use it (it then parses the
-# headers itself: slower, never wrong). The flags that differ between our executables are made
-# the same across a group: -fPIC (which PCL's io and visualization targets add to their users)
-# and OpenMP (which sets _REENTRANT, a macro the system headers test).
+# Precompiled headers for the executables. Every test parses PCL's point types, Eigen and
+# gtest.h, about 6 of the 8 to 15 seconds it compiles in; a tool or benchmark the same without
+# gtest. The tests share one precompiled header, the tools and benchmarks another (a
+# precompiled header is only used with the macros and options it was made with, so each group
+# has its own, made by a small provider target with the group's flags). The flags that differ
+# between our executables are made the same across a group: -fPIC (which PCL's io and
+# visualization targets add to their users) and OpenMP (which sets _REENTRANT, a macro the
+# system headers test). -Winvalid-pch reports a source that could not use the header (it then
+# parses the headers itself: slower, never wrong). The libraries have none: their sources spend
+# their time instantiating templates, and a header precompiled per library cost more than it
+# saved.
 option(PCL_EXT_PRECOMPILED_HEADERS "Precompile the PCL, Eigen and gtest headers" ON)
 
 set(PCL_EXT_PCH_HEADERS <algorithm> <cmath> <cstdint> <memory> <string> <vector>
     <Eigen/Dense> <pcl/point_cloud.h> <pcl/point_types.h>)
 
-# pcl_ext_precompile_headers(<target>): <target> precompiles the common headers for its own
-# sources (libraries, and tools of several sources).
-function(pcl_ext_precompile_headers target)
-  if(PCL_EXT_PRECOMPILED_HEADERS)
-    target_precompile_headers(${target} PRIVATE ${PCL_EXT_PCH_HEADERS})
-    target_compile_options(${target} PRIVATE -Winvalid-pch)
-  endif()
-endfunction()
-
-# pcl_ext_share_precompiled_headers(<target> TESTS|EXECUTABLES): <target> (one source, one
-# executable) uses the header precompiled for its group: TESTS (the common headers and gtest,
-# flags of a gtest program) or EXECUTABLES (the common headers, flags of a tool).
+# pcl_ext_share_precompiled_headers(<target> TESTS|EXECUTABLES): the executable <target> uses
+# the header precompiled for its group: TESTS (the common headers and gtest, the flags of a
+# gtest program) or EXECUTABLES (the common headers, the flags of a tool).
 function(pcl_ext_share_precompiled_headers target group)
   if(NOT PCL_EXT_PRECOMPILED_HEADERS)
     return()
