@@ -204,7 +204,8 @@ TEST (TlsScanSimulation, EdgesOfABox)
 }
 
 // The ground behind the box is not scanned (its shadow); the ground points along the shadow's
-// outline are boundaries of the scanned ground, and no other ground point is.
+// outline are boundaries of the scanned ground, as are the first row (the blind cone's border)
+// and the last (the maximum incidence), and no other ground point is.
 TEST (TlsScanSimulation, ShadowBordersAreBoundaries)
 {
   const SceneGeometry geometry = groundAndBox (true);
@@ -217,7 +218,7 @@ TEST (TlsScanSimulation, ShadowBordersAreBoundaries)
   pcl::PointCloud<SimulatedPoint> cloud;
   ASSERT_TRUE (scanner.scan (geometry, cloud));
   const double step = 0.15 * M_PI / 180.0;
-  std::size_t shadow = 0, blind_cone = 0;
+  std::size_t shadow = 0, blind_cone = 0, far = 0;
   for (const auto& p : cloud)
   {
     if (p.label != 1 || p.point_class != static_cast<std::uint32_t> (PointClass::Boundary))
@@ -228,6 +229,14 @@ TEST (TlsScanSimulation, ShadowBordersAreBoundaries)
     if (elevation < -45.0 * M_PI / 180.0 + 1.5 * step)
     {
       ++blind_cone;  // the lowest row: the border of the blind cone
+      continue;
+    }
+    if (elevation > -2.0 * M_PI / 180.0 - 1.5 * step)
+    {
+      // The last row before the rays meet the ground beyond the maximum incidence (88 degrees
+      // from the normal, 2 degrees below the horizon) and return nothing: 80 m away.
+      EXPECT_GT (d.norm (), 75.0);
+      ++far;
       continue;
     }
     // Otherwise the point lies behind the box, next to a ray that grazes the box: the segment
@@ -246,6 +255,66 @@ TEST (TlsScanSimulation, ShadowBordersAreBoundaries)
   }
   EXPECT_GT (shadow, 50u);
   EXPECT_GT (blind_cone, 50u);
+  EXPECT_GT (far, 50u);
+}
+
+// A vertical pipe standing on the ground in front of the scanner: its data end at its two
+// silhouettes, where it turns away from the scanner, as they end at a shadow. The pipe points
+// next to a silhouette (whose neighbouring ray passes the pipe) are boundaries; the ones facing
+// the scanner, away from the silhouettes and the ends, are not.
+TEST (TlsScanSimulation, SilhouettesOfASmoothSurfaceAreBoundaries)
+{
+  SceneBuilder builder;
+  const std::uint32_t ground = builder.addPolygon (
+      Vec3 (-100, -100, 0), Vec3::UnitX (), Vec3::UnitY (),
+      {{Vec2 (0, 0), Vec2 (200, 0), Vec2 (200, 200), Vec2 (0, 200)}}, builder.newObject (), 1,
+      Material ());
+  const double radius = 0.3;
+  const Vec3 axis_base (6, 0, 0);
+  builder.addFrustum (axis_base, Vec3::UnitZ (), 2.0, radius, radius, builder.newObject (), 2,
+                      Material (), EndCondition::joined (ground), EndCondition::open ());
+  SceneGeometry geometry = std::move (builder.geometry ());
+  geometry.build ();
+  TlsScanSimulation scanner;
+  const Vec3 o (0, 0, 1.0);
+  scanner.setScanPositions ({o});
+  scanner.setAngularStep (0.15);
+  scanner.setElevationRange (-45.0, 10.0);
+  scanner.setRangeNoise (0.0);
+  pcl::PointCloud<SimulatedPoint> cloud;
+  ASSERT_TRUE (scanner.scan (geometry, cloud));
+  const double step = 0.15 * M_PI / 180.0;
+  std::size_t silhouette = 0, facing = 0, wrong = 0;
+  for (const auto& p : cloud)
+  {
+    if (p.label != 2 || p.z < 0.3 || p.z > 1.7)  // the pipe, away from its two ends
+      continue;
+    // Angle between the pipe's normal and the horizontal direction to the scanner: 90 degrees
+    // on a silhouette. The ray one step beside a point passes the pipe when the point lies
+    // within about a spacing of the silhouette's line.
+    const Vec3 q (p.x, p.y, p.z);
+    const Vec2 normal = Vec2 (q.x () - axis_base.x (), q.y () - axis_base.y ()).normalized ();
+    const Vec2 to_scanner = Vec2 (o.x () - q.x (), o.y () - q.y ());
+    const double range = to_scanner.norm ();
+    const double beyond = radius - std::abs (Vec2 (-to_scanner.y (), to_scanner.x ())
+                                                 .normalized ()
+                                                 .dot (Vec2 (axis_base.x () - o.x (), axis_base.y () - o.y ())));
+    const bool boundary = p.point_class == static_cast<std::uint32_t> (PointClass::Boundary);
+    // beyond: how far inside the silhouette's line of sight the ray through q passes (m).
+    if (beyond > 3.0 * range * step)
+    {
+      ++facing;
+      wrong += boundary;
+    }
+    else if (beyond < 0.5 * range * step)
+    {
+      ++silhouette;
+      EXPECT_TRUE (boundary) << q.transpose () << " normal " << normal.transpose ();
+    }
+  }
+  EXPECT_GT (silhouette, 20u);
+  EXPECT_GT (facing, 1000u);
+  EXPECT_EQ (wrong, 0u);
 }
 
 TEST (TlsScanSimulation, ConnectedSegmentsSplitASurfaceCutByAWall)

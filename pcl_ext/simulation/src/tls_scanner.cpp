@@ -350,12 +350,17 @@ struct ScanVisitor
   }
 
   /** Surface points where the scanned part of their surface ends become Boundary: a
-    * neighbouring ray of the grid returned a point much nearer (this point lies at the edge of
-    * a shadow) or points into the blind cone. A neighbour on the same continuous surface lies
-    * about one spacing away (range * step / cos incidence); a jump of more than 4 spacings is a
-    * discontinuity. The other side of a jump, the occluding contour, is not marked: there the
-    * surface turns away from the scanner (a pipe's silhouette) or ends at a curve of the scene,
-    * which the scene's own curves label. */
+    * neighbouring ray of the grid returned a point of a discontinuity, or points into the blind
+    * cone. A neighbour on the same continuous surface lies about one spacing away (range * step
+    * / cos incidence); a jump of more than 4 spacings is a discontinuity. Both sides of a jump
+    * are marked: the far side is the edge of a shadow, the near side the occluding contour,
+    * where a smooth surface turns away from the scanner (a pipe's or a column's silhouette) and
+    * its data end as they do at a shadow. Where the near side ends at a curve of the scene (a
+    * box's crease), the scene's own curves have already labelled it. A neighbouring ray that
+    * returned nothing marks a border too: past a silhouette the rays meet the surface beyond
+    * the maximum incidence angle, or miss it into the sky or beyond the maximum range; so
+    * does the edge of the field of view. Not on porous surfaces (vegetation), whose gaps let
+    * rays through. */
   void
   markCoverageBoundaries (const std::vector<ColumnTask>& tasks, long num_columns)
   {
@@ -371,8 +376,10 @@ struct ScanVisitor
           continue;
         const Return& r = returns[k][i];
         bool border = r.row - 1 < lowest_row;
+        // A porous surface (vegetation) lets rays through its gaps: a missing return there
+        // is no border of what was scanned.
         const auto check = [&] (const Return* n) {
-          border = border || (n && n->range < r.range && !continuous (*n, r));
+          border = border || (n ? !continuous (*n, r) : !r.porous);
         };
         check (find (static_cast<std::size_t> (k), r.row - 1));
         check (find (static_cast<std::size_t> (k), r.row + 1));

@@ -35,10 +35,12 @@ namespace simulation
   *   edge distance is the local scan spacing range * step (in radians) unless set explicitly.
   *   A Surface point is also Boundary where the scanned part of its surface ends although the
   *   surface goes on (setCoverageBoundaries, default on): a neighbouring ray of the grid (one
-  *   step in azimuth or elevation, i.e. one local spacing away) returned nothing, or returned a
-  *   point much farther from it than the spacing (a shadow, a silhouette, the blind cone, the
-  *   maximum range or incidence). Those are the borders of the sampled surface that a point
-  *   cloud method sees.
+  *   step in azimuth or elevation, i.e. one local spacing away) returned a point much farther
+  *   from it than the spacing, nearer to the scanner or farther (the edge of a shadow, or the
+  *   silhouette of a smooth surface turning away from the scanner), or points into the blind
+  *   cone, or returned nothing (past a silhouette beyond the maximum incidence, the sky, the
+  *   maximum range, the edge of the field of view; not on porous surfaces, whose gaps let rays
+  *   through). Those are the borders of the sampled surface that a point cloud method sees.
   * - Segment ground truth: by default (setConnectedSegments) a segment id names one connected
   *   visible piece of a surface, not the whole surface: a ceiling cut in two by a wall, or a
   *   floor split by an object's shadow that no scan position sees into, gives two segments.
