@@ -37,6 +37,21 @@ groundAndBox (bool box, std::array<std::uint32_t, 6>* faces = nullptr)
   geometry.build ();
   return geometry;
 }
+
+/** One noise-free scan of \a geometry from \a origin: 0.15 degree steps, elevations -45 to 10
+  * degrees. */
+pcl::PointCloud<SimulatedPoint>
+scanFrom (const SceneGeometry& geometry, const Vec3& origin)
+{
+  TlsScanSimulation scanner;
+  scanner.setScanPositions ({origin});
+  scanner.setAngularStep (0.15);
+  scanner.setElevationRange (-45.0, 10.0);
+  scanner.setRangeNoise (0.0);
+  pcl::PointCloud<SimulatedPoint> cloud;
+  EXPECT_TRUE (scanner.scan (geometry, cloud));
+  return cloud;
+}
 }  // namespace
 
 TEST (TlsScanSimulation, DeterministicForAnyThreadCount)
@@ -208,15 +223,8 @@ TEST (TlsScanSimulation, EdgesOfABox)
 // and the last (the maximum incidence), and no other ground point is.
 TEST (TlsScanSimulation, ShadowBordersAreBoundaries)
 {
-  const SceneGeometry geometry = groundAndBox (true);
-  TlsScanSimulation scanner;
   const Vec3 o (0, 3, 3.0);
-  scanner.setScanPositions ({o});
-  scanner.setAngularStep (0.15);
-  scanner.setElevationRange (-45.0, 10.0);
-  scanner.setRangeNoise (0.0);
-  pcl::PointCloud<SimulatedPoint> cloud;
-  ASSERT_TRUE (scanner.scan (geometry, cloud));
+  const auto cloud = scanFrom (groundAndBox (true), o);
   const double step = 0.15 * M_PI / 180.0;
   std::size_t shadow = 0, blind_cone = 0, far = 0;
   for (const auto& p : cloud)
@@ -275,41 +283,32 @@ TEST (TlsScanSimulation, SilhouettesOfASmoothSurfaceAreBoundaries)
                       Material (), EndCondition::joined (ground), EndCondition::open ());
   SceneGeometry geometry = std::move (builder.geometry ());
   geometry.build ();
-  TlsScanSimulation scanner;
   const Vec3 o (0, 0, 1.0);
-  scanner.setScanPositions ({o});
-  scanner.setAngularStep (0.15);
-  scanner.setElevationRange (-45.0, 10.0);
-  scanner.setRangeNoise (0.0);
-  pcl::PointCloud<SimulatedPoint> cloud;
-  ASSERT_TRUE (scanner.scan (geometry, cloud));
+  const auto cloud = scanFrom (geometry, o);
   const double step = 0.15 * M_PI / 180.0;
   std::size_t silhouette = 0, facing = 0, wrong = 0;
   for (const auto& p : cloud)
   {
     if (p.label != 2 || p.z < 0.3 || p.z > 1.7)  // the pipe, away from its two ends
       continue;
-    // Angle between the pipe's normal and the horizontal direction to the scanner: 90 degrees
-    // on a silhouette. The ray one step beside a point passes the pipe when the point lies
-    // within about a spacing of the silhouette's line.
-    const Vec3 q (p.x, p.y, p.z);
-    const Vec2 normal = Vec2 (q.x () - axis_base.x (), q.y () - axis_base.y ()).normalized ();
-    const Vec2 to_scanner = Vec2 (o.x () - q.x (), o.y () - q.y ());
-    const double range = to_scanner.norm ();
-    const double beyond = radius - std::abs (Vec2 (-to_scanner.y (), to_scanner.x ())
-                                                 .normalized ()
-                                                 .dot (Vec2 (axis_base.x () - o.x (), axis_base.y () - o.y ())));
+    // How far inside the pipe's outline, seen from the scanner, the ray to the point passes:
+    // the pipe's radius less the distance from its axis to the ray (0 on a silhouette). The
+    // ray one step beside passes the pipe when this is under about one spacing.
+    const Vec2 q (p.x, p.y);
+    const Vec2 ray = (q - o.head<2> ()).normalized ();
+    const Vec2 to_axis = axis_base.head<2> () - o.head<2> ();
+    const double inside = radius - std::abs (ray.x () * to_axis.y () - ray.y () * to_axis.x ());
+    const double spacing = (q - o.head<2> ()).norm () * step;
     const bool boundary = p.point_class == static_cast<std::uint32_t> (PointClass::Boundary);
-    // beyond: how far inside the silhouette's line of sight the ray through q passes (m).
-    if (beyond > 3.0 * range * step)
+    if (inside > 3.0 * spacing)
     {
       ++facing;
       wrong += boundary;
     }
-    else if (beyond < 0.5 * range * step)
+    else if (inside < 0.5 * spacing)
     {
       ++silhouette;
-      EXPECT_TRUE (boundary) << q.transpose () << " normal " << normal.transpose ();
+      EXPECT_TRUE (boundary) << p.x << " " << p.y << " " << p.z;
     }
   }
   EXPECT_GT (silhouette, 20u);
