@@ -1,8 +1,7 @@
 /*
  * pcl_ext_classify_variance run as a command: labels of a cube written into the `label` field
  * next to the input's own fields, the options beyond the paper (-noise_sigma, -boundary_band,
- * -crease_angle),
- * usage errors, and no output on failure.
+ * -boundary_band_fraction, -crease_angle), usage errors, and no output on failure.
  */
 #include "../app_test.h"
 
@@ -77,7 +76,7 @@ TEST_F (ClassifyVarianceApp, CubeCreasesAreEdgesWithAndWithoutTheNoiseModel)
   EXPECT_EQ (paper.first, 1.0);
   EXPECT_GT (paper.second, 0.95);
   ASSERT_EQ (run (path ("cube.pcd") + " " + path ("noise.pcd") +
-                  " -threads 2 -noise_sigma 0.001 -boundary_band"),
+                  " -threads 2 -noise_sigma 0.001 -boundary_band -boundary_band_fraction 0.6"),
              0)
       << output_;
   const auto noise = check ("noise.pcd");
@@ -99,12 +98,15 @@ TEST_F (ClassifyVarianceApp, BadUsageFailsWithoutOutput)
   EXPECT_EQ (run ("-h"), 0);
   EXPECT_NE (output_.find ("-noise_sigma"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-boundary_band"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-boundary_band_fraction"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-crease_angle"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-max_radius"), std::string::npos) << output_;
   EXPECT_EQ (run (io + " -noise_sigma -0.001"), 1);
   EXPECT_EQ (run (io + " -noise_sigma nan"), 1);
   EXPECT_EQ (run (io + " -crease_angle 91"), 1);
   EXPECT_EQ (run (io + " -crease_angle -1"), 1);
+  EXPECT_EQ (run (io + " -boundary_band -boundary_band_fraction 0"), 1);
+  EXPECT_EQ (run (io + " -boundary_band -boundary_band_fraction 1.5"), 1);
   EXPECT_EQ (run (io + " -variance_threshold -1"), 1);
   EXPECT_EQ (run (io + " -k 2"), 1);
   EXPECT_FALSE (exists ("out.pcd"));

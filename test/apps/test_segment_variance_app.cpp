@@ -1,7 +1,8 @@
 /*
  * pcl_ext_segment_variance run as a command: segments of a cube written into the `label` field
  * next to the input's own fields, the classifier's options beyond the paper (-noise_sigma,
- * -boundary_band, -crease_angle, -max_radius), usage errors, and no output on failure.
+ * -boundary_band, -boundary_band_fraction, -crease_angle, -max_radius), usage errors, and no
+ * output on failure.
  */
 #include "../app_test.h"
 
@@ -109,10 +110,12 @@ TEST_F (SegmentVarianceApp, ClassifierOptionsReachTheSegmentation)
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -noise_sigma nan"), 1);
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -max_radius -1"), 1);
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -crease_angle 91"), 1);
+  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -boundary_band_fraction -1"), 1);
   EXPECT_FALSE (exists ("out.pcd"));
   EXPECT_EQ (run ("-h"), 0);
   EXPECT_NE (output_.find ("-noise_sigma"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-boundary_band"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-boundary_band_fraction"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-max_radius"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-crease_angle"), std::string::npos) << output_;
 }

@@ -295,6 +295,31 @@ TEST (LocalVarianceClassification, BoundaryBandReachesTheNeighbourhoodRadius)
   EXPECT_GT (inside_band, inside_point);
   EXPECT_GE (inside_band, static_cast<std::size_t> (0.95 * inside));
   EXPECT_EQ (far_band, 0u);
+
+  // Through the nearest 30% of each neighbourhood (radius about 0.55 r) the band reaches less
+  // far: it keeps eq. 6's points and adds fewer, none beyond 1.5 r.
+  EXPECT_EQ (c.getBoundaryBandFraction (), 1.0);
+  c.setBoundaryBandFraction (0.3);
+  EXPECT_EQ (c.getBoundaryBandFraction (), 0.3);
+  Labels near;
+  c.classify (near);
+  ASSERT_EQ (near.size (), band.size ());
+  std::size_t all_band = 0, all_near = 0, beyond_near = 0;
+  for (std::size_t i = 0; i < near.size (); ++i)
+  {
+    const bool b = near[i].label == id (PointClass::Boundary);
+    if (point[i].label == id (PointClass::Boundary))
+      EXPECT_TRUE (b) << i;
+    if (b)
+      EXPECT_EQ (band[i].label, id (PointClass::Boundary)) << i;
+    all_band += band[i].label == id (PointClass::Boundary);
+    all_near += b;
+    beyond_near += b && plane.border_distance[i] > 1.5 * r;
+  }
+  std::cout << "boundary points with the whole band " << all_band << ", the nearest 30% "
+            << all_near << "\n";
+  EXPECT_LT (all_near, all_band);
+  EXPECT_EQ (beyond_near, 0u);
 }
 
 TEST (LocalVarianceClassification, DeterministicForAnyThreadCountAndSharedNeighbourhoods)
@@ -477,6 +502,12 @@ TEST (LocalVarianceClassificationBadInput, BadParametersGiveEmptyOutput)
   expectEmpty ("NaN crease angle");
   c.setMaxRadius (std::numeric_limits<double>::infinity ());
   expectEmpty ("infinite maximum radius");
+  c.setBoundaryBandFraction (0.0);
+  expectEmpty ("zero band fraction");
+  c.setBoundaryBandFraction (1.5);
+  expectEmpty ("band fraction above 1");
+  c.setBoundaryBandFraction (std::numeric_limits<double>::quiet_NaN ());
+  expectEmpty ("NaN band fraction");
 }
 
 TEST (LocalVarianceClassificationBadInput, NonFiniteDuplicateAndCollinearPointsAreUnknown)

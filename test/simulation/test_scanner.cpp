@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iostream>
 #include <map>
 
 using namespace pcl_ext;
@@ -264,6 +265,34 @@ TEST (TlsScanSimulation, ShadowBordersAreBoundaries)
   EXPECT_GT (shadow, 50u);
   EXPECT_GT (blind_cone, 50u);
   EXPECT_GT (far, 50u);
+}
+
+// A border of one scan that another scan covers is not a border of the scanned part: the box
+// shadows the ground behind it from a scanner in front (x = 0), and a second scanner behind
+// the box (x = 16) sees that ground. The first scan alone marks the shadow's outline there;
+// with both, the returns of the second close the gap and the outline is surface.
+TEST (TlsScanSimulation, BordersOfOneScanThatAnotherCoversAreSurface)
+{
+  const SceneGeometry geometry = groundAndBox (true);
+  const auto outline = [] (const pcl::PointCloud<SimulatedPoint>& cloud) {
+    std::size_t n = 0;
+    for (const auto& p : cloud)  // behind the box, away from both blind cones and the box
+      n += p.label == 1 && p.x > 8.5 && p.x < 12.0 && std::abs (p.y) < 5.0 &&
+           p.point_class == static_cast<std::uint32_t> (PointClass::Boundary);
+    return n;
+  };
+  const auto one = scanFrom (geometry, Vec3 (0, 3, 3.0));
+  TlsScanSimulation scanner;
+  scanner.setScanPositions ({Vec3 (0, 3, 3.0), Vec3 (16, 0, 3.0)});
+  scanner.setAngularStep (0.15);
+  scanner.setElevationRange (-45.0, 10.0);
+  scanner.setRangeNoise (0.0);
+  pcl::PointCloud<SimulatedPoint> both;
+  ASSERT_TRUE (scanner.scan (geometry, both));
+  std::cout << "shadow outline points behind the box: one scan " << outline (one)
+            << ", both scans " << outline (both) << "\n";
+  EXPECT_GT (outline (one), 40u);  // measured 49
+  EXPECT_EQ (outline (both), 0u);
 }
 
 // A vertical pipe standing on the ground in front of the scanner: its data end at its two

@@ -24,6 +24,7 @@ struct VarianceClassificationOptions
   double noise_sigma = 0.0;
   double crease_angle = 0.0;  ///< degrees
   bool boundary_band = false;
+  double boundary_band_fraction = 1.0;
 
   void
   addTo (tools::CommandLine& cl)
@@ -39,6 +40,8 @@ struct VarianceClassificationOptions
                   "the scanner's range noise sigma, removed from eq. 4-6 (0: the paper's)");
     cl.addSwitch ("boundary_band", boundary_band,
                   "also label boundary the surface points next to one eq. 6 finds");
+    cl.addOption ("boundary_band_fraction", boundary_band_fraction,
+                  "share of each neighbourhood, nearest first, the band reaches through (0-1]");
     cl.addOption ("crease_angle", crease_angle,
                   "an edge of eq. 5 must bend the normals by more than this (degrees; 0: off)");
   }
@@ -72,6 +75,7 @@ struct VarianceClassificationOptions
     classifier.setConfidence (confidence);
     classifier.setNoiseStandardDeviation (noise_sigma);
     classifier.setBoundaryBand (boundary_band);
+    classifier.setBoundaryBandFraction (boundary_band_fraction);
     classifier.setCreaseAngle (crease_angle * M_PI / 180.0);
   }
 };

@@ -283,6 +283,7 @@ struct ScanVisitor
     Vec3 truth;
     double range;
     double spacing;
+    Eigen::Vector3f normal;  ///< unit surface normal at the true position
     bool porous;  ///< on a porous primitive (vegetation), not a continuous surface
   };
 
@@ -315,6 +316,31 @@ struct ScanVisitor
     const auto it = std::lower_bound (column.begin (), column.end (), row,
                                       [] (const Return& r, long j) { return r.row < j; });
     return it != column.end () && it->row == row ? &*it : nullptr;
+  }
+
+  /** Where each task's returns start in one numbering of all returns; the last entry is
+    * their number. */
+  std::vector<std::size_t>
+  firstOfTasks () const
+  {
+    std::vector<std::size_t> first (returns.size () + 1, 0);
+    for (std::size_t k = 0; k < returns.size (); ++k)
+      first[k + 1] = first[k] + returns[k].size ();
+    return first;
+  }
+
+  /** A k-d tree over the true positions of all returns, numbered as by firstOfTasks. */
+  void
+  buildReturnTree (search::KdTree3f& tree) const
+  {
+    std::vector<float> xyz;
+    for (const auto& column : returns)
+      for (const Return& r : column)
+        xyz.insert (xyz.end (), {static_cast<float> (r.truth.x ()), static_cast<float> (r.truth.y ()),
+                                 static_cast<float> (r.truth.z ())});
+    std::vector<pcl::index_t> ids (xyz.size () / 3);
+    std::iota (ids.begin (), ids.end (), 0);
+    tree.build (std::move (xyz), std::move (ids));
   }
 
   /** After the last column: the coverage boundaries, then the pieces. */
@@ -360,11 +386,31 @@ struct ScanVisitor
     * returned nothing marks a border too: past a silhouette the rays meet the surface beyond
     * the maximum incidence angle, or miss it into the sky or beyond the maximum range; so
     * does the edge of the field of view. Not on porous surfaces (vegetation), whose gaps let
-    * rays through. */
+    * rays through.
+    * A border of one scan is a border of the scanned part only where the returns of all
+    * scanners leave the gap open: a point stays marked when the returns of its surface within
+    * 4 of its spacings (the continuity distance) leave an angle wider than a right angle free
+    * around it in its tangent plane (pcl::BoundaryEstimation's criterion). Another scanner
+    * that sees into the shadow, or past the silhouette, fills the gap; so does the far side of
+    * a shadow narrower than the continuity distance. */
   void
   markCoverageBoundaries (const std::vector<ColumnTask>& tasks, long num_columns)
   {
+    std::vector<std::vector<std::uint8_t>> scan_borders;
+    if (findScanBorders (tasks, num_columns, scan_borders))
+      markOpenBorders (scan_borders);
+  }
+
+  /** The borders of each scan by itself (see markCoverageBoundaries), per return; false when
+    * there is none. */
+  bool
+  findScanBorders (const std::vector<ColumnTask>& tasks, long num_columns,
+                   std::vector<std::vector<std::uint8_t>>& scan_borders) const
+  {
     const long num_tasks = static_cast<long> (tasks.size ());
+    scan_borders.assign (tasks.size (), {});
+    for (long k = 0; k < num_tasks; ++k)
+      scan_borders[k].assign (returns[k].size (), 0);
 #pragma omp parallel for schedule(dynamic, 8) num_threads(resolveThreadCount (threads))
     for (long k = 0; k < num_tasks; ++k)
     {
@@ -385,7 +431,69 @@ struct ScanVisitor
         check (find (static_cast<std::size_t> (k), r.row + 1));
         check (left < 0 ? nullptr : find (static_cast<std::size_t> (left), r.row));
         check (right < 0 ? nullptr : find (static_cast<std::size_t> (right), r.row));
-        if (border)
+        scan_borders[k][i] = border;
+      }
+    }
+    for (const auto& column : scan_borders)
+      if (std::find (column.begin (), column.end (), 1) != column.end ())
+        return true;
+    return false;
+  }
+
+  /** Widest angle around \a r, in its tangent plane, free of the \a found returns of its own
+    * \a surface (2 pi when there are none). */
+  double
+  widestFreeAngle (const Return& r, std::uint32_t surface, const pcl::Indices& found,
+                   const std::vector<std::size_t>& first, std::vector<double>& angles) const
+  {
+    const Vec3 n = r.normal.cast<double> ();
+    const Vec3 u = n.unitOrthogonal (), v = n.cross (u);
+    angles.clear ();
+    for (const auto g : found)
+    {
+      const std::size_t task =
+          static_cast<std::size_t> (std::upper_bound (first.begin (), first.end (),
+                                                      static_cast<std::size_t> (g)) -
+                                    first.begin () - 1);
+      const std::size_t j = static_cast<std::size_t> (g) - first[task];
+      const Vec3 d = returns[task][j].truth - r.truth;
+      if (points[task][j].segment != surface || d.squaredNorm () == 0.0)
+        continue;
+      angles.push_back (std::atan2 (d.dot (v), d.dot (u)));
+    }
+    if (angles.empty ())
+      return 2.0 * M_PI;
+    std::sort (angles.begin (), angles.end ());
+    double widest = angles.front () + 2.0 * M_PI - angles.back ();
+    for (std::size_t a = 1; a < angles.size (); ++a)
+      widest = std::max (widest, angles[a] - angles[a - 1]);
+    return widest;
+  }
+
+  /** Mark as Boundary the scan borders that the returns of all scanners leave open (see
+    * markCoverageBoundaries). */
+  void
+  markOpenBorders (const std::vector<std::vector<std::uint8_t>>& scan_borders)
+  {
+    const std::vector<std::size_t> first = firstOfTasks ();
+    search::KdTree3f tree;
+    buildReturnTree (tree);
+    const long num_tasks = static_cast<long> (returns.size ());
+#pragma omp parallel for schedule(dynamic, 8) num_threads(resolveThreadCount (threads))
+    for (long k = 0; k < num_tasks; ++k)
+    {
+      pcl::Indices found;
+      std::vector<float> sqr;
+      std::vector<double> angles;
+      for (std::size_t i = 0; i < returns[k].size (); ++i)
+      {
+        if (!scan_borders[k][i])
+          continue;
+        const Return& r = returns[k][i];
+        const float query[3] = {static_cast<float> (r.truth.x ()), static_cast<float> (r.truth.y ()),
+                                static_cast<float> (r.truth.z ())};
+        tree.radiusSearch (query, 4.0 * r.spacing, found, sqr, 0, false);
+        if (widestFreeAngle (r, points[k][i].segment, found, first, angles) > 0.5 * M_PI)
           points[k][i].point_class = static_cast<std::uint32_t> (PointClass::Boundary);
       }
     }
@@ -412,9 +520,7 @@ struct ScanVisitor
   splitSegmentsIntoPieces (const std::vector<ColumnTask>& tasks, long num_columns)
   {
     const long num_tasks = static_cast<long> (tasks.size ());
-    std::vector<std::size_t> first (tasks.size () + 1, 0);
-    for (long k = 0; k < num_tasks; ++k)
-      first[k + 1] = first[k] + returns[k].size ();
+    const std::vector<std::size_t> first = firstOfTasks ();
     const std::size_t n = first.back ();
     if (n == 0)
       return;
@@ -451,8 +557,6 @@ struct ScanVisitor
       several_scanners = tasks[k].scanner != tasks[0].scanner;
     if (several_scanners)
     {
-      std::vector<float> xyz;
-      xyz.reserve (3 * n);
       std::vector<const Return*> of_point;
       std::vector<std::uint32_t> segment_of_point, task_of_point;
       of_point.reserve (n);
@@ -461,17 +565,12 @@ struct ScanVisitor
       for (long k = 0; k < num_tasks; ++k)
         for (std::size_t i = 0; i < returns[k].size (); ++i)
         {
-          const Vec3& t = returns[k][i].truth;
-          xyz.insert (xyz.end (), {static_cast<float> (t.x ()), static_cast<float> (t.y ()),
-                                   static_cast<float> (t.z ())});
           of_point.push_back (&returns[k][i]);
           segment_of_point.push_back (points[k][i].segment);
           task_of_point.push_back (static_cast<std::uint32_t> (k));
         }
-      std::vector<pcl::index_t> ids (n);
-      std::iota (ids.begin (), ids.end (), 0);
       search::KdTree3f tree;
-      tree.build (std::move (xyz), std::move (ids));
+      buildReturnTree (tree);
 #pragma omp parallel for schedule(dynamic, 8) num_threads(resolveThreadCount (threads))
       for (long k = 0; k < num_tasks; ++k)
       {
@@ -601,7 +700,7 @@ struct ScanVisitor
     if (coverage_boundaries || connected_segments)
       returns[task].push_back (
           {row, truth, hit.t, hit.t * step_rad / std::max (cos_incidence, 0.05),
-           primitive.porosity > 0.0});
+           hit.normal.cast<float> (), primitive.porosity > 0.0});
   }
 };
 }  // namespace

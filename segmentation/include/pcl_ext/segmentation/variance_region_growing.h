@@ -256,6 +256,14 @@ public:
   bool
   getBoundaryBand () const { return boundary_band_; }
 
+  /** \brief The share of each neighbourhood the band reaches through (see
+    * LocalVarianceClassification::setBoundaryBandFraction). Default 1; valid: (0, 1]. */
+  void
+  setBoundaryBandFraction (double fraction) { boundary_band_fraction_ = fraction; }
+
+  double
+  getBoundaryBandFraction () const { return boundary_band_fraction_; }
+
   /** \brief Longest distance from a seed to a neighbour it may link to (the paper's "limit"
     * on the distance from the seed point). Default 0: no limit beyond the neighbourhood;
     * valid: >= 0 and finite. */
@@ -366,6 +374,7 @@ protected:
   double confidence_ = 0.95;
   double noise_sigma_ = 0.0;
   bool boundary_band_ = false;
+  double boundary_band_fraction_ = 1.0;
   double crease_angle_ = 0.0;
   double max_distance_ = 0.0;
   double max_distance_factor_ = 3.0;

@@ -54,6 +54,12 @@ pcl_ext::LocalVarianceClassification<PointT>::checkParameters () const
                max_radius_);
     return false;
   }
+  if (!(boundary_band_fraction_ > 0.0 && boundary_band_fraction_ <= 1.0))
+  {
+    PCL_ERROR ("%s boundary band fraction = %g; it must lie in (0, 1].\n", name,
+               boundary_band_fraction_);
+    return false;
+  }
   if (!(crease_angle_ >= 0.0 && crease_angle_ <= 0.5 * M_PI))
   {
     PCL_ERROR ("%s crease angle = %g; it must lie between 0 and pi/2 (0: off).\n", name,
@@ -228,14 +234,18 @@ pcl_ext::LocalVarianceClassification<PointT>::widenBoundaries (
   for (std::size_t r = 0; r < labels.size (); ++r)
     seed[(*indices_)[r]] = labels[r].label == boundary;
   const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (labels.size ());
+  const double fraction = boundary_band_fraction_;
 #pragma omp parallel for num_threads(resolveThreadCount (threads_)) schedule(dynamic, 1024) \
-    default(none) shared(nb, labels, rows, seed, boundary, surface)
+    default(none) shared(nb, labels, rows, seed, boundary, surface, fraction)
   for (std::ptrdiff_t r = 0; r < rows; ++r)
   {
     if (labels[r].label != surface)
       continue;
-    for (const auto j : nb[static_cast<std::size_t> (r)])
-      if (seed[j])
+    const auto nn = nb[static_cast<std::size_t> (r)];
+    // Rows are closest first: the band reaches through the nearest share of each.
+    const auto reach = static_cast<std::size_t> (std::ceil (fraction * nn.size ()));
+    for (std::size_t n = 0; n < reach; ++n)
+      if (seed[nn.begin ()[n]])
       {
         labels[r].label = boundary;
         break;

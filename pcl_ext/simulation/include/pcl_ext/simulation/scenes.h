@@ -40,8 +40,8 @@ struct SceneParameters
   double noise = 0.005;           ///< range noise sigma at zero range (m), >= 0
   double noise_per_metre = 0.0;   ///< added range noise sigma per metre of range, >= 0
   double edge_distance = 0.0;     ///< class distance (m); 0 = local scan spacing
-  /** \brief Also label Boundary where the scanned part of a surface ends (shadows,
-    * silhouettes, the blind cone, the maximum incidence), see
+  /** \brief Also label Boundary where the scanned part of a surface ends in the merged scans
+    * (shadows, silhouettes, the blind cone, the maximum incidence), see
     * TlsScanSimulation::setCoverageBoundaries. */
   bool coverage_boundaries = true;
   /** \brief One \c segment id per connected visible piece of a surface (true) or per surface

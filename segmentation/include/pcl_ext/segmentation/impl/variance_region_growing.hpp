@@ -162,6 +162,7 @@ pcl_ext::VarianceRegionGrowing<PointT>::prepareClasses (const NeighbourhoodsCons
   classifier.setConfidence (confidence_);
   classifier.setNoiseStandardDeviation (noise_sigma_);
   classifier.setBoundaryBand (boundary_band_);
+  classifier.setBoundaryBandFraction (boundary_band_fraction_);
   classifier.setCreaseAngle (crease_angle_);
   classifier.setNumberOfThreads (threads_);
   classifier.classify (used_classes_);
