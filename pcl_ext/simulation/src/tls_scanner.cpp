@@ -388,9 +388,10 @@ struct ScanVisitor
     * does the edge of the field of view. Not on porous surfaces (vegetation), whose gaps let
     * rays through.
     * A border of one scan is a border of the scanned part only where the returns of all
-    * scanners leave the gap open: a point stays marked when the returns of its surface within
-    * 4 of its spacings (the continuity distance) leave an angle wider than a right angle free
-    * around it in its tangent plane (pcl::BoundaryEstimation's criterion). Another scanner
+    * scanners leave the gap open: a point stays marked when the returns of its surface among
+    * its 64 nearest, within 4 of its spacings (the continuity distance), leave an angle wider
+    * than a right angle free around it in its tangent plane (pcl::BoundaryEstimation's
+    * criterion). Another scanner
     * that sees into the shadow, or past the silhouette, fills the gap; so does the far side of
     * a shadow narrower than the continuity distance. */
   void
@@ -479,11 +480,14 @@ struct ScanVisitor
     search::KdTree3f tree;
     buildReturnTree (tree);
     const long num_tasks = static_cast<long> (returns.size ());
+    // At most this many of the nearest returns: enough to surround a point twice over, and
+    // a bound on the work where the spacing is long (grazing incidence).
+    constexpr std::size_t kMaxNeighbours = 64;
 #pragma omp parallel for schedule(dynamic, 8) num_threads(resolveThreadCount (threads))
     for (long k = 0; k < num_tasks; ++k)
     {
-      pcl::Indices found;
-      std::vector<float> sqr;
+      pcl::Indices found (kMaxNeighbours);
+      std::vector<float> sqr (kMaxNeighbours);
       std::vector<double> angles;
       for (std::size_t i = 0; i < returns[k].size (); ++i)
       {
@@ -492,7 +496,13 @@ struct ScanVisitor
         const Return& r = returns[k][i];
         const float query[3] = {static_cast<float> (r.truth.x ()), static_cast<float> (r.truth.y ()),
                                 static_cast<float> (r.truth.z ())};
-        tree.radiusSearch (query, 4.0 * r.spacing, found, sqr, 0, false);
+        found.resize (kMaxNeighbours);
+        found.resize (tree.nearestKSearch (query, kMaxNeighbours, found.data (), sqr.data ()));
+        const float reach = static_cast<float> (4.0 * r.spacing);
+        std::size_t within = 0;
+        while (within < found.size () && sqr[within] <= reach * reach)
+          ++within;
+        found.resize (within);
         if (widestFreeAngle (r, points[k][i].segment, found, first, angles) > 0.5 * M_PI)
           points[k][i].point_class = static_cast<std::uint32_t> (PointClass::Boundary);
       }

@@ -259,8 +259,8 @@ public:
     * Eq. 6 fires within about half a neighbourhood radius of a border, so the whole
     * neighbourhood carries the band to about 1.5 radii, past the points whose neighbourhood
     * reaches the border. On the generated scenes (k = 50, noise removed, a 70 degree crease
-    * angle; see the README) boundary F1 indoor / pipes: 1: 0.815 / 0.782; 0.6: 0.862 / 0.802;
-    * 0.5: 0.859 / 0.795; 0.7: 0.851 / 0.799. */
+    * angle; see the README) boundary F1 indoor / pipes: 1: 0.801 / 0.784; 0.6: 0.845 / 0.804;
+    * 0.5: 0.842 / 0.797; 0.7: 0.834 / 0.801. */
   void
   setBoundaryBandFraction (double fraction) { boundary_band_fraction_ = fraction; }
 
