@@ -42,9 +42,11 @@ namespace pcl_ext
   * neighbours, fewer than 3 valid curvatures for eq. 5) are 0, "unknown".
   *
   * Options beyond the paper, off by default: the scanner's range noise removed from eq. 4-6
-  * (setNoiseStandardDeviation), boundary labels over the whole neighbourhood band
-  * (setBoundaryBand), edges required to bend the normals (setCreaseAngle) and the k
-  * neighbours capped at a radius (setMaxRadius).
+  * (setNoiseStandardDeviation), boundary labels over a band of the neighbourhood
+  * (setBoundaryBand, setBoundaryBandFraction), edges required to bend the normals
+  * (setCreaseAngle) and the k neighbours capped at a radius (setMaxRadius). Together (noise
+  * removed, band fraction 0.6, crease angle 70 degrees) they meet the surface, edge and
+  * boundary goals on the generated scenes (see the README).
   *
   * Departures from the text: eq. 6 is scaled by the neighbourhood size (see
   * pcl_ext::ChiSquaredBoundaryEstimation, setScaleByNeighbourhoodSize); with indices, eq. 5
