@@ -318,39 +318,61 @@ struct ScanVisitor
     return it != column.end () && it->row == row ? &*it : nullptr;
   }
 
-  /** Where each task's returns start in one numbering of all returns; the last entry is
-    * their number. */
-  std::vector<std::size_t>
-  firstOfTasks () const
+  /** All returns in one numbering, task after task, for the searches across tasks and
+    * scanners. */
+  struct ReturnIndex
   {
-    std::vector<std::size_t> first (returns.size () + 1, 0);
-    for (std::size_t k = 0; k < returns.size (); ++k)
-      first[k + 1] = first[k] + returns[k].size ();
-    return first;
-  }
+    std::vector<std::size_t> first;          ///< where each task's returns start; last: count
+    std::vector<const Return*> of_point;
+    std::vector<std::uint32_t> surface_of_point;  ///< segment id before any split into pieces
+    std::vector<std::uint32_t> task_of_point;
+    search::KdTree3f tree;  ///< over the true positions
+  };
 
-  /** A k-d tree over the true positions of all returns, numbered as by firstOfTasks. */
   void
-  buildReturnTree (search::KdTree3f& tree) const
+  buildReturnIndex (ReturnIndex& index, bool with_tree) const
   {
+    index.first.assign (returns.size () + 1, 0);
+    for (std::size_t k = 0; k < returns.size (); ++k)
+      index.first[k + 1] = index.first[k] + returns[k].size ();
+    const std::size_t n = index.first.back ();
     std::vector<float> xyz;
-    for (const auto& column : returns)
-      for (const Return& r : column)
-        xyz.insert (xyz.end (), {static_cast<float> (r.truth.x ()), static_cast<float> (r.truth.y ()),
-                                 static_cast<float> (r.truth.z ())});
-    std::vector<pcl::index_t> ids (xyz.size () / 3);
+    xyz.reserve (3 * n);
+    index.of_point.reserve (n);
+    index.surface_of_point.reserve (n);
+    index.task_of_point.reserve (n);
+    for (std::size_t k = 0; k < returns.size (); ++k)
+      for (std::size_t i = 0; i < returns[k].size (); ++i)
+      {
+        const Vec3& t = returns[k][i].truth;
+        xyz.insert (xyz.end (), {static_cast<float> (t.x ()), static_cast<float> (t.y ()),
+                                 static_cast<float> (t.z ())});
+        index.of_point.push_back (&returns[k][i]);
+        index.surface_of_point.push_back (points[k][i].segment);
+        index.task_of_point.push_back (static_cast<std::uint32_t> (k));
+      }
+    std::vector<pcl::index_t> ids (n);
     std::iota (ids.begin (), ids.end (), 0);
-    tree.build (std::move (xyz), std::move (ids));
+    if (with_tree && n > 0)
+      index.tree.build (std::move (xyz), std::move (ids));
   }
 
-  /** After the last column: the coverage boundaries, then the pieces. */
+  /** After the last column: the coverage boundaries, then the pieces, over one index of all
+    * returns (built before the pieces change any segment id). */
   void
   end (const std::vector<ColumnTask>& tasks, long num_columns)
   {
+    // The tree serves the coverage boundaries and the links between scanners.
+    bool several_scanners = false;
+    for (std::size_t k = 1; k < tasks.size () && !several_scanners; ++k)
+      several_scanners = tasks[k].scanner != tasks[0].scanner;
+    ReturnIndex index;
+    if (coverage_boundaries || connected_segments)
+      buildReturnIndex (index, coverage_boundaries || several_scanners);
     if (coverage_boundaries)
-      markCoverageBoundaries (tasks, num_columns);
+      markCoverageBoundaries (tasks, num_columns, index);
     if (connected_segments)
-      splitSegmentsIntoPieces (tasks, num_columns);
+      splitSegmentsIntoPieces (tasks, num_columns, index);
     decltype (returns) ().swap (returns);
   }
 
@@ -395,11 +417,12 @@ struct ScanVisitor
     * that sees into the shadow, or past the silhouette, fills the gap; so does the far side of
     * a shadow narrower than the continuity distance. */
   void
-  markCoverageBoundaries (const std::vector<ColumnTask>& tasks, long num_columns)
+  markCoverageBoundaries (const std::vector<ColumnTask>& tasks, long num_columns,
+                          const ReturnIndex& index)
   {
     std::vector<std::vector<std::uint8_t>> scan_borders;
     if (findScanBorders (tasks, num_columns, scan_borders))
-      markOpenBorders (scan_borders);
+      markOpenBorders (scan_borders, index);
   }
 
   /** The borders of each scan by itself (see markCoverageBoundaries), per return; false when
@@ -443,22 +466,17 @@ struct ScanVisitor
 
   /** Widest angle around \a r, in its tangent plane, free of the \a found returns of its own
     * \a surface (2 pi when there are none). */
-  double
+  static double
   widestFreeAngle (const Return& r, std::uint32_t surface, const pcl::Indices& found,
-                   const std::vector<std::size_t>& first, std::vector<double>& angles) const
+                   const ReturnIndex& index, std::vector<double>& angles)
   {
     const Vec3 n = r.normal.cast<double> ();
     const Vec3 u = n.unitOrthogonal (), v = n.cross (u);
     angles.clear ();
     for (const auto g : found)
     {
-      const std::size_t task =
-          static_cast<std::size_t> (std::upper_bound (first.begin (), first.end (),
-                                                      static_cast<std::size_t> (g)) -
-                                    first.begin () - 1);
-      const std::size_t j = static_cast<std::size_t> (g) - first[task];
-      const Vec3 d = returns[task][j].truth - r.truth;
-      if (points[task][j].segment != surface || d.squaredNorm () == 0.0)
+      const Vec3 d = index.of_point[g]->truth - r.truth;
+      if (index.surface_of_point[g] != surface || d.squaredNorm () == 0.0)
         continue;
       angles.push_back (std::atan2 (d.dot (v), d.dot (u)));
     }
@@ -474,11 +492,9 @@ struct ScanVisitor
   /** Mark as Boundary the scan borders that the returns of all scanners leave open (see
     * markCoverageBoundaries). */
   void
-  markOpenBorders (const std::vector<std::vector<std::uint8_t>>& scan_borders)
+  markOpenBorders (const std::vector<std::vector<std::uint8_t>>& scan_borders,
+                   const ReturnIndex& index)
   {
-    const std::vector<std::size_t> first = firstOfTasks ();
-    search::KdTree3f tree;
-    buildReturnTree (tree);
     const long num_tasks = static_cast<long> (returns.size ());
     // At most this many of the nearest returns: enough to surround a point twice over, and
     // a bound on the work where the spacing is long (grazing incidence).
@@ -497,13 +513,14 @@ struct ScanVisitor
         const float query[3] = {static_cast<float> (r.truth.x ()), static_cast<float> (r.truth.y ()),
                                 static_cast<float> (r.truth.z ())};
         found.resize (kMaxNeighbours);
-        found.resize (tree.nearestKSearch (query, kMaxNeighbours, found.data (), sqr.data ()));
+        found.resize (
+            index.tree.nearestKSearch (query, kMaxNeighbours, found.data (), sqr.data ()));
         const float reach = static_cast<float> (4.0 * r.spacing);
         std::size_t within = 0;
         while (within < found.size () && sqr[within] <= reach * reach)
           ++within;
         found.resize (within);
-        if (widestFreeAngle (r, points[k][i].segment, found, first, angles) > 0.5 * M_PI)
+        if (widestFreeAngle (r, points[k][i].segment, found, index, angles) > 0.5 * M_PI)
           points[k][i].point_class = static_cast<std::uint32_t> (PointClass::Boundary);
       }
     }
@@ -527,10 +544,11 @@ struct ScanVisitor
     * (vegetation) are scattered returns, not a continuous surface, and are not split. Points
     * are numbered in output order, so the result does not depend on the thread count. */
   void
-  splitSegmentsIntoPieces (const std::vector<ColumnTask>& tasks, long num_columns)
+  splitSegmentsIntoPieces (const std::vector<ColumnTask>& tasks, long num_columns,
+                           const ReturnIndex& index)
   {
     const long num_tasks = static_cast<long> (tasks.size ());
-    const std::vector<std::size_t> first = firstOfTasks ();
+    const std::vector<std::size_t>& first = index.first;
     const std::size_t n = first.back ();
     if (n == 0)
       return;
@@ -567,20 +585,9 @@ struct ScanVisitor
       several_scanners = tasks[k].scanner != tasks[0].scanner;
     if (several_scanners)
     {
-      std::vector<const Return*> of_point;
-      std::vector<std::uint32_t> segment_of_point, task_of_point;
-      of_point.reserve (n);
-      segment_of_point.reserve (n);
-      task_of_point.reserve (n);
-      for (long k = 0; k < num_tasks; ++k)
-        for (std::size_t i = 0; i < returns[k].size (); ++i)
-        {
-          of_point.push_back (&returns[k][i]);
-          segment_of_point.push_back (points[k][i].segment);
-          task_of_point.push_back (static_cast<std::uint32_t> (k));
-        }
-      search::KdTree3f tree;
-      buildReturnTree (tree);
+      const auto& of_point = index.of_point;
+      const auto& surface_of_point = index.surface_of_point;
+      const auto& task_of_point = index.task_of_point;
 #pragma omp parallel for schedule(dynamic, 8) num_threads(resolveThreadCount (threads))
       for (long k = 0; k < num_tasks; ++k)
       {
@@ -593,11 +600,11 @@ struct ScanVisitor
           const float query[3] = {static_cast<float> (r.truth.x ()),
                                   static_cast<float> (r.truth.y ()),
                                   static_cast<float> (r.truth.z ())};
-          tree.radiusSearch (query, r.spacing, found, sqr, 0, false);
+          index.tree.radiusSearch (query, r.spacing, found, sqr, 0, false);
           for (std::size_t f = 0; f < found.size (); ++f)
           {
             const auto q = static_cast<std::size_t> (found[f]);
-            if (q <= p || segment_of_point[q] != segment_of_point[p] ||
+            if (q <= p || surface_of_point[q] != surface_of_point[p] ||
                 tasks[task_of_point[q]].scanner == tasks[k].scanner)
               continue;
             const double d = (of_point[q]->truth - r.truth).norm ();
