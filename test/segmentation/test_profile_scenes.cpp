@@ -221,6 +221,9 @@ TEST (ProfileSegmentationScenes, DISABLED_TreeTrunkIsOneSegment)
   // radius of curvature (0.04-0.08 m) is half the window or less, and the branches and the
   // leaves cut in, it still splits. A shorter window (setCurveWindow) moves the figure between
   // 0.78 and 0.88 without a trend (0.806, 0.856, 0.876, 0.779 at 0.10, 0.12, 0.13, 0.14 m).
+  // Keeping a curve end only where fits over a shorter window also see it gives 0.82-0.87
+  // (0.815, 0.865, 0.852, 0.823 at 0.4, 0.5, 0.6, 0.7 of the window) but loses creases of the
+  // coaxial scene (0.91 there falls to 0.55-0.70).
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
   std::vector<std::uint32_t> truth, labels;
   loadScene ("tree", true, cloud, truth, &labels);
@@ -299,22 +302,13 @@ TEST (ProfileSegmentationScenes, LocalThresholdKeepsTheSparsePipesWhole)
   EXPECT_EQ (local.under_segmented, 0u);
 }
 
-TEST (ProfileSegmentationScenes, DISABLED_PipesAreOneSegmentEach)
+namespace
 {
-  // Goal: each pipe its own segment (object-level mean best IoU >= 0.85). Not met: 0.13 with
-  // proximity, 0.18 with curve fitting and the settings for noisy scans at width 1.5x, 0.34 at
-  // width 2.5x, 0.43 with local thresholds as well (setLocalThreshold; 100 s on this cloud).
-  // The pipes are sampled at 0.049 m, the ground near the scanners sets the automatic spacing
-  // (0.025 m): with one threshold their profiles break into short chains (see
-  // LocalThresholdKeepsTheSparsePipesWhole). What remains is the scene's contacts: the pipes
-  // rest on the beams and the columns stand on the ground, so proximity joins pipes, frames
-  // and ground into one segment; curve fitting cuts those creases but also the 90 degree
-  // edges of the frames' boxes, so a frame (3 of the 11 objects) is split into its faces
-  // (best IoU 0.16-0.35 each), which alone caps the mean at about 0.82 even with every pipe
-  // found.
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
-  std::vector<std::uint32_t> truth;
-  loadScene ("pipes", false, cloud, truth);
+/** Curve fitting with the settings for noisy scans and local thresholds on the pipes scene. */
+pcl_ext::SegmentationMetrics
+segmentPipesByCurves (const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
+                      const std::vector<std::uint32_t>& truth)
+{
   Segmentation seg;
   seg.setInputCloud (cloud);
   seg.setProfileSegmentation (Segmentation::ProfileMethod::CurveFitting);
@@ -325,6 +319,53 @@ TEST (ProfileSegmentationScenes, DISABLED_PipesAreOneSegmentEach)
   std::vector<pcl::PointIndices> clusters;
   seg.extract (clusters);
   pcl_ext::SegmentationMetrics m;
-  ASSERT_TRUE (pcl_ext::evaluateSegmentation (clusters, truth, m));
-  EXPECT_GE (m.mean_best_iou, 0.85);
+  EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, truth, m));
+  return m;
+}
+
+constexpr std::uint32_t kFirstPipeObject = 5;  // objects: ground, three frames, seven pipes
+}  // namespace
+
+TEST (ProfileSegmentationScenes, CurveFittingKeepsThePipesOffTheFrames)
+{
+  // What curve fitting achieves on figure 12's scene: the creases where the pipes rest on the
+  // beams and where two pipes meet the ground end the curves, so no pipe shares a segment with
+  // a frame or the ground (proximity joins them all), and the ground stays whole. Measured: the
+  // best segment of every pipe is 87-97 % that pipe; ground IoU 0.994.
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
+  std::vector<std::uint32_t> truth;
+  loadScene ("pipes", false, cloud, truth);
+  const auto m = segmentPipesByCurves (cloud, truth);
+  ASSERT_EQ (m.num_truth_segments, 11u);
+  EXPECT_GE (m.segments[0].iou, 0.99);
+  for (std::uint32_t pipe = kFirstPipeObject; pipe <= 11; ++pipe)
+  {
+    const auto& match = matchOf (m, pipe);
+    EXPECT_GE (static_cast<double> (match.overlap), 0.8 * match.predicted_size) << "pipe " << pipe;
+  }
+}
+
+TEST (ProfileSegmentationScenes, DISABLED_PipesAreOneSegmentEach)
+{
+  // Goal: each pipe its own segment (mean best IoU >= 0.85). Not met. Over the seven pipes:
+  // 0.405 (0.25-0.64 each) with curve fitting, the settings for noisy scans, width 2.5x and
+  // local thresholds; over all eleven objects 0.429 (0.13 with proximity, 0.18 with curve
+  // fitting at width 1.5x, 0.34 at 2.5x without local thresholds).
+  // Why: the pipes are over-segmented, not merged (CurveFittingKeepsThePipesOffTheFrames). Five
+  // of the seven are cut where they rest on the beams (x = 0, 6, 12 m) into their spans
+  // between beams: there a scanner on the ground sees only the pipe's underside next to the
+  // beam, all of it within a curve window of the pipe-beam crease, so all of it ends curves
+  // (the 0.25 m pipe, whose side shows above the beams, is one piece but for small strips:
+  // 0.64). The frames are split into their faces by the same creases (best IoU 0.27-0.35).
+  // Tried and not kept: a curve end only where two stacks agree keeps the pipes whole but
+  // joins everything to the ground (0.16); ending curves only at the peaks of the turn along
+  // a chain loses the creases (0.35-0.40, and the coaxial test's 0.91 falls to 0.57-0.90).
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
+  std::vector<std::uint32_t> truth;
+  loadScene ("pipes", false, cloud, truth);
+  const auto m = segmentPipesByCurves (cloud, truth);
+  double pipes = 0.0;
+  for (std::uint32_t pipe = kFirstPipeObject; pipe <= 11; ++pipe)
+    pipes += matchOf (m, pipe).iou;
+  EXPECT_GE (pipes / 7.0, 0.85);
 }
