@@ -44,12 +44,13 @@ constexpr double kCurveWidthFactor = 2.5;
 pcl_ext::SegmentationMetrics
 segment (const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud, const std::vector<std::uint32_t>& truth,
          Segmentation::ProfileMethod method = Segmentation::ProfileMethod::Proximity,
-         double width_factor = 1.5, bool for_noise = false)
+         double width_factor = 1.5, bool for_noise = false, bool local_threshold = false)
 {
   Segmentation seg;
   seg.setInputCloud (cloud);
   seg.setProfileSegmentation (method);
   seg.setProfileWidthFactor (width_factor);
+  seg.setLocalThreshold (local_threshold);
   if (for_noise)
   {
     seg.setCorrectedAic (true);
@@ -309,18 +310,8 @@ pcl_ext::SegmentationMetrics
 segmentPipesByCurves (const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
                       const std::vector<std::uint32_t>& truth)
 {
-  Segmentation seg;
-  seg.setInputCloud (cloud);
-  seg.setProfileSegmentation (Segmentation::ProfileMethod::CurveFitting);
-  seg.setProfileWidthFactor (kCurveWidthFactor);
-  seg.setCorrectedAic (true);
-  seg.setTurnSignificance (3.0);
-  seg.setLocalThreshold (true);
-  std::vector<pcl::PointIndices> clusters;
-  seg.extract (clusters);
-  pcl_ext::SegmentationMetrics m;
-  EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, truth, m));
-  return m;
+  return segment (cloud, truth, Segmentation::ProfileMethod::CurveFitting, kCurveWidthFactor,
+                  true, true);
 }
 
 constexpr std::uint32_t kFirstPipeObject = 5;  // objects: ground, three frames, seven pipes
