@@ -326,18 +326,23 @@ struct ScanVisitor
     std::vector<const Return*> of_point;
     std::vector<std::uint32_t> surface_of_point;  ///< segment id before any split into pieces
     std::vector<std::uint32_t> task_of_point;
-    search::KdTree3f tree;  ///< over the true positions
+    bool several_scanners = false;  ///< the tasks come from more than one scanner
+    search::KdTree3f tree;  ///< over the true positions, when built
   };
 
   void
-  buildReturnIndex (ReturnIndex& index, bool with_tree) const
+  buildReturnIndex (const std::vector<ColumnTask>& tasks, bool with_tree, ReturnIndex& index) const
   {
+    for (std::size_t k = 1; k < tasks.size () && !index.several_scanners; ++k)
+      index.several_scanners = tasks[k].scanner != tasks[0].scanner;
+    with_tree = with_tree || index.several_scanners;
     index.first.assign (returns.size () + 1, 0);
     for (std::size_t k = 0; k < returns.size (); ++k)
       index.first[k + 1] = index.first[k] + returns[k].size ();
     const std::size_t n = index.first.back ();
     std::vector<float> xyz;
-    xyz.reserve (3 * n);
+    if (with_tree)
+      xyz.reserve (3 * n);
     index.of_point.reserve (n);
     index.surface_of_point.reserve (n);
     index.task_of_point.reserve (n);
@@ -345,16 +350,19 @@ struct ScanVisitor
       for (std::size_t i = 0; i < returns[k].size (); ++i)
       {
         const Vec3& t = returns[k][i].truth;
-        xyz.insert (xyz.end (), {static_cast<float> (t.x ()), static_cast<float> (t.y ()),
-                                 static_cast<float> (t.z ())});
+        if (with_tree)
+          xyz.insert (xyz.end (), {static_cast<float> (t.x ()), static_cast<float> (t.y ()),
+                                   static_cast<float> (t.z ())});
         index.of_point.push_back (&returns[k][i]);
         index.surface_of_point.push_back (points[k][i].segment);
         index.task_of_point.push_back (static_cast<std::uint32_t> (k));
       }
-    std::vector<pcl::index_t> ids (n);
-    std::iota (ids.begin (), ids.end (), 0);
     if (with_tree && n > 0)
+    {
+      std::vector<pcl::index_t> ids (n);
+      std::iota (ids.begin (), ids.end (), 0);
       index.tree.build (std::move (xyz), std::move (ids));
+    }
   }
 
   /** After the last column: the coverage boundaries, then the pieces, over one index of all
@@ -363,12 +371,9 @@ struct ScanVisitor
   end (const std::vector<ColumnTask>& tasks, long num_columns)
   {
     // The tree serves the coverage boundaries and the links between scanners.
-    bool several_scanners = false;
-    for (std::size_t k = 1; k < tasks.size () && !several_scanners; ++k)
-      several_scanners = tasks[k].scanner != tasks[0].scanner;
     ReturnIndex index;
     if (coverage_boundaries || connected_segments)
-      buildReturnIndex (index, coverage_boundaries || several_scanners);
+      buildReturnIndex (tasks, coverage_boundaries, index);
     if (coverage_boundaries)
       markCoverageBoundaries (tasks, num_columns, index);
     if (connected_segments)
@@ -413,9 +418,8 @@ struct ScanVisitor
     * scanners leave the gap open: a point stays marked when the returns of its surface among
     * its 64 nearest, within 4 of its spacings (the continuity distance), leave an angle wider
     * than a right angle free around it in its tangent plane (pcl::BoundaryEstimation's
-    * criterion). Another scanner
-    * that sees into the shadow, or past the silhouette, fills the gap; so does the far side of
-    * a shadow narrower than the continuity distance. */
+    * criterion). Another scanner that sees into the shadow, or past the silhouette, fills the
+    * gap; so does the far side of a shadow narrower than the continuity distance. */
   void
   markCoverageBoundaries (const std::vector<ColumnTask>& tasks, long num_columns,
                           const ReturnIndex& index)
@@ -580,10 +584,7 @@ struct ScanVisitor
     }
 
     // Returns of different scanners within both spacings.
-    bool several_scanners = false;
-    for (long k = 1; k < num_tasks && !several_scanners; ++k)
-      several_scanners = tasks[k].scanner != tasks[0].scanner;
-    if (several_scanners)
+    if (index.several_scanners)
     {
       const auto& of_point = index.of_point;
       const auto& surface_of_point = index.surface_of_point;

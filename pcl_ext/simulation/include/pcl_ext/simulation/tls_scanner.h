@@ -42,8 +42,8 @@ namespace simulation
   *   maximum range, the edge of the field of view; not on porous surfaces, whose gaps let rays
   *   through). A point stays marked only where the returns of all scanners leave the gap
   *   open: those of its surface among its 64 nearest returns, within 4 of its spacings, leave
-  *   more than a right angle free around it (another scanner seeing into a shadow closes it). Those are the borders of the
-  *   sampled surface that a point cloud method sees.
+  *   more than a right angle free around it (another scanner seeing into a shadow closes it).
+  *   Those are the borders of the sampled surface that a point cloud method sees.
   * - Segment ground truth: by default (setConnectedSegments) a segment id names one connected
   *   visible piece of a surface, not the whole surface: a ceiling cut in two by a wall, or a
   *   floor split by an object's shadow that no scan position sees into, gives two segments.
