@@ -1,0 +1,204 @@
+/*
+ * pcl_ext: joining the segments of one cylinder, on plain coordinates.
+ */
+#include <pcl_ext/segmentation/cylinder_join.h>
+
+#include "union_find.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace pcl_ext
+{
+namespace cylinder_join
+{
+namespace
+{
+/** Distance of \a q from the axis of \a c. */
+double
+offAxis (const Eigen::Vector3d& q, const cylinders::Cylinder& c)
+{
+  const Eigen::Vector3d w = q - c.point;
+  return (w - w.dot (c.axis) * c.axis).norm ();
+}
+
+/** The end of \a c facing \a target along its axis. */
+Eigen::Vector3d
+facingEnd (const cylinders::Cylinder& c, const Eigen::Vector3d& target)
+{
+  const double side = (target - c.point).dot (c.axis) >= 0.0 ? 1.0 : -1.0;
+  return c.point + side * c.half_length * c.axis;
+}
+
+/** A seed per segment, so that each segment's draws do not depend on the others'. */
+std::uint64_t
+segmentSeed (std::uint64_t seed, std::size_t segment)
+{
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (segment + 1);  // splitmix64
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+}  // namespace
+
+bool
+validParameters (const JoinParameters& p)
+{
+  const auto finite_non_negative = [] (double x) { return x >= 0.0 && std::isfinite (x); };
+  return cylinders::validParameters (p.detection) && finite_non_negative (p.max_gap) &&
+         finite_non_negative (p.max_axis_angle) && p.max_axis_angle < M_PI / 2 &&
+         p.min_elbow_angle > p.max_axis_angle && p.min_elbow_angle <= M_PI / 2 &&
+         finite_non_negative (p.max_radius_difference) && p.max_radius_difference < 1.0 &&
+         finite_non_negative (p.max_axis_offset) && finite_non_negative (p.whole_segment_fraction) &&
+         p.whole_segment_fraction <= 1.0 && p.threads >= 1;
+}
+
+bool
+continues (const cylinders::Cylinder& a, const cylinders::Cylinder& b, const JoinParameters& p)
+{
+  const double r = std::max (a.radius, b.radius);
+  if (std::abs (a.radius - b.radius) > p.max_radius_difference * r)
+    return false;
+  const double lateral = p.max_axis_offset * r + p.detection.distance_tolerance;
+  const double cosine = std::abs (a.axis.dot (b.axis));
+  if (cosine >= std::cos (p.max_axis_angle))
+  {
+    // One straight run: the axis of each passes through the other's facing end (axes fitted
+    // to short pieces tilt a little, so they are not extrapolated past the gap).
+    if (offAxis (facingEnd (b, a.point), a) > lateral ||
+        offAxis (facingEnd (a, b.point), b) > lateral)
+      return false;
+    const double gap =
+        std::abs ((b.point - a.point).dot (a.axis)) - a.half_length - b.half_length;
+    return gap <= p.max_gap;
+  }
+  if (cosine > std::cos (p.min_elbow_angle))
+    return false;
+  // An elbow: the axes (nearly) meet, beyond or at the end of each leg and not farther from
+  // it than the longest gap (the bend lies between).
+  const Eigen::Vector3d w = a.point - b.point;
+  const double ab = a.axis.dot (b.axis), aw = a.axis.dot (w), bw = b.axis.dot (w);
+  const double denominator = 1.0 - ab * ab;
+  const double s = (ab * bw - aw) / denominator, t = (bw - ab * aw) / denominator;
+  if (((a.point + s * a.axis) - (b.point + t * b.axis)).norm () > lateral)
+    return false;
+  const double beyond_a = std::abs (s) - a.half_length, beyond_b = std::abs (t) - b.half_length;
+  return beyond_a > -r && beyond_a <= p.max_gap && beyond_b > -r && beyond_b <= p.max_gap;
+}
+
+bool
+joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
+                      const std::vector<std::vector<std::uint32_t>>& segments,
+                      const JoinParameters& p, JoinResult& result)
+{
+  result = JoinResult ();
+  if (!validParameters (p))
+    return false;
+  for (const auto& segment : segments)
+    for (const auto i : segment)
+      if (i >= xyz.size ())
+        return false;
+  result.labels.assign (xyz.size (), kNoSegment);
+  for (std::uint32_t s = 0; s < segments.size (); ++s)
+    for (const auto i : segments[s])
+      if (result.labels[i] == kNoSegment)
+        result.labels[i] = s;
+  // Each segment's own points (a position listed twice belongs to its first segment).
+  std::vector<std::vector<std::uint32_t>> members (segments.size ());
+  for (std::uint32_t i = 0; i < xyz.size (); ++i)
+    if (result.labels[i] != kNoSegment)
+      members[result.labels[i]].push_back (i);
+
+  // The cylinders of each segment, in its slot: deterministic for any number of threads.
+  std::vector<std::vector<cylinders::Cylinder>> found (segments.size ());
+#pragma omp parallel num_threads(static_cast<int> (p.threads))
+  {
+    std::vector<Eigen::Vector3d> points;
+#pragma omp for schedule(dynamic, 1)
+    for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t> (segments.size ()); ++s)
+    {
+      const auto& own = members[s];
+      if (own.size () < p.detection.min_points)
+        continue;
+      points.resize (own.size ());
+      for (std::size_t k = 0; k < own.size (); ++k)
+        points[k] = xyz[own[k]];
+      cylinders::DetectionParameters detection = p.detection;
+      detection.seed = segmentSeed (p.detection.seed, static_cast<std::size_t> (s));
+      cylinders::detectCylinders (points, detection, found[s]);
+      for (auto& cylinder : found[s])
+        for (auto& i : cylinder.inliers)
+          i = own[i];
+    }
+  }
+  for (std::uint32_t s = 0; s < segments.size (); ++s)
+    for (auto& cylinder : found[s])
+    {
+      Piece piece;
+      piece.segment = s;
+      piece.cylinder = std::move (cylinder);
+      result.pieces.push_back (std::move (piece));
+    }
+
+  // Groups of pieces that continue one another.
+  const std::size_t n = result.pieces.size ();
+  profiles::detail::UnionFind sets (n);
+  for (std::uint32_t a = 0; a < n; ++a)
+    for (std::uint32_t b = a + 1; b < n; ++b)
+      if (continues (result.pieces[a].cylinder, result.pieces[b].cylinder, p))
+        sets.unite (a, b);
+  std::vector<std::uint32_t> group_size (n, 0);
+  for (std::uint32_t k = 0; k < n; ++k)
+    ++group_size[sets.find (k)];
+
+  // Which joined groups each segment holds pieces of, and how much of it each covers.
+  std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>> cover;  // segment -> root -> points
+  for (std::uint32_t k = 0; k < n; ++k)
+  {
+    const std::uint32_t root = sets.find (k);
+    if (group_size[root] >= 2)
+      cover[result.pieces[k].segment][root] += result.pieces[k].cylinder.inliers.size ();
+  }
+  std::uint32_t next = static_cast<std::uint32_t> (segments.size ());
+  std::vector<std::uint32_t> label_of_root (n, kNoSegment);
+  for (std::uint32_t k = 0; k < n; ++k)
+  {
+    Piece& piece = result.pieces[k];
+    const std::uint32_t root = sets.find (k);
+    if (group_size[root] < 2)
+      continue;
+    if (label_of_root[root] == kNoSegment)
+      label_of_root[root] = next++;
+    const std::uint32_t label = label_of_root[root];
+    const auto& held = cover[piece.segment];
+    const auto& own = members[piece.segment];
+    if (held.size () == 1 &&
+        static_cast<double> (held.begin ()->second) >= p.whole_segment_fraction * own.size ())
+      for (const auto i : own)
+        result.labels[i] = label;
+    else
+      for (const auto i : piece.cylinder.inliers)
+        result.labels[i] = label;
+  }
+
+  // Consecutive labels: the input segments that kept points, then the joined groups.
+  std::vector<std::uint32_t> compact (next, kNoSegment);
+  std::uint32_t count = 0;
+  for (auto& label : result.labels)
+    if (label != kNoSegment)
+    {
+      if (compact[label] == kNoSegment)
+        compact[label] = count++;
+      label = compact[label];
+    }
+  result.num_segments = count;
+  for (std::uint32_t k = 0; k < n; ++k)
+  {
+    const std::uint32_t label = label_of_root[sets.find (k)];
+    result.pieces[k].joined = label == kNoSegment ? kNoSegment : compact[label];
+  }
+  return true;
+}
+}  // namespace cylinder_join
+}  // namespace pcl_ext
