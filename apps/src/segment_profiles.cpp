@@ -3,6 +3,7 @@
  * writes the input points with a `label` field (segment 1, 2, ... by decreasing size; 0 for
  * points in no segment).
  */
+#include <pcl_ext/segmentation/cylinder_segment_join.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/tools/cloud_io.h>
@@ -110,7 +111,9 @@ main (int argc, char** argv)
   double width = 0.0, width_factor = 1.5, threshold = 0.0, threshold_factor = 3.0;
   double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0, turn_significance = 0.0;
   double max_threshold_factor = 4.0;
-  bool aicc = false, local_threshold = false, side_frames = false;
+  bool aicc = false, local_threshold = false, side_frames = false, join_cylinders = false;
+  double cylinder_tolerance = 0.015, cylinder_min_radius = 0.02, cylinder_max_radius = 0.6;
+  double cylinder_max_gap = 2.0;
   int min_size = 1;
   pcl_ext::tools::CommandLine cl (
       "pcl_ext_segment_profiles",
@@ -152,6 +155,16 @@ main (int argc, char** argv)
   cl.addSwitch ("side_frames", side_frames,
                 "curve fitting: fit each side of a point along its own axis (tight bends, "
                 "such as thin trunks cut obliquely); not in the paper");
+  cl.addSwitch ("join_cylinders", join_cylinders,
+                "then join the segments that lie on one cylinder: the spans of a pipe cut at "
+                "its supports, the legs of an elbow (pcl_ext::CylinderSegmentJoin); not in the "
+                "paper");
+  cl.addOption ("cylinder_tolerance", cylinder_tolerance,
+                "joining cylinders: inlier band around a cylinder's surface");
+  cl.addOption ("cylinder_min_radius", cylinder_min_radius, "joining cylinders: smallest radius");
+  cl.addOption ("cylinder_max_radius", cylinder_max_radius, "joining cylinders: largest radius");
+  cl.addOption ("cylinder_max_gap", cylinder_max_gap,
+                "joining cylinders: longest gap bridged along an axis or to an elbow");
   cl.addOption ("min_size", min_size, "smallest segment kept");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
@@ -174,6 +187,17 @@ main (int argc, char** argv)
   if (min_size < 1)
   {
     std::cerr << "Error: -min_size must be at least 1.\n";
+    return 1;
+  }
+  if (join_cylinders &&
+      (!(cylinder_tolerance > 0.0) || !std::isfinite (cylinder_tolerance) ||
+       !(cylinder_min_radius > 0.0) || !(cylinder_max_radius >= cylinder_min_radius) ||
+       !std::isfinite (cylinder_max_radius) || !(cylinder_max_gap >= 0.0) ||
+       !std::isfinite (cylinder_max_gap)))
+  {
+    std::cerr << "Error: joining cylinders needs -cylinder_tolerance > 0, 0 < "
+                 "-cylinder_min_radius <= -cylinder_max_radius and -cylinder_max_gap >= 0 "
+                 "(all finite).\n";
     return 1;
   }
   if (!pcl_ext::tools::checkOutputsWritable (output_path, {png_path, png_profiles_path}))
@@ -215,6 +239,27 @@ main (int argc, char** argv)
     return 1;
   }
   segment.done (cloud->size ());
+  std::size_t joined_cylinders = 0;
+  if (join_cylinders)
+  {
+    pcl_ext::CylinderSegmentJoin<pcl::PointXYZ> join;
+    join.setInputCloud (cloud);
+    join.setInputSegments (clusters);
+    join.setDistanceTolerance (cylinder_tolerance);
+    join.setRadiusLimits (cylinder_min_radius, cylinder_max_radius);
+    join.setMaxGap (cylinder_max_gap);
+    join.setNumberOfThreads (threads);
+    pcl_ext::tools::StageTimer joining ("Joining cylinders");
+    join.join (clusters);
+    if (clusters.empty ())
+    {
+      std::cerr << "Error: joining the cylinders failed (see the message above).\n";
+      return 1;
+    }
+    joining.done (cloud->size ());
+    for (const auto& c : join.getCylinders ())
+      joined_cylinders += c.output_segment >= 0;
+  }
   std::size_t edges = 0;
   for (const auto& stack : seg.getStackEdges ())
     edges += stack.size ();
@@ -224,6 +269,8 @@ main (int argc, char** argv)
             << clusters.size () << " segments";
   if (method == Segmentation::ProfileMethod::CurveFitting)
     std::cout << ", " << seg.getBreakpoints ().size () << " curve ends";
+  if (join_cylinders)
+    std::cout << ", " << joined_cylinders << " cylinders joined";
   std::cout << "\n";
 
   pcl::PointCloud<pcl::Label> labels;

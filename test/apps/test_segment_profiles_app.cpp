@@ -126,6 +126,31 @@ TEST_F (SegmentProfilesApp, LocalThresholdJoinsTheSparseSurface)
   EXPECT_DOUBLE_EQ (best_iou_of_sparse (), global);
 }
 
+TEST_F (SegmentProfilesApp, JoinCylindersJoinsThePipeSpans)
+{
+  // One pipe (radius 0.1 m) with 0.6 m missing, as where it rests on a support: two segments
+  // for the profiles, one after the cylinder join.
+  profile_test::LabelledCloud scene;
+  std::mt19937 rng (4);
+  profile_test::addCylinderX (scene, -2.0, -0.3, 0.1, 0.02, 1, rng);
+  profile_test::addCylinderX (scene, 0.3, 2.0, 0.1, 0.02, 1, rng);
+  ASSERT_EQ (pcl::io::savePCDFileBinary (path ("spans.pcd"), *scene.cloud), 0);
+  const std::string io = path ("spans.pcd") + " " + path ("out.pcd") + " -threads 2";
+  ASSERT_EQ (run (io), 0) << output_;
+  EXPECT_NE (output_.find (" 2 segments"), std::string::npos) << output_;
+  ASSERT_EQ (run (io + " -join_cylinders"), 0) << output_;
+  EXPECT_NE (output_.find (" 1 segments"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("2 cylinders joined"), std::string::npos) << output_;
+  pcl::PointCloud<pcl::PointXYZL> out;
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
+  ASSERT_EQ (out.size (), scene.labels.size ());
+  for (const auto& p : out)
+    EXPECT_EQ (p.label, 1u);
+  // A gap longer than the longest bridged keeps the spans apart.
+  ASSERT_EQ (run (io + " -join_cylinders -cylinder_max_gap 0.3"), 0) << output_;
+  EXPECT_NE (output_.find (" 2 segments"), std::string::npos) << output_;
+}
+
 TEST_F (SegmentProfilesApp, BadUsageFailsWithoutOutput)
 {
   const std::string io = path ("coaxial.pcd") + " " + path ("out.pcd");
@@ -134,9 +159,13 @@ TEST_F (SegmentProfilesApp, BadUsageFailsWithoutOutput)
   EXPECT_NE (output_.find ("-aicc"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-local_threshold"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-side_frames"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("-join_cylinders"), std::string::npos) << output_;
   EXPECT_EQ (run (io + " -method curve -turn_significance -1"), 1);
   EXPECT_EQ (run (io + " -local_threshold -max_threshold_factor 0.5"), 1);
   EXPECT_EQ (run (io + " -method bogus"), 1);
   EXPECT_EQ (run (io + " -min_size 0"), 1);
+  EXPECT_EQ (run (io + " -join_cylinders -cylinder_tolerance 0"), 1);
+  EXPECT_EQ (run (io + " -join_cylinders -cylinder_min_radius 0.5 -cylinder_max_radius 0.1"), 1);
+  EXPECT_EQ (run (io + " -join_cylinders -cylinder_max_gap nan"), 1);
   EXPECT_FALSE (exists ("out.pcd"));
 }
