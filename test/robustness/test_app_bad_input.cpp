@@ -138,7 +138,7 @@ tools ()
                 }});
   t.push_back ({"segment_profiles", PCL_EXT_SEGMENT_PROFILES_EXE, with (cloud_inputs, params),
                 [] (const Files& f) {
-                  return quote (f.input) + " " + quote (f.output) + " -threads 2" +
+                  return quote (f.input) + " " + quote (f.output) + " -threads 2 -join_cylinders" +
                          option (f, "width_factor");
                 }});
   // The box is no building: a cloud with NaN points is read, planes extracted, and the match
