@@ -28,6 +28,7 @@ struct Hypothesis
   double score;
   Eigen::Vector3d point, axis;
   double radius;
+  double taper = 0.0;
 };
 
 /** Circle through three points of the plane; false when they are (nearly) collinear. */
@@ -46,13 +47,15 @@ circleThrough (const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::
   return std::isfinite (radius);
 }
 
-/** Signed distance of \a q from the surface (negative inside). */
+/** Signed distance of \a q from the surface (negative inside), along the radius; the radius
+  * is \a radius at \a point and changes by \a taper per unit length along the axis. */
 double
 surfaceDistance (const Eigen::Vector3d& q, const Eigen::Vector3d& point,
-                 const Eigen::Vector3d& axis, double radius)
+                 const Eigen::Vector3d& axis, double radius, double taper)
 {
   const Eigen::Vector3d w = q - point;
-  return (w - w.dot (axis) * axis).norm () - radius;
+  const double t = w.dot (axis);
+  return (w - t * axis).norm () - (radius + taper * t);
 }
 
 /** The alive points within the tolerance of the surface, and within \a window of \a origin
@@ -63,8 +66,9 @@ surfaceDistance (const Eigen::Vector3d& q, const Eigen::Vector3d& point,
 double
 collectInliers (const std::vector<Eigen::Vector3d>& points,
                 const std::vector<std::uint32_t>& alive, const Eigen::Vector3d& point,
-                const Eigen::Vector3d& axis, double radius, const Eigen::Vector3d& origin,
-                double window, double tolerance, std::vector<std::uint32_t>& inliers)
+                const Eigen::Vector3d& axis, double radius, double taper,
+                const Eigen::Vector3d& origin, double window, double tolerance,
+                std::vector<std::uint32_t>& inliers)
 {
   inliers.clear ();
   const double band = 0.25 * tolerance * tolerance;
@@ -73,12 +77,34 @@ collectInliers (const std::vector<Eigen::Vector3d>& points,
   {
     if (std::abs ((points[j] - origin).dot (axis)) > window)
       continue;
-    const double e = std::abs (surfaceDistance (points[j], point, axis, radius));
+    const double e = std::abs (surfaceDistance (points[j], point, axis, radius, taper));
     if (e <= tolerance)
       inliers.push_back (j);
     score += band - std::min (e * e, band);
   }
   return score;
+}
+
+/** The angle the points span around the axis: all but the widest empty sector. */
+double
+inlierArc (const std::vector<Eigen::Vector3d>& points, const std::vector<std::uint32_t>& subset,
+           const Eigen::Vector3d& point, const Eigen::Vector3d& axis)
+{
+  if (subset.size () < 2)
+    return 0.0;
+  const Eigen::Vector3d u = axis.unitOrthogonal (), v = axis.cross (u);
+  std::vector<double> angles;
+  angles.reserve (subset.size ());
+  for (const auto j : subset)
+  {
+    const Eigen::Vector3d w = points[j] - point;
+    angles.push_back (std::atan2 (w.dot (v), w.dot (u)));
+  }
+  std::sort (angles.begin (), angles.end ());
+  double widest = angles.front () + 2.0 * M_PI - angles.back ();
+  for (std::size_t k = 1; k < angles.size (); ++k)
+    widest = std::max (widest, angles[k] - angles[k - 1]);
+  return 2.0 * M_PI - widest;
 }
 
 /** Draw one hypothesis from the patch around a random alive point; false when the patch
@@ -144,15 +170,17 @@ growHypothesis (const std::vector<Eigen::Vector3d>& points,
   for (double window = p.neighbourhood_radius;; window *= 2.0)
   {
     const double w = window > extent ? infinite : window;
-    collectInliers (points, alive, h.point, h.axis, h.radius, origin, w, p.distance_tolerance,
-                    inliers);
-    if (inliers.size () < 6 || !refineCylinder (points, inliers, h.point, h.axis, h.radius) ||
-        h.radius < p.min_radius || h.radius > p.max_radius)
+    collectInliers (points, alive, h.point, h.axis, h.radius, h.taper, origin, w,
+                    p.distance_tolerance, inliers);
+    if (inliers.size () < 6 ||
+        !refineCylinder (points, inliers, h.point, h.axis, h.radius,
+                         p.max_taper > 0.0 ? &h.taper : nullptr) ||
+        h.radius < p.min_radius || h.radius > p.max_radius || std::abs (h.taper) > p.max_taper)
       return false;
     if (w == infinite)
       break;
   }
-  score = collectInliers (points, alive, h.point, h.axis, h.radius, origin, infinite,
+  score = collectInliers (points, alive, h.point, h.axis, h.radius, h.taper, origin, infinite,
                           p.distance_tolerance, inliers);
   return true;
 }
@@ -166,25 +194,25 @@ validParameters (const DetectionParameters& p)
          positive (p.max_radius) && p.max_radius >= p.min_radius &&
          positive (p.neighbourhood_radius) && p.hypotheses >= 1 &&
          p.refined_hypotheses >= 1 && p.min_points >= 3 && p.min_surface_fraction >= 0.0 &&
-         p.min_surface_fraction <= 1.0;
+         p.min_surface_fraction <= 1.0 && p.max_taper >= 0.0 && p.max_taper < 1.0;
 }
 
 bool
 refineCylinder (const std::vector<Eigen::Vector3d>& points,
                 const std::vector<std::uint32_t>& subset, Eigen::Vector3d& point,
-                Eigen::Vector3d& axis, double& radius)
+                Eigen::Vector3d& axis, double& radius, double* taper)
 {
-  if (subset.size () < 5)
+  if (subset.size () < 6)
     return false;
   Eigen::Vector3d c = point, d = axis.normalized ();
-  double r = radius;
+  double r = radius, k = taper ? *taper : 0.0;
   for (int iteration = 0; iteration < 10; ++iteration)
   {
     // Parameters: shifts of the axis across itself (u, v), tilts of its direction towards
-    // u and v, the radius.
+    // u and v, the radius at c, and (for a cone) the taper.
     const Eigen::Vector3d u = d.unitOrthogonal (), v = d.cross (u);
-    Eigen::Matrix<double, 5, 5> jtj = Eigen::Matrix<double, 5, 5>::Zero ();
-    Eigen::Matrix<double, 5, 1> jtr = Eigen::Matrix<double, 5, 1>::Zero ();
+    Eigen::Matrix<double, 6, 6> jtj = Eigen::Matrix<double, 6, 6>::Zero ();
+    Eigen::Matrix<double, 6, 1> jtr = Eigen::Matrix<double, 6, 1>::Zero ();
     for (const auto i : subset)
     {
       const Eigen::Vector3d q = points[i] - c;
@@ -194,25 +222,36 @@ refineCylinder (const std::vector<Eigen::Vector3d>& points,
       if (rho < 1e-12)
         continue;
       const Eigen::Vector3d n = w / rho;
-      Eigen::Matrix<double, 5, 1> j;
-      j << -n.dot (u), -n.dot (v), -t * n.dot (u), -t * n.dot (v), -1.0;
+      Eigen::Matrix<double, 6, 1> j;
+      j << -n.dot (u), -n.dot (v), -t * n.dot (u) - k * w.dot (u), -t * n.dot (v) - k * w.dot (v),
+          -1.0, -t;
       jtj += j * j.transpose ();
-      jtr += j * (rho - r);
+      jtr += j * (rho - r - k * t);
     }
-    const Eigen::Matrix<double, 5, 1> delta = jtj.ldlt ().solve (-jtr);
+    if (!taper)  // a cylinder: the taper stays 0
+    {
+      jtj.row (5).setZero ();
+      jtj.col (5).setZero ();
+      jtj (5, 5) = 1.0;
+      jtr (5) = 0.0;
+    }
+    const Eigen::Matrix<double, 6, 1> delta = jtj.ldlt ().solve (-jtr);
     if (!delta.allFinite ())
       return false;
     c += delta (0) * u + delta (1) * v;
     d = (d + delta (2) * u + delta (3) * v).normalized ();
     r += delta (4);
+    k += delta (5);
     if (delta.norm () < 1e-9)
       break;
   }
-  if (!c.allFinite () || !d.allFinite () || !std::isfinite (r) || !(r > 0.0))
+  if (!c.allFinite () || !d.allFinite () || !std::isfinite (r) || !(r > 0.0) || !std::isfinite (k))
     return false;
   point = c;
   axis = d;
   radius = r;
+  if (taper)
+    *taper = k;
   return true;
 }
 
@@ -243,7 +282,7 @@ detectCylinders (const std::vector<Eigen::Vector3d>& points, const DetectionPara
   search::KdTree3f tree;
   tree.build (std::move (xyz), std::move (ids));
 
-  std::vector<std::uint8_t> is_alive (points.size (), 1);
+  std::vector<std::uint8_t> is_alive (points.size (), 1), is_claimed (points.size (), 0);
   std::vector<std::uint32_t> alive, patch, inliers, best_inliers;
   pcl::Indices found;
   std::vector<float> sqr_distances;
@@ -298,12 +337,18 @@ detectCylinders (const std::vector<Eigen::Vector3d>& points, const DetectionPara
       t_min = std::min (t_min, t);
       t_max = std::max (t_max, t);
     }
+    // The surface test counts every point not on an accepted cylinder (the band a rejected
+    // candidate took must still count against the next: the faces of a box give several), and
+    // the points inside it: a solid seen from outside has none (a plane through the axis
+    // does, where two of its scan rows lie on the surface).
     std::size_t near = 0;
-    for (const auto j : alive)
+    for (std::uint32_t j = 0; j < points.size (); ++j)
     {
+      if (is_claimed[j])
+        continue;
       const double t = (points[j] - best.point).dot (best.axis);
       if (t >= t_min && t <= t_max &&
-          std::abs (surfaceDistance (points[j], best.point, best.axis, best.radius)) <=
+          surfaceDistance (points[j], best.point, best.axis, best.radius, best.taper) <=
               kShellTolerances * p.distance_tolerance)
         ++near;
     }
@@ -311,15 +356,25 @@ detectCylinders (const std::vector<Eigen::Vector3d>& points, const DetectionPara
       is_alive[j] = 0;
     Cylinder cylinder;
     cylinder.surface_fraction = static_cast<double> (best_inliers.size ()) / static_cast<double> (near);
-    if (t_max - t_min < 2.0 * best.radius || cylinder.surface_fraction < p.min_surface_fraction)
+    cylinder.arc = inlierArc (points, best_inliers, best.point, best.axis);
+    // A curvature the points can show: the arc must bow out of its chord by the tolerance, or
+    // a plane (two scan rows of it, say) explains them as well.
+    const double middle_radius = best.radius + best.taper * 0.5 * (t_min + t_max);
+    const double sagitta = middle_radius * (1.0 - std::cos (0.5 * std::min (cylinder.arc, M_PI)));
+    if (t_max - t_min < 2.0 * best.radius || cylinder.surface_fraction < p.min_surface_fraction ||
+        sagitta < p.distance_tolerance)
     {
       ++failures;
       continue;
     }
-    cylinder.point = best.point + 0.5 * (t_min + t_max) * best.axis;
+    const double middle = 0.5 * (t_min + t_max);
+    cylinder.point = best.point + middle * best.axis;
     cylinder.axis = best.axis;
-    cylinder.radius = best.radius;
+    cylinder.radius = best.radius + best.taper * middle;
+    cylinder.taper = best.taper;
     cylinder.half_length = 0.5 * (t_max - t_min);
+    for (const auto j : best_inliers)
+      is_claimed[j] = 1;
     cylinder.inliers = best_inliers;
     cylinders.push_back (std::move (cylinder));
   }

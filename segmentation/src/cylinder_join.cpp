@@ -51,14 +51,19 @@ validParameters (const JoinParameters& p)
          p.min_elbow_angle > p.max_axis_angle && p.min_elbow_angle <= M_PI / 2 &&
          finite_non_negative (p.max_radius_difference) && p.max_radius_difference < 1.0 &&
          finite_non_negative (p.max_axis_offset) && finite_non_negative (p.whole_segment_fraction) &&
-         p.whole_segment_fraction <= 1.0 && p.threads >= 1;
+         p.whole_segment_fraction <= 1.0 && finite_non_negative (p.absorb_fraction) &&
+         p.absorb_fraction <= 1.0 && p.threads >= 1;
 }
 
 bool
 continues (const cylinders::Cylinder& a, const cylinders::Cylinder& b, const JoinParameters& p)
 {
-  const double r = std::max (a.radius, b.radius);
-  if (std::abs (a.radius - b.radius) > p.max_radius_difference * r)
+  // Radii compared where the two face each other (they differ along a cone).
+  const Eigen::Vector3d a_end = facingEnd (a, b.point), b_end = facingEnd (b, a.point);
+  const double ra = a.radius + a.taper * (a_end - a.point).dot (a.axis);
+  const double rb = b.radius + b.taper * (b_end - b.point).dot (b.axis);
+  const double r = std::max (ra, rb);
+  if (std::abs (ra - rb) > p.max_radius_difference * r)
     return false;
   const double lateral = p.max_axis_offset * r + p.detection.distance_tolerance;
   const double cosine = std::abs (a.axis.dot (b.axis));
@@ -66,8 +71,7 @@ continues (const cylinders::Cylinder& a, const cylinders::Cylinder& b, const Joi
   {
     // One straight run: the axis of each passes through the other's facing end (axes fitted
     // to short pieces tilt a little, so they are not extrapolated past the gap).
-    if (offAxis (facingEnd (b, a.point), a) > lateral ||
-        offAxis (facingEnd (a, b.point), b) > lateral)
+    if (offAxis (b_end, a) > lateral || offAxis (a_end, b) > lateral)
       return false;
     const double gap =
         std::abs ((b.point - a.point).dot (a.axis)) - a.half_length - b.half_length;
@@ -180,6 +184,43 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
     else
       for (const auto i : piece.cylinder.inliers)
         result.labels[i] = label;
+  }
+
+  // Segments without a piece of their own that lie on a joined group's surface, between or
+  // next to its pieces (the fragments a segmenter leaves where a branch leaves a trunk):
+  // they join the group whole when most of their points are on it.
+  if (p.absorb_fraction > 0.0)
+  {
+    std::vector<std::uint32_t> joined_pieces;
+    for (std::uint32_t k = 0; k < n; ++k)
+      if (group_size[sets.find (k)] >= 2)
+        joined_pieces.push_back (k);
+    const double tol = p.detection.distance_tolerance;
+    for (std::uint32_t s = 0; s < segments.size (); ++s)
+    {
+      if (cover.count (s) || members[s].empty ())
+        continue;
+      std::vector<std::size_t> on (n, 0);
+      for (const auto i : members[s])
+        for (const auto k : joined_pieces)
+        {
+          const cylinders::Cylinder& c = result.pieces[k].cylinder;
+          const Eigen::Vector3d w = xyz[i] - c.point;
+          const double t = w.dot (c.axis);
+          if (std::abs (t) > c.half_length + p.max_gap)
+            continue;
+          if (std::abs ((w - t * c.axis).norm () - (c.radius + c.taper * t)) <= tol)
+          {
+            ++on[sets.find (k)];
+            break;
+          }
+        }
+      const auto most = std::max_element (on.begin (), on.end ());
+      if (most != on.end () &&
+          static_cast<double> (*most) >= p.absorb_fraction * members[s].size ())
+        for (const auto i : members[s])
+          result.labels[i] = label_of_root[most - on.begin ()];
+    }
   }
 
   // Consecutive labels: the input segments that kept points, then the joined groups.

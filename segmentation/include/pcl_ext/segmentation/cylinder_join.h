@@ -26,6 +26,7 @@ struct JoinParameters
   double max_radius_difference = 0.3;  ///< share of the larger radius
   double max_axis_offset = 0.3;      ///< in radii, plus the distance tolerance
   double whole_segment_fraction = 0.5;
+  double absorb_fraction = 0.5;      ///< 0: off; else the share of a pieceless segment on a group
   unsigned int threads = 1;
 };
 
