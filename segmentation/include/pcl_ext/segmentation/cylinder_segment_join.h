@@ -50,7 +50,7 @@ namespace pcl_ext
   * On the generated scenes, after curve fitting for noisy scans: \c pipes (seven pipes on
   * three portal frames, with local thresholds) mean best IoU over the pipes 0.405 before, 0.925
   * after (0.887-0.894 on the scene's seeds 2 to 5); \c tree (with side frames) trunk IoU 0.762
-  * before, 0.934 after (0.946 and 0.960 on seeds 2 and 3).
+  * before, 0.934 after (0.946 and 0.927 on seeds 2 and 3).
   */
 template <typename PointT>
 class CylinderSegmentJoin : public pcl::PCLBase<PointT>
