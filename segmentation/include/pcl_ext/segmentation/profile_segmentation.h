@@ -70,6 +70,10 @@ namespace pcl_ext
   *   TLS scan is sparser far from the scanner) and curve fits along each side's own axis
   *   (setSideFrames: tight smooth bends such as a thin trunk cut obliquely).
   * - Points with non-finite coordinates are never segmented, whatever \c is_dense says.
+  * - Curve fitting cuts a pipe where it rests on a support and a thin trunk where branches
+  *   leave it; CylinderSegmentJoin, a step after the segmentation, joins such pieces again
+  *   (the paper: "from the data structure it is possible to obtain the axes ... in the
+  *   pipes").
   * - Segments smaller than the minimum size are dropped (as pcl::RegionGrowing does); the
   *   others are ordered by decreasing size.
   */
