@@ -1,10 +1,10 @@
 /*
  * pcl_ext: cylinders found in a set of points without normals.
  */
+#include <pcl_ext/common/covariance.h>
 #include <pcl_ext/common/cylinders.h>
 #include <pcl_ext/search/kdtree_3f.h>
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -132,8 +132,10 @@ drawHypothesis (const std::vector<Eigen::Vector3d>& points, const search::KdTree
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
   for (const auto j : patch)
     cov += (points[j] - mean) * (points[j] - mean).transpose ();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (cov);
-  const Eigen::Vector3d axis = solver.eigenvectors ().col (2);
+  EigenDecomposition eigen;
+  if (!computeEigenDecomposition (cov, eigen))
+    return false;
+  const Eigen::Vector3d axis = eigen.vectors.col (2);  // a strip is longest along its axis
   const Eigen::Vector3d u = axis.unitOrthogonal (), v = axis.cross (u);
   const auto project = [&] (std::uint32_t j) {
     const Eigen::Vector3d w = points[j] - mean;
