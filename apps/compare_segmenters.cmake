@@ -19,7 +19,7 @@ pcl_ext_add_app(compare_segmenters
     src/compare_segmenters/comparison.cpp
     src/compare_segmenters/comparison_report.cpp
   DEPENDS
-    pcl_ext_segmenter_comparison pcl_ext::evaluation pcl_ext::io pcl_ext::tools)
+    pcl_ext_segmenter_comparison pcl_ext::evaluation pcl_ext::io pcl_ext_apps_common)
 if(TARGET pcl_ext_visualization)
   target_link_libraries(pcl_ext_compare_segmenters PRIVATE pcl_ext::visualization)
   target_compile_definitions(pcl_ext_compare_segmenters PRIVATE PCL_EXT_HAVE_VISUALIZATION)

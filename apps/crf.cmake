@@ -1,6 +1,6 @@
 # Lim & Suter's multi-scale CRF: pcl_ext_crf_train and pcl_ext_crf_classify.
 add_library(pcl_ext_crf_app_inputs STATIC src/crf/crf_inputs.cpp)
-target_link_libraries(pcl_ext_crf_app_inputs PUBLIC pcl_ext::classification pcl_ext::io pcl_ext::tools)
+target_link_libraries(pcl_ext_crf_app_inputs PUBLIC pcl_ext::classification pcl_ext::io pcl_ext_apps_common)
 pcl_ext_add_app(crf_train
   SOURCES src/crf_train.cpp
   DEPENDS pcl_ext_crf_app_inputs)

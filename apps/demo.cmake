@@ -12,7 +12,7 @@ if(TARGET pcl_ext_visualization AND TARGET pcl_ext_simulation)
       src/demo/step_registration.cpp
       src/demo/step_crf.cpp
     DEPENDS
-      pcl_ext::common pcl_ext::tools pcl_ext::simulation pcl_ext::visualization
+      pcl_ext::common pcl_ext_apps_common pcl_ext::simulation pcl_ext::visualization
       pcl_ext::evaluation pcl_ext::segmentation pcl_ext::classification
       pcl_ext::registration pcl_ext::io)
 endif()

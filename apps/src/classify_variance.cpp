@@ -7,9 +7,10 @@
 
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/io/cloud_fields.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/apps/input.h>
+#include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
@@ -46,7 +47,7 @@ main (int argc, char** argv)
   double radius = 0.0, max_radius = 0.0;
   pcl_ext::apps::VarianceClassificationOptions options;
   unsigned int threads = 0;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_classify_variance",
       "Labels every point 1 surface, 2 edge, 3 boundary or 0 unknown from the covariance of its "
       "neighbourhood (Belton & Lichti 2006, section 2) and writes the input points with a "
@@ -65,12 +66,12 @@ main (int argc, char** argv)
     return code;
   if (!options.valid ())
     return 1;
-  if (!pcl_ext::tools::checkOutputsWritable (output_path, {png_path}))
+  if (!pcl_ext::io::checkOutputsWritable (output_path, {png_path}))
     return 1;
 
   pcl::PCLPointCloud2 input;
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  if (!pcl_ext::tools::loadInput (input_path, input, *cloud))
+  if (!pcl_ext::apps::loadInput (input_path, input, *cloud))
     return 1;
 
   pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
@@ -85,7 +86,7 @@ main (int argc, char** argv)
   options.applyTo (classifier);
   classifier.setNumberOfThreads (threads);
   pcl::PointCloud<pcl::Label> labels;
-  pcl_ext::tools::StageTimer classify ("Classifying");
+  pcl_ext::apps::StageTimer classify ("Classifying");
   classifier.classify (labels);
   if (labels.size () != cloud->size ())
   {
@@ -101,15 +102,15 @@ main (int argc, char** argv)
             << counts[0] << "\n";
 
   pcl::PCLPointCloud2 output;
-  pcl_ext::tools::StageTimer save ("Saving " + output_path);
-  if (!attachLabels (input, labels, output) || !pcl_ext::tools::saveCloud (output_path, output))
+  pcl_ext::apps::StageTimer save ("Saving " + output_path);
+  if (!attachLabels (input, labels, output) || !pcl_ext::io::saveCloud (output_path, output))
     return 1;
   save.done (labels.size ());
 
   if (!png_path.empty ())
   {
 #ifdef PCL_EXT_HAVE_VISUALIZATION
-    pcl_ext::tools::StageTimer render ("Rendering " + png_path);
+    pcl_ext::apps::StageTimer render ("Rendering " + png_path);
     std::vector<std::uint32_t> classes;
     classes.reserve (labels.size ());
     for (const auto& l : labels)

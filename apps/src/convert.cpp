@@ -8,9 +8,9 @@
 #include <pcl_ext/io/class_mapping.h>
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/point_table.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/io/file_output.h>
 
 #include <climits>
 #include <cstdio>
@@ -27,7 +27,7 @@ enum class InputKind { Ascii, Oakland, Cloud, Unknown };
 InputKind
 inputKind (const std::string& path)
 {
-  const std::string ext = pcl_ext::tools::fileExtension (path);
+  const std::string ext = pcl_ext::io::fileExtension (path);
   if (ext == "xyz_label_conf")
     return InputKind::Oakland;
   if (ext == "xyz" || ext == "txt" || ext == "csv" || ext == "asc" || ext == "pts")
@@ -72,7 +72,7 @@ main (int argc, char** argv)
 {
   std::string input, output, columns, classes_path, origin_text = "auto", label_field = "label";
   bool ascii = false;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_convert",
       "Converts a point file to PCD or PLY, writing class labels into the uint32 field 'label'.\n"
       "Inputs: ASCII points (.xyz .txt .csv .asc .pts: x y z plus optional intensity, colour and\n"
@@ -103,7 +103,7 @@ main (int argc, char** argv)
               << " (expected .xyz .txt .csv .asc .pts .xyz_label_conf .ply or .pcd).\n";
     return 1;
   }
-  const std::string out_ext = pcl_ext::tools::fileExtension (output);
+  const std::string out_ext = pcl_ext::io::fileExtension (output);
   if (out_ext != "pcd" && out_ext != "ply")
   {
     std::cerr << "pcl_ext_convert: error: output " << output << " must end in .pcd or .ply.\n";
@@ -149,7 +149,7 @@ main (int argc, char** argv)
     std::cerr << "pcl_ext_convert: error: the output would overwrite the input " << input << ".\n";
     return 1;
   }
-  if (!pcl_ext::tools::checkWritable (output))
+  if (!pcl_ext::io::checkWritable (output))
     return 1;
 
   pcl_ext::io::ClassMapping mapping;
@@ -167,8 +167,8 @@ main (int argc, char** argv)
   pcl::PCLPointCloud2 cloud;
   if (kind == InputKind::Cloud)
   {
-    pcl_ext::tools::StageTimer timer ("Loading " + input + " ...");
-    if (!pcl_ext::tools::loadCloud (input, cloud))
+    pcl_ext::apps::StageTimer timer ("Loading " + input + " ...");
+    if (!pcl_ext::io::loadCloud (input, cloud))
       return 1;
     timer.done (static_cast<std::size_t> (cloud.width) * cloud.height);
     if (!mapping.empty ())
@@ -187,7 +187,7 @@ main (int argc, char** argv)
   else
   {
     pcl_ext::io::PointTable table;
-    pcl_ext::tools::StageTimer timer ("Loading " + input + " ...");
+    pcl_ext::apps::StageTimer timer ("Loading " + input + " ...");
     try
     {
       if (kind == InputKind::Oakland)
@@ -238,8 +238,8 @@ main (int argc, char** argv)
     }
   }
 
-  pcl_ext::tools::StageTimer timer ("Writing " + output + " ...");
-  if (!pcl_ext::tools::saveCloud (output, cloud, ascii))
+  pcl_ext::apps::StageTimer timer ("Writing " + output + " ...");
+  if (!pcl_ext::io::saveCloud (output, cloud, ascii))
     return 1;
   timer.done (static_cast<std::size_t> (cloud.width) * cloud.height);
   return 0;

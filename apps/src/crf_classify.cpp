@@ -5,9 +5,9 @@
 
 #include <pcl_ext/evaluation/classification_metrics.h>
 #include <pcl_ext/io/cloud_fields.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
@@ -37,7 +37,7 @@ main (int argc, char** argv)
   std::string model_path, input, output, png, classes_file;
   bool truth = false;
   unsigned int threads = 0;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_crf_classify",
       "Classifies a cloud with a multi-scale CRF model (Lim & Suter 2008) and writes it with a "
       "'label' field holding the class id.");
@@ -50,11 +50,11 @@ main (int argc, char** argv)
   cl.addSwitch ("truth", truth, "the input's labels are ground truth: print the metrics");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (!pcl_ext::tools::checkOutputsWritable (output, {png}))
+  if (!pcl_ext::io::checkOutputsWritable (output, {png}))
     return 1;
   pcl_ext::MultiscaleCrfModel model;
   {
-    pcl_ext::tools::StageTimer timer ("Loading the model " + model_path);
+    pcl_ext::apps::StageTimer timer ("Loading the model " + model_path);
     if (!model.loadModel (model_path))
       return 1;
     timer.done (0);
@@ -75,7 +75,7 @@ main (int argc, char** argv)
   }
   pcl_ext::apps::CrfCloud cloud;
   {
-    pcl_ext::tools::StageTimer timer ("Loading " + input);
+    pcl_ext::apps::StageTimer timer ("Loading " + input);
     std::string error;
     if (!pcl_ext::apps::loadCrfCloud (input, &mapping, cloud, error))
     {
@@ -91,7 +91,7 @@ main (int argc, char** argv)
   }
   std::vector<std::uint32_t> labels;
   Eigen::MatrixXf probabilities;
-  pcl_ext::tools::StageTimer timer ("Classifying");
+  pcl_ext::apps::StageTimer timer ("Classifying");
   if (!model.classify (cloud.input, labels, probabilities))
   {
     std::cerr << "\npcl_ext_crf_classify: classification failed (see above)\n";
@@ -104,7 +104,7 @@ main (int argc, char** argv)
                st.supervoxels, st.iterations, st.converged ? ", converged" : ", not converged");
   std::vector<std::uint32_t> truth_labels = cloud.labels;
   if (!pcl_ext::io::setLabelField (cloud.blob, "label", labels)
-      || !pcl_ext::tools::saveCloud (output, cloud.blob))
+      || !pcl_ext::io::saveCloud (output, cloud.blob))
     return 1;
   if (truth)
   {

@@ -3,8 +3,8 @@
  */
 #include "crf/crf_inputs.h"
 
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/io/file_output.h>
 
 #include <pcl/console/print.h>
 
@@ -23,7 +23,7 @@ main (int argc, char** argv)
   int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200, knots = 2;
   unsigned int threads = 0, seed = 1;
   bool no_balance = false;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_crf_train",
       "Trains the multi-scale CRF over adaptive super-voxels (Lim & Suter 2008) on labelled "
       "clouds: PCD/PLY with a 'label' field, or Oakland .xyz_label_conf files with -classes.\n"
@@ -82,7 +82,7 @@ main (int argc, char** argv)
                  "and a ground among lowest_in_block, opening (see -h)\n";
     return 1;
   }
-  if (!pcl_ext::tools::checkWritable (output))
+  if (!pcl_ext::io::checkWritable (output))
     return 1;
   pcl_ext::io::ClassMapping mapping;
   if (!classes_file.empty ())
@@ -101,7 +101,7 @@ main (int argc, char** argv)
   std::vector<std::vector<std::uint32_t>> labels;
   for (const auto& path : inputs)
   {
-    pcl_ext::tools::StageTimer timer ("Loading " + path);
+    pcl_ext::apps::StageTimer timer ("Loading " + path);
     pcl_ext::apps::CrfCloud c;
     std::string error;
     if (!pcl_ext::apps::loadCrfCloud (path, &mapping, c, error))
@@ -153,7 +153,7 @@ main (int argc, char** argv)
   s.balance_classes = !no_balance;
   if (!mapping.empty ())
     model.setClassNames (mapping.names ());
-  pcl_ext::tools::StageTimer timer ("Training the " + std::string (pcl_ext::crfModeName (mode)) + " model");
+  pcl_ext::apps::StageTimer timer ("Training the " + std::string (pcl_ext::crfModeName (mode)) + " model");
   if (!model.train (clouds, labels))
   {
     std::cerr << "\npcl_ext_crf_train: training failed (see above)\n";

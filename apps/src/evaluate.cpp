@@ -12,9 +12,9 @@
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/transform_file.h>
 #include <pcl_ext/point_types.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/io/file_output.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -72,9 +72,9 @@ private:
 bool
 loadLabels (const std::string& path, const std::string& field, std::vector<std::uint32_t>& labels)
 {
-  pcl_ext::tools::StageTimer timer ("Loading " + path + " ...");
+  pcl_ext::apps::StageTimer timer ("Loading " + path + " ...");
   pcl::PCLPointCloud2 cloud;
-  if (!pcl_ext::tools::loadCloud (path, cloud))
+  if (!pcl_ext::io::loadCloud (path, cloud))
   {
     std::cout << std::endl;
     return false;
@@ -262,7 +262,7 @@ evaluateTransform (const std::string& estimated_path, const std::string& true_pa
   csv.add ("summary", "", "", "rotation_error_deg", e.rotation_deg);
   csv.add ("summary", "", "", "translation_error", e.translation);
   csv.add ("summary", "", "", "scale_ratio", e.scale_ratio);
-  if (!pcl_ext::tools::writeTextFile (csv_path, csv.str ()))
+  if (!pcl_ext::io::writeTextFile (csv_path, csv.str ()))
     return 1;
   std::cout << "\nWrote " << csv_path << "\n";
   return 0;
@@ -277,7 +277,7 @@ main (int argc, char** argv)
   std::string reference;
   double tolerance = 0.8;
   int rows = 40;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_evaluate",
       "Scores a predicted per-point labelling against a ground truth, point by point (both clouds\n"
       "in the same point order). -segments: best IoU per ground-truth segment and the counts of\n"
@@ -326,7 +326,7 @@ main (int argc, char** argv)
   }
   if (truth_field.empty ())
     truth_field = segments ? "segment" : "class";
-  if (!csv_path.empty () && !pcl_ext::tools::checkWritable (csv_path))
+  if (!csv_path.empty () && !pcl_ext::io::checkWritable (csv_path))
     return 1;
   if (transform)
     return evaluateTransform (prediction_path, truth_path, reference, csv_path);
@@ -366,7 +366,7 @@ main (int argc, char** argv)
   csv.add ("input", "", "", "truth", truth_path + ":" + truth_field);
   if (segments)
   {
-    pcl_ext::tools::StageTimer timer ("Evaluating the segmentation ...");
+    pcl_ext::apps::StageTimer timer ("Evaluating the segmentation ...");
     pcl_ext::SegmentationMetrics m;
     if (!pcl_ext::evaluateSegmentation (predicted, truth, m, tolerance))
       return 1;
@@ -375,7 +375,7 @@ main (int argc, char** argv)
   }
   else
   {
-    pcl_ext::tools::StageTimer timer ("Evaluating the classification ...");
+    pcl_ext::apps::StageTimer timer ("Evaluating the classification ...");
     pcl_ext::ClassificationMetrics m;
     if (!pcl_ext::evaluateClassification (predicted, truth, m, names))
       return 1;
@@ -384,7 +384,7 @@ main (int argc, char** argv)
   }
   if (!csv_path.empty ())
   {
-    if (!pcl_ext::tools::writeTextFile (csv_path, csv.str ()))
+    if (!pcl_ext::io::writeTextFile (csv_path, csv.str ()))
       return 1;
     std::cout << "\nWrote " << csv_path << "\n";
   }

@@ -6,8 +6,8 @@
 #include <pcl_ext/io/read_error.h>
 #include <pcl_ext/simulation/scene_io.h>
 #include <pcl_ext/simulation/scenes.h>
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/io/file_output.h>
 
 #include <algorithm>
 #include <cmath>
@@ -108,7 +108,7 @@ main (int argc, char** argv)
   std::string names;
   for (const auto& n : simulation::sceneNames ())
     names += (names.empty () ? "" : ", ") + n;
-  tools::CommandLine cl (
+  apps::CommandLine cl (
       "pcl_ext_generate_scene",
       "Simulates terrestrial laser scans of a synthetic scene and saves the points with their "
       "ground truth: fields x y z [rgb intensity] segment object class [label]. For 'building', "
@@ -212,12 +212,12 @@ main (int argc, char** argv)
   }
   if (!simulation::checkSceneParameters (parameters))
     return 1;
-  if (!tools::checkWritable (output))
+  if (!io::checkWritable (output))
     return 1;
 
   simulation::SyntheticScene scene;
   {
-    tools::StageTimer timer ("Generating scene '" + scene_name + "'");
+    apps::StageTimer timer ("Generating scene '" + scene_name + "'");
     if (!simulation::generateScene (scene_name, parameters, scene))
     {
       std::cout << std::endl;
@@ -237,7 +237,7 @@ main (int argc, char** argv)
     std::cout << '\n';
   }
   {
-    tools::StageTimer timer ("Saving " + output);
+    apps::StageTimer timer ("Saving " + output);
     if (!simulation::saveScene (output, scene, ascii))
     {
       std::cout << std::endl;

@@ -7,9 +7,10 @@
 #include <pcl_ext/io/transform_file.h>
 #include <pcl_ext/registration/plane_matching_registration.h>
 #include <pcl_ext/registration/roof_outline_plane_extraction.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/apps/input.h>
+#include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/offscreen_renderer.h>
 #endif
@@ -86,7 +87,7 @@ main (int argc, char** argv)
   double max_rotation = std::numeric_limits<double>::infinity ();
   double max_translation = std::numeric_limits<double>::infinity ();
   bool similarity = false, oriented = false;
-  pcl_ext::tools::CommandLine cl ("pcl_ext_register_to_map",
+  pcl_ext::apps::CommandLine cl ("pcl_ext_register_to_map",
                                   "Registers a building scan to its 2D footprint by plane matching "
                                   "(Khoshelham & Gorte 2009). The output is in the map's local frame "
                                   "(map coordinates minus the printed origin).");
@@ -153,7 +154,7 @@ main (int argc, char** argv)
     std::cerr << "Error: -ground_label and -building_label must differ.\n";
     return 1;
   }
-  if (!pcl_ext::tools::checkOutputsWritable (output, {png, png_before}))
+  if (!pcl_ext::io::checkOutputsWritable (output, {png, png_before}))
     return 1;
   Eigen::Matrix4d guess = Eigen::Matrix4d::Identity ();
   if (!guess_path.empty ())
@@ -191,7 +192,7 @@ main (int argc, char** argv)
   pcl::PointCloud<pcl::Label>::Ptr labels (new pcl::PointCloud<pcl::Label>);
   {
     pcl::PCLPointCloud2 file;
-    if (!pcl_ext::tools::loadInput (input, file, *scan))
+    if (!pcl_ext::apps::loadInput (input, file, *scan))
       return 1;
     if (roof_outline)
     {
@@ -270,7 +271,7 @@ main (int argc, char** argv)
 
   pcl::PointCloud<Point> registered;
   {
-    pcl_ext::tools::StageTimer timer ("Extracting and matching planes");
+    pcl_ext::apps::StageTimer timer ("Extracting and matching planes");
     reg.align (registered, local_guess.cast<float> ());
     timer.done (reg.getMatchingResult ().matches.size ());
   }
@@ -305,7 +306,7 @@ main (int argc, char** argv)
   const auto& d = reg.getPlaneDistances ();
   std::printf ("Plane distances (Tables 1-2): mean %.3f m, max %.3f m, rms %.3f m over %zu points\n", d.mean,
                d.max, d.rms, d.points);
-  if (!pcl_ext::tools::saveCloud (output, registered))
+  if (!pcl_ext::io::saveCloud (output, registered))
     return 1;
 #ifdef PCL_EXT_HAVE_VISUALIZATION
   pcl_ext::visualization::RenderOptions options;

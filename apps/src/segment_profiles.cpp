@@ -6,9 +6,10 @@
 #include <pcl_ext/segmentation/cylinder_segment_join.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
 #include <pcl_ext/io/cloud_fields.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/apps/input.h>
+#include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
@@ -115,7 +116,7 @@ main (int argc, char** argv)
   double cylinder_tolerance = 0.015, cylinder_min_radius = 0.02, cylinder_max_radius = 0.6;
   double cylinder_max_gap = 2.0;
   int min_size = 1;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_segment_profiles",
       "Segments a cloud by intersecting profiles (Sithole & Mapurisa): stacks of thin profiles "
       "along several normals, chains in every profile, segments = connected components of all "
@@ -200,12 +201,12 @@ main (int argc, char** argv)
                  "(all finite).\n";
     return 1;
   }
-  if (!pcl_ext::tools::checkOutputsWritable (output_path, {png_path, png_profiles_path}))
+  if (!pcl_ext::io::checkOutputsWritable (output_path, {png_path, png_profiles_path}))
     return 1;
 
   pcl::PCLPointCloud2 input;
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  if (!pcl_ext::tools::loadInput (input_path, input, *cloud))
+  if (!pcl_ext::apps::loadInput (input_path, input, *cloud))
     return 1;
 
   Segmentation seg;
@@ -231,7 +232,7 @@ main (int argc, char** argv)
   seg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
   seg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;
-  pcl_ext::tools::StageTimer segment ("Segmenting");
+  pcl_ext::apps::StageTimer segment ("Segmenting");
   seg.extract (clusters);
   if (clusters.empty ())
   {
@@ -249,7 +250,7 @@ main (int argc, char** argv)
     join.setRadiusLimits (cylinder_min_radius, cylinder_max_radius);
     join.setMaxGap (cylinder_max_gap);
     join.setNumberOfThreads (threads);
-    pcl_ext::tools::StageTimer joining ("Joining cylinders");
+    pcl_ext::apps::StageTimer joining ("Joining cylinders");
     join.join (clusters);
     if (clusters.empty ())
     {
@@ -281,8 +282,8 @@ main (int argc, char** argv)
     for (const auto i : clusters[c].indices)
       labels[i].label = static_cast<std::uint32_t> (c + 1);
   pcl::PCLPointCloud2 output;
-  pcl_ext::tools::StageTimer save ("Saving " + output_path);
-  if (!attachLabels (input, labels, output) || !pcl_ext::tools::saveCloud (output_path, output))
+  pcl_ext::apps::StageTimer save ("Saving " + output_path);
+  if (!attachLabels (input, labels, output) || !pcl_ext::io::saveCloud (output_path, output))
     return 1;
   save.done (labels.size ());
 
@@ -291,7 +292,7 @@ main (int argc, char** argv)
 #ifdef PCL_EXT_HAVE_VISUALIZATION
     if (!png_path.empty ())
     {
-      pcl_ext::tools::StageTimer render ("Rendering " + png_path);
+      pcl_ext::apps::StageTimer render ("Rendering " + png_path);
       std::vector<std::uint32_t> ids;
       for (const auto& l : labels)
         ids.push_back (l.label);
@@ -307,7 +308,7 @@ main (int argc, char** argv)
     }
     if (!png_profiles_path.empty ())
     {
-      pcl_ext::tools::StageTimer render ("Rendering " + png_profiles_path);
+      pcl_ext::apps::StageTimer render ("Rendering " + png_profiles_path);
       if (!renderProfiles (*cloud, seg, png_profiles_path))
         return 1;
       render.done (labels.size ());

@@ -11,9 +11,10 @@
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/apps/input.h>
+#include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
@@ -35,7 +36,7 @@ main (int argc, char** argv)
   bool reintegrate = false;
   pcl_ext::apps::VarianceClassificationOptions options;
   unsigned int threads = 0;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_segment_variance",
       "Segments a cloud by region growing over the Belton & Lichti (2006) classification: "
       "surface points link to their nearest surface neighbours, edge and boundary points stop "
@@ -98,12 +99,12 @@ main (int argc, char** argv)
     return 1;
   }
   const bool intersect = !intersections_path.empty () || reintegrate;
-  if (!pcl_ext::tools::checkOutputsWritable (output_path, {png_path, intersections_path}))
+  if (!pcl_ext::io::checkOutputsWritable (output_path, {png_path, intersections_path}))
     return 1;
 
   pcl::PCLPointCloud2 input;
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  if (!pcl_ext::tools::loadInput (input_path, input, *cloud))
+  if (!pcl_ext::apps::loadInput (input_path, input, *cloud))
     return 1;
 
   // One neighbourhood search for the segmentation and the intersections.
@@ -112,7 +113,7 @@ main (int argc, char** argv)
   nb->setKSearch (k);
   nb->setMaxRadius (max_radius);
   nb->setNumberOfThreads (threads);
-  pcl_ext::tools::StageTimer search ("Searching " + std::to_string (k) + " neighbours");
+  pcl_ext::apps::StageTimer search ("Searching " + std::to_string (k) + " neighbours");
   if (!nb->compute ())
   {
     std::cerr << "Error: the neighbourhood search failed (see the message above).\n";
@@ -129,7 +130,7 @@ main (int argc, char** argv)
   rg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
   rg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;
-  pcl_ext::tools::StageTimer segment ("Classifying and segmenting");
+  pcl_ext::apps::StageTimer segment ("Classifying and segmenting");
   rg.extract (clusters);
   if (clusters.empty ())
   {
@@ -161,7 +162,7 @@ main (int argc, char** argv)
     lsi.setParallelAngleThreshold (parallel_angle * M_PI / 180.0);
     lsi.setNumberOfThreads (threads);
     pcl::PointCloud<pcl::Label> reintegrated;
-    pcl_ext::tools::StageTimer stage ("Intersecting segments");
+    pcl_ext::apps::StageTimer stage ("Intersecting segments");
     if (!lsi.compute (intersections, reintegrated))
     {
       std::cerr << "Error: the local surface intersection failed (see the message above).\n";
@@ -178,8 +179,8 @@ main (int argc, char** argv)
       labels = reintegrated;
     if (!intersections_path.empty ())
     {
-      pcl_ext::tools::StageTimer save ("Saving " + intersections_path);
-      if (!pcl_ext::tools::saveCloud (intersections_path, intersections))
+      pcl_ext::apps::StageTimer save ("Saving " + intersections_path);
+      if (!pcl_ext::io::saveCloud (intersections_path, intersections))
         return 1;
       save.done (intersections.size ());
     }
@@ -189,16 +190,16 @@ main (int argc, char** argv)
   for (std::size_t i = 0; i < labels.size (); ++i)
     ids[i] = labels[i].label;
   pcl::PCLPointCloud2 output = input;
-  pcl_ext::tools::StageTimer save ("Saving " + output_path);
+  pcl_ext::apps::StageTimer save ("Saving " + output_path);
   if (!pcl_ext::io::setLabelField (output, "label", ids) ||
-      !pcl_ext::tools::saveCloud (output_path, output))
+      !pcl_ext::io::saveCloud (output_path, output))
     return 1;
   save.done (ids.size ());
 
   if (!png_path.empty ())
   {
 #ifdef PCL_EXT_HAVE_VISUALIZATION
-    pcl_ext::tools::StageTimer render ("Rendering " + png_path);
+    pcl_ext::apps::StageTimer render ("Rendering " + png_path);
     pcl_ext::visualization::View view;
     view.title = "Belton & Lichti: " + std::to_string (clusters.size ()) + " segments";
     if (!intersections.empty ())

@@ -3,7 +3,7 @@
  */
 #include "crf_internal.h"
 
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/io/file_output.h>
 
 #include <pcl/console/print.h>
 
@@ -222,7 +222,7 @@ MultiscaleCrfModel::saveModel (const std::string& path) const
   }
   try
   {
-    if (tools::writeTextFile (path, toText ()))
+    if (io::writeTextFile (path, toText ()))
       return true;
     PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::saveModel] Cannot write %s.\n", path.c_str ());
   }

@@ -3,7 +3,7 @@
  */
 #include <pcl_ext/segmentation/cylinder_join.h>
 
-#include "union_find.h"
+#include <pcl_ext/common/union_find.h>
 
 #include <algorithm>
 #include <cmath>
@@ -147,7 +147,7 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
 
   // Groups of pieces that continue one another.
   const std::size_t n = result.pieces.size ();
-  profiles::detail::UnionFind sets (n);
+  UnionFind sets (n);
   for (std::uint32_t a = 0; a < n; ++a)
     for (std::uint32_t b = a + 1; b < n; ++b)
       if (continues (result.pieces[a].cylinder, result.pieces[b].cylinder, p))

@@ -4,7 +4,7 @@
 #include <pcl_ext/segmentation/profile_segmenters.h>
 
 #include "profile_grid.h"
-#include "union_find.h"
+#include <pcl_ext/common/union_find.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -146,7 +146,7 @@ scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& cha
 
   // Only points of the same chain are fitted together: a curve never borrows points across a
   // gap.
-  detail::UnionFind chains (n);
+  UnionFind chains (n);
   for (const LocalEdge& e : chain_edges)
     chains.unite (e.a, e.b);
   std::vector<std::uint32_t> chain (n);

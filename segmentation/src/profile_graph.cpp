@@ -3,7 +3,7 @@
  */
 #include <pcl_ext/segmentation/profile_graph.h>
 
-#include "union_find.h"
+#include <pcl_ext/common/union_find.h>
 
 #include <algorithm>
 #include <limits>
@@ -50,7 +50,7 @@ labelSegments (std::size_t n, const std::vector<std::vector<GraphEdge>>& stack_e
                           std::find (breakpoints.begin (), breakpoints.end (), 1) !=
                               breakpoints.end ();
   const auto is_break = [&] (std::uint32_t i) { return has_breaks && breakpoints[i]; };
-  detail::UnionFind sets (n);
+  UnionFind sets (n);
   for (const auto& edges : stack_edges)
     for (const GraphEdge& e : edges)
       if (!is_break (e.source) && !is_break (e.target))

@@ -3,8 +3,8 @@
  */
 #include <pcl_ext/segmentation/profile_segmenters.h>
 
+#include "coincident_points.h"
 #include "profile_grid.h"
-#include "union_find.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,9 @@
  */
 #include <pcl_ext/segmentation/profile_segmenters.h>
 
+#include "coincident_points.h"
 #include "profile_grid.h"
-#include "union_find.h"
+#include <pcl_ext/common/union_find.h>
 
 #include <algorithm>
 
@@ -57,7 +58,7 @@ spanningTreeEdges (const ProfilePoints& profile, double threshold,
       return x.d2 < y.d2;
     return x.a < y.a || (x.a == y.a && x.b < y.b);
   });
-  detail::UnionFind sets (n);
+  UnionFind sets (n);
   for (const Pair& p : pairs)
     if (sets.unite (p.a, p.b))
       edges.push_back ({p.a, p.b});

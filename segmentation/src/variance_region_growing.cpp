@@ -2,7 +2,7 @@
  * pcl_ext: the region-growing kernel of Belton & Lichti (2006, section 3) and the precompiled
  * VarianceRegionGrowing for the common point types.
  */
-#include "union_find.h"
+#include <pcl_ext/common/union_find.h>
 
 #include <pcl_ext/common/instantiate.h>
 #include <pcl_ext/common/parallel.h>
@@ -51,7 +51,7 @@ growSegments (const std::vector<std::size_t>& offsets, const pcl::Indices& neigh
   //    connected components of the links whatever the order; uniting them in row order in one
   //    thread keeps the union-find simple (its root is the smallest point index, whatever
   //    order the unions come in).
-  pcl_ext::profiles::detail::UnionFind sets (class_of_point.size ());
+  pcl_ext::UnionFind sets (class_of_point.size ());
   for (std::ptrdiff_t r = 0; r < rows; ++r)
   {
     const auto seed = static_cast<std::uint32_t> (row_points[r]);

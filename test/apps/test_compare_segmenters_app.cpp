@@ -9,7 +9,7 @@
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/simulation/scene_io.h>
 #include <pcl_ext/simulation/scenes.h>
-#include <pcl_ext/tools/cloud_io.h>
+#include <pcl_ext/io/cloud_io.h>
 
 #include <gtest/gtest.h>
 
@@ -98,7 +98,7 @@ TEST_F (CompareSegmentersApp, TableHoldsTheMetricsOfTheWrittenLabels)
   std::vector<std::string> header;
   const auto rows = readCsv (path ("t.csv"), header);
   pcl::PCLPointCloud2 labelled;
-  ASSERT_TRUE (pcl_ext::tools::loadCloud (path ("labels.pcd"), labelled));
+  ASSERT_TRUE (pcl_ext::io::loadCloud (path ("labels.pcd"), labelled));
   std::vector<std::uint32_t> truth;
   ASSERT_TRUE (pcl_ext::io::getLabelField (labelled, "segment", truth));
   ASSERT_GE (rows.size (), 9u);  // four or more pcl_ext methods and the five stock ones
@@ -188,7 +188,7 @@ TEST_F (CompareSegmentersApp, ProfileOptionsReachTheSegmenter)
                     path ("l.pcd") + options), 0) << output_;
     pcl::PCLPointCloud2 labelled;
     std::vector<std::uint32_t> labels;
-    EXPECT_TRUE (pcl_ext::tools::loadCloud (path ("l.pcd"), labelled));
+    EXPECT_TRUE (pcl_ext::io::loadCloud (path ("l.pcd"), labelled));
     EXPECT_TRUE (pcl_ext::io::getLabelField (labelled, method, labels));
     return labels;
   };

@@ -7,7 +7,7 @@
  */
 #include "../registration/building_fixture.h"
 
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <algorithm>
 #include <chrono>
@@ -19,7 +19,7 @@ main (int argc, char** argv)
   int trials = 100, superfluous = 4, missing = 2;
   double noise = 0.2, max_rotation = 0.5, max_translation = 0.2, max_mean = 0.27;
   unsigned int first_seed = 1;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_benchmark_building_trials",
       "Registers scans of the simulated building in random poses to its footprint (plane "
       "matching) and counts the trials that meet the goals.");

@@ -8,7 +8,7 @@
 #include <pcl_ext/io/class_mapping.h>
 #include <pcl_ext/io/point_table.h>
 #include <pcl_ext/simulation/scenes.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <cstdio>
 
@@ -54,7 +54,7 @@ main (int argc, char** argv)
 {
   unsigned int points = 160000, threads = 2;
   std::string oakland;
-  pcl_ext::tools::CommandLine cl ("pcl_ext_benchmark_crf",
+  pcl_ext::apps::CommandLine cl ("pcl_ext_benchmark_crf",
                                   "Times super-voxels, features, training and inference of the "
                                   "multi-scale CRF on generated street scenes.");
   cl.addOption ("points", points, "points of the generated street scenes");

@@ -13,7 +13,7 @@
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <algorithm>
 #include <functional>
@@ -84,7 +84,7 @@ main (int argc, char** argv)
   int points = 20000000, k = 50;
   unsigned int threads = 2, seed = 1;
   std::string scene_name = "indoor", stages = "classify,segment,profiles";
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_benchmark_large_cloud",
       "Runs one large generated scene through the Belton & Lichti classification and "
       "segmentation and the profile segmentation; prints time and peak memory per point.");

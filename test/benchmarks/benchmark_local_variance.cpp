@@ -9,7 +9,7 @@
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/simulation/scenes.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <pcl/features/boundary.h>
 #include <pcl/features/normal_3d_omp.h>
@@ -35,7 +35,7 @@ main (int argc, char** argv)
   int points = 1000000, k = 50, repeats = 2;
   unsigned int threads = 2, seed = 1;
   std::string scene_name = "indoor";
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_benchmark_local_variance",
       "Times the Belton & Lichti classification against the neighbourhood search alone and "
       "against pcl::NormalEstimationOMP + pcl::BoundaryEstimation.");

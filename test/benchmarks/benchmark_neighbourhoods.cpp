@@ -5,10 +5,10 @@
  * distances per point) with the same number of OpenMP threads, on the same cloud, in one run.
  * Prints the times and the ratio ours / FLANN (lower is better).
  */
-#include <pcl_ext/common/neighbourhoods.h>
+#include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/simulation/scenes.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <pcl/common/io.h>
 
@@ -92,7 +92,7 @@ main (int argc, char** argv)
   int points = 1000000, k = 50, repeats = 3;
   std::string scene = "indoor";
   unsigned int threads = 2, seed = 1;
-  pcl_ext::tools::CommandLine cl ("pcl_ext_benchmark_neighbourhoods",
+  pcl_ext::apps::CommandLine cl ("pcl_ext_benchmark_neighbourhoods",
                                   "Times the shared neighbourhood pass (pcl_ext::Neighbourhoods, "
                                   "nanoflann) against a pcl::search::KdTree (FLANN) kNN loop.");
   cl.addOption ("scene", scene, "generated TLS scene (see pcl_ext_generate_scene)");

@@ -5,7 +5,7 @@
  */
 #include <pcl_ext/registration/plane_matching_registration.h>
 #include <pcl_ext/simulation/scenes.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <pcl/common/io.h>
 
@@ -17,7 +17,7 @@ main (int argc, char** argv)
   double step = 0.5, noise = 0.2;
   int repeats = 5, max_m = 12;
   unsigned int threads = 0;
-  pcl_ext::tools::CommandLine cl ("pcl_ext_benchmark_plane_matching",
+  pcl_ext::apps::CommandLine cl ("pcl_ext_benchmark_plane_matching",
                                   "Times plane matching for m = n = 7..12, k = 4 (Table 3).");
   cl.addOption ("step", step, "angular step of the simulated scan (degrees)");
   cl.addOption ("noise", noise, "range noise (m); the paper's simulation used 0.2");

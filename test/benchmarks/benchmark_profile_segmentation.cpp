@@ -14,7 +14,7 @@
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
 #include <pcl_ext/simulation/scenes.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <pcl/features/normal_3d_omp.h>
 #include <pcl/search/kdtree.h>
@@ -144,7 +144,7 @@ main (int argc, char** argv)
 {
   unsigned int threads = 2;
   int repeats = 3, large = 1000000, small = 0;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_benchmark_profile_segmentation",
       "Times pcl_ext::ProfileSegmentation against pcl::EuclideanClusterExtraction and "
       "pcl::RegionGrowing on generated scenes (cubes, spheres, a large cubes scan).");

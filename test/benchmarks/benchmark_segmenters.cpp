@@ -18,7 +18,7 @@
 
 #include <pcl_ext/segmentation/profile_stacks.h>
 #include <pcl_ext/simulation/scenes.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <pcl/features/normal_3d_omp.h>
 #include <pcl/search/kdtree.h>
@@ -158,7 +158,7 @@ main (int argc, char** argv)
   std::string points_text = "100000", threads_text = "1,2";
   int repeats = 1;
   double timeout = 0.0;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_benchmark_segmenters",
       "Times each pcl_ext segmenter against its stock PCL counterpart on the generated indoor "
       "scene and prints a Markdown table: points per second, the time ratio pcl_ext / PCL "

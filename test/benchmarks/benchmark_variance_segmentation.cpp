@@ -10,7 +10,7 @@
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 #include <pcl_ext/simulation/scenes.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <pcl/features/normal_3d_omp.h>
 #include <pcl/search/kdtree.h>
@@ -35,7 +35,7 @@ main (int argc, char** argv)
   int points = 1000000, k = 50, rg_k = 30, repeats = 1;
   unsigned int threads = 2, seed = 1;
   std::string scene_name = "indoor";
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_benchmark_variance_segmentation",
       "Times Belton & Lichti segmentation (search + classification + region growing) against "
       "pcl::NormalEstimationOMP + pcl::RegionGrowing on the same generated scene.");

@@ -4,7 +4,7 @@
  */
 #include "analytic_clouds.h"
 
-#include <pcl_ext/common/neighbourhoods.h>
+#include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/features/covariance_features.h>
 
 #include <gtest/gtest.h>

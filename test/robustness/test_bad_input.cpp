@@ -16,7 +16,7 @@
 
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/classification/multiscale_crf_classification.h>
-#include <pcl_ext/common/neighbourhoods.h>
+#include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/features/chi_squared_boundary.h>
 #include <pcl_ext/features/covariance_features.h>
 #include <pcl_ext/features/curvature_variance.h>

@@ -7,8 +7,8 @@
 #include "segmenter_methods.h"
 
 #include <pcl_ext/segmentation/profile_stacks.h>
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/montage.h>
 #endif
@@ -77,7 +77,7 @@ renderMontage (const std::string& path, const Comparison& c,
                double max_z)
 {
   namespace vis = pcl_ext::visualization;
-  pcl_ext::tools::StageTimer timer ("Rendering " + path);
+  pcl_ext::apps::StageTimer timer ("Rendering " + path);
   std::vector<std::size_t> shown;
   pcl::PointCloud<pcl::PointXYZ> cloud;
   for (std::size_t i = 0; i < c.input.cloud->size (); ++i)
@@ -140,7 +140,7 @@ main (int argc, char** argv)
   for (const auto& m : all)
     description += "\n  " + m.name + std::string (m.name.size () < 15 ? 15 - m.name.size () : 1, ' ') +
                    m.description;
-  pcl_ext::tools::CommandLine cl ("pcl_ext_compare_segmenters", description);
+  pcl_ext::apps::CommandLine cl ("pcl_ext_compare_segmenters", description);
   cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
   cl.addOption ("truth_field", truth_field,
                 "field holding the ground-truth segments (e.g. segment, object, label; 0 = "
@@ -222,7 +222,7 @@ main (int argc, char** argv)
   }
 #endif
   for (const auto* path : {&csv_path, &labels_path, &png_path})
-    if (!path->empty () && !pcl_ext::tools::checkWritable (*path))
+    if (!path->empty () && !pcl_ext::io::checkWritable (*path))
       return 1;
 
   pcl::PCLPointCloud2 blob;
@@ -278,7 +278,7 @@ main (int argc, char** argv)
     ok = ok && r.ok;
   if (!csv_path.empty ())
   {
-    if (!pcl_ext::tools::writeTextFile (csv_path, makeCsv (results, with_truth)))
+    if (!pcl_ext::io::writeTextFile (csv_path, makeCsv (results, with_truth)))
       return 1;
     std::cout << "Wrote " << csv_path << "\n";
   }

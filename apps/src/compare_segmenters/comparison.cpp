@@ -7,9 +7,10 @@
 
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/io/cloud_fields.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/apps/command_line.h>
 
+#include <pcl/common/io.h>
 #include <pcl/common/point_tests.h>
 #include <pcl/conversions.h>
 #include <pcl/features/normal_3d_omp.h>
@@ -27,8 +28,8 @@ bool
 loadInput (const std::string& path, const std::string& truth_field, pcl::PCLPointCloud2& blob,
            Comparison& c)
 {
-  pcl_ext::tools::StageTimer timer ("Loading " + path);
-  if (!pcl_ext::tools::loadCloud (path, blob))
+  pcl_ext::apps::StageTimer timer ("Loading " + path);
+  if (!pcl_ext::io::loadCloud (path, blob))
     return false;
   std::vector<std::uint32_t> truth;
   if (!truth_field.empty ())
@@ -43,8 +44,8 @@ loadInput (const std::string& path, const std::string& truth_field, pcl::PCLPoin
   }
   pcl::PointCloud<pcl::PointXYZ> all;
   pcl::fromPCLPointCloud2 (blob, all);
-  const bool colour = pcl_ext::tools::findField (blob, "rgb") >= 0 ||
-                      pcl_ext::tools::findField (blob, "rgba") >= 0;
+  const bool colour = pcl::getFieldIndex (blob, "rgb") >= 0 ||
+                      pcl::getFieldIndex (blob, "rgba") >= 0;
   pcl::PointCloud<pcl::PointXYZRGBA> all_coloured;
   if (colour)
     pcl::fromPCLPointCloud2 (blob, all_coloured);
@@ -81,7 +82,7 @@ loadInput (const std::string& path, const std::string& truth_field, pcl::PCLPoin
 bool
 computeNormals (Comparison& c, int k, unsigned int threads, double timeout, MethodResult& cost)
 {
-  pcl_ext::tools::StageTimer timer ("Estimating normals (pcl::NormalEstimationOMP, k = " +
+  pcl_ext::apps::StageTimer timer ("Estimating normals (pcl::NormalEstimationOMP, k = " +
                                     std::to_string (k) + ")");
   pcl::PointCloud<pcl::Normal> normals;
   const auto run = runIsolated (
@@ -132,7 +133,7 @@ runMethod (const SegmenterMethod& method, const Comparison& c, const SegmenterSe
   r.library = method.library;
   r.needs_normals = method.needs_normals;
   const std::size_t n = c.input.cloud->size ();
-  pcl_ext::tools::StageTimer timer ("Running " + method.name);
+  pcl_ext::apps::StageTimer timer ("Running " + method.name);
   std::vector<pcl::PointIndices> clusters;
   const auto run = runIsolated (
       [&] { return method.run (c.input, settings, clusters); },
@@ -185,7 +186,7 @@ bool
 writeLabels (const std::string& path, pcl::PCLPointCloud2& blob, const Comparison& c,
              const std::vector<MethodResult>& results)
 {
-  pcl_ext::tools::StageTimer timer ("Saving " + path);
+  pcl_ext::apps::StageTimer timer ("Saving " + path);
   for (const auto& r : results)
   {
     if (!r.ok)
@@ -196,7 +197,7 @@ writeLabels (const std::string& path, pcl::PCLPointCloud2& blob, const Compariso
     if (!pcl_ext::io::setLabelField (blob, r.name, labels))
       return false;
   }
-  if (!pcl_ext::tools::saveCloud (path, blob))
+  if (!pcl_ext::io::saveCloud (path, blob))
     return false;
   timer.done (c.file_points);
   return true;

@@ -4,7 +4,7 @@
  */
 #include "segmenter_methods.h"
 
-#include <pcl_ext/common/neighbourhoods.h>
+#include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/segmentation/adaptive_supervoxel_segmentation.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>

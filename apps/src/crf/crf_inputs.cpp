@@ -6,8 +6,9 @@
 #include <pcl_ext/io/ascii_reader.h>
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/point_table.h>
-#include <pcl_ext/tools/cloud_io.h>
+#include <pcl_ext/io/cloud_io.h>
 
+#include <pcl/common/io.h>
 #include <pcl/conversions.h>
 #include <pcl/point_types.h>
 
@@ -44,7 +45,7 @@ loadCrfCloud (const std::string& path, const io::ClassMapping* mapping, CrfCloud
       io::loadOaklandFile (path, table);
       io::toPCLPointCloud2 (table, io::computeLocalOrigin (table), out.blob);
     }
-    else if (!tools::loadCloud (path, out.blob))
+    else if (!io::loadCloud (path, out.blob))
     {
       error = path + ": cannot read the cloud";
       return false;
@@ -63,7 +64,7 @@ loadCrfCloud (const std::string& path, const io::ClassMapping* mapping, CrfCloud
   auto xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
   pcl::fromPCLPointCloud2 (out.blob, *xyz);
   out.input.xyz = xyz;
-  if (tools::findField (out.blob, "rgb") >= 0 || tools::findField (out.blob, "rgba") >= 0)
+  if (pcl::getFieldIndex (out.blob, "rgb") >= 0 || pcl::getFieldIndex (out.blob, "rgba") >= 0)
   {
     pcl::PointCloud<pcl::PointXYZRGB> rgb;
     pcl::fromPCLPointCloud2 (out.blob, rgb);
@@ -75,7 +76,7 @@ loadCrfCloud (const std::string& path, const io::ClassMapping* mapping, CrfCloud
                                        : Eigen::Vector3f::Constant (1.f / 3.f);
     }
   }
-  if (tools::findField (out.blob, "intensity") >= 0)
+  if (pcl::getFieldIndex (out.blob, "intensity") >= 0)
   {
     pcl::PointCloud<pcl::PointXYZI> in;
     pcl::fromPCLPointCloud2 (out.blob, in);
@@ -83,7 +84,7 @@ loadCrfCloud (const std::string& path, const io::ClassMapping* mapping, CrfCloud
     for (std::size_t i = 0; i < in.size (); ++i)
       out.input.intensity[i] = std::isfinite (in[i].intensity) ? in[i].intensity : 0.f;
   }
-  if (tools::findField (out.blob, "label") >= 0)
+  if (pcl::getFieldIndex (out.blob, "label") >= 0)
   {
     std::string why;
     if (!io::getLabelField (out.blob, "label", out.labels, &why))

@@ -3,8 +3,8 @@
  */
 #include "demo_context.h"
 
-#include <pcl_ext/tools/command_line.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/io/file_output.h>
 
 #include <sys/stat.h>
 
@@ -20,7 +20,7 @@ main (int argc, char** argv)
   int points = 0;
   unsigned int seed = 1;
   std::string only;
-  pcl_ext::tools::CommandLine cl (
+  pcl_ext::apps::CommandLine cl (
       "pcl_ext_demo",
       "Runs pcl_ext's methods on generated TLS scenes (nothing is downloaded) and writes PNG "
       "images and a text summary (summary.txt: timings, metrics) to the output folder.");
@@ -44,7 +44,7 @@ main (int argc, char** argv)
   if (context.out_dir.empty ())
     context.out_dir = "out";
   ::mkdir (context.out_dir.c_str (), 0755);
-  if (!pcl_ext::tools::checkWritable (context.out_dir + "/summary.txt"))
+  if (!pcl_ext::io::checkWritable (context.out_dir + "/summary.txt"))
     return 1;
 
   const std::vector<std::pair<std::string, std::function<bool (pcl_ext::demo::DemoContext&)>>>
@@ -82,7 +82,7 @@ main (int argc, char** argv)
     std::cerr << "Error: no demo step named '" << only << "'.\n";
     return 1;
   }
-  if (!pcl_ext::tools::writeTextFile (context.path ("summary.txt"), context.summary.str ()))
+  if (!pcl_ext::io::writeTextFile (context.path ("summary.txt"), context.summary.str ()))
     return 1;
   std::cout << "Wrote " << context.images << " images and summary.txt to " << context.out_dir
             << "\n";

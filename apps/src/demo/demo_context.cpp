@@ -3,7 +3,7 @@
  */
 #include "demo_context.h"
 
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <iostream>
 
@@ -22,7 +22,7 @@ DemoContext::scene (const std::string& name)
   parameters.points = points;
   parameters.threads = threads;
   auto scene = std::make_unique<simulation::SyntheticScene> ();
-  tools::StageTimer timer ("Generating scene '" + name + "'");
+  apps::StageTimer timer ("Generating scene '" + name + "'");
   if (!simulation::generateScene (name, parameters, *scene))
   {
     std::cerr << "Error: could not generate scene '" << name << "'.\n";
@@ -46,7 +46,7 @@ bool
 DemoContext::render (const std::vector<visualization::View>& views, const std::string& file,
                      const visualization::RenderOptions& options)
 {
-  tools::StageTimer timer ("Rendering " + file);
+  apps::StageTimer timer ("Rendering " + file);
   if (!visualization::renderToPng (views, path (file), options))
     return false;
   timer.done (0);

@@ -8,8 +8,8 @@
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/evaluation/classification_metrics.h>
 #include <pcl_ext/point_types.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
 
 #include <pcl/common/io.h>
@@ -31,7 +31,7 @@ classify (DemoContext& context, const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud
   classifier.setKSearch (context.k);
   classifier.setNumberOfThreads (context.threads);
   pcl::PointCloud<pcl::Label> labels;
-  tools::StageTimer timer ("Classifying '" + name + "' (surface / edge / boundary)");
+  apps::StageTimer timer ("Classifying '" + name + "' (surface / edge / boundary)");
   classifier.classify (labels);
   const double ms = timer.done (labels.size ());
   if (labels.size () != cloud->size ())
@@ -94,7 +94,7 @@ runClassificationStep (DemoContext& context)
     return ok;
   }
   pcl::PointCloud<pcl::PointXYZ>::Ptr real (new pcl::PointCloud<pcl::PointXYZ>);
-  if (!tools::loadCloud (room, *real) || !classify (context, real, "room_scan1", predicted))
+  if (!io::loadCloud (room, *real) || !classify (context, real, "room_scan1", predicted))
     return false;
   RenderOptions room_options;
   room_options.width = 1200;

@@ -6,7 +6,7 @@
 
 #include <pcl_ext/classification/crf_model.h>
 #include <pcl_ext/evaluation/classification_metrics.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
 
 #include <cstdio>
@@ -56,12 +56,12 @@ runCrfStep (DemoContext& context)
   const CrfInput test = toInput (test_scene, truth);
   MultiscaleCrfModel model;
   model.settings ().threads = context.threads;
-  tools::StageTimer t_train ("Training the multi-scale CRF on street (seed " +
+  apps::StageTimer t_train ("Training the multi-scale CRF on street (seed " +
                              std::to_string (context.seed) + ")");
   if (!model.train ({train}, {train_labels}))
     return false;
   t_train.done (train.xyz->size ());
-  tools::StageTimer t_classify ("Classifying street (seed " + std::to_string (p.seed) + ")");
+  apps::StageTimer t_classify ("Classifying street (seed " + std::to_string (p.seed) + ")");
   std::vector<std::uint32_t> labels;
   Eigen::MatrixXf probabilities;
   if (!model.classify (test, labels, probabilities))

@@ -4,9 +4,9 @@
 #include "demo_context.h"
 
 #include <pcl_ext/common/covariance.h>
-#include <pcl_ext/common/neighbourhoods.h>
+#include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/common/parallel.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
 
 #include <pcl/common/io.h>
@@ -28,12 +28,12 @@ runNeighbourhoodsStep (DemoContext& context)
   nb.setInputCloud (cloud);
   nb.setKSearch (context.k);
   nb.setNumberOfThreads (context.threads);
-  tools::StageTimer search ("Searching neighbourhoods, k = " + std::to_string (context.k));
+  apps::StageTimer search ("Searching neighbourhoods, k = " + std::to_string (context.k));
   if (!nb.compute ())
     return false;
   const double search_ms = search.done (cloud->size ());
 
-  tools::StageTimer features ("Covariance and surface variance (eq. 4)");
+  apps::StageTimer features ("Covariance and surface variance (eq. 4)");
   std::vector<float> variance (cloud->size ());
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (cloud->size ());
   const unsigned int threads = resolveThreadCount (context.threads);

@@ -8,7 +8,7 @@
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/segmentation/cylinder_segment_join.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
 
 #include <pcl/common/io.h>
@@ -120,7 +120,7 @@ runProfilesStep (DemoContext& context)
     seg.setNumberOfThreads (context.threads);
     run.configure (seg);
     std::vector<pcl::PointIndices> segments;
-    tools::StageTimer timer ("Profile segmentation of '" + name + "' (" + run.settings + ")");
+    apps::StageTimer timer ("Profile segmentation of '" + name + "' (" + run.settings + ")");
     seg.extract (segments);
     if (run.join_cylinders && !segments.empty ())
     {

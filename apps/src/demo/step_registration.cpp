@@ -7,7 +7,7 @@
 #include <pcl_ext/evaluation/registration_metrics.h>
 #include <pcl_ext/registration/plane_extraction.h>
 #include <pcl_ext/registration/plane_matching_registration.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
 
 #include <pcl/common/io.h>
@@ -56,7 +56,7 @@ runRegistrationStep (DemoContext& context)
   reg.setSourceViewpoints (viewpoints);
   reg.setOrientedNormals (true);
   pcl::PointCloud<pcl::PointXYZ> registered;
-  tools::StageTimer timer ("Registering 'building' to its footprint (plane matching)");
+  apps::StageTimer timer ("Registering 'building' to its footprint (plane matching)");
   reg.align (registered);
   const double ms = timer.done (reg.getMatchingResult ().matches.size ());
   if (!reg.hasConverged ())

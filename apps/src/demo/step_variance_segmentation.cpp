@@ -9,8 +9,8 @@
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
 
 #include <pcl/common/io.h>
@@ -34,7 +34,7 @@ bool
 segment (DemoContext& context, const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
          const std::string& name, std::vector<std::uint32_t>& ids, Intersections& intersections)
 {
-  tools::StageTimer timer ("Classifying and growing segments of '" + name + "'");
+  apps::StageTimer timer ("Classifying and growing segments of '" + name + "'");
   // One neighbourhood search for the segmentation and the intersections.
   auto nb = pcl::make_shared<Neighbourhoods<pcl::PointXYZ>> ();
   nb->setInputCloud (cloud);
@@ -74,7 +74,7 @@ segment (DemoContext& context, const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
       pcl::make_shared<pcl::PointCloud<pcl::Label>> (rg.getClassification ()));
   lsi.setNumberOfThreads (context.threads);
   pcl::PointCloud<pcl::Label> reintegrated;
-  tools::StageTimer lsi_timer ("Intersecting the segments of '" + name + "'");
+  apps::StageTimer lsi_timer ("Intersecting the segments of '" + name + "'");
   if (!lsi.compute (intersections, reintegrated))
     return false;
   const double lsi_ms = lsi_timer.done (intersections.size ());
@@ -170,7 +170,7 @@ runVarianceSegmentationStep (DemoContext& context)
     return ok;
   }
   pcl::PointCloud<pcl::PointXYZ>::Ptr real (new pcl::PointCloud<pcl::PointXYZ>);
-  if (!tools::loadCloud (room, *real) ||
+  if (!io::loadCloud (room, *real) ||
       !segment (context, real, "room_scan1", predicted, intersections))
     return false;
   RenderOptions room_options;

@@ -4,7 +4,7 @@
  */
 #pragma once
 
-#include <pcl_ext/tools/command_line.h>
+#include <pcl_ext/apps/command_line.h>
 
 #include <cmath>
 #include <iostream>
@@ -27,7 +27,7 @@ struct VarianceClassificationOptions
   double boundary_band_fraction = 1.0;
 
   void
-  addTo (tools::CommandLine& cl)
+  addTo (apps::CommandLine& cl)
   {
     cl.addOption ("curvature_threshold", curvature_threshold,
                   "curvature (eq. 4) threshold; 0: factor * median curvature");

@@ -4,6 +4,7 @@
 #include <pcl_ext/io/cloud_fields.h>
 
 #include <pcl/PCLPointField.h>
+#include <pcl/common/io.h>
 
 #include <cmath>
 #include <cstring>
@@ -15,15 +16,6 @@ namespace io
 {
 namespace
 {
-int
-fieldIndex (const pcl::PCLPointCloud2& cloud, const std::string& name)
-{
-  for (std::size_t i = 0; i < cloud.fields.size (); ++i)
-    if (cloud.fields[i].name == name)
-      return static_cast<int> (i);
-  return -1;
-}
-
 template <typename T> T
 load (const std::uint8_t* p)
 {
@@ -74,7 +66,7 @@ getLabelField (const pcl::PCLPointCloud2& cloud, const std::string& name,
       *error = message;
     return false;
   };
-  const int f = fieldIndex (cloud, name);
+  const int f = pcl::getFieldIndex (cloud, name);
   if (f < 0)
   {
     std::string names;
@@ -112,7 +104,7 @@ setLabelField (pcl::PCLPointCloud2& cloud, const std::string& name,
   const std::size_t n = static_cast<std::size_t> (cloud.width) * cloud.height;
   if (labels.size () != n)
     return false;
-  const int f = fieldIndex (cloud, name);
+  const int f = pcl::getFieldIndex (cloud, name);
   if (f >= 0 && cloud.fields[f].datatype == pcl::PCLPointField::UINT32 && cloud.fields[f].count == 1)
   {
     for (std::size_t i = 0; i < n; ++i)

@@ -2,8 +2,8 @@
  * pcl_ext: saving and loading synthetic scenes with their ground truth.
  */
 #include <pcl_ext/simulation/scene_io.h>
-#include <pcl_ext/tools/cloud_io.h>
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/io/file_output.h>
 
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
@@ -125,13 +125,13 @@ saveScene (const std::string& path, const SyntheticScene& scene, bool ascii)
 {
   pcl::PCLPointCloud2 blob;
   sceneToPointCloud2 (scene, blob);
-  if (!tools::saveCloud (path, blob, ascii))
+  if (!io::saveCloud (path, blob, ascii))
     return false;
   if (scene.footprint.empty ())
     return true;
   const std::string stem = pathStem (path);
-  return tools::writeTextFile (stem + ".footprint.wkt", footprintToWkt (scene.footprint)) &&
-         tools::writeTextFile (stem + ".transform.txt", matrixToText (scene.scan_to_map));
+  return io::writeTextFile (stem + ".footprint.wkt", footprintToWkt (scene.footprint)) &&
+         io::writeTextFile (stem + ".transform.txt", matrixToText (scene.scan_to_map));
 }
 
 bool
@@ -139,7 +139,7 @@ loadScene (const std::string& path, pcl::PointCloud<SimulatedPoint>& cloud)
 {
   cloud.clear ();
   pcl::PCLPointCloud2 blob;
-  if (!tools::loadCloud (path, blob))
+  if (!io::loadCloud (path, blob))
     return false;
   renameField (blob, "class", "point_class");
   // Scenes without colour, intensity or labels lack those fields: that is not worth a warning.

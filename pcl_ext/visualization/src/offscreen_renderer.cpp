@@ -1,10 +1,11 @@
 /*
  * pcl_ext: headless rendering of coloured clouds to PNG.
  */
-#include <pcl_ext/tools/file_output.h>
+#include <pcl_ext/io/file_output.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
 
 #include <pcl/common/point_tests.h>
+#include <pcl/console/print.h>
 #include <pcl/visualization/pcl_visualizer.h>
 
 #include <vtkPNGWriter.h>
@@ -15,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <iostream>
 
 namespace pcl_ext
 {
@@ -84,36 +84,39 @@ renderToPng (const std::vector<View>& views, const std::string& path,
 {
   if (views.empty ())
   {
-    std::cerr << "Error: nothing to render into " << path << ".\n";
+    PCL_ERROR ("[pcl_ext::visualization::renderToPng] nothing to render into %s.\n", path.c_str ());
     return false;
   }
   if (options.width < 16 || options.height < 16 || options.width > 16384 ||
       options.height > 16384)
   {
-    std::cerr << "Error: image size " << options.width << " x " << options.height
-              << " is out of range (16 .. 16384).\n";
+    PCL_ERROR ("[pcl_ext::visualization::renderToPng] image size %d x %d is out of range "
+               "(16 .. 16384).\n", static_cast<int> (options.width), static_cast<int> (options.height));
     return false;
   }
   if (!(options.view_direction.norm () > 0.0) || !options.view_direction.allFinite () ||
       !(options.zoom_out > 0.0))
   {
-    std::cerr << "Error: invalid camera settings for " << path << ".\n";
+    PCL_ERROR ("[pcl_ext::visualization::renderToPng] invalid camera settings for %s.\n",
+               path.c_str ());
     return false;
   }
   Eigen::Vector3d centre;
   double radius;
   if (!sceneBounds (views, centre, radius))
   {
-    std::cerr << "Error: no finite point to render into " << path << ".\n";
+    PCL_ERROR ("[pcl_ext::visualization::renderToPng] no finite point to render into %s.\n",
+               path.c_str ());
     return false;
   }
   if (!displayAvailable ())
   {
-    std::cerr << "Error: rendering " << path << " needs an X display (VTK here is built for X "
-              << "only); on a headless machine run under Xvfb, e.g. 'xvfb-run -a <command>'.\n";
+    PCL_ERROR ("[pcl_ext::visualization::renderToPng] rendering %s needs an X display (VTK here "
+               "is built for X only); on a headless machine run under Xvfb, e.g. 'xvfb-run -a "
+               "<command>'.\n", path.c_str ());
     return false;
   }
-  if (!tools::checkWritable (path))
+  if (!io::checkWritable (path))
     return false;
 
   // A visualizer without an interactor: never spin() and never saveScreenshot() here (both
@@ -179,7 +182,7 @@ renderToPng (const std::vector<View>& views, const std::string& path,
   grab->SetInputBufferTypeToRGB ();
   grab->ReadFrontBufferOff ();
   grab->Update ();
-  return tools::writeFileAtomically (path, [&grab] (const std::string& temporary) {
+  return io::writeFileAtomically (path, [&grab] (const std::string& temporary) {
     auto writer = vtkSmartPointer<vtkPNGWriter>::New ();
     writer->SetFileName (temporary.c_str ());
     writer->SetInputConnection (grab->GetOutputPort ());

@@ -1,7 +1,7 @@
 // A downstream project with its own point type: PCL_NO_PRECOMPILE makes pcl_ext's headers
 // include their implementations, exactly as PCL's do.
 #define PCL_NO_PRECOMPILE
-#include <pcl_ext/common/neighbourhoods.h>
+#include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/search/nanoflann_kdtree.h>
 
 #include <pcl/point_types.h>

@@ -1,6 +1,6 @@
 // A downstream project using pcl_ext's precompiled classes for a stock PCL point type.
 #include <pcl_ext/common/covariance.h>
-#include <pcl_ext/common/neighbourhoods.h>
+#include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/search/nanoflann_kdtree.h>
 
 #include <cmath>

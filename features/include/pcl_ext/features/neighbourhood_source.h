@@ -3,7 +3,7 @@
  */
 #pragma once
 
-#include <pcl_ext/common/neighbourhoods.h>
+#include <pcl_ext/search/neighbourhoods.h>
 
 #include <pcl/console/print.h>
 

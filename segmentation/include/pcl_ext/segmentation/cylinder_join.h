@@ -3,7 +3,7 @@
  */
 #pragma once
 
-#include <pcl_ext/common/cylinders.h>
+#include <pcl_ext/segmentation/cylinders.h>
 
 #include <Eigen/Core>
 

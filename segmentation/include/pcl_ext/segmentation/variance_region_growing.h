@@ -4,7 +4,7 @@
  */
 #pragma once
 
-#include <pcl_ext/common/neighbourhoods.h>
+#include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/point_types.h>
 
 #include <pcl/PointIndices.h>

@@ -1,7 +1,0 @@
-/*
- * pcl_ext: precompiled Neighbourhoods for the common point types.
- */
-#include <pcl_ext/common/instantiate.h>
-#include <pcl_ext/common/impl/neighbourhoods.hpp>
-
-PCL_EXT_INSTANTIATE (Neighbourhoods, PCL_EXT_XYZ_POINT_TYPES)
