@@ -9,7 +9,7 @@ target_include_directories(pcl_ext_segmenter_comparison PUBLIC
   ${CMAKE_CURRENT_SOURCE_DIR}/src/compare_segmenters)
 target_compile_options(pcl_ext_segmenter_comparison PRIVATE -Wall -Wextra)
 target_link_libraries(pcl_ext_segmenter_comparison PUBLIC
-  pcl_ext::segmentation
+  pcl_ext::segmentation pcl_ext::classification
   ${PCL_SEGMENTATION_LIBRARIES} ${PCL_SAMPLE_CONSENSUS_LIBRARIES} ${PCL_FEATURES_LIBRARIES}
   ${PCL_SEARCH_LIBRARIES} ${PCL_OCTREE_LIBRARIES})
 

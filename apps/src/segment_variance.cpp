@@ -10,6 +10,7 @@
 
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
+#include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 #include <pcl_ext/io/cloud_io.h>
 #include <pcl_ext/apps/command_line.h>
@@ -121,17 +122,19 @@ main (int argc, char** argv)
   }
   search.done (cloud->size ());
 
+  pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
+  options.applyTo (classifier);
+  classifier.setNumberOfThreads (threads);
   pcl_ext::VarianceRegionGrowing<pcl::PointXYZ> rg;
   rg.setInputCloud (cloud);
   rg.setNeighbourhoods (nb);
-  options.applyTo (rg);
   rg.setMaxDistance (max_distance);
   rg.setMaxDistanceFactor (max_distance_factor);
   rg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
   rg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;
   pcl_ext::apps::StageTimer segment ("Classifying and segmenting");
-  rg.extract (clusters);
+  pcl_ext::segmentByLocalVariance (classifier, rg, clusters);
   if (clusters.empty ())
   {
     std::cerr << "Error: segmentation failed or found no segment of at least " << min_size
@@ -144,7 +147,7 @@ main (int argc, char** argv)
   std::size_t segmented = 0, classes[pcl_ext::kNumPointClasses] = {};
   for (const auto& c : clusters)
     segmented += c.indices.size ();
-  for (const auto& c : rg.getClassification ())
+  for (const auto& c : *rg.getInputClasses ())
     ++classes[std::min<std::size_t> (c.label, pcl_ext::kNumPointClasses - 1)];
   std::cout << clusters.size () << " segments, " << segmented << " points segmented, "
             << cloud->size () - segmented << " not (surface " << classes[1] << ", edge "
@@ -158,7 +161,7 @@ main (int argc, char** argv)
     lsi.setNeighbourhoods (nb);
     lsi.setSegmentLabels (pcl::make_shared<pcl::PointCloud<pcl::Label>> (labels));
     lsi.setPointClasses (
-        pcl::make_shared<pcl::PointCloud<pcl::Label>> (rg.getClassification ()));
+        pcl::make_shared<pcl::PointCloud<pcl::Label>> (*rg.getInputClasses ()));
     lsi.setParallelAngleThreshold (parallel_angle * M_PI / 180.0);
     lsi.setNumberOfThreads (threads);
     pcl::PointCloud<pcl::Label> reintegrated;

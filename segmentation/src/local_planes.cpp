@@ -1,6 +1,9 @@
 /*
- * pcl_ext: non-template local plane kernels.
+ * pcl_ext: non-template local plane kernels, and the segment plane fit precompiled for the
+ * common point types.
  */
+#include <pcl_ext/common/instantiate.h>
+#include <pcl_ext/segmentation/impl/local_planes.hpp>
 #include <pcl_ext/segmentation/local_planes.h>
 
 #include <algorithm>
@@ -35,3 +38,5 @@ pcl_ext::intersectLocalPlanes (const LocalPlane& plane1, const LocalPlane& plane
   direction = a / std::sqrt (det);
   return point.allFinite ();
 }
+
+PCL_EXT_INSTANTIATE (fitSegmentPlane, PCL_EXT_XYZ_POINT_TYPES)

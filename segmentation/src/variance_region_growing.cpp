@@ -102,4 +102,3 @@ pcl_ext::growSurfaceSegments (const std::vector<std::size_t>& offsets,
 }
 
 PCL_EXT_INSTANTIATE (VarianceRegionGrowing, PCL_EXT_XYZ_POINT_TYPES)
-PCL_EXT_INSTANTIATE (fitSegmentPlane, PCL_EXT_XYZ_POINT_TYPES)

@@ -9,7 +9,7 @@
  */
 #include "benchmark_support.h"
 
-#include <pcl_ext/classification/local_variance_classification.h>
+#include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
@@ -151,8 +151,10 @@ main (int argc, char** argv)
       rg.setKSearch (k);
       rg.setMinClusterSize (50);
       rg.setNumberOfThreads (threads);
+      pcl_ext::LocalVarianceClassification<Point> classifier;
+      classifier.setNumberOfThreads (threads);
       std::vector<pcl::PointIndices> clusters;
-      rg.extract (clusters);
+      pcl_ext::segmentByLocalVariance (classifier, rg, clusters);
       segments = clusters.size ();
     });
     report ("VarianceRegionGrowing", m, n, std::to_string (segments) + " segments");

@@ -6,7 +6,7 @@
  */
 #include "benchmark_support.h"
 
-#include <pcl_ext/classification/local_variance_classification.h>
+#include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 #include <pcl_ext/simulation/scenes.h>
@@ -63,7 +63,7 @@ main (int argc, char** argv)
             << "), k = " << k << ", pcl::RegionGrowing k = " << rg_k << ", threads = "
             << threads << "\n";
 
-  // 1. Ours, as a user calls it: one extract() that searches, classifies and grows.
+  // 1. Ours, as a user calls it: one call that searches, classifies and grows.
   double t_ours = 1e30;
   std::size_t ours_segments = 0;
   for (int r = 0; r < repeats; ++r)
@@ -74,8 +74,10 @@ main (int argc, char** argv)
     rg.setKSearch (k);
     rg.setMinClusterSize (50);
     rg.setNumberOfThreads (threads);
+    pcl_ext::LocalVarianceClassification<Point> classifier;
+    classifier.setNumberOfThreads (threads);
     std::vector<pcl::PointIndices> clusters;
-    rg.extract (clusters);
+    pcl_ext::segmentByLocalVariance (classifier, rg, clusters);
     t_ours = std::min (t_ours, seconds (t0, Clock::now ()));
     if (clusters.empty ())
       return 1;
@@ -134,7 +136,7 @@ main (int argc, char** argv)
   pcl_ext::VarianceRegionGrowing<Point> rg;
   rg.setInputCloud (cloud);
   rg.setNeighbourhoods (nb);
-  rg.setClassification (classes);
+  rg.setInputClasses (classes);
   rg.setMinClusterSize (50);
   rg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;

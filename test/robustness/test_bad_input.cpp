@@ -29,6 +29,7 @@
 #include <pcl_ext/segmentation/adaptive_supervoxel_segmentation.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
+#include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 #include <pcl_ext/simulation/scenes.h>
 
@@ -562,8 +563,9 @@ subjects ()
     return segments (in, clusters);
   }});
 
-  // Parameter: the confidence of the boundary test, in (0, 1). A line has no surface point
-  // to grow from: refused with a message.
+  // Classified, then grown (segmentByLocalVariance). Parameter: the confidence of the
+  // classification's boundary test, in (0, 1). A line has no surface point to grow from:
+  // refused with a message.
   s.push_back ({"VarianceRegionGrowing", with (kCloudInputs, {Bad::KLargerThanCloud}),
                 {{Bad::Collinear, Expect::Refused}}, [] (const Input& in) {
     VarianceRegionGrowing<Point> rg;
@@ -572,12 +574,14 @@ subjects ()
       rg.setIndices (in.indices);
     rg.setNumberOfThreads (2);
     rg.setKSearch (in.k);
+    LocalVarianceClassification<Point> classifier;
+    classifier.setNumberOfThreads (2);
     if (in.param)
-      rg.setConfidence (*in.param);
+      classifier.setConfidence (*in.param);
     if (in.nan_param)
-      rg.setConfidence (std::numeric_limits<double>::quiet_NaN ());
+      classifier.setConfidence (std::numeric_limits<double>::quiet_NaN ());
     std::vector<pcl::PointIndices> clusters;
-    rg.extract (clusters);
+    segmentByLocalVariance (classifier, rg, clusters);
     return segments (in, clusters);
   }});
 

@@ -19,6 +19,7 @@
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/features/covariance_features.h>
 #include <pcl_ext/search/nanoflann_kdtree.h>
+#include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 
 #include <pcl/common/point_tests.h>
@@ -83,8 +84,9 @@ TEST (VarianceRegionGrowingMosd, SurfacesNextToPclRegionGrowing)
     rg.setInputCloud (frame.cloud);
     rg.setNeighbourhoods (nb);
     rg.setMinClusterSize (50);
+    pcl_ext::LocalVarianceClassification<Point> classifier;
     std::vector<pcl::PointIndices> ours;
-    rg.extract (ours);
+    pcl_ext::segmentByLocalVariance (classifier, rg, ours);
     ASSERT_FALSE (ours.empty ()) << name;
     pcl::PointCloud<pcl::Label> labels;
     rg.getSegmentLabels (labels);
@@ -95,9 +97,9 @@ TEST (VarianceRegionGrowingMosd, SurfacesNextToPclRegionGrowing)
         ASSERT_TRUE (pcl::isFinite ((*frame.cloud)[i])) << name << ": NaN pixel " << i;
     // The same with the curvature threshold at the median curvature instead of 3 times it:
     // more points go on to the variance-of-curvature test (section 2.2).
-    rg.setCurvatureThresholdFactor (1.0);
+    classifier.setCurvatureThresholdFactor (1.0);
     std::vector<pcl::PointIndices> ours_median;
-    rg.extract (ours_median);
+    pcl_ext::segmentByLocalVariance (classifier, rg, ours_median);
 
     // pcl::RegionGrowing on the finite pixels, with our normals of the same neighbourhoods.
     pcl::PointCloud<pcl_ext::CovarianceFeatures> features;

@@ -15,6 +15,7 @@
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/features/covariance_features.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
+#include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 #include <pcl_ext/simulation/scenes.h>
 
@@ -104,13 +105,14 @@ indoor ()
   EXPECT_TRUE (s->capped->compute ());
 
   // Ours: the paper's k = 50 and 1e-4, the range noise removed, the radius capped.
+  pcl_ext::LocalVarianceClassification<Point> classifier;
+  classifier.setNoiseStandardDeviation (s->scene.noise);
   pcl_ext::VarianceRegionGrowing<Point> rg;
   rg.setInputCloud (s->cloud);
   rg.setNeighbourhoods (s->capped);
-  rg.setNoiseStandardDeviation (s->scene.noise);
   rg.setMinClusterSize (kMinSize);
-  rg.extract (s->ours);
-  s->classes = rg.getClassification ();
+  pcl_ext::segmentByLocalVariance (classifier, rg, s->ours);
+  s->classes = *rg.getInputClasses ();
 
   // Section 4: edge and boundary points re-integrated into the segments they fit.
   pcl::PointCloud<pcl::Label>::Ptr labels (new pcl::PointCloud<pcl::Label>);

@@ -8,6 +8,7 @@
 #include <pcl_ext/segmentation/adaptive_supervoxel_segmentation.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
+#include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 
 namespace pcl_ext
@@ -26,7 +27,9 @@ runVarianceRegionGrowing (const SegmenterInput& in, const SegmenterSettings& s,
   rg.setInputCloud (in.cloud);
   rg.setMinClusterSize (static_cast<pcl::uindex_t> (s.min_size));
   rg.setNumberOfThreads (s.threads);
-  rg.extract (clusters);
+  LocalVarianceClassification<pcl::PointXYZ> classifier;
+  classifier.setNumberOfThreads (s.threads);
+  segmentByLocalVariance (classifier, rg, clusters);
   return true;
 }
 
@@ -48,13 +51,15 @@ runVarianceWithIntersection (const SegmenterInput& in, const SegmenterSettings& 
   rg.setNeighbourhoods (nb);
   rg.setMinClusterSize (static_cast<pcl::uindex_t> (s.min_size));
   rg.setNumberOfThreads (s.threads);
+  LocalVarianceClassification<pcl::PointXYZ> classifier;
+  classifier.setNumberOfThreads (s.threads);
   std::vector<pcl::PointIndices> segments;
-  rg.extract (segments);
+  segmentByLocalVariance (classifier, rg, segments);
   if (segments.empty ())
     return true;
   auto labels = pcl::make_shared<pcl::PointCloud<pcl::Label>> ();
   rg.getSegmentLabels (*labels);
-  auto classes = pcl::make_shared<pcl::PointCloud<pcl::Label>> (rg.getClassification ());
+  const auto classes = rg.getInputClasses ();
   LocalSurfaceIntersection<pcl::PointXYZ> lsi;
   lsi.setInputCloud (in.cloud);
   lsi.setNeighbourhoods (nb);

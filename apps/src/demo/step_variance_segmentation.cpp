@@ -8,6 +8,7 @@
 
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
+#include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 #include <pcl_ext/io/cloud_io.h>
 #include <pcl_ext/apps/command_line.h>
@@ -47,8 +48,10 @@ segment (DemoContext& context, const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
   rg.setNeighbourhoods (nb);
   rg.setMinClusterSize (50);
   rg.setNumberOfThreads (context.threads);
+  LocalVarianceClassification<pcl::PointXYZ> classifier;
+  classifier.setNumberOfThreads (context.threads);
   std::vector<pcl::PointIndices> clusters;
-  rg.extract (clusters);
+  segmentByLocalVariance (classifier, rg, clusters);
   const double ms = timer.done (cloud->size ());
   if (clusters.empty ())
     return false;
@@ -71,7 +74,7 @@ segment (DemoContext& context, const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
   lsi.setNeighbourhoods (nb);
   lsi.setSegmentLabels (pcl::make_shared<pcl::PointCloud<pcl::Label>> (labels));
   lsi.setPointClasses (
-      pcl::make_shared<pcl::PointCloud<pcl::Label>> (rg.getClassification ()));
+      pcl::make_shared<pcl::PointCloud<pcl::Label>> (*rg.getInputClasses ()));
   lsi.setNumberOfThreads (context.threads);
   pcl::PointCloud<pcl::Label> reintegrated;
   apps::StageTimer lsi_timer ("Intersecting the segments of '" + name + "'");

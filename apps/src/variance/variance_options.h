@@ -64,7 +64,7 @@ struct VarianceClassificationOptions
     return true;
   }
 
-  /** \brief Hands the options to a LocalVarianceClassification or a VarianceRegionGrowing. */
+  /** \brief Hands the options to a LocalVarianceClassification. */
   template <typename Classifier>
   void
   applyTo (Classifier& classifier) const

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pcl_ext/common/parallel.h>
-#include <pcl_ext/features/neighbourhood_source.h>
+#include <pcl_ext/search/neighbourhood_source.h>
 
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>

@@ -1,11 +1,13 @@
 /*
- * pcl_ext: local plane fits and their intersection (Belton & Lichti 2006, section 4).
+ * pcl_ext: plane fits to local neighbourhoods and to whole segments, and the intersection of
+ * two local planes (Belton & Lichti 2006, sections 3 and 4).
  */
 #pragma once
 
 #include <pcl_ext/common/covariance.h>
 
 #include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
 #include <pcl/types.h>
 
 #include <Eigen/Core>
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace pcl_ext
 {
@@ -86,6 +89,28 @@ bool
 intersectLocalPlanes (const LocalPlane& plane1, const LocalPlane& plane2,
                       const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                       Eigen::Vector3d& point, Eigen::Vector3d& direction);
+/** \brief The least-squares plane of one segment: n . x + d = 0 (Belton & Lichti eq. 13). */
+struct SegmentPlane
+{
+  /** Unit normal, turned towards the cloud's sensor origin; NaN when \c valid is false. */
+  Eigen::Vector3d normal = Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN ());
+  double d = std::numeric_limits<double>::quiet_NaN ();  ///< offset: d = -n . centroid
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();    ///< mean of the segment's points
+  double rms_residual = std::numeric_limits<double>::quiet_NaN ();  ///< RMS point-plane distance
+  double max_residual = std::numeric_limits<double>::quiet_NaN ();  ///< largest distance
+  std::size_t size = 0;  ///< points fitted
+  /** False when the segment has fewer than 3 points or they are collinear (no plane). */
+  bool valid = false;
+};
+
+/** \brief Fit a plane to \a indices of \a cloud in double precision around the points'
+  * centroid (so georeferenced coordinates lose nothing), with its residuals.
+  * \param[in] viewpoint the normal is turned to face it (n . (viewpoint - centroid) >= 0)
+  * \return the plane; \c valid is false for fewer than 3 finite points or collinear points */
+template <typename PointT>
+SegmentPlane
+fitSegmentPlane (const pcl::PointCloud<PointT>& cloud, const pcl::Indices& indices,
+                 const Eigen::Vector3d& viewpoint);
 }  // namespace pcl_ext
 
 template <typename PointT, typename IndexIterator>
@@ -121,3 +146,7 @@ pcl_ext::fitLocalPlane (const pcl::PointCloud<PointT>& cloud, IndexIterator begi
   plane.rms = std::sqrt (l[0]);
   return true;
 }
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl_ext/segmentation/impl/local_planes.hpp>
+#endif

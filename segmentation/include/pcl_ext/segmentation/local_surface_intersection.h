@@ -4,7 +4,7 @@
  */
 #pragma once
 
-#include <pcl_ext/features/neighbourhood_source.h>
+#include <pcl_ext/search/neighbourhood_source.h>
 #include <pcl_ext/point_types.h>
 #include <pcl_ext/search/nanoflann_kdtree.h>
 #include <pcl_ext/segmentation/local_planes.h>

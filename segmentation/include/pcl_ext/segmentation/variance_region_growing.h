@@ -4,8 +4,9 @@
  */
 #pragma once
 
-#include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/point_types.h>
+#include <pcl_ext/search/neighbourhood_source.h>
+#include <pcl_ext/segmentation/local_planes.h>
 
 #include <pcl/PointIndices.h>
 #include <pcl/pcl_base.h>
@@ -20,29 +21,6 @@
 
 namespace pcl_ext
 {
-/** \brief The least-squares plane of one segment: n . x + d = 0 (Belton & Lichti eq. 13). */
-struct SegmentPlane
-{
-  /** Unit normal, turned towards the cloud's sensor origin; NaN when \c valid is false. */
-  Eigen::Vector3d normal = Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN ());
-  double d = std::numeric_limits<double>::quiet_NaN ();  ///< offset: d = -n . centroid
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();    ///< mean of the segment's points
-  double rms_residual = std::numeric_limits<double>::quiet_NaN ();  ///< RMS point-plane distance
-  double max_residual = std::numeric_limits<double>::quiet_NaN ();  ///< largest distance
-  std::size_t size = 0;  ///< points fitted
-  /** False when the segment has fewer than 3 points or they are collinear (no plane). */
-  bool valid = false;
-};
-
-/** \brief Fit a plane to \a indices of \a cloud in double precision around the points'
-  * centroid (so georeferenced coordinates lose nothing), with its residuals.
-  * \param[in] viewpoint the normal is turned to face it (n . (viewpoint - centroid) >= 0)
-  * \return the plane; \c valid is false for fewer than 3 finite points or collinear points */
-template <typename PointT>
-SegmentPlane
-fitSegmentPlane (const pcl::PointCloud<PointT>& cloud, const pcl::Indices& indices,
-                 const Eigen::Vector3d& viewpoint);
-
 /** \brief The walks and merges of Belton & Lichti's region growing (section 3) over
   * neighbourhoods stored as compressed rows (pcl_ext::Neighbourhoods).
   *
@@ -78,9 +56,9 @@ growSurfaceSegments (const std::vector<std::size_t>& offsets, const pcl::Indices
   * "Classification and segmentation of terrestrial laser scanner point clouds using local
   * variance information", ISPRS Commission V Symposium 2006, section 3 and figure 4.
   *
-  * The points are first labelled surface, edge or boundary (section 2, by
-  * pcl_ext::LocalVarianceClassification, or labels given with setClassification()). Then every
-  * surface point in turn is a seed: its neighbours are visited nearest first and
+  * The points come labelled surface, edge or boundary (section 2: the output of
+  * pcl_ext::LocalVarianceClassification::classify, given with setInputClasses, as
+  * pcl::RegionGrowing takes its normals). Then every surface point in turn is a seed: its neighbours are visited nearest first and
   * - an unlabelled surface neighbour joins the seed's segment;
   * - a surface neighbour already in another segment merges the two segments;
   * - a non-surface neighbour (edge, boundary or unknown) stops the walk through the list, as
@@ -111,17 +89,28 @@ growSurfaceSegments (const std::vector<std::size_t>& offsets, const pcl::Indices
   *   indices in increasing order. Optionally (setFitPlanes) each segment gets a least-squares
   *   plane with its residuals (section 3: "a surface may be fitted to groups").
   *
-  * Bad input (no cloud, an empty cloud or empty indices, no surface point, parameters out of
-  * range, classification labels of the wrong size) gives a PCL_ERROR and no segment.
+  * Bad input (no cloud, an empty cloud or empty indices, no classes or classes of the wrong
+  * size, no surface point, parameters out of range) gives a PCL_ERROR and no segment.
   *
   * \code
+  * auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>> ();
+  * nb->setInputCloud (cloud);
+  * nb->setKSearch (50);
+  * nb->compute ();
+  * pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
+  * classifier.setInputCloud (cloud);
+  * classifier.setNeighbourhoods (nb);
+  * auto classes = pcl::make_shared<pcl::PointCloud<pcl::Label>> ();
+  * classifier.classify (*classes);
   * pcl_ext::VarianceRegionGrowing<pcl::PointXYZ> rg;
   * rg.setInputCloud (cloud);
-  * rg.setKSearch (50);
+  * rg.setNeighbourhoods (nb);
+  * rg.setInputClasses (classes);
   * rg.setMinClusterSize (50);
   * std::vector<pcl::PointIndices> segments;
   * rg.extract (segments);
   * \endcode
+  * pcl_ext::segmentByLocalVariance (classification module) does the same in one call.
   */
 template <typename PointT>
 class VarianceRegionGrowing : public pcl::PCLBase<PointT>
@@ -140,8 +129,8 @@ public:
 
   VarianceRegionGrowing () = default;
 
-  /** \brief Number of neighbours k, the point included, for the classification and the walk.
-    * Default 50 (the paper's); valid: 3 .. number of finite points. Clears the radius. */
+  /** \brief Number of neighbours k, the point included, for the walk. Default 50 (the
+    * paper's); valid: 3 .. number of finite points. Clears the radius. */
   void
   setKSearch (int k) { k_ = k; radius_ = 0.0; }
 
@@ -156,17 +145,8 @@ public:
   double
   getRadiusSearch () const { return radius_; }
 
-  /** \brief Smallest crease an edge must show, as the angle between normals, in radians, for
-    * the classification (see LocalVarianceClassification::setCreaseAngle). Default 0: off, the
-    * paper's workflow; valid: 0 .. pi/2. */
-  void
-  setCreaseAngle (double radians) { crease_angle_ = radians; }
-
-  double
-  getCreaseAngle () const { return crease_angle_; }
-
   /** \brief With k: keep only the neighbours within this distance, in the cloud's units (the k
-    * nearest within it), for the classification and the walk. Default 0: no cap, the paper's
+    * nearest within it), for the walk. Default 0: no cap, the paper's
     * k nearest; valid: finite, >= 0; ignored with a radius or shared neighbourhoods. See
     * LocalVarianceClassification::setMaxRadius: where k neighbours of a sparse surface reach
     * a second one (the other face of a thin wall) its points are edges, and no segment grows
@@ -189,80 +169,20 @@ public:
   void
   setNeighbourhoods (const NeighbourhoodsConstPtr& neighbourhoods)
   {
-    neighbourhoods_ = neighbourhoods;
+    source_.setShared (neighbourhoods);
   }
 
   NeighbourhoodsConstPtr
-  getNeighbourhoods () const { return neighbourhoods_; }
+  getNeighbourhoods () const { return source_.getShared (); }
 
   /** \brief Point classes to grow on, one pcl::Label per index with a pcl_ext::PointClass
-    * value (the output of pcl_ext::LocalVarianceClassification::classify for the same cloud
-    * and indices). Default null: extract() classifies with the parameters below. */
+    * value: the output of pcl_ext::LocalVarianceClassification::classify for the same cloud
+    * and indices. Required. */
   void
-  setClassification (const LabelCloudConstPtr& classes) { classes_ = classes; }
+  setInputClasses (const LabelCloudConstPtr& classes) { classes_ = classes; }
 
-  /** \brief The classes the last extract() grew on (given or computed), one per index. */
-  const LabelCloud&
-  getClassification () const { return used_classes_; }
-
-  /** \brief Curvature threshold of the classification (section 2.2). Default 0: factor times
-    * the median curvature; valid: >= 0. See LocalVarianceClassification. */
-  void
-  setCurvatureThreshold (double threshold) { curvature_threshold_ = threshold; }
-
-  double
-  getCurvatureThreshold () const { return curvature_threshold_; }
-
-  /** \brief Multiple of the median curvature used when the curvature threshold is 0.
-    * Default 3; valid: > 0. */
-  void
-  setCurvatureThresholdFactor (double factor) { curvature_factor_ = factor; }
-
-  double
-  getCurvatureThresholdFactor () const { return curvature_factor_; }
-
-  /** \brief Variance-of-curvature tolerance of the classification (eq. 5). Default 1e-4 (the
-    * paper's); valid: >= 0. */
-  void
-  setVarianceThreshold (double threshold) { variance_threshold_ = threshold; }
-
-  double
-  getVarianceThreshold () const { return variance_threshold_; }
-
-  /** \brief Confidence of the chi-squared boundary test (eq. 6). Default 0.95; valid:
-    * 0 < confidence < 1. */
-  void
-  setConfidence (double confidence) { confidence_ = confidence; }
-
-  double
-  getConfidence () const { return confidence_; }
-
-  /** \brief Range noise standard deviation sigma of the scanner, in the cloud's units, for
-    * the classification. Default 0: the paper's eq. 4-6 exactly; valid: finite, >= 0. See
-    * LocalVarianceClassification::setNoiseStandardDeviation: it removes the noise's share of
-    * the smallest eigenvalue, which otherwise makes false edges, and so false cut lines,
-    * where k neighbours span only a few centimetres near a scanner. */
-  void
-  setNoiseStandardDeviation (double sigma) { noise_sigma_ = sigma; }
-
-  double
-  getNoiseStandardDeviation () const { return noise_sigma_; }
-
-  /** \brief Give the classification's boundary class the reach of its edge class (see
-    * LocalVarianceClassification::setBoundaryBand). Default false (the paper). */
-  void
-  setBoundaryBand (bool band) { boundary_band_ = band; }
-
-  bool
-  getBoundaryBand () const { return boundary_band_; }
-
-  /** \brief The share of each neighbourhood the band reaches through (see
-    * LocalVarianceClassification::setBoundaryBandFraction). Default 1; valid: (0, 1]. */
-  void
-  setBoundaryBandFraction (double fraction) { boundary_band_fraction_ = fraction; }
-
-  double
-  getBoundaryBandFraction () const { return boundary_band_fraction_; }
+  LabelCloudConstPtr
+  getInputClasses () const { return classes_; }
 
   /** \brief Longest distance from a seed to a neighbour it may link to (the paper's "limit"
     * on the distance from the seed point). Default 0: no limit beyond the neighbourhood;
@@ -312,7 +232,7 @@ public:
   bool
   getFitPlanes () const { return fit_planes_; }
 
-  /** \brief OpenMP threads for the search, the classification, the walks and the plane fits.
+  /** \brief OpenMP threads for the search, the walks and the plane fits.
     * Default 0: all cores. Results do not depend on it. */
   void
   setNumberOfThreads (unsigned int nr_threads = 0) { threads_ = nr_threads; }
@@ -353,29 +273,16 @@ protected:
   bool
   checkParameters () const;
 
-  /** \brief The neighbourhoods to grow on: the shared ones when computed for this cloud and
-    * these indices, else a search of our own. Null after a PCL_ERROR. */
-  NeighbourhoodsConstPtr
-  prepareNeighbourhoods () const;
-
-  /** \brief Fill used_classes_ (given or computed); false after a PCL_ERROR. */
+  /** \brief Whether the input classes are one per index; PCL_ERROR when not. */
   bool
-  prepareClasses (const NeighbourhoodsConstPtr& nb);
+  checkClasses () const;
 
   int k_ = 50;
   double radius_ = 0.0;
   double max_radius_ = 0.0;
   SearchPtr search_;
-  NeighbourhoodsConstPtr neighbourhoods_;
+  NeighbourhoodSource<PointT> source_;
   LabelCloudConstPtr classes_;
-  double curvature_threshold_ = 0.0;
-  double curvature_factor_ = 3.0;
-  double variance_threshold_ = 1e-4;
-  double confidence_ = 0.95;
-  double noise_sigma_ = 0.0;
-  bool boundary_band_ = false;
-  double boundary_band_fraction_ = 1.0;
-  double crease_angle_ = 0.0;
   double max_distance_ = 0.0;
   double max_distance_factor_ = 3.0;
   pcl::uindex_t min_size_ = 1;
@@ -384,7 +291,6 @@ protected:
   unsigned int threads_ = 0;
 
   // Results of the last extract().
-  LabelCloud used_classes_;
   std::vector<pcl::PointIndices> clusters_;
   std::vector<SegmentPlane> planes_;
 };

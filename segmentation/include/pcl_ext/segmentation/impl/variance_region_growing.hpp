@@ -3,13 +3,11 @@
  */
 #pragma once
 
-// The classifier's template code is compiled here: the classification module links the
-// segmentation module (its CRF runs on super-voxels), so the reverse link is not possible.
-#include <pcl_ext/classification/impl/local_variance_classification.hpp>
 #include <pcl_ext/common/covariance.h>
+#include <pcl_ext/features/local_variance.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/common/segment_colours.h>
-#include <pcl_ext/features/local_variance.h>
+#include <pcl_ext/segmentation/impl/local_planes.hpp>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 
 #include <pcl/common/point_tests.h>
@@ -18,39 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-
-template <typename PointT> pcl_ext::SegmentPlane
-pcl_ext::fitSegmentPlane (const pcl::PointCloud<PointT>& cloud, const pcl::Indices& indices,
-                          const Eigen::Vector3d& viewpoint)
-{
-  SegmentPlane plane;
-  Eigen::Matrix3d covariance;
-  plane.size = computeLocalCovariance (cloud, indices, covariance, plane.centroid);
-  EigenDecomposition eigen;
-  if (plane.size < kMinNeighbours || !computeEigenDecomposition (covariance, eigen) ||
-      !hasTangentPlane (eigen.values, plane.size))
-    return plane;
-  Eigen::Vector3d n = eigen.normal ();
-  if (n.dot (viewpoint - plane.centroid) < 0.0)
-    n = -n;
-  double sum = 0.0, largest = 0.0;
-  for (const auto i : indices)
-  {
-    const PointT& p = cloud[i];
-    if (!pcl::isXYZFinite (p))
-      continue;
-    // Offsets from the centroid in double: exact enough at any coordinate magnitude.
-    const double r = std::abs (n.dot (Eigen::Vector3d (p.x, p.y, p.z) - plane.centroid));
-    sum += r * r;
-    largest = std::max (largest, r);
-  }
-  plane.normal = n;
-  plane.d = -n.dot (plane.centroid);
-  plane.rms_residual = std::sqrt (sum / static_cast<double> (plane.size));
-  plane.max_residual = largest;
-  plane.valid = true;
-  return plane;
-}
 
 template <typename PointT> bool
 pcl_ext::VarianceRegionGrowing<PointT>::checkParameters () const
@@ -92,84 +57,23 @@ pcl_ext::VarianceRegionGrowing<PointT>::checkParameters () const
                radius_, kMinNeighbours);
     return false;
   }
-  // The classifier's own parameters are checked by it, with its messages.
   return true;
 }
 
-template <typename PointT> typename pcl_ext::VarianceRegionGrowing<PointT>::NeighbourhoodsConstPtr
-pcl_ext::VarianceRegionGrowing<PointT>::prepareNeighbourhoods () const
-{
-  const pcl::IndicesConstPtr indices = fake_indices_ ? pcl::IndicesConstPtr () : indices_;
-  if (neighbourhoods_)
-  {
-    if (neighbourhoods_->isComputedFor (input_, indices))
-      return neighbourhoods_;
-    PCL_WARN ("[pcl_ext::VarianceRegionGrowing::extract] The shared neighbourhoods were not "
-              "computed for this cloud and these indices; searching again.\n");
-  }
-  if ((k_ != 0) == (radius_ != 0.0))
-  {
-    PCL_ERROR ("[pcl_ext::VarianceRegionGrowing::extract] Set exactly one of k (setKSearch) "
-               "and the radius (setRadiusSearch), or give shared neighbourhoods.\n");
-    return NeighbourhoodsConstPtr ();
-  }
-  typename Neighbourhoods<PointT>::Ptr own (new Neighbourhoods<PointT>);
-  own->setInputCloud (input_);
-  if (indices)
-    own->setIndices (indices);
-  if (k_ != 0)
-  {
-    own->setKSearch (k_);
-    own->setMaxRadius (max_radius_);
-  }
-  else
-    own->setRadiusSearch (radius_);
-  if (search_)
-    own->setSearchMethod (search_);
-  own->setNumberOfThreads (threads_);
-  if (!own->compute ())
-  {
-    PCL_ERROR ("[pcl_ext::VarianceRegionGrowing::extract] The neighbourhood search failed.\n");
-    return NeighbourhoodsConstPtr ();
-  }
-  return own;
-}
-
 template <typename PointT> bool
-pcl_ext::VarianceRegionGrowing<PointT>::prepareClasses (const NeighbourhoodsConstPtr& nb)
+pcl_ext::VarianceRegionGrowing<PointT>::checkClasses () const
 {
-  used_classes_.clear ();
-  if (classes_)
+  if (!classes_)
   {
-    if (classes_->size () != indices_->size ())
-    {
-      PCL_ERROR ("[pcl_ext::VarianceRegionGrowing::extract] %zu class labels for %zu points; "
-                 "give one per index (LocalVarianceClassification::classify).\n",
-                 static_cast<std::size_t> (classes_->size ()), indices_->size ());
-      return false;
-    }
-    used_classes_ = *classes_;
-    return true;
+    PCL_ERROR ("[pcl_ext::VarianceRegionGrowing::extract] No point classes: give the output of "
+               "LocalVarianceClassification::classify with setInputClasses.\n");
+    return false;
   }
-  LocalVarianceClassification<PointT> classifier;
-  classifier.setInputCloud (input_);
-  if (!fake_indices_)
-    classifier.setIndices (indices_);
-  classifier.setNeighbourhoods (nb);
-  classifier.setCurvatureThreshold (curvature_threshold_);
-  classifier.setCurvatureThresholdFactor (curvature_factor_);
-  classifier.setVarianceThreshold (variance_threshold_);
-  classifier.setConfidence (confidence_);
-  classifier.setNoiseStandardDeviation (noise_sigma_);
-  classifier.setBoundaryBand (boundary_band_);
-  classifier.setBoundaryBandFraction (boundary_band_fraction_);
-  classifier.setCreaseAngle (crease_angle_);
-  classifier.setNumberOfThreads (threads_);
-  classifier.classify (used_classes_);
-  if (used_classes_.size () != indices_->size ())
+  if (classes_->size () != indices_->size ())
   {
-    PCL_ERROR ("[pcl_ext::VarianceRegionGrowing::extract] The classification failed.\n");
-    used_classes_.clear ();
+    PCL_ERROR ("[pcl_ext::VarianceRegionGrowing::extract] %zu class labels for %zu points; "
+               "give one per index (LocalVarianceClassification::classify).\n",
+               static_cast<std::size_t> (classes_->size ()), indices_->size ());
     return false;
   }
   return true;
@@ -182,7 +86,6 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>&
   clusters.clear ();
   clusters_.clear ();
   planes_.clear ();
-  used_classes_.clear ();
   if (!checkParameters ())
     return;
   if (!initCompute ())
@@ -197,8 +100,16 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>&
     deinitCompute ();
     return;
   }
-  const NeighbourhoodsConstPtr nb = prepareNeighbourhoods ();
-  if (!nb || !prepareClasses (nb))
+  if (!checkClasses ())
+  {
+    deinitCompute ();
+    return;
+  }
+  const Neighbourhoods<PointT>* const nb =
+      source_.prepare ("VarianceRegionGrowing::extract", input_,
+                       fake_indices_ ? pcl::IndicesConstPtr () : indices_, k_, radius_, search_,
+                       threads_, max_radius_);
+  if (!nb)
   {
     deinitCompute ();
     return;
@@ -209,7 +120,7 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>&
   std::size_t surface = 0;
   for (std::size_t r = 0; r < indices_->size (); ++r)
   {
-    const std::uint32_t c = used_classes_[r].label;
+    const std::uint32_t c = (*classes_)[r].label;
     class_of_point[(*indices_)[r]] =
         static_cast<std::int8_t> (c < kNumPointClasses ? c : 0);
     surface += c == static_cast<std::uint32_t> (PointClass::Surface);
@@ -218,6 +129,7 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>&
   {
     PCL_ERROR ("%s No surface point among the %zu points: nothing to grow from (are the "
                "classification thresholds right for this cloud?).\n", name, indices_->size ());
+    source_.release ();
     deinitCompute ();
     return;
   }
@@ -286,6 +198,7 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>&
     for (std::ptrdiff_t c = 0; c < n; ++c)
       planes_[c] = fitSegmentPlane (*input_, clusters_[c].indices, viewpoint);
   }
+  source_.release ();
   clusters = clusters_;
   deinitCompute ();
 }
@@ -319,7 +232,3 @@ pcl_ext::VarianceRegionGrowing<PointT>::getColoredCloud () const
 
 #define PCL_EXT_INSTANTIATE_VarianceRegionGrowing(T) \
   template class pcl_ext::VarianceRegionGrowing<T>;
-#define PCL_EXT_INSTANTIATE_fitSegmentPlane(T)                                                \
-  template pcl_ext::SegmentPlane pcl_ext::fitSegmentPlane<T> (const pcl::PointCloud<T>&,      \
-                                                              const pcl::Indices&,            \
-                                                              const Eigen::Vector3d&);
