@@ -61,10 +61,11 @@ namespace pcl_ext
   *   the small-sample AIC (setCorrectedAic), and a turn ending a curve only when it is also
   *   significant, more than z standard errors of the fits (setTurnSignificance). Where the
   *   range noise is close to the point spacing the paper's test marks many points as curve
-  *   ends and cuts the surfaces apart; the two options together keep them whole. The curve
-  *   ends (breakpoints) of all stacks are removed from the graph before the components are
-  *   taken, and then rejoin the segment of most of their neighbours: a crease seen by one
-  *   stack so also separates the profiles of the stacks that run along it.
+  *   ends and cuts the surfaces apart; the two options together, with profiles about 2.5
+  *   spacings wide (setProfileWidthFactor), keep them whole. The curve ends (breakpoints) of
+  *   all stacks are removed from the graph before the components are taken, and then rejoin
+  *   the segment of most of their neighbours: a crease seen by one stack so also separates the
+  *   profiles of the stacks that run along it.
   * - Two more options, off by default (the paper), for what one global spacing and one frame
   *   per point miss: thresholds that follow the local point density (setLocalThreshold: a
   *   TLS scan is sparser far from the scanner) and curve fits along each side's own axis
