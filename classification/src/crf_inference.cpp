@@ -158,8 +158,7 @@ fitEdgeScale (const Graph& graph, const MultiscaleCrfModel::Weights& w,
   double best_scale = 1.0, best_loss = std::numeric_limits<double>::infinity ();
   int worse = 0;
   // Each scale's BP starts from the messages of the scale before: its fixed point is near, and
-  // the search then costs a few sweeps per scale instead of a full BP (the edges' share of the
-  // training time was mostly this search).
+  // the search then costs a few sweeps per scale instead of a full BP.
   Eigen::MatrixXd messages;
   for (int k = 1; k * kStep <= kMax + 1e-9; ++k)
   {
@@ -183,7 +182,7 @@ fitEdgeScale (const Graph& graph, const MultiscaleCrfModel::Weights& w,
       worse = 0;
     }
     else if (++worse == 2)  // rising twice in a row: past the minimum (larger scales cost
-      break;                // the most sweeps and have only ever been worse)
+      break;                // the most sweeps)
   }
   return best_scale;
 }

@@ -347,11 +347,10 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
   {
     // Stage 2: the edge weights, with the node weights held at stage 1. Each node hears from
     // its neighbours the message BP's first sweep sends, computed from their stage-1 class
-    // probabilities (stacked pseudo-likelihood). Refitting the node weights too, or
-    // conditioning on the neighbours' labels instead of their probabilities, both let the
-    // edges explain the labels alone: the node potentials lost their meaning, rare classes got
-    // large edge potentials that a small belief already triggers in BP, and inference
-    // collapsed onto those classes.
+    // probabilities (stacked pseudo-likelihood). The node weights stay fixed and the
+    // neighbours enter through their probabilities, not their labels: otherwise the edges
+    // explain the labels alone, rare classes get large edge potentials that a small belief
+    // already triggers in BP, and inference collapses onto those classes.
     const Eigen::Index D1 = Dn + 1;
     const Eigen::Map<const Eigen::MatrixXd> ws (theta.data (), static_cast<Eigen::Index> (C), D1);
     const Eigen::Map<const Eigen::MatrixXd> wx (theta.data () + C * D1, static_cast<Eigen::Index> (C), D1);

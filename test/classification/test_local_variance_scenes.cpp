@@ -10,7 +10,8 @@
  * border of the scanned part (a shadow, a silhouette, the blind cone or the maximum incidence,
  * marked by the scene where the scans together leave a gap). The scenes'
  * default band (one scan spacing) is narrower than any k = 50 neighbourhood; the F1 for it is
- * printed too.
+ * printed too. The measured F1 behind the bounds below, and the variants tried and not kept,
+ * are in docs/belton_lichti.md.
  */
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/evaluation/classification_metrics.h>
@@ -203,14 +204,10 @@ TEST_P (LocalVarianceScenes, SurfaceF1MeetsTheGoal)
 }
 
 // Removing the scanner's range noise (setNoiseStandardDeviation) raises the edge F1 on both
-// scenes, and the boundary F1 against the scene's own band (the points next to a border).
-// Measured (k = 50, the paper's 1e-4 and 0.95, 300,000 points), paper -> noise removed:
-// edge F1 0.621 -> 0.883 (indoor; precision 0.52 -> 0.87, recall 0.77 -> 0.90) and 0.701 ->
-// 0.713 (pipes); boundary F1 in the scene's band 0.507 -> 0.564 and 0.542 -> 0.602 (in the
-// neighbourhood band 0.638 -> 0.570 and 0.567 -> 0.489: the noise term of eq. 6 removes the
-// false boundaries near the scanners, precision 0.79 -> 0.91 on indoor, and shortens the reach
-// of eq. 6 further below the neighbourhood radius); surface F1 0.940 -> 0.970 and 0.978 ->
-// 0.975.
+// scenes, and the boundary F1 against the scene's own band (the points next to a border). In
+// the neighbourhood band the boundary F1 falls: the noise term of eq. 6 removes the false
+// boundaries near the scanners, and shortens the reach of eq. 6 further below the
+// neighbourhood radius.
 TEST_P (LocalVarianceScenes, NoiseModelRaisesEdgeF1)
 {
   const Scene& s = scene (GetParam ());
@@ -228,9 +225,7 @@ TEST_P (LocalVarianceScenes, NoiseModelRaisesEdgeF1)
 }
 
 // The boundary band (setBoundaryBand) gives boundary labels the reach of the truth (a border
-// within the neighbourhood radius). Measured (noise removed, confidence 0.95): boundary F1
-// 0.570 -> 0.820 (indoor) and 0.489 -> 0.712 (pipes), against 0.638 and 0.567 with the
-// paper's parameters; surface F1 0.980 and 0.979.
+// within the neighbourhood radius).
 TEST_P (LocalVarianceScenes, BoundaryBandRaisesBoundaryF1)
 {
   const Scene& s = scene (GetParam ());
@@ -244,10 +239,7 @@ TEST_P (LocalVarianceScenes, BoundaryBandRaisesBoundaryF1)
 }
 
 // The crease angle (setCreaseAngle) re-checks the points eq. 5 calls edges: an edge must bend
-// the normals across its neighbourhood. Measured (k = 50, 1e-4, noise removed, band; 300,000
-// points), edge F1 without -> 45 degrees: 0.883 -> 0.911 (indoor; precision 0.87 -> 0.95) and
-// 0.713 -> 0.756 (pipes; precision 0.56 -> 0.62), boundary F1 0.820 -> 0.816 and 0.712 ->
-// 0.745, surface 0.980 -> 0.983 and 0.979.
+// the normals across its neighbourhood.
 TEST_P (LocalVarianceScenes, CreaseAngleRaisesEdgeF1)
 {
   const Scene& s = scene (GetParam ());
@@ -262,26 +254,12 @@ TEST_P (LocalVarianceScenes, CreaseAngleRaisesEdgeF1)
   EXPECT_GE (f1 (crease, PointClass::Surface), 0.90);
 }
 
-// Edge goal met with a 70 degree crease angle (k = 50, 1e-4, range noise removed, boundary
-// band; 300,000 points): edge F1 0.824 (indoor) and 0.804 (pipes). The angle was chosen on
-// these two scenes: 45 degrees gives 0.911 / 0.756, 60 degrees 0.886 / 0.790, 70 degrees
-// 0.824 / 0.804 (indoor recall falls to 0.72: near a crease the normals of k = 50
-// neighbourhoods are blends of the two faces', so a right angle shows as less). Without the
-// crease angle 0.883 / 0.713, with the paper's eq. 4 0.621 / 0.701. On scenes the angle was
-// not chosen on (scene seeds 11 and 23: other layouts, noise and porosity) 70 degrees gives
-// 0.825 / 0.807 and 0.824 / 0.804.
-// Without the noise model, 87% (indoor) and 97% (pipes) of the false edges lay farther than 5
-// neighbourhood radii from any true crease or border, on indoor 99.7% of them within 2 m of a
-// scanner, where 50 neighbours span a few centimetres and the 5 mm range noise alone made the
-// curvature vary by more than the tolerance. With it, on pipes all 6,915 false edges (noise
-// removed, band; measured before the scene marked silhouettes) are pipe points: 4,861 truth boundary (next to a shadow on the pipe or a pipe
-// end) and 2,053 truth surface; 94% at 4-12 m from their scanner, 88% with a neighbourhood
-// radius of 10-40 cm against pipe radii of 5-25 cm: the one-sided or pipe-wide neighbourhood
-// changes kappa though the surface is smooth, which the crease angle catches. Other things
-// tried, without the crease angle (indoor / pipes): a tolerance of 2e-4 or 4e-4, 0.894 / 0.748
-// and 0.897 / 0.750; the k = 50 neighbours capped at 0.15 m or 0.1 m (setMaxRadius; the truth
-// follows the capped radius), 0.902 / 0.653 and 0.829 / 0.670; an edge point that also fails
-// eq. 6 at confidence 0.99 or 0.999 called boundary, 0.812 / 0.724 and 0.842 / 0.734.
+// Edge goal, met with a 70 degree crease angle (k = 50, 1e-4, range noise removed, boundary
+// band). The angle was chosen on these two scenes and checked on other layouts. Near a crease
+// the normals of k = 50 neighbourhoods are blends of the two faces', so a right angle shows as
+// less and large angles lose crease points; on pipes the false edges without the crease angle
+// are pipe points whose one-sided or pipe-wide neighbourhood changes kappa though the surface
+// is smooth, which the crease angle catches.
 TEST_P (LocalVarianceScenes, EdgeF1MeetsTheGoal)
 {
   const Scene& s = scene (GetParam ());
@@ -291,7 +269,7 @@ TEST_P (LocalVarianceScenes, EdgeF1MeetsTheGoal)
   EXPECT_GE (f1 (m, PointClass::Edge), 0.80);
 }
 
-// Without the crease angle the goal holds on indoor, with the range noise removed (0.883).
+// Without the crease angle the goal holds on indoor, with the range noise removed.
 TEST (LocalVarianceScenes, IndoorEdgeF1MeetsTheGoalWithTheNoiseRemoved)
 {
   const Scene& s = scene ("indoor");
@@ -301,39 +279,11 @@ TEST (LocalVarianceScenes, IndoorEdgeF1MeetsTheGoalWithTheNoiseRemoved)
 }
 
 // Boundary goal, met with the options of the edge goal (range noise removed, a 70 degree crease
-// angle) and the band through the nearest 60% of each neighbourhood (k = 50, confidence 0.95;
-// 300,000 points): boundary F1 0.845 (indoor) and 0.804 (pipes), precision 0.80 and 0.76,
-// recall 0.89 and 0.86 (edge 0.824 and 0.804, surface 0.983 and 0.983). With the band through
-// the whole neighbourhood 0.801 and 0.784, without the crease angle 0.820 and 0.712; with the
-// paper's parameters 0.638 and 0.567. Eq. 6 alone is precise (0.91 and 0.90, noise removed) but
-// reaches the chi-squared quantile only within about half a neighbourhood radius of a border,
-// where the truth reaches one radius: the band carries it there, and through the whole
-// neighbourhood (about 1.5 radii) too far. The fraction was chosen on these two scenes (0.5 /
-// 0.6 / 0.7 / 1 of the neighbourhood: 0.842 / 0.845 / 0.834 / 0.801 on indoor, 0.797 / 0.804
-// / 0.801 / 0.784 on pipes); on two other layouts (scene seeds 11 and 23) 0.6 gives 0.844 /
-// 0.808 and 0.847 / 0.805. The margin on pipes is thin.
-// The truth changed twice on the way, each time to follow what the scene documents as the
-// borders of the scanned part. (1) Silhouettes and the maximum incidence: only the far side of
-// a shadow was marked, so a pipe's or a column's silhouette counted as surface; 98% of eq. 6's
-// false boundaries on indoor (2,491 of 2,550, noise removed) lay there. (2) Borders of the
-// merged scans: a border of one scan that another scan covers is not one of the cloud (the
-// scanner now keeps a mark only where the returns of all scanners, among its 64 nearest and
-// within 4 spacings, leave more than a right angle free around the point); 8% of the boundary
-// points on indoor (6,499 to 6,004) and 33% on pipes (12,225 to 8,169) were dropped, and the
-// truth's boundary points fell from 26,666 to 20,593 and from 48,234 to 26,103, most of them
-// ground points next to a pipe's shadow that the other scanner sees into. With the band
-// through the whole neighbourhood, F1 indoor / pipes was 0.637 / 0.637 with the first truth,
-// 0.747 / 0.622 with the second, 0.820 / 0.712 now.
-// Tried against the first truth (indoor / pipes): confidence 0.99, 0.9, 0.8 with the band
-// 0.648 / 0.640, 0.628 / 0.596, 0.602 / 0.550; without the band 0.8 and 0.5, 0.46 / 0.48 and
-// 0.43 / 0.48 (paper's eq. 4-6); the boundary tested before the edge tests, edge 0.76 / 0.67
-// and boundary 0.38 / 0.49; neighbours capped at 0.15 m / 0.1 m, 0.644 / 0.623 and 0.599 /
-// 0.621; an edge point failing eq. 6 at 0.99 / 0.999 called boundary, 0.583 / 0.601 and 0.653
-// / 0.652; the band through the nearest half or 30 %, 0.653 / 0.615 and 0.617 / 0.569. Against
-// the second: eq. 6 around a centroid weighted by each neighbour's area (its squared k-th
-// neighbour distance, against a scan's density gradient), band and 70 degrees, 0.775 / 0.711;
-// the band seeded by pcl::BoundaryEstimation's angle criterion instead of eq. 6 (pi/2 to
-// 3 pi/4), 0.73-0.74 / 0.64-0.67.
+// angle) and the band through the nearest 60% of each neighbourhood (k = 50, confidence 0.95).
+// Eq. 6 alone is precise but reaches the chi-squared quantile only within about half a
+// neighbourhood radius of a border, where the truth reaches one radius: the band carries it
+// there, and through the whole neighbourhood (about 1.5 radii) too far. The fraction was chosen
+// on these two scenes and checked on other layouts; the margin on pipes is thin.
 TEST_P (LocalVarianceScenes, BoundaryF1MeetsTheGoal)
 {
   const Scene& s = scene (GetParam ());
@@ -380,17 +330,12 @@ TEST (LocalVarianceScenes, VarianceOfCurvatureKeepsPipesSurface)
   std::cout << "[ pipes ] edge false-positive rate on pipe surface points: curvature alone "
             << rate_curvature << ", with variance of curvature " << rate_workflow
             << " (curvature threshold " << threshold << ")\n";
-  // Measured: 0.95 with curvature alone, 0.50 with the variance test (300,000 points).
   EXPECT_LT (rate_workflow, rate_curvature);
 }
 
 // Both boundary tests against a truth that holds the borders of the scanned surfaces: the
-// scene's curves and its shadow, silhouette, blind-cone and incidence borders. Measured
-// (300,000 points, k = 50, confidence 0.95): F1 0.56 (chi-squared) against 0.36
-// (pcl::BoundaryEstimation); 0.38 and 0.26 before the scene marked silhouettes and kept only
-// the borders of the merged scans. Against the
-// scene's curves alone the two were level (0.200 and 0.201): occlusion borders then counted as
-// false boundaries for both.
+// scene's curves and its shadow, silhouette, blind-cone and incidence borders (k = 50,
+// confidence 0.95).
 TEST (LocalVarianceScenes, ChiSquaredBoundaryBeatsPclBoundaryEstimation)
 {
   const Scene& s = scene ("indoor");

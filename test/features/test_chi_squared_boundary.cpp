@@ -156,7 +156,7 @@ TEST (ChiSquaredBoundaryEstimation, NoiseOptionWidensTheRegionAndKeepsBorders)
   }
   EXPECT_EQ (added, 0u);
   EXPECT_GT (removed, 0u);
-  EXPECT_GE (double (border_found) / border, 0.95);  // measured 0.995 (1.0 without the term)
+  EXPECT_GE (double (border_found) / border, 0.95);
 }
 
 TEST (ChiSquaredBoundaryEstimationBadInput, ConfidenceOutOfRangeGivesEmptyOutput)

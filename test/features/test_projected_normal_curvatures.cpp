@@ -122,8 +122,8 @@ TEST (ProjectedNormalCurvaturesEstimation, NormalOrientationDoesNotMatterUnlikeP
     }
   }
   ASSERT_GT (near, 100u);
-  // Ours changes nowhere (above); PCL's pc1 moves by more than 10% at about half of these
-  // points (the normals near a crease are tilted, so not all follow f (1 - f) exactly).
+  // Ours changes nowhere (above); PCL's pc1 moves by more than 10% at many of these points
+  // (the normals near a crease are tilted, so not all follow f (1 - f) exactly).
   EXPECT_GT (pcl_changed, near / 4);
 }
 

@@ -142,9 +142,9 @@ TEST (Footprints, TextFormat)
 
 TEST (Footprints, HugeCoordinatesAndNumberOverflowAreReadErrors)
 {
-  // Found by fuzzing: Boost.Geometry's validity check threw boost::numeric::positive_overflow
-  // on a coordinate of 1e49, and nlohmann/json an out_of_range on 1e15500123; neither was a
-  // ReadError.
+  // Boost.Geometry's validity check throws boost::numeric::positive_overflow on a coordinate
+  // of 1e49, and nlohmann/json an out_of_range on 1e15500123: the readers must turn both into
+  // a ReadError (the crash_* seeds of the footprint fuzz corpora are inputs of this kind).
   std::vector<pcl_ext::io::Footprint> fp (1);
   std::string p = fixture ("footprint_huge_coordinate.wkt");
   expectReadError ([&] { pcl_ext::io::loadWktFootprints (p, fp); }, p, 1, "beyond 1e9 m");

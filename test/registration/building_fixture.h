@@ -44,7 +44,7 @@ scanBuilding (std::uint64_t seed, double noise, int superfluous, int missing)
   p.superfluous_planes = superfluous;
   p.missing_walls = missing;
   p.threads = 1;
-  // The scene's own random pose tilts up to 10 degrees; the trials tilt up to 3.
+  // The scene's own random pose tilts up to 10 degrees; these trials tilt up to 3.
   std::mt19937 rng (static_cast<unsigned> (seed));
   p.random_pose = false;
   p.has_pose = true;

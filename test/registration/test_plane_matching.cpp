@@ -93,7 +93,7 @@ TEST (PlaneMatching, ExactPlanesGiveTheTruth)
   }
 }
 
-// The robustness anchor on analytic planes: 100 random poses (yaw any, tilt <= 3 deg,
+// The robustness anchor on analytic planes: 100 random poses (yaw any, tilt <= 3 deg,
 // shift <= 100 m), 30 % superfluous and 20 % missing planes, plane noise of a 20 cm scan.
 TEST (PlaneMatching, RightMatchOverRandomPosesWithOutliersAndMissingPlanes)
 {

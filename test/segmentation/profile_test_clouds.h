@@ -132,7 +132,7 @@ coaxialPipes (double spacing = 0.015)
 }
 
 /** The coaxial pipes sampled coarsely enough (about 8,000 points) for the determinism tests to
-  * stay short in the sanitized build, where curve fitting runs some thirty times slower. */
+  * stay short in the sanitized build, where curve fitting runs many times slower. */
 inline LabelledCloud
 coarseCoaxialPipes ()
 {

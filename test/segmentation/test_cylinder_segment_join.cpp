@@ -1,6 +1,7 @@
 /*
  * Tests of pcl_ext::CylinderSegmentJoin on synthetic pipes cut into segments: straight runs
- * cut at supports, elbows, pipes side by side, with the segments known.
+ * cut at supports, elbows, pipes side by side, with the segments known. What the tests
+ * measured within their bounds is in docs/sithole_mapurisa.md.
  */
 #include <pcl_ext/segmentation/cylinder_segment_join.h>
 
@@ -216,8 +217,6 @@ TEST (CylinderSegmentJoin, StraightPipeCutAtSupportsIsJoined)
     ASSERT_LT (c.input_segment, 5u);
     ++per_segment[c.input_segment];
     const double y = c.input_segment == 4 ? 1.0 : 0.0;
-    // Measured: radius within 0.2 mm, axis within 0.01 degrees, its point within 0.35 mm of
-    // the true axis.
     EXPECT_NEAR (c.cylinder.radius, 0.1, 0.002);
     EXPECT_LT (axisAngleDegrees (c.cylinder.axis, kX), 0.1);
     EXPECT_LT (lineDistance (c.cylinder.point, Eigen::Vector3d (0, y, 1), kX), 0.002);
@@ -308,8 +307,8 @@ TEST (CylinderSegmentJoin, ElbowLegsAreJoinedWhenTheirAxesMeet)
   EXPECT_FALSE (joined (elbow (Eigen::Vector3d (0, 0.5, 0))));
   // The axes meet, but 2.5 m below the vertical leg's end (longest bridged: 2).
   EXPECT_FALSE (joined (elbow (Eigen::Vector3d (0, 0, -2.2))));
-  // A minimum elbow angle of 80 degrees still takes this right angle (fitted: 89.97 degrees;
-  // fitted axes are never exactly square, so pi/2 would join no elbow, as documented).
+  // A minimum elbow angle of 80 degrees still takes this right angle (fitted axes are never
+  // exactly square, so pi/2 would join no elbow, as documented).
   Join j;
   j.setMinElbowAngle (80.0 * M_PI / 180.0);
   EXPECT_EQ (join (j, elbow ()).size (), 1u);
@@ -369,7 +368,6 @@ TEST (CylinderSegmentJoin, GeoreferencedCoordinatesGiveTheSameSegments)
   {
     EXPECT_EQ (c_far[k].input_segment, c_local[k].input_segment);
     EXPECT_EQ (c_far[k].output_segment, c_local[k].output_segment);
-    // Measured: 0.014 mm apart in radius, 0.02 mm in axis position.
     EXPECT_NEAR (c_far[k].cylinder.radius, c_local[k].cylinder.radius, 0.0005);
     EXPECT_LT (lineDistance (c_far[k].cylinder.point - offset, c_local[k].cylinder.point,
                              c_local[k].cylinder.axis), 0.0005);

@@ -1,6 +1,7 @@
 /*
  * Tests of pcl_ext::cylinders (cylinders found in points without normals) on synthetic
- * strips, pipes, planes and box faces with known geometry.
+ * strips, pipes, planes and box faces with known geometry. What the tests measured within
+ * their bounds is in docs/sithole_mapurisa.md.
  */
 #include <pcl_ext/segmentation/cylinders.h>
 
@@ -137,8 +138,7 @@ TEST (Cylinders, RefineRecoversANoisyStrip)
   double radius = 1.2 * s.radius;
   ASSERT_TRUE (pcl_ext::cylinders::refineCylinder (s.points, allOf (s.points), point, axis,
                                                   radius));
-  // 3600 points with 3 mm noise fix the cylinder far better than the start: measured errors
-  // 0.06 mm in radius, 0.004 degrees, 0.2 mm at the ends.
+  // 3600 points with 3 mm noise fix the cylinder far better than the start.
   EXPECT_NEAR (axis.norm (), 1.0, 1e-9);
   EXPECT_NEAR (radius, s.radius, 0.001);
   EXPECT_LT (axisAngleDegrees (axis, s.axis), 0.1);
@@ -173,7 +173,7 @@ TEST (Cylinders, DetectsOneStrip)
   EXPECT_NEAR (c.radius, s.radius, 0.001);
   EXPECT_LT (axisAngleDegrees (c.axis, s.axis), 0.1);
   EXPECT_NEAR (c.axis.norm (), 1.0, 1e-9);
-  // A cylinder is a cone of no taper (measured -0.00015 where cones are fitted).
+  // A cylinder is a cone of no taper (where cones are fitted).
   EXPECT_LT (std::abs (c.taper), 0.001);
   // The point is mid-way along the inliers: the strip's centre (the origin) on its axis; the
   // outermost samples lie 0.01 inside the strip's ends.
@@ -219,7 +219,7 @@ TEST (Cylinders, RefineRecoversACone)
                                                   radius, &taper));
   EXPECT_NEAR (taper, cone.taper, 0.002);
   // The radius at the point, which moves only across the axis: still the middle.
-  EXPECT_NEAR (radius, 0.15, 0.001);  // measured: taper -0.0501, radius 0.1502
+  EXPECT_NEAR (radius, 0.15, 0.001);
   EXPECT_LT (axisAngleDegrees (axis, cone.axis), 0.2);
   EXPECT_LT (lineDistance (cone.start, point, axis), 0.003);
 }
@@ -241,7 +241,7 @@ TEST (Cylinders, DetectsAConeWhenTaperIsAllowed)
   EXPECT_EQ (c.inliers, allOf (cone.points));
   EXPECT_GT (c.surface_fraction, 0.99);
   // A taper beyond the largest allowed, or cones not fitted at all: no cylinder takes the
-  // cone whole (measured: none is found).
+  // cone whole.
   for (const double max_taper : {0.02, 0.0})
   {
     p.max_taper = max_taper;
@@ -293,8 +293,8 @@ TEST (Cylinders, PlaneGivesNoCylinder)
   EXPECT_TRUE (found.empty ());
   // Not even without the surface test: across any axis in the plane its points lie on a line,
   // so a circle through three of them is mostly metres wide, beyond the largest radius, and
-  // the few hypotheses drawn (81 of 600, measured) all fall apart or leave the radius range
-  // when grown over the plane.
+  // the few hypotheses drawn all fall apart or leave the radius range when grown over the
+  // plane.
   DetectionParameters p;
   p.min_surface_fraction = 0.0;
   pcl_ext::cylinders::detectCylinders (points, p, found);
@@ -316,8 +316,8 @@ TEST (Cylinders, PlaneGivesNoCylinder)
 // The same plane on a regular grid of spacing 0.05, more than the surface test's band (three
 // tolerances, 0.045), as scan lines are far from the scanner: a cylinder with its axis in the
 // plane, along the rows, has two rows on its surface and the neighbouring rows beyond the
-// band, but the rows between lie inside it, which a solid seen from outside never has (before
-// the test counted them: eight cylinders, radii 0.125 to 0.25, surface fraction 1).
+// band, but the rows between lie inside it, which a solid seen from outside never has: the
+// surface test counts the points inside against a cylinder.
 TEST (Cylinders, SparseGridPlaneGivesNoCylinder)
 {
   Points points;
@@ -351,13 +351,13 @@ TEST (Cylinders, SurfaceTestRejectsTheBestCylinderOfABoxColumn)
   const Points points = boxColumn ();
   // Without the surface test, the first cylinder found rounds the corner: its inliers are
   // the bands of both faces its surface grazes, and only three quarters of the points near
-  // its surface are on it (measured 0.756), where a pipe's are all on it.
+  // its surface are on it, where a pipe's are all on it.
   DetectionParameters p;
   p.min_surface_fraction = 0.0;
   std::vector<Cylinder> found;
   pcl_ext::cylinders::detectCylinders (points, p, found);
   ASSERT_FALSE (found.empty ());
-  EXPECT_GT (found[0].radius, 0.15);  // measured 0.218, centred on the diagonal inside
+  EXPECT_GT (found[0].radius, 0.15);  // centred on the diagonal inside
   EXPECT_LT (axisAngleDegrees (found[0].axis, Eigen::Vector3d::UnitZ ()), 1.0);
   EXPECT_LT (found[0].surface_fraction, 0.85);
   EXPECT_GT (found[0].inliers.size (), 1000u);
@@ -370,9 +370,8 @@ TEST (Cylinders, SurfaceTestRejectsTheBestCylinderOfABoxColumn)
 }
 
 // With the defaults (two failures allowed) the next candidates on the box column must fail too:
-// the band a rejected candidate took still counts against them (before it did not, and the
-// next one, grazing the faces beside that band, passed with 0.95 where against all points its
-// share is about 0.70).
+// the band a rejected candidate took still counts against them (otherwise the next one,
+// grazing the faces beside that band, would pass on the points left).
 TEST (Cylinders, BoxColumnGivesNoCylinder)
 {
   std::vector<Cylinder> found;

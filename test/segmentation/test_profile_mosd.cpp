@@ -1,8 +1,8 @@
 /*
- * Real data (label "data"; skipped without ../shared/data): pcl_ext::ProfileSegmentation on the
- * mOSD Kinect frames learn0 (boxes), learn20 (stacked boxes) and learn35 (cylinders), scored at
- * the object level against their labels, next to pcl::EuclideanClusterExtraction with the same
- * distance tolerance on the same points.
+ * Real data (label "data"; skipped without the data folder, PCL_EXT_SHARED_DATA_DIR):
+ * pcl_ext::ProfileSegmentation on the mOSD Kinect frames learn0 (boxes), learn20 (stacked
+ * boxes) and learn35 (cylinders), scored at the object level against their labels, next to
+ * pcl::EuclideanClusterExtraction with the same distance tolerance on the same points.
  */
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>

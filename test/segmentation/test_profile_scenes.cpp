@@ -1,6 +1,7 @@
 /*
  * Quality of pcl_ext::ProfileSegmentation on the generated scenes of Sithole & Mapurisa's
- * section 5 (simulated TLS scans with exact ground truth).
+ * section 5 (simulated TLS scans with exact ground truth). The measured figures behind the
+ * bounds below, and what was tried on the way, are in docs/sithole_mapurisa.md.
  */
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/segmentation/cylinder_segment_join.h>
@@ -98,15 +99,13 @@ TEST (ProfileSegmentationScenes, CurveFittingSeparatesTheCoaxialSurfaces)
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
   std::vector<std::uint32_t> truth;
   loadScene ("coaxial", true, cloud, truth);
-  // Proximity links across the creases: the horizontal assembly is one segment (measured:
-  // mean best IoU 0.55, 5 of its surfaces under-segmented).
+  // Proximity links across the creases: the horizontal assembly is one segment.
   const auto proximity = segment (cloud, truth);
   EXPECT_GE (proximity.under_segmented, 4u);
   EXPECT_LT (proximity.mean_best_iou, 0.6);
-  // Curve fitting for noisy scans ends the curves at the creases (measured: 0.913, 8 of 9
-  // surfaces correct; the one missed is a flange face, a ring 10 cm wide between two creases).
-  // With the paper's defaults the noise ends curves everywhere: 0.52; width 2.5x alone 0.68,
-  // AICc and the significance test alone 0.55.
+  // Curve fitting for noisy scans ends the curves at the creases: all but one surface are
+  // found (the one missed is a flange face, a ring 10 cm wide between two creases). With the
+  // paper's defaults the noise ends curves everywhere.
   const auto curve = segment (cloud, truth, Segmentation::ProfileMethod::CurveFitting,
                               kCurveWidthFactor, true);
   EXPECT_GE (curve.mean_best_iou, 0.90);
@@ -155,8 +154,7 @@ TEST (ProfileSegmentationScenes, TreeTrunkIsSeparatedFromTheGroundByCurveFitting
   EXPECT_EQ (matchOf (proximity, trunk).best_predicted, matchOf (proximity, ground).best_predicted);
   EXPECT_LT (matchOf (proximity, trunk).iou, 0.1);
   // Curve fitting (the paper's defaults) cuts the crease where the trunk meets the ground: the
-  // ground is its own segment (measured IoU 1.000) and the trunk's best segment lies within
-  // the trunk (measured: all its 1756 points).
+  // ground is its own segment and the trunk's best segment lies within the trunk.
   const auto curve = segment (cloud, truth, Segmentation::ProfileMethod::CurveFitting);
   const auto& t = matchOf (curve, trunk);
   EXPECT_GE (matchOf (curve, ground).iou, 0.99);
@@ -206,8 +204,7 @@ TEST (ProfileSegmentationScenes, SideFramesKeepTheTrunkWhole)
   seg.extract (clusters);
   pcl_ext::SegmentationMetrics m;
   ASSERT_TRUE (pcl_ext::evaluateSegmentation (clusters, kept_truth, m));
-  // Measured: trunk 0.880 (without side frames 0.494: the trunk's pieces join the ground),
-  // ground 0.984.
+  // Without side frames the trunk's pieces join the ground.
   EXPECT_GE (matchOf (m, trunk).iou, 0.85);
   EXPECT_GE (matchOf (m, ground).iou, 0.95);
   EXPECT_NE (matchOf (m, trunk).best_predicted, matchOf (m, ground).best_predicted);
@@ -216,19 +213,12 @@ TEST (ProfileSegmentationScenes, SideFramesKeepTheTrunkWhole)
 TEST (ProfileSegmentationScenes, TreeTrunkIsOneSegmentAfterTheCylinderJoin)
 {
   // Goal (figure 14: "the trunk and larger branches are successfully detected"): the trunk one
-  // segment. Curve fitting for noisy scans with side frames keeps the trunk whole up to 4 m
-  // (best IoU 0.762); above, where its radius falls to 0.13-0.07 m and the branches leave it,
-  // it splits into short pieces (proximity merges it with the ground and the crown: 0.02).
-  // Those pieces lie on the trunk's cone: CylinderSegmentJoin (cones allowed, radii compared
-  // where two pieces face each other) joins them to the lower trunk, and the fragments at the
-  // branch junctions that lie on the joined surface follow. Measured: 0.934 (scene seeds 2 and
-  // 3: 0.946, 0.927; before the join 0.788, 0.775).
-  //
-  // Changes to the curve ends tried before, and not kept: a shorter window moves the figure
-  // between 0.78 and 0.88 without a trend; keeping a curve end only where fits over a shorter
-  // window also see it gives 0.82-0.87 but loses creases of the coaxial scene (0.91 there falls
-  // to 0.55-0.70); confirming only the residual ends so keeps the coaxial creases but not the
-  // trunk (0.74-0.75).
+  // segment. Curve fitting for noisy scans with side frames keeps the trunk whole up to 4 m;
+  // above, where its radius falls to 0.13-0.07 m and the branches leave it, it splits into
+  // short pieces (proximity merges it with the ground and the crown). Those pieces lie on the
+  // trunk's cone: CylinderSegmentJoin (cones allowed, radii compared where two pieces face each
+  // other) joins them to the lower trunk, and the fragments at the branch junctions that lie on
+  // the joined surface follow.
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
   std::vector<std::uint32_t> truth, labels;
   loadScene ("tree", true, cloud, truth, &labels);
@@ -258,8 +248,8 @@ TEST (ProfileSegmentationScenes, TreeTrunkIsOneSegmentAfterTheCylinderJoin)
   ASSERT_TRUE (pcl_ext::evaluateSegmentation (joined, truth, m));
   const auto& t = matchOf (m, trunk);
   EXPECT_GE (t.iou, 0.9);
-  // The trunk's segment is the trunk: at least 95 % of it (measured 96 %: bark of branch
-  // stubs), and the ground stays apart and whole.
+  // The trunk's segment is the trunk (the rest is bark of branch stubs), and the ground stays
+  // apart and whole.
   EXPECT_GE (static_cast<double> (t.overlap), 0.95 * t.predicted_size);
   EXPECT_NE (t.best_predicted, matchOf (m, ground).best_predicted);
   EXPECT_GE (matchOf (m, ground).iou, 0.99);
@@ -268,7 +258,7 @@ TEST (ProfileSegmentationScenes, TreeTrunkIsOneSegmentAfterTheCylinderJoin)
 TEST (ProfileSegmentationScenes, PipesGroundIsOneSegment)
 {
   // Figure 12: seven pipes resting on three portal frames over the ground, 578,000 points.
-  // What holds at the object level: the ground is one segment (measured IoU 0.911).
+  // What holds at the object level: the ground is one segment.
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
   std::vector<std::uint32_t> truth;
   loadScene ("pipes", false, cloud, truth);
@@ -283,10 +273,7 @@ TEST (ProfileSegmentationScenes, LocalThresholdKeepsTheSparsePipesWhole)
   // dense ground near the scanners sets the automatic spacing of the whole cloud (0.025 m).
   // Segmented alone at the whole cloud's spacing (which isolates the effect of density: the
   // pipes do not touch one another), their profiles break into short chains with one global
-  // threshold (measured: mean best IoU over the pipes 0.418, 1095 segments); thresholds that
-  // follow the local gaps join most of the chains (0.660, 295 segments; 0.824 with one
-  // threshold at the pipes' own spacing, 0.049 m: the profiles, 1.5x the whole cloud's
-  // spacing wide, are still thinner than the pipes' spacing).
+  // threshold; thresholds that follow the local gaps join most of the chains.
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
   std::vector<std::uint32_t> truth, labels;
   loadScene ("pipes", false, cloud, truth, &labels);
@@ -389,8 +376,7 @@ TEST_F (PipesByCurves, CurveFittingKeepsThePipesOffTheFrames)
 {
   // What curve fitting achieves on figure 12's scene: the creases where the pipes rest on the
   // beams and where two pipes meet the ground end the curves, so no pipe shares a segment with
-  // a frame or the ground (proximity joins them all), and the ground stays whole. Measured: the
-  // best segment of every pipe is 87-97 % that pipe; ground IoU 0.994.
+  // a frame or the ground (proximity joins them all), and the ground stays whole.
   const auto m = evaluate (segments_);
   EXPECT_GE (m.segments[0].iou, 0.99);
   for (std::uint32_t pipe = kFirstPipeObject; pipe <= kLastPipeObject; ++pipe)
@@ -398,13 +384,11 @@ TEST_F (PipesByCurves, CurveFittingKeepsThePipesOffTheFrames)
     const auto& match = matchOf (m, pipe);
     EXPECT_GE (static_cast<double> (match.overlap), 0.8 * match.predicted_size) << "pipe " << pipe;
   }
-  // But it over-segments them: over the seven pipes 0.405 (0.25-0.64 each). Five of the seven
-  // are cut where they rest on the beams (x = 0, 6, 12 m) into their spans between beams:
-  // there a scanner on the ground sees only the pipe's underside next to the beam, all of it
-  // within a curve window of the pipe-beam crease, so all of it ends curves (the 0.25 m pipe,
-  // whose side shows above the beams, is one piece but for small strips). The frames are split
-  // into their faces by the same creases (best IoU 0.27-0.35). Proximity gives 0.13 over all
-  // eleven objects, curve fitting at width 1.5x 0.18, at 2.5x without local thresholds 0.34.
+  // But it over-segments them. Five of the seven are cut where they rest on the beams (x = 0,
+  // 6, 12 m) into their spans between beams: there a scanner on the ground sees only the
+  // pipe's underside next to the beam, all of it within a curve window of the pipe-beam
+  // crease, so all of it ends curves (the 0.25 m pipe, whose side shows above the beams, is one
+  // piece but for small strips). The frames are split into their faces by the same creases.
   EXPECT_LT (meanOverPipes (m), 0.5);
 }
 
@@ -413,10 +397,8 @@ TEST_F (PipesByCurves, PipesAreOneSegmentEachAfterTheCylinderJoin)
   // Goal: each pipe its own segment (mean best IoU >= 0.85 over the seven pipes). The spans
   // of a pipe cut at its supports lie on one cylinder, and so do the legs of an elbow:
   // CylinderSegmentJoin finds the cylinders in each segment (two pipes side by side share
-  // some) and joins those that continue one another. Measured, default settings: 0.925
-  // (0.894, 0.894, 0.887 and 0.892 with the scene's seeds 2 to 5); the ground stays whole
-  // (0.994). What is left: the leg of the 0.15 m pipe that bends down to the ground stays in
-  // the ground's segment (that pipe 0.72; the others 0.90-0.98).
+  // some) and joins those that continue one another; the ground stays whole. What is left:
+  // the leg of the 0.15 m pipe that bends down to the ground stays in the ground's segment.
   pcl_ext::CylinderSegmentJoin<pcl::PointXYZ> join;
   join.setInputCloud (cloud_);
   join.setInputSegments (segments_);
@@ -425,8 +407,8 @@ TEST_F (PipesByCurves, PipesAreOneSegmentEachAfterTheCylinderJoin)
   const auto m = evaluate (joined);
   EXPECT_GE (meanOverPipes (m), 0.85);
   EXPECT_GE (m.segments[0].iou, 0.99);
-  // No pipe's segment holds a point of another pipe; the rest of it (measured 1-10 %) are the
-  // bits of the beams next to the pipe that curve fitting had already left with its spans.
+  // No pipe's segment holds a point of another pipe; the rest of it are the bits of the beams
+  // next to the pipe that curve fitting had already left with its spans.
   for (std::uint32_t pipe = kFirstPipeObject; pipe <= kLastPipeObject; ++pipe)
   {
     const auto& match = matchOf (m, pipe);

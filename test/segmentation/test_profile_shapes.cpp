@@ -1,7 +1,7 @@
 /*
  * Tests of pcl_ext::ProfileSegmentation on analytic shapes sampled finely: nested spheres with
  * every profile method, touching coaxial surfaces with curve fitting. Labelled `quality`: the
- * sanitized quick run leaves them out (curve fitting runs some thirty times slower there), and
+ * sanitized quick run leaves them out (curve fitting runs many times slower there), and
  * the determinism tests of test_profile_segmentation cover the same code on coarser pipes.
  */
 #include <pcl_ext/evaluation/segmentation_metrics.h>

@@ -291,7 +291,7 @@ TEST (TlsScanSimulation, BordersOfOneScanThatAnotherCoversAreSurface)
   ASSERT_TRUE (scanner.scan (geometry, both));
   std::cout << "shadow outline points behind the box: one scan " << outline (one)
             << ", both scans " << outline (both) << "\n";
-  EXPECT_GT (outline (one), 40u);  // measured 49
+  EXPECT_GT (outline (one), 40u);
   EXPECT_EQ (outline (both), 0u);
 }
 

@@ -303,8 +303,8 @@ spreadBits (std::uint32_t x)
 
 /** Reorders points (and their indices) along a Z-order curve over a 1024^3 grid of their
   * bounding box. nanoflann's build then reads nearby memory when it partitions a subtree,
-  * which halves its time on clouds stored in arbitrary order. LSD radix sort: linear, stable,
-  * deterministic. */
+  * which makes it much faster on clouds stored in arbitrary order (docs/shared_machinery.md).
+  * LSD radix sort: linear, stable, deterministic. */
 void
 sortAlongZOrder (std::vector<float>& xyz, std::vector<pcl::index_t>& ids)
 {

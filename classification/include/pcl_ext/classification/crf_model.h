@@ -74,11 +74,10 @@ struct CrfInput
   * a scan is dense the super-voxels are small. On facades scanned along closely spaced
   * horizontal lines (Oakland's part3_aj and part3_al) the radius fell below 0.2 m, each
   * super-voxel held one scan line, and its eq. 12 features described a line, not a plane:
-  * 91 % (node-only) and 95 % (mCRF) of those facade points were misclassified, as vegetation
-  * or as trunks and poles. The bound was chosen by cross-validation between Oakland's
-  * part3_am and part3_an (0, 0.3, 0.4, 0.5, 0.7 m; 0.5 m gave the best mCRF macro F1) and
-  * then checked once on the other part3 chunks (see the README). Lengths are in metres: set
-  * 0 for the paper's super-voxels or for clouds in other units. */
+  * most of those facade points were misclassified, as vegetation or as trunks and poles. The
+  * bound was chosen by cross-validation between Oakland's part3_am and part3_an and then
+  * checked once on the other part3 chunks (docs/lim_suter.md has the figures). Lengths are in
+  * metres: set 0 for the paper's super-voxels or for clouds in other units. */
 inline SupervoxelParameters
 defaultCrfSupervoxelParameters ()
 {
@@ -97,11 +96,11 @@ struct CrfSettings
   int local_edges = 4;               ///< m, local edges per super-voxel (paper: 4); >= 0
   /** Colour / intensity are decided at training. features.scales: empty (the default) is the
     * paper's single-scale set; defaultFeatureScales() adds the multi-scale features (pcl_ext
-    * addition: +5 points of node-only macro F1 in cross-validation between Oakland chunks,
-    * but -3 points on the validation chunks, and about ten times the feature time).
-    * features.ground_estimate: LowestInBlock (the default) or Opening, which puts Oakland's
-    * ground points 0.06 m instead of 0.4 m above their estimated ground (median) but did not
-    * change the mCRF's cross-validation macro F1 between Oakland chunks (see the README). */
+    * addition, at a much higher feature cost; not the default, as its gain in
+    * cross-validation did not carry over to Oakland's validation chunks).
+    * features.ground_estimate: LowestInBlock (the default) or Opening, which puts the ground
+    * points much closer to their estimated ground but did not change the mCRF's
+    * cross-validation macro F1 on Oakland (docs/lim_suter.md has the figures of both). */
   SaliencyFeatureOptions features;
   double sigma = 1.0;                ///< sigma_C of the Gaussian prior, eq. 9; > 0
   /** Inputs of the node model: Linear (the paper's, the default) or a spline expansion. */
@@ -165,11 +164,11 @@ struct CrfStatistics
   * NodeOnly). Stage 2 fits the edge weights with the node weights held at stage 1: each node
   * is scored with, from each neighbour, the message a first (undamped) BP sweep sends given that
   * neighbour's stage-1 class probabilities q, log(1 + q(c) (e^d - 1)) (a stacked
-  * pseudo-likelihood). Refitting the node weights as well let the edges explain the labels
-  * alone (on Oakland the node potentials of the trained mCRF then labelled 2 % of the points
-  * right), and conditioning on the neighbours' labels rather than their probabilities gave
-  * rare classes edge potentials so large that a small belief in a neighbour already
-  * triggered them in BP: inference collapsed onto those classes. Stage 3 fits the weight
+  * pseudo-likelihood). The node weights stay fixed and the neighbours enter through their
+  * probabilities, not their labels: otherwise the edges explain the labels alone, the node
+  * potentials lose their meaning, and rare classes get edge potentials so large that a small
+  * belief in a neighbour already triggers them in BP (docs/lim_suter.md describes both
+  * variants). Stage 3 fits the weight
   * beta of the edges against the nodes at inference (log edge potentials times beta), which
   * the pseudo-likelihood cannot: it sees each neighbour once, while loopy BP hears the same
   * evidence again around the graph's short cycles. beta is the value on the grid 0.1, 0.2,

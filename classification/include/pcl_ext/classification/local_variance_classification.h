@@ -46,7 +46,7 @@ namespace pcl_ext
   * (setBoundaryBand, setBoundaryBandFraction), edges required to bend the normals
   * (setCreaseAngle) and the k neighbours capped at a radius (setMaxRadius). Together (noise
   * removed, band fraction 0.6, crease angle 70 degrees) they meet the surface, edge and
-  * boundary goals on the generated scenes (see the README).
+  * boundary goals on the generated scenes (docs/belton_lichti.md has the figures).
   *
   * Departures from the text: eq. 6 is scaled by the neighbourhood size (see
   * pcl_ext::ChiSquaredBoundaryEstimation, setScaleByNeighbourhoodSize); with indices, eq. 5
@@ -111,8 +111,9 @@ public:
     * span far more than those of a near one. Where they reach a second surface (the other
     * face of a thin wall, a box face behind a crease) every point of the first is an edge. A
     * cap at the smallest detail to keep (e.g. half a wall's thickness) bounds that reach; the
-    * rows it shortens still fit a plane as long as they keep at least 3 points. Measured on
-    * the generated indoor scene (see the module README): edge F1 0.883 -> 0.902 at 0.15 m. */
+    * rows it shortens still fit a plane as long as they keep at least 3 points. Where the
+    * surfaces are curved and sparse (thin pipes at long range) a cap can leave too few points
+    * across a surface; docs/belton_lichti.md reports both cases. */
   void
   setMaxRadius (double radius) { max_radius_ = radius; }
 
@@ -179,14 +180,13 @@ public:
     * and the scanner's error, after Bae et al. 2005). A crease inside the neighbourhood raises
     * l0 by a fraction of the neighbourhood's squared extent, far above sigma^2 wherever the
     * neighbourhood is wider than a few sigma, so it still reaches the tests. Give the scanner's
-    * range noise (for several scanners the largest); overestimating it by half costs little
-    * (see the module README). With it set, most surface points get kappa = 0, so the derived
-    * curvature threshold is usually 0 and every point with kappa above the noise floor is
-    * re-checked by eq. 5. Where all neighbourhoods have the same extent (uniform density) the
-    * derived threshold already absorbs the noise and this option can add false edges: on a
-    * cube with 4 mm spacing and 1 mm noise, 212 instead of 63 of 9,237 points far from the
-    * creases (every crease point is an edge either way). It pays on TLS scans, where the
-    * extent varies with range: edge F1 0.62 -> 0.88 on the generated indoor scene.
+    * range noise (for several scanners the largest); overestimating it by half costs little.
+    * With it set, most surface points get kappa = 0, so the derived curvature threshold is
+    * usually 0 and every point with kappa above the noise floor is re-checked by eq. 5. Where
+    * all neighbourhoods have the same extent (uniform density) the derived threshold already
+    * absorbs the noise and this option can add false edges far from the creases (every crease
+    * point is an edge either way). It pays on TLS scans, where the extent varies with range
+    * (docs/belton_lichti.md has the figures of both cases).
     *
     * The boundary test (eq. 6) uses it too: the index point's own noise displaces it from the
     * centroid, so u^2 and v^2 are compared with l1 / n + sigma^2 and l2 / n + sigma^2 instead
@@ -215,10 +215,9 @@ public:
     * the neighbours of each edge candidate: from the point's own normal to the farthest, then
     * from that to the farthest from it (on a crease the point's own normal is a blend of the
     * two faces'). Near a crease those normals are blends too, so a right angle shows as less:
-    * pi/4 keeps nearly every right-angled crease of walls, boxes and beams. Measured on the
-    * generated scenes (k = 50, noise removed, boundary band, 300,000 points; see the README),
-    * edge F1 indoor / pipes: off 0.883 / 0.713; pi/4 0.911 / 0.756; 60 degrees 0.886 / 0.790;
-    * 70 degrees 0.824 / 0.804 (indoor recall 0.90 -> 0.72). */
+    * pi/4 keeps nearly every right-angled crease of walls, boxes and beams, and larger angles
+    * trade crease points for fewer false edges on curved surfaces (docs/belton_lichti.md has
+    * the edge F1 for several angles). */
   void
   setCreaseAngle (double radians) { crease_angle_ = radians; }
 
@@ -260,9 +259,8 @@ public:
     *
     * Eq. 6 fires within about half a neighbourhood radius of a border, so the whole
     * neighbourhood carries the band to about 1.5 radii, past the points whose neighbourhood
-    * reaches the border. On the generated scenes (k = 50, noise removed, a 70 degree crease
-    * angle; see the README) boundary F1 indoor / pipes: 1: 0.801 / 0.784; 0.6: 0.845 / 0.804;
-    * 0.5: 0.842 / 0.797; 0.7: 0.834 / 0.801. */
+    * reaches the border; a fraction below 1 stops it nearer (docs/belton_lichti.md has the
+    * boundary F1 for several fractions). */
   void
   setBoundaryBandFraction (double fraction) { boundary_band_fraction_ = fraction; }
 

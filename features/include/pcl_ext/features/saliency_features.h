@@ -21,14 +21,14 @@ namespace pcl_ext
 enum class GroundEstimate
 {
   /** The lowest point of the (2 reach + 1)^2 cells around the position's cell (a block
-    * minimum). Biased low wherever the ground slopes or is noisy: on Oakland's streets the
-    * ground points themselves sit 0.4 m above it (median). */
+    * minimum). Biased low wherever the ground slopes or is noisy: the ground points
+    * themselves sit above it (docs/lim_suter.md has the figure on Oakland). */
   LowestInBlock,
   /** The morphological opening of the surface of the cells' lowest points (a block minimum,
     * then a block maximum of that over the same block): what is narrower than the block (a
     * pole, a trunk, a car) is removed, while a plane, sloping or not, is kept as it is, so
-    * the ground points sit 0.03 to 0.1 m above it (median on Oakland). Cells without points
-    * within the block take the opening of their neighbours (interpolation over small gaps). */
+    * the ground points sit close above it. Cells without points within the block take the
+    * opening of their neighbours (interpolation over small gaps). */
   Opening
 };
 
@@ -113,9 +113,10 @@ saliencyFeatureNames (const SaliencyFeatureOptions& options);
   * With ascending eigenvalues l1 <= l2 <= l3 of the covariance of the points within r (eq. 12):
   * clutterness = log(l1), surfaceness = log(l2 / r - l1), curveness = log(l3 / r - l2 / r);
   * arguments are clamped to 1e-12 (they are negative when r > 1 m and the region is isotropic).
-  * normal_angle = acos |n . up| with n the eigenvector of l1 (the text's "largest" is a slip,
-  * see papers/README.md; the absolute value because a normal has no sign); tangent_angle =
-  * acos |e3 . up| with e3 the eigenvector of l3 (pcl_ext addition: tells poles from wires);
+  * normal_angle = acos |n . up| with n the eigenvector of l1 (the text's "largest" is a slip:
+  * a plane's normal is its direction of least spread; the absolute value because a normal has
+  * no sign); tangent_angle = acos |e3 . up| with e3 the eigenvector of l3 (pcl_ext addition:
+  * tells poles from wires);
   * height above LocalGround; log_radius = log r (pcl_ext addition: the super-voxel size is
   * itself telling, large on flat ground); colour and intensity are neighbourhood means.
   * Regions of fewer than 5 points use the 5 nearest points instead.

@@ -38,9 +38,9 @@ chooseLocalOrigin (const std::vector<io::Footprint>& footprints, Eigen::Vector3d
   * A wall on the edge p1 -> p2 (in map - origin coordinates) has the normal of eq. 1,
   * n = (y2 - y1, -(x2 - x1), 0) / |l|, and the signed offset d = (x1 y2 - x2 y1) / |l|, which is
   * n . p1. Eq. 2 takes the absolute value of d, which contradicts eq. 1's normal on one side of
-  * the origin; pcl_ext keeps the sign (papers/README.md). The readers orient outer rings
-  * counter-clockwise and holes clockwise, so eq. 1's normal points out of the building, which is
-  * the side a terrestrial scanner sees: this is the canonical sign of every wall. The floor has
+  * the origin; pcl_ext keeps the sign. The readers orient outer rings counter-clockwise and
+  * holes clockwise, so eq. 1's normal points out of the building, which is the side a
+  * terrestrial scanner sees: this is the canonical sign of every wall. The floor has
   * n = (0, 0, 1) and d = floor_height - origin.z.
   *
   * \param[in] footprints polygons in map coordinates (double precision)

@@ -27,7 +27,8 @@ struct PlaneMatchingParameters
   double distance_tolerance = 0.5;   ///< residual and extension: plane offset (m), > 0
   /** \brief Whether plane signs are meaningful (scan normals turned to the scanner side, map
     * walls facing out of the building, floor up). false (default) treats (n, d) and (-n, -d) as
-    * one plane and picks the sign of each pair from the transform (papers/README.md). */
+    * one plane and picks the sign of each pair from the transform (an extracted plane has
+    * no natural sign). */
   bool oriented_normals = false;
   /** \brief Beyond the paper: reject pairs whose bounding boxes, the scan one transformed, do not
     * overlap within \a extent_margin. Coplanar walls (the two wings of an H) are distinct map
@@ -93,9 +94,9 @@ struct PlaneMatchingResult
   * of constraint 3 that need no estimate (see plane_matching.cpp): for four pairs, the
   * combination of their distance rows that cancels the translation must stay within what the
   * tolerances allow, and under constraint 1 no near-horizontal pair may turn the up axis over.
-  * They skip most estimates (on the building scene at m = n = 12, k = 4: 8,849 instead of
-  * 209,930) and never reject a combination the estimate would accept, so the counts and the
-  * result are those of estimating every combination.
+  * They skip most estimates (docs/khoshelham_gorte.md has the counts on the building scene)
+  * and never reject a combination the estimate would accept, so the counts and the result are
+  * those of estimating every combination.
   * Each surviving combination is extended: every other scan plane (all of them, largest
   * first) is transformed to the map and paired with the most similar unused map plane; the pair
   * is kept if the transform re-estimated with it keeps every residual within the tolerances.
@@ -120,11 +121,12 @@ struct PlaneMatchingResult
   *   bounds cannot bring within \a extent_margin of the scan planes' bounding box neither
   *   initiates nor extends: the n initial map planes are the largest of the others.
   *
-  * Sign handling (papers/README.md): without \a oriented_normals, each initial combination is
-  * tried with every sign pattern consistent with constraint 2 and with the handedness of its
-  * normals (a rotation keeps the sign of det(n_i, n_j, n_l); a pattern whose affine block still
-  * has a negative determinant is replaced by its mirror, all signs flipped), and extension picks
-  * the sign agreeing with the current transform.
+  * Sign handling (extracted planes have no natural sign, and the paper does not say how to
+  * choose one): without \a oriented_normals, each initial combination is tried with every sign
+  * pattern consistent with constraint 2 and with the handedness of its normals (a rotation
+  * keeps the sign of det(n_i, n_j, n_l); a pattern whose affine block still has a negative
+  * determinant is replaced by its mirror, all signs flipped), and extension picks the sign
+  * agreeing with the current transform.
   *
   * \param[in] scan planes in the source frame
   * \param[in] map planes in the target frame

@@ -21,8 +21,8 @@ enum class PlaneTransformationModel
 };
 
 /** \brief A correspondence: scan plane index, map plane index, and the sign s (+1 or -1) by which
-  * the scan plane is multiplied so that the pair agrees (papers/README.md: (n, d) and (-n, -d)
-  * are the same plane). */
+  * the scan plane is multiplied so that the pair agrees ((n, d) and (-n, -d) are the same
+  * plane: an extracted plane has no natural sign). */
 struct PlanePair
 {
   int scan = 0;
@@ -60,8 +60,9 @@ struct PlaneTransformationResult
   * (sum n_m n_m^T)^-1 with b_i the right-hand side of eq. 10: the same numbers without a
   * 12 x 12 solve. This is the general affine block the paper estimates.
   *
-  * Departure from the text (papers/README.md): the affine block is projected onto a rigid or
-  * similarity transform before use. The rotation is the nearest rotation to the 3 x 3 block
+  * Departure from the text: the transform sought is a similarity (eq. 5) or a rigid one, which
+  * the affine block of eq. 12 is not, so the block is projected onto a rigid or similarity
+  * transform before use. The rotation is the nearest rotation to the 3 x 3 block
   * (SVD, determinant +1); the translation (and for a similarity the scale) then solve the
   * distance part of eq. 10 by least squares, written at a point c of each scan plane (its
   * centroid projected onto it): n_m . (s R c + t) = d_m. With c = d_s n_s (no centroid known)

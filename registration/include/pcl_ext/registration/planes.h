@@ -14,8 +14,9 @@
 namespace pcl_ext
 {
 /** \brief A plane pi = (n, -d): points x on it satisfy n . x = d (Khoshelham & Gorte 2009,
-  * eq. 3), n of unit length, d signed (see papers/README.md: eq. 2's absolute value is not
-  * used), with what the matcher needs to know about its support. */
+  * eq. 3), n of unit length, d signed (eq. 2's absolute value is not used: it contradicts
+  * eq. 1's normal on one side of the origin, see computeMapPlanes), with what the matcher
+  * needs to know about its support. */
 struct RegistrationPlane
 {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ ();  ///< unit normal n

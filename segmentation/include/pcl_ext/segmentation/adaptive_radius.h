@@ -19,7 +19,7 @@ namespace pcl_ext
 /** \brief Parameters of the adaptive radius (Lim & Suter 2008, section 3.1, eq. 1-4).
   *
   * The radius follows Mitra, Nguyen & Guibas' optimal neighbourhood size, shrunk by the colour
-  * variance (see papers/README.md, which restates the garbled equations):
+  * variance. The printed eq. 1-4 are garbled; this is how pcl_ext reads them:
   * r_new = (1 - damp) r + damp [ (1 / kappa) (c1 sigma / sqrt(eps rho) + c2 sigma^2) ]^(1/3)
   *         (1 - w max(var R, var G, var B)),
   * rho = k / (pi r^2), kappa = 2 d / mu^2, k = pi rho r^2.

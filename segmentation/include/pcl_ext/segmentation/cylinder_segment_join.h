@@ -47,10 +47,8 @@ namespace pcl_ext
   * does not depend on the number of threads, and the random draws are seeded (setSeed).
   * Points with non-finite coordinates are never fitted and go with most of their segment.
   *
-  * On the generated scenes, after curve fitting for noisy scans: \c pipes (seven pipes on
-  * three portal frames, with local thresholds) mean best IoU over the pipes 0.405 before, 0.925
-  * after (0.887-0.894 on the scene's seeds 2 to 5); \c tree (with side frames) trunk IoU 0.762
-  * before, 0.934 after (0.946 and 0.927 on seeds 2 and 3).
+  * docs/sithole_mapurisa.md reports what the join measures on the generated \c pipes and
+  * \c tree scenes after curve fitting.
   */
 template <typename PointT>
 class CylinderSegmentJoin : public pcl::PCLBase<PointT>
@@ -158,9 +156,9 @@ public:
   getMinCylinderSize () const { return parameters_.detection.min_points; }
 
   /** \brief The surface test: of the points within three tolerances of a cylinder's surface,
-    * the share that must lie within one. Default 0.9; valid: [0, 1]. On the \c pipes scene
-    * it keeps 98 % of the pipe cylinders and rejects 84 % of the cylinders a box column or
-    * beam would otherwise give. */
+    * the share that must lie within one. Default 0.9; valid: [0, 1]. A pipe seen from outside
+    * has nearly all of them on its surface; a cylinder that rounds the corner of a box column
+    * or a beam grazes its faces and has far fewer. */
   void
   setMinSurfaceFraction (double share) { parameters_.detection.min_surface_fraction = share; }
   double

@@ -46,8 +46,8 @@ namespace pcl_ext
   *   average point spacing"). The spacing is the square root of the surface area per point,
   *   from the 6th-neighbour distance of a deterministic sample of points found by a sweep
   *   along a sort (no tree; see profiles::estimatePointSpacing). TLS density varies with range
-  *   and scan lines are denser along than across: on the simulated scans a threshold of 2x
-  *   over-segments the far, sparse surfaces (cubes: 447 segments for 8 cubes), 3x does not.
+  *   and scan lines are denser along than across, so the threshold is 3x rather than less: a
+  *   smaller one over-segments the far, sparse surfaces.
   * - Proximity chaining links every point to its k nearest points in the profile (k = 4 by
   *   default: a point of a chain has a predecessor and a successor, and the profile's width
   *   and noise make the chain a few points thick).
@@ -59,12 +59,13 @@ namespace pcl_ext
   *   above the noise). Testing every point finds every split the repeated splitting would
   *   find. Two options for noisy scans, off by default (the paper): the model chosen by AICc,
   *   the small-sample AIC (setCorrectedAic), and a turn ending a curve only when it is also
-  *   significant, more than z standard errors of the fits (setTurnSignificance). On the
-  *   generated \c coaxial scene (5 mm range noise at 7.7 mm spacing) the paper's test marks
-  *   43% of the points as curve ends and cuts the surfaces apart (mean best IoU 0.52 at the
-  *   surface level); with both (z = 3) and width 2.5x, 0.91. The curve ends (breakpoints) of
-  *   all stacks are removed from the graph before the components are taken, and then rejoin the segment of most of their neighbours: a crease
-  *   seen by one stack so also separates the profiles of the stacks that run along it.
+  *   significant, more than z standard errors of the fits (setTurnSignificance). Where the
+  *   range noise is close to the point spacing the paper's test marks many points as curve
+  *   ends and cuts the surfaces apart; the two options together, with profiles about 2.5
+  *   spacings wide (setProfileWidthFactor), keep them whole. The curve ends (breakpoints) of
+  *   all stacks are removed from the graph before the components are taken, and then rejoin
+  *   the segment of most of their neighbours: a crease seen by one stack so also separates the
+  *   profiles of the stacks that run along it.
   * - Two more options, off by default (the paper), for what one global spacing and one frame
   *   per point miss: thresholds that follow the local point density (setLocalThreshold: a
   *   TLS scan is sparser far from the scanner) and curve fits along each side's own axis
@@ -76,6 +77,9 @@ namespace pcl_ext
   *   pipes").
   * - Segments smaller than the minimum size are dropped (as pcl::RegionGrowing does); the
   *   others are ordered by decreasing size.
+  *
+  * docs/sithole_mapurisa.md reports what each option measures on the generated scenes of the
+  * paper's section 5.
   */
 template <typename PointT>
 class ProfileSegmentation : public pcl::PCLBase<PointT>
@@ -132,8 +136,7 @@ public:
     * 5.3: "at least one and a half times"); valid: > 0. Figure 6: 0.5x over-segments, larger
     * widths under-segment. Curve fitting on noisy scans wants about 2.5: the fits on either
     * side of a point then hold about twice the points (the fit's term across the profile
-    * absorbs the extra width), enough to tell a crease from the noise (generated \c coaxial
-    * scene: mean best IoU 0.55 at 1.5x, 0.80 at 2x, 0.91 at 2.5x). */
+    * absorbs the extra width), enough to tell a crease from the noise. */
   void
   setProfileWidthFactor (double factor) { width_factor_ = factor; }
   double
@@ -166,15 +169,9 @@ public:
     * link must be within the thresholds of both its ends (a sparse point does not reach into
     * a dense surface), and the curve window grows with the threshold.
     *
-    * On the generated \c pipes scene (pipes 7 m and more from the scanners, sampled at
-    * 0.049 m, against 0.025 m for the whole cloud) the pipes alone, at the whole cloud's
-    * spacing, reach a mean best IoU of 0.66 instead of 0.42 with proximity (0.82 at their own
-    * spacing); the whole scene with curve fitting for noisy scans at width 2.5x 0.43 instead
-    * of 0.34. Not the default: proximity chaining takes 2.5 to 3 times as long (the gaps
-    * need a nearest-neighbour search in every profile), and on the scenes with creases the
-    * longer windows of the sparse parts straddle them: the \c coaxial figure of
-    * setTurnSignificance falls from 0.913 to 0.892 and the tree trunk's from 0.35 to 0.09. On
-    * \c cubes and \c spheres it changes little (0.985 to 0.998, 0.997 to 1.000). */
+    * Not the default: proximity chaining takes longer (the gaps need a nearest-neighbour
+    * search in every profile), and where creases matter the longer windows of the sparse
+    * parts straddle them. */
   void
   setLocalThreshold (bool local) { local_threshold_ = local; }
   bool
@@ -227,11 +224,11 @@ public:
     * median residual as the noise. Default 0: the angle alone decides, as in the paper; valid:
     * >= 0. Not in the paper, for scans whose noise is comparable to the point spacing (the
     * generated \c coaxial scene: 5 mm range noise, 7.7 mm spacing), where a 30 degree turn over
-    * a window of ten points a side is often noise and the false curve ends cut surfaces apart:
-    * there 3, with setCorrectedAic (true) and a width factor of 2.5, raises the mean best IoU
-    * from 0.52 to 0.91. Not the default: on the generated \c indoor scene it lowers the
-    * object-level figure from 0.83 to 0.73 (the dense false ends also cut objects from what
-    * they stand on). */
+    * a window of ten points a side is often noise and the false curve ends cut surfaces apart;
+    * use 3 there, with setCorrectedAic (true) and a width factor of 2.5. Not the default: the
+    * same dense curve ends that cut a surface also cut objects from what they stand on, and
+    * on scans of objects (the generated \c indoor scene) the option costs more than it
+    * gains. */
   void
   setTurnSignificance (double z) { turn_significance_ = z; }
   double
@@ -252,12 +249,10 @@ public:
     * thin cylinder obliquely the section is an ellipse whose radius of curvature at the ends
     * of its long axis (0.58 r for the default stacks, 55 degrees from the horizontal) is
     * about the window, each side then turns by tens of degrees, and a polynomial in the
-    * point's frame follows it poorly: residual and turn tests both fire on a smooth surface.
-    * On the generated \c tree scene (trunk radius 0.26 m at the foot, window 0.16 m) this
-    * raises the trunk's IoU from 0.35 to 0.76 (settings for noisy scans, width 2.5x; 0.27 to
-    * 0.68 with the paper's); on \c coaxial it lowers the figure of setTurnSignificance from
-    * 0.913 to 0.892 (a flange face 10 cm wide between two creases merges with its neighbour).
-    */
+    * point's frame follows it poorly: residual and turn tests both fire on a smooth surface
+    * (the generated \c tree scene: trunk radius 0.26 m at the foot, window 0.16 m). Not the
+    * default: a narrow face between two creases (a flange face 10 cm wide on \c coaxial) can
+    * merge with its neighbour. */
   void
   setSideFrames (bool side_frames) { side_frames_ = side_frames; }
   bool

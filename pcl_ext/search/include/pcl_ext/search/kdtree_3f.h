@@ -22,8 +22,8 @@ namespace search
   * nanoflann stays an implementation detail. NanoflannKdTree<PointT> wraps it as a
   * pcl::search::Search, and Neighbourhoods uses it directly.
   *
-  * Tree positions (0 .. size()-1) enumerate the points in spatial order; cloudIndex() maps a
-  * position back to the index the point was given with.
+  * Tree positions (0 .. size()-1) enumerate the points in spatial order; pointIndex() maps a
+  * position back to the index the point was given with, point() gives its coordinates.
   */
 class KdTree3f
 {

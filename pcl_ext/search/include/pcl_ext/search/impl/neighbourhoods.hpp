@@ -184,7 +184,7 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree ()
   // KdTree3f::nearestKSearchOfPoints). Each point's result, ties included, does not depend
   // on the leaf or the thread it is searched in. Below about a leaf's worth of neighbours
   // the shared candidates are mostly other points' and one search per point is faster
-  // (indoor scene, 500,000 points, 2 threads: 0.55 s against 0.43 s at k = 10, even at 20).
+  // (docs/shared_machinery.md has the timings).
   const bool whole_cloud = fake_indices_ && tree.size () == searchable_;
   if (whole_cloud && k >= kMinNeighboursPerLeafSearch)
   {
