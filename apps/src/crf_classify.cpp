@@ -59,7 +59,9 @@ main (int argc, char** argv)
       return 1;
     timer.done (0);
   }
-  model.settings ().threads = threads;
+  pcl_ext::CrfSettings settings = model.getSettings ();
+  settings.threads = threads;
+  model.setSettings (settings);
   pcl_ext::io::ClassMapping mapping;
   if (!classes_file.empty ())
   {

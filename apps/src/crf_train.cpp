@@ -119,7 +119,7 @@ main (int argc, char** argv)
     labels.push_back (c.labels);
   }
   pcl_ext::MultiscaleCrfModel model;
-  auto& s = model.settings ();
+  pcl_ext::CrfSettings s = model.getSettings ();
   s.mode = mode;
   s.sigma = sigma;
   s.node_expansion = expansion;
@@ -151,6 +151,7 @@ main (int argc, char** argv)
   s.max_training_iterations = iterations;
   s.threads = threads;
   s.balance_classes = !no_balance;
+  model.setSettings (s);
   if (!mapping.empty ())
     model.setClassNames (mapping.names ());
   pcl_ext::apps::StageTimer timer ("Training the " + std::string (pcl_ext::crfModeName (mode)) + " model");

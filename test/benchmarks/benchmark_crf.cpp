@@ -67,7 +67,9 @@ main (int argc, char** argv)
   if (!street (1, points, train_in, train_labels) || !street (2, points, test_in, test_labels))
     return 1;
   pcl_ext::MultiscaleCrfModel model;
-  model.settings ().threads = threads;
+  pcl_ext::CrfSettings model_settings = model.getSettings ();
+  model_settings.threads = threads;
+  model.setSettings (model_settings);
   if (!model.train ({train_in}, {train_labels}))
     return 1;
   printStats ("train", model.getStatistics ());
@@ -105,7 +107,9 @@ main (int argc, char** argv)
       ls.push_back (t.label);
     }
     pcl_ext::MultiscaleCrfModel oak;
-    oak.settings ().threads = threads;
+    pcl_ext::CrfSettings oak_settings = oak.getSettings ();
+    oak_settings.threads = threads;
+    oak.setSettings (oak_settings);
     oak.setClassNames (mapping.names ());
     if (!oak.train (inputs, ls))
       return 1;

@@ -63,10 +63,12 @@ threeModels (pcl_ext::CrfNodeExpansion expansion, double min_radius, Scores& out
        {pcl_ext::CrfMode::NodeOnly, pcl_ext::CrfMode::LocalCrf, pcl_ext::CrfMode::MultiscaleCrf})
   {
     pcl_ext::MultiscaleCrfModel model;
-    model.settings ().mode = mode;
-    model.settings ().node_expansion = expansion;
-    model.settings ().spline_knots = 2;
-    model.settings ().supervoxels.radius.min_radius = min_radius;
+    pcl_ext::CrfSettings model_settings = model.getSettings ();
+    model_settings.mode = mode;
+    model_settings.node_expansion = expansion;
+    model_settings.spline_knots = 2;
+    model_settings.supervoxels.radius.min_radius = min_radius;
+    model.setSettings (model_settings);
     model.setClassNames (mapping.names ());
     ASSERT_TRUE (model.train (train, train_labels));
     const double train_s = (model.getStatistics ().supervoxels_ms + model.getStatistics ().features_ms

@@ -49,7 +49,9 @@ trained (CrfMode mode)
   if (it == models.end ())
   {
     MultiscaleCrfModel m;
-    m.settings ().mode = mode;
+    pcl_ext::CrfSettings m_settings = m.getSettings ();
+    m_settings.mode = mode;
+    m.setSettings (m_settings);
     EXPECT_TRUE (m.train ({street (1).input}, {street (1).labels}));
     it = models.emplace (mode, m).first;
   }
@@ -124,8 +126,12 @@ TEST (MultiscaleCrf, ProbabilitiesFollowEquation11)
 TEST (MultiscaleCrf, DeterministicForAnyThreadCount)
 {
   MultiscaleCrfModel a, b;
-  a.settings ().threads = 1;
-  b.settings ().threads = 2;
+  pcl_ext::CrfSettings a_settings = a.getSettings ();
+  a_settings.threads = 1;
+  a.setSettings (a_settings);
+  pcl_ext::CrfSettings b_settings = b.getSettings ();
+  b_settings.threads = 2;
+  b.setSettings (b_settings);
   ASSERT_TRUE (a.train ({street (1).input}, {street (1).labels}));
   ASSERT_TRUE (b.train ({street (1).input}, {street (1).labels}));
   EXPECT_EQ (a.toText (), b.toText ());
@@ -208,9 +214,11 @@ TEST (MultiscaleCrf, NodeExpansionsAreStoredAndRefusedWhenInconsistent)
   // The spline expansion with products: a knots line per feature, node weights over the
   // expanded inputs, edge weights over the features alone.
   MultiscaleCrfModel m;
-  m.settings ().mode = CrfMode::MultiscaleCrf;
-  m.settings ().node_expansion = pcl_ext::CrfNodeExpansion::SplineProducts;
-  m.settings ().spline_knots = 3;
+  pcl_ext::CrfSettings m_settings = m.getSettings ();
+  m_settings.mode = CrfMode::MultiscaleCrf;
+  m_settings.node_expansion = pcl_ext::CrfNodeExpansion::SplineProducts;
+  m_settings.spline_knots = 3;
+  m.setSettings (m_settings);
   ASSERT_TRUE (m.train ({street (1).input}, {street (1).labels}));
   EXPECT_GE (accuracy (m, street (2)), 0.95);
   const std::string good = m.toText ();
@@ -277,7 +285,9 @@ TEST (MultiscaleCrf, NodeExpansionsAreStoredAndRefusedWhenInconsistent)
     EXPECT_FALSE (bad.isTrained ()) << name;
   }
   MultiscaleCrfModel bad_knots;
-  bad_knots.settings ().spline_knots = 0;
+  pcl_ext::CrfSettings bad_knots_settings = bad_knots.getSettings ();
+  bad_knots_settings.spline_knots = 0;
+  bad_knots.setSettings (bad_knots_settings);
   EXPECT_FALSE (bad_knots.train ({street (1).input}, {street (1).labels}));
 }
 
@@ -297,7 +307,9 @@ TEST (MultiscaleCrf, BadTrainingInput)
   empty.xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
   EXPECT_FALSE (m.train ({empty}, {{}}));
   MultiscaleCrfModel bad_sigma;
-  bad_sigma.settings ().sigma = -1.0;
+  pcl_ext::CrfSettings bad_sigma_settings = bad_sigma.getSettings ();
+  bad_sigma_settings.sigma = -1.0;
+  bad_sigma.setSettings (bad_sigma_settings);
   EXPECT_FALSE (bad_sigma.train ({s.input}, {s.labels}));
   EXPECT_FALSE (m.isTrained ());
   EXPECT_FALSE (m.saveModel (tempPath ("untrained.txt")));

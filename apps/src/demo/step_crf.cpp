@@ -55,7 +55,9 @@ runCrfStep (DemoContext& context)
   const CrfInput train = toInput (train_scene, train_labels);
   const CrfInput test = toInput (test_scene, truth);
   MultiscaleCrfModel model;
-  model.settings ().threads = context.threads;
+  CrfSettings settings = model.getSettings ();
+  settings.threads = context.threads;
+  model.setSettings (settings);
   apps::StageTimer t_train ("Training the multi-scale CRF on street (seed " +
                              std::to_string (context.seed) + ")");
   if (!model.train ({train}, {train_labels}))

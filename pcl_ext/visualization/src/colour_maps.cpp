@@ -2,6 +2,7 @@
  * pcl_ext: colour maps.
  */
 #include <pcl_ext/visualization/colour_maps.h>
+#include <pcl_ext/common/segment_colours.h>
 #include <pcl_ext/point_types.h>
 
 #include <algorithm>
@@ -14,36 +15,6 @@ namespace visualization
 {
 namespace
 {
-Colour
-fromHsv (double h, double s, double v)
-{
-  const double c = v * s;
-  const double hp = std::fmod (h * 6.0, 6.0);
-  const double x = c * (1.0 - std::abs (std::fmod (hp, 2.0) - 1.0));
-  double r = 0, g = 0, b = 0;
-  switch (static_cast<int> (hp))
-  {
-    case 0: r = c; g = x; break;
-    case 1: r = x; g = c; break;
-    case 2: g = c; b = x; break;
-    case 3: g = x; b = c; break;
-    case 4: r = x; b = c; break;
-    default: r = c; b = x; break;
-  }
-  const double m = v - c;
-  const auto byte = [] (double f) {
-    return static_cast<std::uint8_t> (std::lround (std::clamp (f, 0.0, 1.0) * 255.0));
-  };
-  return {byte (r + m), byte (g + m), byte (b + m)};
-}
-
-std::uint32_t
-mix (std::uint32_t x)
-{
-  x ^= x >> 16; x *= 0x7feb352dU; x ^= x >> 15; x *= 0x846ca68bU; x ^= x >> 16;
-  return x;
-}
-
 // Viridis at 9 stops (matplotlib's, rounded); linear in between.
 constexpr std::array<std::array<float, 3>, 9> kViridis {{
     {0.267f, 0.005f, 0.329f}, {0.279f, 0.175f, 0.483f}, {0.230f, 0.322f, 0.546f},
@@ -91,11 +62,11 @@ colourByLabel (const std::vector<std::uint32_t>& labels)
       out[i] = {170, 170, 170};
       continue;
     }
-    const std::uint32_t h = mix (labels[i]);
-    const double hue = std::fmod ((h & 0xffff) / 65536.0 + labels[i] * 0.618033988749895, 1.0);
-    const double sat = 0.55 + 0.4 * ((h >> 16) & 0xff) / 255.0;
-    const double val = 0.65 + 0.35 * ((h >> 24) & 0xff) / 255.0;
-    out[i] = fromHsv (hue, sat, val);
+    // Label L is segment L - 1 of a segmenter's getColoredCloud (pcl_ext::colourBySegment):
+    // the same palette everywhere.
+    std::uint8_t rgb[3];
+    segmentColour (labels[i] - 1, rgb);
+    out[i] = {rgb[0], rgb[1], rgb[2]};
   }
   return out;
 }

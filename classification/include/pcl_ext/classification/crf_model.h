@@ -195,11 +195,13 @@ public:
   MultiscaleCrfModel&
   operator= (const MultiscaleCrfModel&);
 
-  CrfSettings&
-  settings () { return settings_; }
+  /** \brief The options of training (see CrfSettings). Default: CrfSettings' defaults; a
+    * loaded model brings its own. */
+  void
+  setSettings (const CrfSettings& settings) { settings_ = settings; }
 
   const CrfSettings&
-  settings () const { return settings_; }
+  getSettings () const { return settings_; }
 
   /** \brief Class ids (> 0) and names. When set before train(), every named class must have
     * training points; otherwise the classes are the non-zero labels found. */

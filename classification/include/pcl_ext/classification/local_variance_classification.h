@@ -4,7 +4,7 @@
  */
 #pragma once
 
-#include <pcl_ext/search/neighbourhood_source.h>
+#include <pcl_ext/search/neighbourhood_options.h>
 #include <pcl_ext/point_types.h>
 
 #include <pcl/PointIndices.h>
@@ -64,7 +64,8 @@ namespace pcl_ext
   * \endcode
   */
 template <typename PointT>
-class LocalVarianceClassification : public pcl::PCLBase<PointT>
+class LocalVarianceClassification : public pcl::PCLBase<PointT>,
+                                    public NeighbourhoodOptions<PointT>
 {
 public:
   using Ptr = pcl::shared_ptr<LocalVarianceClassification<PointT>>;
@@ -83,54 +84,6 @@ public:
   };
 
   LocalVarianceClassification () = default;
-
-  /** \brief Number of neighbours k, the point included. Default 50 (the paper's); valid:
-    * 3 .. number of finite points. Clears the radius. */
-  void
-  setKSearch (int k) { k_ = k; radius_ = 0.0; }
-
-  int
-  getKSearch () const { return k_; }
-
-  /** \brief Neighbourhood radius instead of k, in the cloud's units. Default 0 (k is used);
-    * valid: > 0. Clears k. */
-  void
-  setRadiusSearch (double radius) { radius_ = radius; k_ = 0; }
-
-  double
-  getRadiusSearch () const { return radius_; }
-
-  /** \brief With k: keep only the neighbours within this distance, in the cloud's units (the k
-    * nearest within it). Default 0: no cap, the paper's k nearest. Valid: finite, >= 0; ignored
-    * with a radius (setRadiusSearch) or shared neighbourhoods (give those
-    * pcl_ext::Neighbourhoods::setMaxRadius instead).
-    *
-    * Why: section 2.1 chooses the neighbourhood "based on the resolution of the scan and the
-    * level of detail ... so that small details are not smoothed over", but a TLS scan's
-    * resolution varies with range and incidence, so k neighbours of a far or grazing surface
-    * span far more than those of a near one. Where they reach a second surface (the other
-    * face of a thin wall, a box face behind a crease) every point of the first is an edge. A
-    * cap at the smallest detail to keep (e.g. half a wall's thickness) bounds that reach; the
-    * rows it shortens still fit a plane as long as they keep at least 3 points. Where the
-    * surfaces are curved and sparse (thin pipes at long range) a cap can leave too few points
-    * across a surface; docs/belton_lichti.md reports both cases. */
-  void
-  setMaxRadius (double radius) { max_radius_ = radius; }
-
-  double
-  getMaxRadius () const { return max_radius_; }
-
-  /** \brief Search for the neighbourhoods. Default null: pcl_ext::search::NanoflannKdTree. */
-  void
-  setSearchMethod (const SearchPtr& search) { search_ = search; }
-
-  /** \brief Shared neighbourhoods, computed for the same cloud and indices (then k and radius
-    * are theirs). Default: none, classify() searches itself. */
-  void
-  setNeighbourhoods (const NeighbourhoodsConstPtr& neighbourhoods)
-  {
-    source_.setShared (neighbourhoods);
-  }
 
   /** \brief Curvature threshold (the cheap test of section 2.2, on kappa of eq. 4).
     * Valid: >= 0. Default 0: derived from the data as factor * median(kappa)
@@ -275,13 +228,6 @@ public:
   unsigned int
   getTests () const { return tests_; }
 
-  /** \brief OpenMP threads. Default 0: all cores. */
-  void
-  setNumberOfThreads (unsigned int nr_threads = 0) { threads_ = nr_threads; }
-
-  unsigned int
-  getNumberOfThreads () const { return threads_; }
-
   /** \brief One label per index: a pcl_ext::PointClass value (0 unknown, 1 surface, 2 edge,
     * 3 boundary). Empty after a PCL_ERROR on bad input or parameters. */
   void
@@ -294,6 +240,12 @@ public:
   extract (std::vector<pcl::PointIndices>& clusters);
 
 protected:
+  using NeighbourhoodOptions<PointT>::k_;
+  using NeighbourhoodOptions<PointT>::radius_;
+  using NeighbourhoodOptions<PointT>::max_radius_;
+  using NeighbourhoodOptions<PointT>::search_;
+  using NeighbourhoodOptions<PointT>::threads_;
+  using NeighbourhoodOptions<PointT>::source_;
   using pcl::PCLBase<PointT>::input_;
   using pcl::PCLBase<PointT>::indices_;
   using pcl::PCLBase<PointT>::fake_indices_;
@@ -325,11 +277,6 @@ protected:
   template <typename Row> float
   widestNormalCosine (const Row& nn, const Eigen::Vector3f& own) const;
 
-  int k_ = 50;
-  double radius_ = 0.0;
-  double max_radius_ = 0.0;
-  SearchPtr search_;
-  NeighbourhoodSource<PointT> source_;
   double curvature_threshold_ = 0.0;
   double curvature_factor_ = 3.0;
   double curvature_threshold_used_ = 0.0;
@@ -341,7 +288,6 @@ protected:
   double confidence_ = 0.95;
   bool scale_by_size_ = true;
   unsigned int tests_ = ALL_TESTS;
-  unsigned int threads_ = 0;
 
   std::vector<float> kappa_;      ///< per point of the cloud; NaN when not computed
   std::vector<float> statistic_;  ///< eq. 6 per row

@@ -44,74 +44,95 @@ public:
   /** \brief Node-only, local CRF or multi-scale CRF (section 5's comparison). Default
     * MultiscaleCrf. Takes effect at train(); a loaded model brings its own. */
   void
-  setMode (CrfMode mode) { model_.settings ().mode = mode; }
+  setMode (CrfMode mode) { changeSettings ([&] (CrfSettings& s) { s.mode = mode; }); }
 
   CrfMode
-  getMode () const { return model_.settings ().mode; }
+  getMode () const { return model_.getSettings ().mode; }
 
   /** \brief sigma_C of the Gaussian prior (eq. 9). Default 1; > 0. */
   void
-  setSigma (double sigma) { model_.settings ().sigma = sigma; }
+  setSigma (double sigma) { changeSettings ([&] (CrfSettings& s) { s.sigma = sigma; }); }
+
+  double
+  getSigma () const { return model_.getSettings ().sigma; }
 
   /** \brief The inputs of the node potentials' logistic regression (pcl_ext addition, see
     * CrfNodeExpansion). Default Linear (the paper's). Takes effect at train(); a
     * loaded model brings its own. */
   void
-  setNodeExpansion (CrfNodeExpansion expansion) { model_.settings ().node_expansion = expansion; }
+  setNodeExpansion (CrfNodeExpansion expansion) { changeSettings ([&] (CrfSettings& s) { s.node_expansion = expansion; }); }
 
   CrfNodeExpansion
-  getNodeExpansion () const { return model_.settings ().node_expansion; }
+  getNodeExpansion () const { return model_.getSettings ().node_expansion; }
 
   /** \brief K, the hinges per feature of the spline expansions. Default 2; in [1, 64]. */
   void
-  setSplineKnots (int knots) { model_.settings ().spline_knots = knots; }
+  setSplineKnots (int knots) { changeSettings ([&] (CrfSettings& s) { s.spline_knots = knots; }); }
 
   int
-  getSplineKnots () const { return model_.settings ().spline_knots; }
+  getSplineKnots () const { return model_.getSettings ().spline_knots; }
 
   /** \brief beta, the factor on the log edge potentials in belief propagation (pcl_ext
     * addition, see MultiscaleCrfModel). Default 0: fitted on the training data; else > 0.
     * Takes effect at train(). */
   void
-  setEdgeScale (double beta) { model_.settings ().edge_scale = beta; }
+  setEdgeScale (double beta) { changeSettings ([&] (CrfSettings& s) { s.edge_scale = beta; }); }
 
   double
-  getEdgeScale () const { return model_.settings ().edge_scale; }
+  getEdgeScale () const { return model_.getSettings ().edge_scale; }
 
   /** \brief m, local edges per super-voxel (paper: 4). Default 4; >= 0. */
   void
-  setNumberOfLocalEdges (int m) { model_.settings ().local_edges = m; }
+  setNumberOfLocalEdges (int m) { changeSettings ([&] (CrfSettings& s) { s.local_edges = m; }); }
+
+  int
+  getNumberOfLocalEdges () const { return model_.getSettings ().local_edges; }
 
   /** \brief l, regional edges per super-voxel (paper: 4). Default 4; >= 0. */
   void
-  setNumberOfRegionalEdges (int l) { model_.settings ().supervoxels.adjacency = l; }
+  setNumberOfRegionalEdges (int l) { changeSettings ([&] (CrfSettings& s) { s.supervoxels.adjacency = l; }); }
+
+  int
+  getNumberOfRegionalEdges () const { return model_.getSettings ().supervoxels.adjacency; }
 
   /** \brief Super-voxel radius parameters (eq. 1-4; see AdaptiveRadiusParameters). Default:
     * defaultCrfSupervoxelParameters ().radius (the paper's, with min_radius 0.5 m). */
   void
-  setRadiusParameters (const AdaptiveRadiusParameters& p) { model_.settings ().supervoxels.radius = p; }
+  setRadiusParameters (const AdaptiveRadiusParameters& p) { changeSettings ([&] (CrfSettings& s) { s.supervoxels.radius = p; }); }
+
+  const AdaptiveRadiusParameters&
+  getRadiusParameters () const { return model_.getSettings ().supervoxels.radius; }
 
   /** \brief Seed of the super-voxel mid-points and of the local points. Default 1. */
   void
-  setSeed (std::uint64_t seed) { model_.settings ().supervoxels.seed = seed; }
+  setSeed (std::uint64_t seed) { changeSettings ([&] (CrfSettings& s) { s.supervoxels.seed = seed; }); }
+
+  std::uint64_t
+  getSeed () const { return model_.getSettings ().supervoxels.seed; }
 
   /** \brief Fixed radii (m, ascending, > 0) of the multi-scale features (pcl_ext addition,
     * see computeSaliencyFeatures), e.g. defaultFeatureScales(): 0.5, 1 and 2 m. Default empty:
     * the paper's single-scale feature set. Takes effect at train(); a loaded model brings its
     * own. */
   void
-  setFeatureScales (const std::vector<float>& radii) { model_.settings ().features.scales = radii; }
+  setFeatureScales (const std::vector<float>& radii) { changeSettings ([&] (CrfSettings& s) { s.features.scales = radii; }); }
 
   const std::vector<float>&
-  getFeatureScales () const { return model_.settings ().features.scales; }
+  getFeatureScales () const { return model_.getSettings ().features.scales; }
 
   /** \brief The scanner's up axis (eq. 10 and height). Default (0, 0, 1). */
   void
-  setUpAxis (const Eigen::Vector3f& up) { model_.settings ().features.up = up; }
+  setUpAxis (const Eigen::Vector3f& up) { changeSettings ([&] (CrfSettings& s) { s.features.up = up; }); }
+
+  const Eigen::Vector3f&
+  getUpAxis () const { return model_.getSettings ().features.up; }
 
   /** \brief Threads (0, the default: all cores); results do not depend on it. */
   void
-  setNumberOfThreads (unsigned int threads) { model_.settings ().threads = threads; }
+  setNumberOfThreads (unsigned int threads) { changeSettings ([&] (CrfSettings& s) { s.threads = threads; }); }
+
+  unsigned int
+  getNumberOfThreads () const { return model_.getSettings ().threads; }
 
   /** \brief Names of the classes by id; each must have training points. Default: the
     * non-zero labels found, named by their id. */
@@ -150,6 +171,16 @@ public:
   getModel () { return model_; }
 
 protected:
+  /** \brief Apply \a change to a copy of the model's settings and give them back. */
+  template <typename Change>
+  void
+  changeSettings (const Change& change)
+  {
+    CrfSettings settings = model_.getSettings ();
+    change (settings);
+    model_.setSettings (settings);
+  }
+
   using pcl::PCLBase<PointT>::input_;
   using pcl::PCLBase<PointT>::indices_;
   using pcl::PCLBase<PointT>::initCompute;

@@ -22,6 +22,10 @@ namespace pcl_ext
   * when it has intensity, unless switched off. compute() fills one row per index;
   * getFeatureNames() names the columns.
   *
+  * Not a pcl::Feature: that takes a fixed output point type, and the number of columns here
+  * depends on the point type (colour, intensity) and on the feature scales, so compute() fills
+  * an Eigen matrix, one row per index, with the column names beside it.
+  *
   * Errors (PCL_ERROR, empty output): empty cloud, no finite point, a radius that is not
   * positive and finite, feature scales that are not positive, finite and ascending, radii
   * not matching the indices, an index out of range, a non-finite indexed point.
@@ -37,21 +41,36 @@ public:
   void
   setRadius (float r) { radius_ = r; radii_.clear (); }
 
+  float
+  getRadius () const { return radius_; }
+
   /** \brief One r per index (m), each > 0; overrides setRadius. */
   void
   setRadii (const std::vector<float>& radii) { radii_ = radii; }
+
+  const std::vector<float>&
+  getRadii () const { return radii_; }
 
   /** \brief The scanner's up axis for the angle (eq. 10) and height. Default (0, 0, 1). The
     * text writes (0 1 0), a y-up frame. */
   void
   setUpAxis (const Eigen::Vector3f& up) { options_.up = up; }
 
+  const Eigen::Vector3f&
+  getUpAxis () const { return options_.up; }
+
   /** \brief Use colour and intensity when the point type has them. Default true for both. */
   void
   setUseColour (bool use) { use_colour_ = use; }
 
+  bool
+  getUseColour () const { return use_colour_; }
+
   void
   setUseIntensity (bool use) { use_intensity_ = use; }
+
+  bool
+  getUseIntensity () const { return use_intensity_; }
 
   /** \brief Local ground grid: cell (m, default 1, > 0) and reach (cells, default 3, >= 0). */
   void
@@ -73,8 +92,12 @@ public:
   const std::vector<float>&
   getFeatureScales () const { return options_.scales; }
 
+  /** \brief OpenMP threads. Default 0: all cores. Results do not depend on it. */
   void
   setNumberOfThreads (unsigned int threads) { threads_ = threads; }
+
+  unsigned int
+  getNumberOfThreads () const { return threads_; }
 
   /** \brief Column names of the last compute() (see saliencyFeatureNames). */
   const std::vector<std::string>&

@@ -4,7 +4,7 @@
  */
 #pragma once
 
-#include <pcl_ext/search/neighbourhood_source.h>
+#include <pcl_ext/search/neighbourhood_options.h>
 #include <pcl_ext/point_types.h>
 #include <pcl_ext/search/nanoflann_kdtree.h>
 #include <pcl_ext/segmentation/local_planes.h>
@@ -82,7 +82,8 @@ namespace pcl_ext
   * \endcode
   */
 template <typename PointT>
-class LocalSurfaceIntersection : public pcl::PCLBase<PointT>
+class LocalSurfaceIntersection : public pcl::PCLBase<PointT>,
+                                 public NeighbourhoodOptions<PointT>
 {
 public:
   using Ptr = pcl::shared_ptr<LocalSurfaceIntersection<PointT>>;
@@ -134,26 +135,6 @@ public:
 
   NormalCloudConstPtr
   getInputNormals () const { return normals_; }
-
-  /** \brief Number of neighbours k of the search, the point included. Default 50 (the
-    * paper's); valid: >= 3. */
-  void
-  setKSearch (int k) { k_ = k; }
-
-  int
-  getKSearch () const { return k_; }
-
-  /** \brief Search for the neighbourhoods. Default null: pcl_ext::search::NanoflannKdTree. */
-  void
-  setSearchMethod (const SearchPtr& search) { search_ = search; }
-
-  /** \brief Shared neighbourhoods of the whole input cloud (no indices); then k is theirs.
-    * Default: none, compute() searches itself. */
-  void
-  setNeighbourhoods (const NeighbourhoodsConstPtr& neighbourhoods)
-  {
-    source_.setShared (neighbourhoods);
-  }
 
   /** \brief Threshold on the angle theta between the two normals (eq. 9), in radians: below
     * it the surfaces are parallel and not intersected. Default 10 degrees (0.1745); valid:
@@ -213,13 +194,6 @@ public:
   bool
   getAssignAmbiguous () const { return assign_ambiguous_; }
 
-  /** \brief OpenMP threads. Default 0: all cores. */
-  void
-  setNumberOfThreads (unsigned int nr_threads = 0) { threads_ = nr_threads; }
-
-  unsigned int
-  getNumberOfThreads () const { return threads_; }
-
   /** \brief Intersect the segments and re-integrate edge and boundary points.
     *
     * Only the points named by setIndices are examined (all by default); their neighbours may
@@ -238,6 +212,12 @@ public:
   getReport () const { return report_; }
 
 protected:
+  using NeighbourhoodOptions<PointT>::k_;
+  using NeighbourhoodOptions<PointT>::radius_;
+  using NeighbourhoodOptions<PointT>::max_radius_;
+  using NeighbourhoodOptions<PointT>::search_;
+  using NeighbourhoodOptions<PointT>::threads_;
+  using NeighbourhoodOptions<PointT>::source_;
   using pcl::PCLBase<PointT>::input_;
   using pcl::PCLBase<PointT>::indices_;
   using pcl::PCLBase<PointT>::fake_indices_;
@@ -303,16 +283,12 @@ protected:
   LabelCloudConstPtr segments_;
   LabelCloudConstPtr classes_;
   NormalCloudConstPtr normals_;
-  int k_ = 50;
-  SearchPtr search_;
-  NeighbourhoodSource<PointT> source_;
   double parallel_angle_ = 0.17453292519943295;
   double distance_tolerance_ = 0.0;
   double reach_ = 0.0;
   double reach_factor_ = 3.0;
   double fit_tolerance_ = 0.0;
   bool assign_ambiguous_ = true;
-  unsigned int threads_ = 0;
 
   const Neighbourhoods<PointT>* nb_ = nullptr;  ///< during compute()
   /** \brief The segmented surface points, searched within the reach, during compute(). */

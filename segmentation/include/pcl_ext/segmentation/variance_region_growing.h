@@ -5,7 +5,7 @@
 #pragma once
 
 #include <pcl_ext/point_types.h>
-#include <pcl_ext/search/neighbourhood_source.h>
+#include <pcl_ext/search/neighbourhood_options.h>
 #include <pcl_ext/segmentation/local_planes.h>
 
 #include <pcl/PointIndices.h>
@@ -58,7 +58,8 @@ growSurfaceSegments (const std::vector<std::size_t>& offsets, const pcl::Indices
   *
   * The points come labelled surface, edge or boundary (section 2: the output of
   * pcl_ext::LocalVarianceClassification::classify, given with setInputClasses, as
-  * pcl::RegionGrowing takes its normals). Then every surface point in turn is a seed: its neighbours are visited nearest first and
+  * pcl::RegionGrowing takes its normals). Then every surface point in turn is a seed: its
+  * neighbours are visited nearest first and
   * - an unlabelled surface neighbour joins the seed's segment;
   * - a surface neighbour already in another segment merges the two segments;
   * - a non-surface neighbour (edge, boundary or unknown) stops the walk through the list, as
@@ -77,8 +78,8 @@ growSurfaceSegments (const std::vector<std::size_t>& offsets, const pcl::Indices
   *   stop". They do not depend on the seed order, so the result is the same in every run and
   *   for any thread count. The walks are made in parallel; the links are united
   *   sequentially, in point order, into a union-find whose root is the smallest point index.
-  * - The neighbours are those of the shared pcl_ext::Neighbourhoods (the classifier's own,
-  *   k = 50 by default), the seed excluded. Neighbours that are not among the indices
+  * - The neighbours are the k nearest (50 by default, the paper's k) or those of shared
+  *   pcl_ext::Neighbourhoods (best the classifier's own), the seed excluded. Neighbours that are not among the indices
   *   (setIndices) are skipped: they are not segmented and were not classified.
   * - The paper's limit on the distance from the seed is, by default, 3 times the seed's local
   *   point spacing (setMaxDistanceFactor) rather than one distance for the whole cloud: the
@@ -113,7 +114,7 @@ growSurfaceSegments (const std::vector<std::size_t>& offsets, const pcl::Indices
   * pcl_ext::segmentByLocalVariance (classification module) does the same in one call.
   */
 template <typename PointT>
-class VarianceRegionGrowing : public pcl::PCLBase<PointT>
+class VarianceRegionGrowing : public pcl::PCLBase<PointT>, public NeighbourhoodOptions<PointT>
 {
 public:
   /** \brief The smallest m of the local spacing of setMaxDistanceFactor. */
@@ -128,52 +129,6 @@ public:
   using LabelCloudConstPtr = typename LabelCloud::ConstPtr;
 
   VarianceRegionGrowing () = default;
-
-  /** \brief Number of neighbours k, the point included, for the walk. Default 50 (the
-    * paper's); valid: 3 .. number of finite points. Clears the radius. */
-  void
-  setKSearch (int k) { k_ = k; radius_ = 0.0; }
-
-  int
-  getKSearch () const { return k_; }
-
-  /** \brief Neighbourhood radius instead of k, in the cloud's units. Default 0 (k is used);
-    * valid: > 0. Clears k. */
-  void
-  setRadiusSearch (double radius) { radius_ = radius; k_ = 0; }
-
-  double
-  getRadiusSearch () const { return radius_; }
-
-  /** \brief With k: keep only the neighbours within this distance, in the cloud's units (the k
-    * nearest within it), for the walk. Default 0: no cap, the paper's
-    * k nearest; valid: finite, >= 0; ignored with a radius or shared neighbourhoods. See
-    * LocalVarianceClassification::setMaxRadius: where k neighbours of a sparse surface reach
-    * a second one (the other face of a thin wall) its points are edges, and no segment grows
-    * on it. */
-  void
-  setMaxRadius (double radius) { max_radius_ = radius; }
-
-  double
-  getMaxRadius () const { return max_radius_; }
-
-  /** \brief Search for the neighbourhoods. Default null: pcl_ext::search::NanoflannKdTree. */
-  void
-  setSearchMethod (const SearchPtr& search) { search_ = search; }
-
-  SearchPtr
-  getSearchMethod () const { return search_; }
-
-  /** \brief Shared neighbourhoods, computed for the same cloud and indices (then k and radius
-    * are theirs). Default: none, extract() searches itself. */
-  void
-  setNeighbourhoods (const NeighbourhoodsConstPtr& neighbourhoods)
-  {
-    source_.setShared (neighbourhoods);
-  }
-
-  NeighbourhoodsConstPtr
-  getNeighbourhoods () const { return source_.getShared (); }
 
   /** \brief Point classes to grow on, one pcl::Label per index with a pcl_ext::PointClass
     * value: the output of pcl_ext::LocalVarianceClassification::classify for the same cloud
@@ -232,14 +187,6 @@ public:
   bool
   getFitPlanes () const { return fit_planes_; }
 
-  /** \brief OpenMP threads for the search, the walks and the plane fits.
-    * Default 0: all cores. Results do not depend on it. */
-  void
-  setNumberOfThreads (unsigned int nr_threads = 0) { threads_ = nr_threads; }
-
-  unsigned int
-  getNumberOfThreads () const { return threads_; }
-
   /** \brief Segment the cloud (the indices, if set).
     * \param[out] clusters one PointIndices per segment, largest first; empty after a
     * PCL_ERROR */
@@ -263,6 +210,12 @@ public:
   getSegmentPlanes () const { return planes_; }
 
 protected:
+  using NeighbourhoodOptions<PointT>::k_;
+  using NeighbourhoodOptions<PointT>::radius_;
+  using NeighbourhoodOptions<PointT>::max_radius_;
+  using NeighbourhoodOptions<PointT>::search_;
+  using NeighbourhoodOptions<PointT>::threads_;
+  using NeighbourhoodOptions<PointT>::source_;
   using pcl::PCLBase<PointT>::input_;
   using pcl::PCLBase<PointT>::indices_;
   using pcl::PCLBase<PointT>::fake_indices_;
@@ -277,18 +230,12 @@ protected:
   bool
   checkClasses () const;
 
-  int k_ = 50;
-  double radius_ = 0.0;
-  double max_radius_ = 0.0;
-  SearchPtr search_;
-  NeighbourhoodSource<PointT> source_;
   LabelCloudConstPtr classes_;
   double max_distance_ = 0.0;
   double max_distance_factor_ = 3.0;
   pcl::uindex_t min_size_ = 1;
   pcl::uindex_t max_size_ = std::numeric_limits<pcl::uindex_t>::max ();
   bool fit_planes_ = false;
-  unsigned int threads_ = 0;
 
   // Results of the last extract().
   std::vector<pcl::PointIndices> clusters_;

@@ -48,12 +48,6 @@ pcl_ext::LocalVarianceClassification<PointT>::checkParameters () const
                noise_sigma_);
     return false;
   }
-  if (!(max_radius_ >= 0.0) || !std::isfinite (max_radius_))
-  {
-    PCL_ERROR ("%s maximum radius = %g; it must be finite and >= 0 (0: none).\n", name,
-               max_radius_);
-    return false;
-  }
   if (!(boundary_band_fraction_ > 0.0 && boundary_band_fraction_ <= 1.0))
   {
     PCL_ERROR ("%s boundary band fraction = %g; it must lie in (0, 1].\n", name,
@@ -72,13 +66,7 @@ pcl_ext::LocalVarianceClassification<PointT>::checkParameters () const
                confidence_);
     return false;
   }
-  if (k_ != 0 && k_ < static_cast<int> (kMinNeighbours))
-  {
-    PCL_ERROR ("%s k = %d; a tangent plane needs at least %zu neighbours.\n", name, k_,
-               kMinNeighbours);
-    return false;
-  }
-  return true;
+  return this->checkNeighbourhoodOptions (name, static_cast<int> (kMinNeighbours));
 }
 
 template <typename PointT>
@@ -274,10 +262,9 @@ pcl_ext::LocalVarianceClassification<PointT>::classify (pcl::PointCloud<pcl::Lab
     deinitCompute ();
     return;
   }
-  const Neighbourhoods<PointT>* nb =
-      source_.prepare ("LocalVarianceClassification::classify", input_,
-                       fake_indices_ ? pcl::IndicesConstPtr () : indices_, k_, radius_, search_,
-                       threads_, max_radius_);
+  const Neighbourhoods<PointT>* nb = this->prepareNeighbourhoods (
+      "LocalVarianceClassification::classify", input_,
+      fake_indices_ ? pcl::IndicesConstPtr () : indices_);
   if (!nb)
   {
     deinitCompute ();
@@ -312,7 +299,7 @@ pcl_ext::LocalVarianceClassification<PointT>::classify (pcl::PointCloud<pcl::Lab
     widenBoundaries (*nb, labels);
   labels.header = input_->header;
   labels.is_dense = true;
-  source_.release ();
+  this->releaseNeighbourhoods ();
   deinitCompute ();
 }
 

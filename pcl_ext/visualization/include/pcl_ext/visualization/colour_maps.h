@@ -27,8 +27,9 @@ enum class ColourMap
   Grey      ///< black to white
 };
 
-/** \brief Distinct colours per label: the same label always gets the same colour (hue by the
-  * golden ratio of a hash), label 0 ("unsegmented" / "ignore") is grey. */
+/** \brief Distinct colours per label: label L > 0 gets pcl_ext::segmentColour (L - 1), the
+  * colour of segment L - 1 in the segmenters' getColoredCloud, so the same label always gets
+  * the same colour in every picture; label 0 ("unsegmented" / "ignore") is grey. */
 std::vector<Colour>
 colourByLabel (const std::vector<std::uint32_t>& labels);
 

@@ -61,11 +61,8 @@ pcl_ext::LocalSurfaceIntersection<PointT>::checkInput () const
   }
   if (!indicesInRange (*indices_, n, name))
     return false;
-  if (k_ < 3)
-  {
-    PCL_ERROR ("%s k = %d; a local plane needs at least 3 neighbours.\n", name, k_);
+  if (!this->checkNeighbourhoodOptions (name, 3))
     return false;
-  }
   if (!(parallel_angle_ >= 0.0 && parallel_angle_ <= 0.5 * M_PI))
   {
     PCL_ERROR ("%s parallel angle threshold = %g rad; valid: 0 .. pi/2.\n", name,
@@ -388,8 +385,8 @@ pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersect
   }
   // Neighbourhoods of the whole cloud: a point's partner and the points its plane is fitted
   // to need not be among the indices.
-  nb_ = source_.prepare ("LocalSurfaceIntersection::compute", input_, pcl::IndicesConstPtr (),
-                         k_, 0.0, search_, threads_);
+  nb_ = this->prepareNeighbourhoods ("LocalSurfaceIntersection::compute", input_,
+                                     pcl::IndicesConstPtr ());
   if (!nb_)
   {
     deinitCompute ();
@@ -417,7 +414,7 @@ pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersect
                "surface point and in a segment: nothing to intersect or to re-integrate "
                "into.\n");
     nb_ = nullptr;
-    source_.release ();
+    this->releaseNeighbourhoods ();
     deinitCompute ();
     return false;
   }
@@ -448,7 +445,7 @@ pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersect
 
   nb_ = nullptr;
   reach_tree_.reset ();
-  source_.release ();
+  this->releaseNeighbourhoods ();
   deinitCompute ();
   return true;
 }

@@ -33,31 +33,13 @@ pcl_ext::VarianceRegionGrowing<PointT>::checkParameters () const
                name, max_distance_factor_);
     return false;
   }
-  if (!(max_radius_ >= 0.0) || !std::isfinite (max_radius_))
-  {
-    PCL_ERROR ("%s maximum radius = %g; it must be finite and >= 0 (0: none).\n", name,
-               max_radius_);
-    return false;
-  }
   if (min_size_ < 1 || max_size_ < min_size_)
   {
     PCL_ERROR ("%s Need 1 <= minimum cluster size (%u) <= maximum cluster size (%u).\n", name,
                static_cast<unsigned int> (min_size_), static_cast<unsigned int> (max_size_));
     return false;
   }
-  if (k_ != 0 && k_ < static_cast<int> (kMinNeighbours))
-  {
-    PCL_ERROR ("%s k = %d; a tangent plane needs at least %zu neighbours.\n", name, k_,
-               kMinNeighbours);
-    return false;
-  }
-  if (k_ < 0 || !(radius_ >= 0.0) || !std::isfinite (radius_))
-  {
-    PCL_ERROR ("%s k = %d, radius = %g; give k >= %zu or a finite radius > 0.\n", name, k_,
-               radius_, kMinNeighbours);
-    return false;
-  }
-  return true;
+  return this->checkNeighbourhoodOptions (name, static_cast<int> (kMinNeighbours));
 }
 
 template <typename PointT> bool
@@ -105,10 +87,9 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>&
     deinitCompute ();
     return;
   }
-  const Neighbourhoods<PointT>* const nb =
-      source_.prepare ("VarianceRegionGrowing::extract", input_,
-                       fake_indices_ ? pcl::IndicesConstPtr () : indices_, k_, radius_, search_,
-                       threads_, max_radius_);
+  const Neighbourhoods<PointT>* const nb = this->prepareNeighbourhoods (
+      "VarianceRegionGrowing::extract", input_,
+      fake_indices_ ? pcl::IndicesConstPtr () : indices_);
   if (!nb)
   {
     deinitCompute ();
@@ -129,7 +110,7 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>&
   {
     PCL_ERROR ("%s No surface point among the %zu points: nothing to grow from (are the "
                "classification thresholds right for this cloud?).\n", name, indices_->size ());
-    source_.release ();
+    this->releaseNeighbourhoods ();
     deinitCompute ();
     return;
   }
@@ -198,7 +179,7 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (std::vector<pcl::PointIndices>&
     for (std::ptrdiff_t c = 0; c < n; ++c)
       planes_[c] = fitSegmentPlane (*input_, clusters_[c].indices, viewpoint);
   }
-  source_.release ();
+  this->releaseNeighbourhoods ();
   clusters = clusters_;
   deinitCompute ();
 }
