@@ -46,7 +46,9 @@ trainedCrf ()
     // The subject is classification's input handling, not the model's quality: a few
     // optimiser steps and a fixed edge scale (no search over BP runs) give a valid model in a
     // fraction of the time, paid by every case (ctest runs each case in its own process).
-    c->getModel ().settings ().max_training_iterations = 10;
+    pcl_ext::CrfSettings settings = c->getModel ().getSettings ();
+    settings.max_training_iterations = 10;
+    c->getModel ().setSettings (settings);
     c->setEdgeScale (1.0);
     EXPECT_TRUE (c->train ({cloud}, {labels}));
     return c;
