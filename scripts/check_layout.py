@@ -9,7 +9,8 @@
 - no header of one method module includes another method module's impl/ file;
 - no source, header or CMake file in the tree is longer than 600 lines;
 - no library code prints (std::cout, std::cerr, printf): libraries report through PCL_ERROR,
-  PCL_WARN and PCL_DEBUG.
+  PCL_WARN and PCL_DEBUG;
+- every C++ file is formatted as .clang-format says (clang-format --dry-run -Werror).
 Exits non-zero and names every breach.
 """
 import os
@@ -88,6 +89,12 @@ def main():
             m = re.match(r"\s*#include <pcl_ext/(\w+)/impl/", line)
             if m and top in METHODS and m.group(1) in METHODS and m.group(1) != top:
                 errors.append("%s:%d: includes another method module's impl/ file" % (f, i))
+    for i in range(0, len(code), 50):
+        run = subprocess.run(["clang-format", "--dry-run", "-Werror"] + code[i:i + 50],
+                             cwd=ROOT, capture_output=True, text=True)
+        if run.returncode != 0:
+            for f in sorted(set(re.findall(r"^([^\s:]+\.(?:h|hpp|cpp)):\d+", run.stderr, re.M))):
+                errors.append("%s: not formatted (clang-format -i %s)" % (f, f))
     with tempfile.TemporaryDirectory() as build_dir:
         check_graph(dependency_graph(sys.argv[1] if len(sys.argv) > 1 else build_dir), errors)
     for e in errors:
