@@ -94,8 +94,11 @@ TEST (FitLocalPlane, TotalLeastSquaresAndGivenNormal)
   // Fewer than 3 points, or collinear ones, have no plane.
   EXPECT_FALSE (pcl_ext::fitLocalPlane (cloud, indices.begin (), indices.begin () + 2, nullptr,
                                         plane));
-  const std::vector<pcl::index_t> row {0, 21, 42, 63};  // one line of the grid (i = 0..3, j = 0)
-  EXPECT_FALSE (pcl_ext::fitLocalPlane (cloud, row.begin (), row.end (), nullptr, plane));
+  Cloud line;
+  for (int i = 0; i < 5; ++i)
+    line.push_back (Point (0.25f * i, 0.5f * i, 0.f));  // exactly collinear
+  const std::vector<pcl::index_t> all {0, 1, 2, 3, 4};
+  EXPECT_FALSE (pcl_ext::fitLocalPlane (line, all.begin (), all.end (), nullptr, plane));
 }
 
 TEST (IntersectLocalPlanes, TwoFacesOfABoxMeetOnTheirCrease)
