@@ -14,5 +14,5 @@ if(TARGET pcl_ext_visualization AND TARGET pcl_ext_simulation)
     DEPENDS
       pcl_ext::common pcl_ext_apps_common pcl_ext::simulation pcl_ext::visualization
       pcl_ext::evaluation pcl_ext::segmentation pcl_ext::classification
-      pcl_ext::registration pcl_ext::io)
+      pcl_ext::registration pcl_ext::io pcl_ext_scene_crf_input)
 endif()

@@ -9,6 +9,7 @@
 #include <pcl_ext/io/point_table.h>
 #include <pcl_ext/simulation/scenes.h>
 #include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/apps/scene_crf_input.h>
 
 #include <cstdio>
 
@@ -24,17 +25,7 @@ street (std::uint64_t seed, std::size_t points, pcl_ext::CrfInput& in,
   pcl_ext::simulation::SyntheticScene scene;
   if (!pcl_ext::simulation::generateScene ("street", p, scene))
     return false;
-  auto xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  for (const auto& q : scene.cloud)
-  {
-    xyz->push_back (pcl::PointXYZ (q.x, q.y, q.z));
-    const float sum = static_cast<float> (q.r) + q.g + q.b;
-    in.colours.push_back (sum > 0.f ? Eigen::Vector3f (q.r / sum, q.g / sum, q.b / sum)
-                                    : Eigen::Vector3f::Constant (1.f / 3.f));
-    in.intensity.push_back (q.intensity);
-    labels.push_back (q.label);
-  }
-  in.xyz = xyz;
+  in = pcl_ext::apps::makeCrfInput (scene, labels);
   return true;
 }
 

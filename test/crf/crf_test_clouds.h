@@ -3,6 +3,7 @@
  */
 #pragma once
 
+#include <pcl_ext/apps/scene_crf_input.h>
 #include <pcl_ext/classification/crf_model.h>
 #include <pcl_ext/simulation/scenes.h>
 
@@ -56,20 +57,7 @@ streetScene (std::uint64_t seed, std::size_t points, pcl_ext::CrfInput& input,
   pcl_ext::simulation::SyntheticScene scene;
   if (!pcl_ext::simulation::generateScene ("street", p, scene))
     return false;
-  auto xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  labels.clear ();
-  input.colours.clear ();
-  input.intensity.clear ();
-  for (const auto& q : scene.cloud)
-  {
-    xyz->push_back (pcl::PointXYZ (q.x, q.y, q.z));
-    const float sum = static_cast<float> (q.r) + q.g + q.b;
-    input.colours.push_back (sum > 0.f ? Eigen::Vector3f (q.r / sum, q.g / sum, q.b / sum)
-                                       : Eigen::Vector3f::Constant (1.f / 3.f));
-    input.intensity.push_back (q.intensity);
-    labels.push_back (q.label);
-  }
-  input.xyz = xyz;
+  input = pcl_ext::apps::makeCrfInput (scene, labels);
   if (keep)
     *keep = std::move (scene);
   return true;

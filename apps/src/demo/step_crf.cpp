@@ -7,6 +7,7 @@
 #include <pcl_ext/classification/crf_model.h>
 #include <pcl_ext/evaluation/classification_metrics.h>
 #include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/apps/scene_crf_input.h>
 #include <pcl_ext/visualization/colour_maps.h>
 
 #include <cstdio>
@@ -15,28 +16,6 @@ namespace pcl_ext
 {
 namespace demo
 {
-namespace
-{
-CrfInput
-toInput (const simulation::SyntheticScene& scene, std::vector<std::uint32_t>& labels)
-{
-  CrfInput in;
-  auto xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  labels.clear ();
-  for (const auto& q : scene.cloud)
-  {
-    xyz->push_back (pcl::PointXYZ (q.x, q.y, q.z));
-    const float sum = static_cast<float> (q.r) + q.g + q.b;
-    in.colours.push_back (sum > 0.f ? Eigen::Vector3f (q.r / sum, q.g / sum, q.b / sum)
-                                    : Eigen::Vector3f::Constant (1.f / 3.f));
-    in.intensity.push_back (q.intensity);
-    labels.push_back (q.label);
-  }
-  in.xyz = xyz;
-  return in;
-}
-}  // namespace
-
 bool
 runCrfStep (DemoContext& context)
 {
@@ -52,8 +31,8 @@ runCrfStep (DemoContext& context)
   if (!simulation::generateScene ("street", p, test_scene))
     return false;
   std::vector<std::uint32_t> train_labels, truth;
-  const CrfInput train = toInput (train_scene, train_labels);
-  const CrfInput test = toInput (test_scene, truth);
+  const CrfInput train = apps::makeCrfInput (train_scene, train_labels);
+  const CrfInput test = apps::makeCrfInput (test_scene, truth);
   MultiscaleCrfModel model;
   CrfSettings settings = model.getSettings ();
   settings.threads = context.threads;

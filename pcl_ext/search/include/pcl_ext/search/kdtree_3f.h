@@ -20,10 +20,12 @@ namespace search
   * Holds its own copy of the coordinates, stored in the tree's leaf order so that the points of
   * one leaf are contiguous in memory (a query touches few cache lines). Built on nanoflann;
   * nanoflann stays an implementation detail. NanoflannKdTree<PointT> wraps it as a
-  * pcl::search::Search, and Neighbourhoods uses it directly.
+  * pcl::search::Search; Neighbourhoods, when its search is a NanoflannKdTree (the default),
+  * queries the tree underneath (NanoflannKdTree::getTree()) directly.
   *
-  * Tree positions (0 .. size()-1) enumerate the points in spatial order; pointIndex() maps a
-  * position back to the index the point was given with, point() gives its coordinates.
+  * Tree positions (0 .. size()-1) enumerate the points in spatial order, leaf after leaf
+  * (leafRanges()); point() gives the coordinates at a position and pointIndex() the index the
+  * point was given with to build(). Searches return those point indices.
   */
 class KdTree3f
 {
@@ -77,7 +79,8 @@ public:
 
   /** \brief All neighbours within \a radius of \a query.
     * \param[in] max_nn keep only the max_nn closest (0: all)
-    * \param[in] sorted sort by distance (always done when max_nn limits the result) */
+    * \param[in] sorted sort by distance (always done when max_nn limits the result)
+    * \return the number found (0 for a radius that is not positive) */
   std::size_t
   radiusSearch (const float* query, double radius, pcl::Indices& indices,
                 std::vector<float>& sqr_distances, std::size_t max_nn = 0,
