@@ -6,6 +6,7 @@ PCL_EXT_PACKAGES=(
   libpcl-dev libnanoflann-dev libboost-dev libeigen3-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth
+  clang-format python3
 )
 # scripts/test.sh --fuzz only: clang with its libFuzzer / sanitizer runtimes and OpenMP.
 PCL_EXT_FUZZ_PACKAGES=(clang-14 libclang-rt-14-dev libomp-14-dev)

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Build pcl_ext and run its tests.
 #
-#   scripts/test.sh                    # Release build in build/, then every test (ctest)
+#   scripts/test.sh                    # the layout checks (scripts/check_layout.py), then a
+#                                      # Release build in build/ and every test (ctest)
 #   scripts/test.sh --sanitize         # ASan + UBSan build in build-sanitize/, then every test
 #   scripts/test.sh --sanitize-quick   # ASan + UBSan build in build-sanitize-quick/ with the
 #                                      # libraries precompiled for the point types these tests
 #                                      # use, then the unit tests of io, common, search,
 #                                      # apps/common, evaluation, features, segmentation and
-#                                      # the fuzz seeds
-#                                      # (not the scene-sized `quality` tests of those folders)
+#                                      # the fuzz seeds (not the scene-sized `quality` tests)
 #   scripts/test.sh --fuzz [SECONDS]   # clang libFuzzer build in build-fuzz/, then each fuzz
 #                                      # target for SECONDS (default 30) from its seed corpus
 #   BUILD_DIR=... BUILD_TYPE=... scripts/test.sh [option]
@@ -24,7 +24,7 @@ source "$here/common.sh"
 mode="${1:-default}"
 case "$mode" in
   default|--sanitize|--sanitize-quick|--fuzz) ;;
-  -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
+  -h|--help) sed -n '2,18p' "${BASH_SOURCE[0]}"; exit 0 ;;
   *) echo "unknown option '$mode' (see scripts/test.sh --help)" >&2; exit 2 ;;
 esac
 build_type="${BUILD_TYPE:-Release}"
@@ -85,6 +85,9 @@ if [ "$mode" != default ]; then
 fi
 
 pcl_ext_install_packages
+if [ "$mode" = default ]; then
+  python3 "$here/check_layout.py"
+fi
 cmake -S "$root" -B "$build_dir" "${cmake_args[@]}"
 if [ "$mode" = "--sanitize-quick" ]; then
   # The unit tests of those folders and what they need, nothing else (test/CMakeLists.txt).
