@@ -24,7 +24,7 @@ source "$here/common.sh"
 mode="${1:-default}"
 case "$mode" in
   default|--sanitize|--sanitize-quick|--fuzz) ;;
-  -h|--help) sed -n '2,18p' "${BASH_SOURCE[0]}"; exit 0 ;;
+  -h|--help) sed -n '2,17p' "${BASH_SOURCE[0]}"; exit 0 ;;
   *) echo "unknown option '$mode' (see scripts/test.sh --help)" >&2; exit 2 ;;
 esac
 build_type="${BUILD_TYPE:-Release}"
