@@ -4,7 +4,6 @@
  */
 #pragma once
 
-#include <pcl_ext/evaluation/registration_metrics.h>
 #include <pcl_ext/io/footprints.h>
 #include <pcl_ext/registration/map_planes.h>
 #include <pcl_ext/registration/plane_extraction.h>
@@ -12,6 +11,7 @@
 
 #include <pcl/registration/registration.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,7 +32,9 @@ namespace pcl_ext
   *
   * Departures from the text are listed with each function (signed d, projection, offsets at
   * the data, sign handling, up-axis and extent checks, bounds around a guess). align() works
-  * as for any pcl::Registration. getFinalTransformation() maps the scan into the map's local
+  * as for any pcl::Registration. getFitnessScore() is the mean distance between the matched
+  * planes after the transform, on the scan points (section 4 measures the same distances for
+  * Tables 1-2). getFinalTransformation() maps the scan into the map's local
   * frame (map coordinates minus getLocalOrigin()), in float as PCL's interface has it, and
   * getFinalTransformationDouble() gives it in double. The guess of align(output, guess) is in
   * that frame too (a georeferenced scan: a translation by -getLocalOrigin()) and is used only
@@ -63,6 +65,25 @@ public:
   }
   void
   align (PointCloudSource& output, const Matrix4& guess);
+
+  /** \brief The mean distance between the matched planes after the final transform, in the
+    * units of the clouds (metres): for each pair of the match set, the root mean square of
+    * the orthogonal distances of the scan plane's inlier points, moved by
+    * getFinalTransformationDouble(), to its (infinite) map plane; then the mean over the
+    * pairs, each plane counting once. With noise sigma on the points and the right pose it is
+    * about sigma; a wrong pose adds its misalignment. This is not pcl::Registration's score
+    * (the mean squared distance to the nearest target point, here the map's wall corners):
+    * pcl::Registration::getFitnessScore is not virtual, so through a pcl::Registration
+    * pointer that score is the one called.
+    * \param[in] max_range inlier points farther than this from their map plane are left out
+    *            (default: none)
+    * \return the mean; std::numeric_limits<double>::max () when the last align() did not
+    *         converge or no matched plane has a finite inlier within \a max_range (planes
+    *         given by setSourcePlanes() without inliers) */
+  double
+  getFitnessScore (double max_range = std::numeric_limits<double>::max ());
+  /** \brief pcl::Registration's score of two sets of correspondence distances. */
+  using Base::getFitnessScore;
 
   /** \brief Map planes from footprints (section 3.1). The local origin is \a parameters.origin,
     * or when it is zero and \a choose_origin is true, chooseLocalOrigin() (bounding-box centre
@@ -174,10 +195,6 @@ public:
   /** \brief Match set, its transform and residuals, and the Table 3 / figure 6 counts. */
   const PlaneMatchingResult&
   getMatchingResult () const { return result_; }
-  /** \brief Mean and maximum distance between matched planes (Tables 1-2), measured on the
-    * transformed inlier points of each matched scan plane. */
-  const PlaneDistanceMetrics&
-  getPlaneDistances () const { return distances_; }
   /** \brief The final transform in double (scan to map - origin). */
   const Eigen::Matrix4d&
   getFinalTransformationDouble () const { return final_double_; }
@@ -217,7 +234,6 @@ private:
   std::vector<ScanPlane> target_scan_planes_;
   std::vector<RegistrationPlane> target_planes_;
   PlaneMatchingResult result_;
-  PlaneDistanceMetrics distances_;
   Eigen::Matrix4d final_double_ = Eigen::Matrix4d::Identity ();
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero ();
 };

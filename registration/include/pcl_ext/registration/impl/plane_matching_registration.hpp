@@ -8,8 +8,12 @@
 #include <pcl_ext/registration/plane_matching_registration.h>
 
 #include <pcl/common/io.h>
+#include <pcl/common/point_tests.h>
 #include <pcl/common/transforms.h>
 #include <pcl/console/print.h>
+
+#include <cmath>
+#include <limits>
 
 namespace pcl_ext
 {
@@ -28,13 +32,51 @@ PlaneMatchingRegistration<PointSource, PointTarget>::align (PointCloudSource& ou
   {
     converged_ = false;
     result_ = PlaneMatchingResult ();
-    distances_ = PlaneDistanceMetrics ();
     final_transformation_.setIdentity ();
     final_double_.setIdentity ();
     output.clear ();
     return;
   }
   Base::align (output, guess);
+}
+
+template <typename PointSource, typename PointTarget> double
+PlaneMatchingRegistration<PointSource, PointTarget>::getFitnessScore (double max_range)
+{
+  if (!converged_ || !input_)
+    return std::numeric_limits<double>::max ();
+  const Eigen::Matrix3d block = final_double_.topLeftCorner<3, 3> ();
+  const Eigen::Vector3d translation = final_double_.topRightCorner<3, 1> ();
+  double sum = 0.0;
+  std::size_t planes = 0;
+  for (const auto& pair : result_.matches)
+  {
+    // Scan planes given by setSourcePlanes() after align() may no longer be those matched.
+    if (static_cast<std::size_t> (pair.scan) >= source_planes_.size ())
+      continue;
+    const RegistrationPlane& map = target_planes_[pair.map];
+    double squares = 0.0;
+    std::size_t points = 0;
+    for (const auto i : source_planes_[pair.scan].inliers.indices)
+    {
+      if (i < 0 || static_cast<std::size_t> (i) >= input_->size () ||
+          !pcl::isXYZFinite ((*input_)[i]))
+        continue;
+      const Eigen::Vector3d x =
+          block * (*input_)[i].getVector3fMap ().template cast<double> () + translation;
+      const double distance = std::abs (map.signedDistance (x));
+      if (distance > max_range)
+        continue;
+      squares += distance * distance;
+      ++points;
+    }
+    if (points > 0)
+    {
+      sum += std::sqrt (squares / static_cast<double> (points));
+      ++planes;
+    }
+  }
+  return planes > 0 ? sum / static_cast<double> (planes) : std::numeric_limits<double>::max ();
 }
 
 template <typename PointSource, typename PointTarget> bool
@@ -118,7 +160,6 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (Poin
 {
   converged_ = false;
   result_ = PlaneMatchingResult ();
-  distances_ = PlaneDistanceMetrics ();
   final_double_.setIdentity ();
   target_planes_.clear ();
   if (input_->empty ())
@@ -163,18 +204,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (Poin
   if (!matchPlanes (scan, target_planes_, parameters_, result_, guess.template cast<double> ()))
     return;
 
-  // Tables 1-2: mean and maximum distance of the matched scan inliers to their map planes.
-  std::vector<pcl::PointIndices> inliers;
-  for (const auto& plane : source_planes_)
-    inliers.push_back (plane.inliers);
-  std::vector<Eigen::Vector4d> coefficients;
-  for (const auto& plane : target_planes_)
-    coefficients.push_back (plane.coefficients ());
-  pcl::Correspondences matches;
-  for (const auto& pair : result_.matches)
-    matches.emplace_back (pair.scan, pair.map, 0.f);
   final_double_ = result_.estimate.transformation;
-  computePlaneDistances (*input_, inliers, coefficients, matches, final_double_, distances_);
 
   final_transformation_ = transformation_ = final_double_.cast<float> ();
   // pcl::Registration::align filled output with the indexed points.
