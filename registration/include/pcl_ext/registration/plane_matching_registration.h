@@ -32,9 +32,11 @@ namespace pcl_ext
   *
   * Departures from the text are listed with each function (signed d, projection, offsets at
   * the data, sign handling, up-axis and extent checks, bounds around a guess). align() works
-  * as for any pcl::Registration. getFitnessScore() is the mean distance between the matched
-  * planes after the transform, on the scan points (section 4 measures the same distances for
-  * Tables 1-2). getFinalTransformation() maps the scan into the map's local
+  * as for any pcl::Registration, also through a pcl::Registration pointer: every check is made
+  * in computeTransformation() or when the input is set, and a failure is a PCL_ERROR and
+  * hasConverged() == false. getFitnessScore() is the mean distance between the matched planes
+  * after the transform, on the scan points (section 4 measures the same distances for Tables
+  * 1-2). getFinalTransformation() maps the scan into the map's local
   * frame (map coordinates minus getLocalOrigin()), in float as PCL's interface has it, and
   * getFinalTransformationDouble() gives it in double. The guess of align(output, guess) is in
   * that frame too (a georeferenced scan: a translation by -getLocalOrigin()) and is used only
@@ -47,6 +49,7 @@ class PlaneMatchingRegistration : public pcl::Registration<PointSource, PointTar
 public:
   using Base = pcl::Registration<PointSource, PointTarget, float>;
   using typename Base::PointCloudSource;
+  using typename Base::PointCloudSourceConstPtr;
   using typename Base::PointCloudTarget;
   using typename Base::Matrix4;
   using Ptr = pcl::shared_ptr<PlaneMatchingRegistration<PointSource, PointTarget>>;
@@ -54,17 +57,28 @@ public:
 
   PlaneMatchingRegistration ();
 
-  /** \brief pcl::Registration::align, with the indices checked first: the base class copies
-    * the indexed points into \a output before anything else sees them. With setIndices(),
-    * the scan planes come from the indexed points only (their inlier indices still index the
-    * input cloud). An index out of range: PCL_ERROR, empty \a output, not converged. */
+  /** \brief The scan, as pcl::Registration::setInputSource, with the indices checked against
+    * it (see setIndices()). An empty cloud is a PCL_ERROR, as there, but it is kept, so that
+    * align() fails on it instead of registering the previous cloud again. */
   void
-  align (PointCloudSource& output)
-  {
-    align (output, Matrix4::Identity ());
-  }
+  setInputSource (const PointCloudSourceConstPtr& cloud) override;
+
+  /** \brief The points of the scan to register, as PCLBase::setIndices; default: all. The scan
+    * planes come from the indexed points only (their inlier indices still index the input
+    * cloud). pcl::Registration::align copies the indexed points into its output before
+    * computeTransformation() runs, so the indices are checked whenever they or the source
+    * cloud are set: an index outside the cloud is a PCL_ERROR, the indices are held back
+    * (getIndices() gives an empty set) until indices or cloud are set again, and align() then
+    * fails (PCL_ERROR, empty output, not converged). Indices changed through their pointer
+    * after being set must be set again. */
   void
-  align (PointCloudSource& output, const Matrix4& guess);
+  setIndices (const pcl::IndicesPtr& indices) override;
+  void
+  setIndices (const pcl::IndicesConstPtr& indices) override;
+  void
+  setIndices (const pcl::PointIndicesConstPtr& indices) override;
+  /** \brief A block of an organised cloud, as PCLBase (which checks it against the cloud). */
+  using Base::setIndices;
 
   /** \brief The mean distance between the matched planes after the final transform, in the
     * units of the clouds (metres): for each pair of the match set, the root mean square of
@@ -210,6 +224,7 @@ protected:
   using Base::indices_;
   using Base::input_;
   using Base::reg_name_;
+  using Base::source_cloud_updated_;
   using Base::target_;
   using Base::transformation_;
 
@@ -219,6 +234,10 @@ protected:
 private:
   void
   setCornerTarget ();
+  /** \brief Hold back indices that do not fit the source cloud, or restore held-back ones
+    * that fit a new cloud; \a method names the caller in the PCL_ERROR. */
+  void
+  holdBackIndicesOutOfRange (const char* method);
   /** \brief Source plane sets by the extractor, from the indexed points when indices are set. */
   bool
   extractSourcePlaneSets (std::vector<pcl::PointIndices>& sets) const;
@@ -234,6 +253,7 @@ private:
   std::vector<ScanPlane> target_scan_planes_;
   std::vector<RegistrationPlane> target_planes_;
   PlaneMatchingResult result_;
+  pcl::IndicesPtr held_back_indices_;  // indices out of range of the source, see setIndices
   Eigen::Matrix4d final_double_ = Eigen::Matrix4d::Identity ();
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero ();
 };

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace pcl_ext
 {
@@ -26,18 +27,64 @@ PlaneMatchingRegistration<PointSource, PointTarget>::PlaneMatchingRegistration (
 }
 
 template <typename PointSource, typename PointTarget> void
-PlaneMatchingRegistration<PointSource, PointTarget>::align (PointCloudSource& output, const Matrix4& guess)
+PlaneMatchingRegistration<PointSource, PointTarget>::setInputSource (
+    const PointCloudSourceConstPtr& cloud)
 {
-  if (input_ && indices_ && !indicesInRange (*indices_, input_->size (), "[pcl_ext::PlaneMatchingRegistration::align]"))
+  if (cloud && cloud->empty ())
   {
-    converged_ = false;
-    result_ = PlaneMatchingResult ();
-    final_transformation_.setIdentity ();
-    final_double_.setIdentity ();
-    output.clear ();
-    return;
+    PCL_ERROR ("[pcl_ext::%s::setInputSource] The source cloud is empty.\n", reg_name_.c_str ());
+    source_cloud_updated_ = true;
+    pcl::PCLBase<PointSource>::setInputCloud (cloud);
   }
-  Base::align (output, guess);
+  else
+    Base::setInputSource (cloud);
+  holdBackIndicesOutOfRange ("setInputSource");
+}
+
+template <typename PointSource, typename PointTarget> void
+PlaneMatchingRegistration<PointSource, PointTarget>::setIndices (const pcl::IndicesPtr& indices)
+{
+  held_back_indices_.reset ();
+  Base::setIndices (indices);
+  holdBackIndicesOutOfRange ("setIndices");
+}
+
+template <typename PointSource, typename PointTarget> void
+PlaneMatchingRegistration<PointSource, PointTarget>::setIndices (
+    const pcl::IndicesConstPtr& indices)
+{
+  held_back_indices_.reset ();
+  Base::setIndices (indices);
+  holdBackIndicesOutOfRange ("setIndices");
+}
+
+template <typename PointSource, typename PointTarget> void
+PlaneMatchingRegistration<PointSource, PointTarget>::setIndices (
+    const pcl::PointIndicesConstPtr& indices)
+{
+  held_back_indices_.reset ();
+  Base::setIndices (indices);
+  holdBackIndicesOutOfRange ("setIndices");
+}
+
+template <typename PointSource, typename PointTarget> void
+PlaneMatchingRegistration<PointSource, PointTarget>::holdBackIndicesOutOfRange (const char* method)
+{
+  // pcl::Registration::align reads the indexed points before computeTransformation runs: an
+  // index outside the cloud must not reach it. Held-back indices get another chance with a
+  // new cloud.
+  if (held_back_indices_)
+  {
+    indices_ = held_back_indices_;
+    held_back_indices_.reset ();
+  }
+  if (!input_ || !indices_ || fake_indices_)
+    return;
+  const std::string caller = "[pcl_ext::" + reg_name_ + "::" + method + "]";
+  if (indicesInRange (*indices_, input_->size (), caller.c_str ()))
+    return;
+  held_back_indices_ = indices_;
+  indices_.reset (new pcl::Indices);
 }
 
 template <typename PointSource, typename PointTarget> double
@@ -162,6 +209,17 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (Poin
   result_ = PlaneMatchingResult ();
   final_double_.setIdentity ();
   target_planes_.clear ();
+  // pcl::Registration::align has copied the indexed points into output: held-back indices
+  // gave none (see setIndices), and indices changed through their pointer since are refused.
+  if (held_back_indices_ ||
+      (!fake_indices_ && !indicesInRange (*indices_, input_->size (),
+                                          "[pcl_ext::PlaneMatchingRegistration::align]")))
+  {
+    PCL_ERROR ("[pcl_ext::%s::align] The indices do not fit the source cloud.\n",
+               reg_name_.c_str ());
+    output.clear ();
+    return;
+  }
   if (input_->empty ())
   {
     PCL_ERROR ("[pcl_ext::%s::align] The source cloud is empty.\n", reg_name_.c_str ());
@@ -205,7 +263,6 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (Poin
     return;
 
   final_double_ = result_.estimate.transformation;
-
   final_transformation_ = transformation_ = final_double_.cast<float> ();
   // pcl::Registration::align filled output with the indexed points.
   pcl::transformPointCloud (output, output, final_transformation_);
