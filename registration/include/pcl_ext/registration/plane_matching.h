@@ -93,9 +93,8 @@ struct PlaneMatchingResult
   * of constraint 3 that need no estimate (see plane_matching_scoring.cpp): for four pairs, the
   * combination of their distance rows that cancels the translation must stay within what the
   * tolerances allow, and under constraint 1 no near-horizontal pair may turn the up axis over.
-  * They skip most estimates (on the building scene at m = n = 12, k = 4: 8,849 instead of
-  * 209,930) and never reject a combination the estimate would accept, so the counts and the
-  * result are those of estimating every combination.
+  * They skip most estimates and never reject a combination the estimate would accept, so the
+  * counts and the result are those of estimating every combination.
   * Each surviving combination is extended: every other scan plane (all of them, largest
   * first) is transformed to the map and paired with the most similar unused map plane; the pair
   * is kept if the transform re-estimated with it keeps every residual within the tolerances.
