@@ -50,7 +50,7 @@ extentsOverlap (const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, doub
          (b.min ().array () - m.array () <= a.max ().array ()).all ();
 }
 
-/** \brief A match set found from one initial combination, extended. */
+/** \brief A match set of section 3.3: one initial combination, extended. */
 struct Candidate
 {
   bool valid = false;
@@ -74,7 +74,9 @@ better (const Candidate& a, const Candidate& b)
   return a.order < b.order;
 }
 
-// What every worker shares: the planes, the initial sets and their angle tables.
+/** \brief What every search worker shares (Khoshelham & Gorte 2009, section 3.3): the planes,
+  * the m and n initial planes of eq. 13, the tables of constraints 1 and 2, the bounds around
+  * a guess (beyond the paper) and the sign pattern sets (papers/README.md: unknown signs). */
 struct Context
 {
   const std::vector<RegistrationPlane>& scan;

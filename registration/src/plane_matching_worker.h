@@ -15,9 +15,11 @@ namespace pcl_ext
 {
 namespace plane_matching
 {
-/** \brief One thread's share of the search: the initial combinations of the tasks it runs, each
-  * tried with its sign patterns, screened and estimated, and the survivors extended; keeps the
-  * best match set it has seen and its counts.
+/** \brief One thread's share of the initiate-and-extend search of Khoshelham & Gorte (2009),
+  * section 3.3: the initial combinations of eq. 13 in the tasks it runs, each tried with its
+  * sign patterns, screened and estimated (eq. 12, constraint 3), and the survivors extended;
+  * keeps the best match set it has seen and its counts. Departures from the text are those of
+  * matchPlanes.
   *
   * Its parts live in one source file each: the enumeration of combinations and sign patterns
   * (plane_matching_search.cpp), the scoring of a hypothesis against constraint 3 and the bounds
