@@ -83,8 +83,8 @@ public:
   /** \brief The mean distance between the matched planes after the final transform, in the
     * units of the clouds (metres): for each pair of the match set, the root mean square of
     * the orthogonal distances of the scan plane's inlier points, moved by
-    * getFinalTransformationDouble(), to its (infinite) map plane; then the mean over the
-    * pairs, each plane counting once. With noise sigma on the points and the right pose it is
+    * getFinalTransformationDouble(), to its (infinite) map plane (scan to scan: the target
+    * cloud's plane); then the mean over the pairs, each plane counting once. With noise sigma on the points and the right pose it is
     * about sigma; a wrong pose adds its misalignment. This is not pcl::Registration's score
     * (the mean squared distance to the nearest target point, here the map's wall corners):
     * pcl::Registration::getFitnessScore is not virtual, so through a pcl::Registration
