@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include "plane_distances.h"
 #include "plane_fixtures.h"
 
 #include <pcl_ext/evaluation/registration_metrics.h>
@@ -106,7 +107,7 @@ registerToMap (const Building& b)
   Eigen::Matrix4d truth = b.scene.scan_to_map;
   truth.topRightCorner<3, 1> () -= reg.getLocalOrigin ();
   o.error = computeTransformationError (reg.getFinalTransformationDouble (), truth, centroidOf (*b.cloud));
-  o.distances = reg.getPlaneDistances ();
+  o.distances = planeDistances (reg, *b.cloud);
   o.scan_planes = reg.getSourcePlanes ().size ();
   o.map_planes = reg.getMapPlanes ().size ();
   o.matches = reg.getMatchingResult ().matches.size ();

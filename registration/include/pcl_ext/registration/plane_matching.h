@@ -91,7 +91,7 @@ struct PlaneMatchingResult
   *    for k = 3 too.
   * Combinations whose map normals do not span 3D are counted as degenerate and skipped.
   * Before its estimate, each sign pattern of a combination is screened by necessary conditions
-  * of constraint 3 that need no estimate (see plane_matching.cpp): for four pairs, the
+  * of constraint 3 that need no estimate (see plane_matching_scoring.cpp): for four pairs, the
   * combination of their distance rows that cancels the translation must stay within what the
   * tolerances allow, and under constraint 1 no near-horizontal pair may turn the up axis over.
   * They skip most estimates (docs/khoshelham_gorte.md has the counts on the building scene)

@@ -4,7 +4,6 @@
  */
 #pragma once
 
-#include <pcl_ext/evaluation/registration_metrics.h>
 #include <pcl_ext/io/footprints.h>
 #include <pcl_ext/registration/map_planes.h>
 #include <pcl_ext/registration/plane_extraction.h>
@@ -12,6 +11,7 @@
 
 #include <pcl/registration/registration.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,7 +32,11 @@ namespace pcl_ext
   *
   * Departures from the text are listed with each function (signed d, projection, offsets at
   * the data, sign handling, up-axis and extent checks, bounds around a guess). align() works
-  * as for any pcl::Registration. getFinalTransformation() maps the scan into the map's local
+  * as for any pcl::Registration, also through a pcl::Registration pointer: every check is made
+  * in computeTransformation() or when the input is set, and a failure is a PCL_ERROR and
+  * hasConverged() == false. getFitnessScore() is the mean distance between the matched planes
+  * after the transform, on the scan points (section 4 measures the same distances for Tables
+  * 1-2). getFinalTransformation() maps the scan into the map's local
   * frame (map coordinates minus getLocalOrigin()), in float as PCL's interface has it, and
   * getFinalTransformationDouble() gives it in double. The guess of align(output, guess) is in
   * that frame too (a georeferenced scan: a translation by -getLocalOrigin()) and is used only
@@ -45,6 +49,7 @@ class PlaneMatchingRegistration : public pcl::Registration<PointSource, PointTar
 public:
   using Base = pcl::Registration<PointSource, PointTarget, float>;
   using typename Base::PointCloudSource;
+  using typename Base::PointCloudSourceConstPtr;
   using typename Base::PointCloudTarget;
   using typename Base::Matrix4;
   using Ptr = pcl::shared_ptr<PlaneMatchingRegistration<PointSource, PointTarget>>;
@@ -52,17 +57,47 @@ public:
 
   PlaneMatchingRegistration ();
 
-  /** \brief pcl::Registration::align, with the indices checked first: the base class copies
-    * the indexed points into \a output before anything else sees them. With setIndices(),
-    * the scan planes come from the indexed points only (their inlier indices still index the
-    * input cloud). An index out of range: PCL_ERROR, empty \a output, not converged. */
+  /** \brief The scan, as pcl::Registration::setInputSource, with the indices checked against
+    * it (see setIndices()). An empty cloud is a PCL_ERROR, as there, but it is kept, so that
+    * align() fails on it instead of registering the previous cloud again. */
   void
-  align (PointCloudSource& output)
-  {
-    align (output, Matrix4::Identity ());
-  }
+  setInputSource (const PointCloudSourceConstPtr& cloud) override;
+
+  /** \brief The points of the scan to register, as PCLBase::setIndices; default: all. The scan
+    * planes come from the indexed points only (their inlier indices still index the input
+    * cloud). pcl::Registration::align copies the indexed points into its output before
+    * computeTransformation() runs, so the indices are checked whenever they or the source
+    * cloud are set: an index outside the cloud is a PCL_ERROR, the indices are held back
+    * (getIndices() gives an empty set) until indices or cloud are set again, and align() then
+    * fails (PCL_ERROR, empty output, not converged). Indices changed through their pointer
+    * after being set must be set again. */
   void
-  align (PointCloudSource& output, const Matrix4& guess);
+  setIndices (const pcl::IndicesPtr& indices) override;
+  void
+  setIndices (const pcl::IndicesConstPtr& indices) override;
+  void
+  setIndices (const pcl::PointIndicesConstPtr& indices) override;
+  /** \brief A block of an organised cloud, as PCLBase (which checks it against the cloud). */
+  using Base::setIndices;
+
+  /** \brief The mean distance between the matched planes after the final transform, in the
+    * units of the clouds (metres): for each pair of the match set, the root mean square of
+    * the orthogonal distances of the scan plane's inlier points, moved by
+    * getFinalTransformationDouble(), to its (infinite) map plane (scan to scan: the target
+    * cloud's plane); then the mean over the pairs, each plane counting once. With noise sigma on the points and the right pose it is
+    * about sigma; a wrong pose adds its misalignment. This is not pcl::Registration's score
+    * (the mean squared distance to the nearest target point, here the map's wall corners):
+    * pcl::Registration::getFitnessScore is not virtual, so through a pcl::Registration
+    * pointer that score is the one called.
+    * \param[in] max_range inlier points farther than this from their map plane are left out
+    *            (default: none)
+    * \return the mean; std::numeric_limits<double>::max () when the last align() did not
+    *         converge or no matched plane has a finite inlier within \a max_range (planes
+    *         given by setSourcePlanes() without inliers) */
+  double
+  getFitnessScore (double max_range = std::numeric_limits<double>::max ());
+  /** \brief pcl::Registration's score of two sets of correspondence distances. */
+  using Base::getFitnessScore;
 
   /** \brief Map planes from footprints (section 3.1). The local origin is \a parameters.origin,
     * or when it is zero and \a choose_origin is true, chooseLocalOrigin() (bounding-box centre
@@ -174,10 +209,6 @@ public:
   /** \brief Match set, its transform and residuals, and the Table 3 / figure 6 counts. */
   const PlaneMatchingResult&
   getMatchingResult () const { return result_; }
-  /** \brief Mean and maximum distance between matched planes (Tables 1-2), measured on the
-    * transformed inlier points of each matched scan plane. */
-  const PlaneDistanceMetrics&
-  getPlaneDistances () const { return distances_; }
   /** \brief The final transform in double (scan to map - origin). */
   const Eigen::Matrix4d&
   getFinalTransformationDouble () const { return final_double_; }
@@ -193,6 +224,7 @@ protected:
   using Base::indices_;
   using Base::input_;
   using Base::reg_name_;
+  using Base::source_cloud_updated_;
   using Base::target_;
   using Base::transformation_;
 
@@ -202,6 +234,10 @@ protected:
 private:
   void
   setCornerTarget ();
+  /** \brief Hold back indices that do not fit the source cloud, or restore held-back ones
+    * that fit a new cloud; \a method names the caller in the PCL_ERROR. */
+  void
+  holdBackIndicesOutOfRange (const char* method);
   /** \brief Source plane sets by the extractor, from the indexed points when indices are set. */
   bool
   extractSourcePlaneSets (std::vector<pcl::PointIndices>& sets) const;
@@ -217,7 +253,7 @@ private:
   std::vector<ScanPlane> target_scan_planes_;
   std::vector<RegistrationPlane> target_planes_;
   PlaneMatchingResult result_;
-  PlaneDistanceMetrics distances_;
+  pcl::IndicesPtr held_back_indices_;  // indices out of range of the source, see setIndices
   Eigen::Matrix4d final_double_ = Eigen::Matrix4d::Identity ();
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero ();
 };

@@ -8,8 +8,13 @@
 #include <pcl_ext/registration/plane_matching_registration.h>
 
 #include <pcl/common/io.h>
+#include <pcl/common/point_tests.h>
 #include <pcl/common/transforms.h>
 #include <pcl/console/print.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
 
 namespace pcl_ext
 {
@@ -22,19 +27,103 @@ PlaneMatchingRegistration<PointSource, PointTarget>::PlaneMatchingRegistration (
 }
 
 template <typename PointSource, typename PointTarget> void
-PlaneMatchingRegistration<PointSource, PointTarget>::align (PointCloudSource& output, const Matrix4& guess)
+PlaneMatchingRegistration<PointSource, PointTarget>::setInputSource (
+    const PointCloudSourceConstPtr& cloud)
 {
-  if (input_ && indices_ && !indicesInRange (*indices_, input_->size (), "[pcl_ext::PlaneMatchingRegistration::align]"))
+  if (cloud && cloud->empty ())
   {
-    converged_ = false;
-    result_ = PlaneMatchingResult ();
-    distances_ = PlaneDistanceMetrics ();
-    final_transformation_.setIdentity ();
-    final_double_.setIdentity ();
-    output.clear ();
-    return;
+    PCL_ERROR ("[pcl_ext::%s::setInputSource] The source cloud is empty.\n", reg_name_.c_str ());
+    source_cloud_updated_ = true;
+    pcl::PCLBase<PointSource>::setInputCloud (cloud);
   }
-  Base::align (output, guess);
+  else
+    Base::setInputSource (cloud);
+  holdBackIndicesOutOfRange ("setInputSource");
+}
+
+template <typename PointSource, typename PointTarget> void
+PlaneMatchingRegistration<PointSource, PointTarget>::setIndices (const pcl::IndicesPtr& indices)
+{
+  held_back_indices_.reset ();
+  Base::setIndices (indices);
+  holdBackIndicesOutOfRange ("setIndices");
+}
+
+template <typename PointSource, typename PointTarget> void
+PlaneMatchingRegistration<PointSource, PointTarget>::setIndices (
+    const pcl::IndicesConstPtr& indices)
+{
+  held_back_indices_.reset ();
+  Base::setIndices (indices);
+  holdBackIndicesOutOfRange ("setIndices");
+}
+
+template <typename PointSource, typename PointTarget> void
+PlaneMatchingRegistration<PointSource, PointTarget>::setIndices (
+    const pcl::PointIndicesConstPtr& indices)
+{
+  held_back_indices_.reset ();
+  Base::setIndices (indices);
+  holdBackIndicesOutOfRange ("setIndices");
+}
+
+template <typename PointSource, typename PointTarget> void
+PlaneMatchingRegistration<PointSource, PointTarget>::holdBackIndicesOutOfRange (const char* method)
+{
+  // pcl::Registration::align reads the indexed points before computeTransformation runs: an
+  // index outside the cloud must not reach it. Held-back indices get another chance with a
+  // new cloud.
+  if (held_back_indices_)
+  {
+    indices_ = held_back_indices_;
+    held_back_indices_.reset ();
+  }
+  if (!input_ || !indices_ || fake_indices_)
+    return;
+  const std::string caller = "[pcl_ext::" + reg_name_ + "::" + method + "]";
+  if (indicesInRange (*indices_, input_->size (), caller.c_str ()))
+    return;
+  held_back_indices_ = indices_;
+  indices_.reset (new pcl::Indices);
+}
+
+template <typename PointSource, typename PointTarget> double
+PlaneMatchingRegistration<PointSource, PointTarget>::getFitnessScore (double max_range)
+{
+  if (!converged_ || !input_)
+    return std::numeric_limits<double>::max ();
+  const Eigen::Matrix3d block = final_double_.topLeftCorner<3, 3> ();
+  const Eigen::Vector3d translation = final_double_.topRightCorner<3, 1> ();
+  double sum = 0.0;
+  std::size_t planes = 0;
+  for (const auto& pair : result_.matches)
+  {
+    // Scan planes given by setSourcePlanes() after align() may no longer be those matched.
+    if (static_cast<std::size_t> (pair.scan) >= source_planes_.size ())
+      continue;
+    const RegistrationPlane& map = target_planes_[pair.map];
+    double squares = 0.0;
+    std::size_t points = 0;
+    for (const auto i : source_planes_[pair.scan].inliers.indices)
+    {
+      if (i < 0 || static_cast<std::size_t> (i) >= input_->size () ||
+          !pcl::isXYZFinite ((*input_)[i]))
+        continue;
+      const Eigen::Vector3d x =
+          block * (*input_)[i].getVector3fMap ().template cast<double> () + translation;
+      const double distance = std::abs (map.signedDistance (x));
+      if (distance > max_range)
+        continue;
+      squares += distance * distance;
+      ++points;
+    }
+    if (points > 0)
+    {
+      sum += std::sqrt (squares / static_cast<double> (points));
+      ++planes;
+    }
+  }
+  return planes > 0 ? sum / static_cast<double> (planes) : std::numeric_limits<double>::max ();
 }
 
 template <typename PointSource, typename PointTarget> bool
@@ -118,9 +207,19 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (Poin
 {
   converged_ = false;
   result_ = PlaneMatchingResult ();
-  distances_ = PlaneDistanceMetrics ();
   final_double_.setIdentity ();
   target_planes_.clear ();
+  // pcl::Registration::align has copied the indexed points into output: held-back indices
+  // gave none (see setIndices), and indices changed through their pointer since are refused.
+  if (held_back_indices_ ||
+      (!fake_indices_ && !indicesInRange (*indices_, input_->size (),
+                                          "[pcl_ext::PlaneMatchingRegistration::align]")))
+  {
+    PCL_ERROR ("[pcl_ext::%s::align] The indices do not fit the source cloud.\n",
+               reg_name_.c_str ());
+    output.clear ();
+    return;
+  }
   if (input_->empty ())
   {
     PCL_ERROR ("[pcl_ext::%s::align] The source cloud is empty.\n", reg_name_.c_str ());
@@ -163,19 +262,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (Poin
   if (!matchPlanes (scan, target_planes_, parameters_, result_, guess.template cast<double> ()))
     return;
 
-  // Tables 1-2: mean and maximum distance of the matched scan inliers to their map planes.
-  std::vector<pcl::PointIndices> inliers;
-  for (const auto& plane : source_planes_)
-    inliers.push_back (plane.inliers);
-  std::vector<Eigen::Vector4d> coefficients;
-  for (const auto& plane : target_planes_)
-    coefficients.push_back (plane.coefficients ());
-  pcl::Correspondences matches;
-  for (const auto& pair : result_.matches)
-    matches.emplace_back (pair.scan, pair.map, 0.f);
   final_double_ = result_.estimate.transformation;
-  computePlaneDistances (*input_, inliers, coefficients, matches, final_double_, distances_);
-
   final_transformation_ = transformation_ = final_double_.cast<float> ();
   // pcl::Registration::align filled output with the indexed points.
   pcl::transformPointCloud (output, output, final_transformation_);
