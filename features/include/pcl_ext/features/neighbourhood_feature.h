@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pcl_ext/common/parallel.h>
-#include <pcl_ext/search/neighbourhood_source.h>
+#include <pcl_ext/search/neighbourhood_options.h>
 
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
@@ -24,32 +24,14 @@ namespace pcl_ext
   * search surface other than the input (setSearchSurface) is not supported (PCL_ERROR).
   */
 template <typename FeatureBase, typename PointInT>
-class NeighbourhoodFeature : public FeatureBase
+class NeighbourhoodFeature : public FeatureBase, public SharedNeighbourhoodsOption<PointInT>
 {
 public:
   using NeighbourhoodsConstPtr = typename Neighbourhoods<PointInT>::ConstPtr;
 
-  /** \brief Neighbourhoods computed once for the input cloud and indices and shared by several
-    * classes. Used when isComputedFor(input, indices); then k and radius are theirs.
-    * Default: none (each compute() searches with its own k or radius). */
-  void
-  setNeighbourhoods (const NeighbourhoodsConstPtr& neighbourhoods)
-  {
-    source_.setShared (neighbourhoods);
-  }
-
-  NeighbourhoodsConstPtr
-  getNeighbourhoods () const { return source_.getShared (); }
-
-  /** \brief OpenMP threads, for the search and the features. Default 0: all cores. Results do
-    * not depend on it. */
-  void
-  setNumberOfThreads (unsigned int nr_threads = 0) { threads_ = nr_threads; }
-
-  unsigned int
-  getNumberOfThreads () const { return threads_; }
-
 protected:
+  using SharedNeighbourhoodsOption<PointInT>::threads_;
+  using SharedNeighbourhoodsOption<PointInT>::source_;
   using FeatureBase::input_;
   using FeatureBase::indices_;
   using FeatureBase::fake_indices_;
@@ -175,9 +157,5 @@ protected:
 
   /** \brief The neighbourhoods of the current compute(); row r belongs to (*indices_)[r]. */
   const Neighbourhoods<PointInT>* nb_ = nullptr;
-  unsigned int threads_ = 0;
-
-private:
-  NeighbourhoodSource<PointInT> source_;
 };
 }  // namespace pcl_ext

@@ -212,12 +212,7 @@ public:
   getReport () const { return report_; }
 
 protected:
-  using NeighbourhoodOptions<PointT>::k_;
-  using NeighbourhoodOptions<PointT>::radius_;
-  using NeighbourhoodOptions<PointT>::max_radius_;
-  using NeighbourhoodOptions<PointT>::search_;
   using NeighbourhoodOptions<PointT>::threads_;
-  using NeighbourhoodOptions<PointT>::source_;
   using pcl::PCLBase<PointT>::input_;
   using pcl::PCLBase<PointT>::indices_;
   using pcl::PCLBase<PointT>::fake_indices_;

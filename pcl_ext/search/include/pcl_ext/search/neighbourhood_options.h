@@ -13,6 +13,42 @@
 
 namespace pcl_ext
 {
+/** \brief Shared neighbourhoods and the thread count of a class that searches its input's
+  * neighbourhoods: setNeighbourhoods takes pcl_ext::Neighbourhoods computed once and used by
+  * several classes (taken when computed for the same cloud and indices). A mixin of
+  * NeighbourhoodOptions and of the features' base, pcl_ext::NeighbourhoodFeature, whose k and
+  * radius are pcl::Feature's own.
+  */
+template <typename PointT>
+class SharedNeighbourhoodsOption
+{
+public:
+  using NeighbourhoodsConstPtr = typename Neighbourhoods<PointT>::ConstPtr;
+
+  /** \brief Shared neighbourhoods, computed for the same cloud and indices (then k, radius and
+    * maximum radius are theirs). Default: none, the class searches itself. */
+  void
+  setNeighbourhoods (const NeighbourhoodsConstPtr& neighbourhoods)
+  {
+    source_.setShared (neighbourhoods);
+  }
+
+  NeighbourhoodsConstPtr
+  getNeighbourhoods () const { return source_.getShared (); }
+
+  /** \brief OpenMP threads, for the search and the computation. Default 0: all cores. Results
+    * do not depend on it. */
+  void
+  setNumberOfThreads (unsigned int nr_threads = 0) { threads_ = nr_threads; }
+
+  unsigned int
+  getNumberOfThreads () const { return threads_; }
+
+protected:
+  unsigned int threads_ = 0;
+  NeighbourhoodSource<PointT> source_;
+};
+
 /** \brief The neighbourhood options shared by pcl_ext's classifiers and segmenters: k or a
   * radius, a maximum radius for k, the search method, shared neighbourhoods and the thread
   * count, one set/get pair each, and the search they configure.
@@ -24,10 +60,9 @@ namespace pcl_ext
   * computed for the same cloud and indices.
   */
 template <typename PointT>
-class NeighbourhoodOptions
+class NeighbourhoodOptions : public SharedNeighbourhoodsOption<PointT>
 {
 public:
-  using NeighbourhoodsConstPtr = typename Neighbourhoods<PointT>::ConstPtr;
   using SearchPtr = typename Neighbourhoods<PointT>::SearchPtr;
 
   /** \brief Number of neighbours k, the point included. Default 50 (Belton & Lichti's k);
@@ -64,25 +99,6 @@ public:
   SearchPtr
   getSearchMethod () const { return search_; }
 
-  /** \brief Shared neighbourhoods, computed for the same cloud and indices (then k, radius and
-    * maximum radius are theirs). Default: none, the class searches itself. */
-  void
-  setNeighbourhoods (const NeighbourhoodsConstPtr& neighbourhoods)
-  {
-    source_.setShared (neighbourhoods);
-  }
-
-  NeighbourhoodsConstPtr
-  getNeighbourhoods () const { return source_.getShared (); }
-
-  /** \brief OpenMP threads, for the search and the computation. Default 0: all cores. Results
-    * do not depend on it. */
-  void
-  setNumberOfThreads (unsigned int nr_threads = 0) { threads_ = nr_threads; }
-
-  unsigned int
-  getNumberOfThreads () const { return threads_; }
-
 protected:
   /** \brief PCL_ERROR (prefixed by \a caller) and false when k is below \a min_k, k and the
     * radius are negative or not finite, or the maximum radius is negative or not finite. */
@@ -118,19 +134,17 @@ protected:
                          const typename Neighbourhoods<PointT>::PointCloudConstPtr& cloud,
                          const pcl::IndicesConstPtr& indices)
   {
-    return source_.prepare (caller, cloud, indices, k_, radius_, search_, threads_,
-                            max_radius_);
+    return this->source_.prepare (caller, cloud, indices, k_, radius_, search_, this->threads_,
+                                  max_radius_);
   }
 
   /** \brief Free a search of our own (the rows can be large). */
   void
-  releaseNeighbourhoods () { source_.release (); }
+  releaseNeighbourhoods () { this->source_.release (); }
 
   int k_ = 50;
   double radius_ = 0.0;
   double max_radius_ = 0.0;
   SearchPtr search_;
-  unsigned int threads_ = 0;
-  NeighbourhoodSource<PointT> source_;
 };
 }  // namespace pcl_ext
