@@ -5,6 +5,7 @@
 
 #include <pcl_ext/registration/planes.h>
 
+#include <pcl/PointIndices.h>
 #include <pcl/pcl_base.h>
 #include <pcl/point_cloud.h>
 
@@ -48,6 +49,24 @@ template <typename PointT>
 using PlaneExtractor =
     std::function<bool (const typename pcl::PointCloud<PointT>::ConstPtr&, const pcl::IndicesConstPtr&,
                         std::vector<pcl::PointIndices>&)>;
+
+/** \brief A plane extraction class as a PlaneExtractor: a copy of \a extraction, run on the
+  * cloud and indices it is given. \a Extraction is a pcl::PCLBase<PointT> with
+  * bool extract (std::vector<pcl::PointIndices>&), as SACPlaneExtraction and
+  * RoofOutlinePlaneExtraction. */
+template <typename PointT, typename Extraction>
+PlaneExtractor<PointT>
+makePlaneExtractor (const Extraction& extraction)
+{
+  return [copy = extraction] (const typename pcl::PointCloud<PointT>::ConstPtr& cloud,
+                              const pcl::IndicesConstPtr& indices,
+                              std::vector<pcl::PointIndices>& planes) mutable {
+    copy.setInputCloud (cloud);
+    // A null pointer resets to every point (PCLBase makes its own indices in initCompute).
+    copy.setIndices (indices ? pcl::make_shared<pcl::Indices> (*indices) : pcl::IndicesPtr ());
+    return copy.extract (planes);
+  };
+}
 
 /** \brief Sequential RANSAC plane extraction with pcl::SACSegmentation: the largest plane,
   * then the largest of the rest, until \a max_planes or fewer than \a min_inliers remain.

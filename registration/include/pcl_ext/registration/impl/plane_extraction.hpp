@@ -188,14 +188,7 @@ SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
 template <typename PointT> PlaneExtractor<PointT>
 SACPlaneExtraction<PointT>::asExtractor () const
 {
-  SACPlaneExtraction<PointT> copy = *this;
-  return [copy] (const PointCloudConstPtr& cloud, const pcl::IndicesConstPtr& indices,
-                 std::vector<pcl::PointIndices>& planes) mutable {
-    copy.setInputCloud (cloud);
-    // A null pointer resets to every point (PCLBase makes its own indices in initCompute).
-    copy.setIndices (indices ? pcl::make_shared<pcl::Indices> (*indices) : pcl::IndicesPtr ());
-    return copy.extract (planes);
-  };
+  return makePlaneExtractor<PointT> (*this);
 }
 }  // namespace pcl_ext
 

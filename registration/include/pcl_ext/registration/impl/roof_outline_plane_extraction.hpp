@@ -284,14 +284,7 @@ RoofOutlinePlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& pla
 template <typename PointT> PlaneExtractor<PointT>
 RoofOutlinePlaneExtraction<PointT>::asExtractor () const
 {
-  RoofOutlinePlaneExtraction<PointT> copy = *this;
-  return [copy] (const PointCloudConstPtr& cloud, const pcl::IndicesConstPtr& indices,
-                 std::vector<pcl::PointIndices>& planes) mutable {
-    copy.setInputCloud (cloud);
-    // A null pointer resets to every point (PCLBase makes its own indices in initCompute).
-    copy.setIndices (indices ? pcl::make_shared<pcl::Indices> (*indices) : pcl::IndicesPtr ());
-    return copy.extract (planes);
-  };
+  return makePlaneExtractor<PointT> (*this);
 }
 }  // namespace pcl_ext
 
