@@ -1,11 +1,11 @@
 /*
  * ChiSquaredBoundaryEstimation (eq. 6-8): borders of planes and cylinders found, interiors
- * kept, the quantile, the printed (unscaled) form, the range-noise option, bad input.
+ * kept, the printed (unscaled) form, the range-noise option, bad input. The quantile and the
+ * statistic itself are tested with their kernels (test_local_variance.cpp).
  */
 #include "analytic_clouds.h"
 
 #include <pcl_ext/features/chi_squared_boundary.h>
-#include <pcl_ext/features/local_variance.h>
 
 #include <gtest/gtest.h>
 
@@ -32,16 +32,6 @@ boundaries (const Cloud::ConstPtr& cloud, int k, double confidence = 0.95, bool 
   return out;
 }
 }  // namespace
-
-TEST (ChiSquaredBoundaryEstimation, QuantileIsTheChiSquaredTwoDegreesOfFreedom)
-{
-  EXPECT_NEAR (pcl_ext::chiSquaredQuantile2 (0.95), 5.991, 1e-3);
-  EXPECT_NEAR (pcl_ext::chiSquaredQuantile2 (0.99), 9.210, 1e-3);
-  EXPECT_NEAR (pcl_ext::chiSquaredQuantile2 (0.5), 1.386, 1e-3);
-  EXPECT_TRUE (std::isnan (pcl_ext::chiSquaredQuantile2 (1.0)));
-  EXPECT_TRUE (std::isnan (pcl_ext::chiSquaredQuantile2 (0.0)));
-  EXPECT_TRUE (std::isnan (pcl_ext::chiSquaredQuantile2 (-0.5)));
-}
 
 TEST (ChiSquaredBoundaryEstimation, JitteredPlaneBorderFoundInteriorKept)
 {
@@ -102,27 +92,6 @@ TEST (ChiSquaredBoundaryEstimation, PrintedFormMissesStraightBorders)
   }
   ASSERT_GT (straight, 100u);
   EXPECT_EQ (straight_found, 0u);
-}
-
-TEST (ChiSquaredBoundaryEstimation, StatisticOfAHalfDiscMatchesTheClosedForm)
-{
-  // Index point at the middle of the diameter of a dense uniform half disc: centroid offset
-  // 4 r / (3 pi), variance across r^2 / 4 - (4 r / (3 pi))^2: statistic 2.57 (unscaled).
-  Cloud cloud;
-  cloud.push_back (pcl::PointXYZ (0, 0, 0));
-  const int n = 400;
-  for (int i = -n; i <= n; ++i)
-    for (int j = 0; j <= n; ++j)
-      if (i * i + j * j <= n * n && (i != 0 || j != 0))
-        cloud.push_back (pcl::PointXYZ (i / float (n), j / float (n), 0));
-  pcl::Indices all (cloud.size ());
-  for (std::size_t i = 0; i < all.size (); ++i)
-    all[i] = static_cast<pcl::index_t> (i);
-  pcl_ext::LocalCovariance local;
-  ASSERT_TRUE (pcl_ext::computeNeighbourhoodCovariance (cloud, all.begin (), all.end (), local));
-  const double c = 4.0 / (3.0 * M_PI);
-  EXPECT_NEAR (pcl_ext::centroidOffsetStatistic (Eigen::Vector3d::Zero (), local, false),
-               c * c / (0.25 - c * c), 0.02);  // 0.5% of a 400-step grid's discretisation
 }
 
 TEST (ChiSquaredBoundaryEstimation, NoiseOptionWidensTheRegionAndKeepsBorders)

@@ -1,9 +1,8 @@
 /*
- * Tests of the simulator's analytic primitives, curves and polynomial solver.
+ * Tests of the simulator's analytic primitives: ray hits on their surfaces, holes, cut spheres.
  */
 #include <pcl_ext/simulation/primitives.h>
 #include <pcl_ext/simulation/random.h>
-#include <pcl_ext/simulation/scene_geometry.h>
 
 #include <gtest/gtest.h>
 
@@ -39,20 +38,6 @@ checkHitsOnSurface (const Primitive& primitive, int rays, double tolerance)
   EXPECT_GT (hits, rays / 10);
 }
 }  // namespace
-
-TEST (SimulationPolynomial, QuarticRoots)
-{
-  // (t - 1)(t - 2)(t - 3)(t - 4) = t^4 - 10 t^3 + 35 t^2 - 50 t + 24
-  const double c[5] = {24, -50, 35, -10, 1};
-  double roots[4];
-  ASSERT_EQ (solvePolynomial (c, 4, 0.0, 10.0, roots), 4);
-  for (int i = 0; i < 4; ++i)
-    EXPECT_NEAR (roots[i], i + 1.0, 1e-12);
-  EXPECT_EQ (solvePolynomial (c, 4, 1.5, 2.5, roots), 1);
-  EXPECT_NEAR (roots[0], 2.0, 1e-12);
-  const double none[5] = {1, 0, 1, 0, 1};  // t^4 + t^2 + 1 > 0
-  EXPECT_EQ (solvePolynomial (none, 4, -10.0, 10.0, roots), 0);
-}
 
 TEST (SimulationPrimitives, HitsLieOnTheSurface)
 {
@@ -90,65 +75,4 @@ TEST (SimulationPrimitives, PolygonHolesAndCutSphere)
   Sphere cut (Vec3::Zero (), 1.0, -Vec3::UnitY (), 0.5);
   ASSERT_TRUE (cut.intersect ({Vec3 (0, -5, 0), Vec3::UnitY ()}, 0, 100, t, n));
   EXPECT_NEAR (t, 6.0, 1e-12);
-}
-
-TEST (SimulationCurves, Distances)
-{
-  GroundTruthCurve line;
-  line.a = Vec3 (0, 0, 0);
-  line.b = Vec3 (2, 0, 0);
-  EXPECT_NEAR (line.distance (Vec3 (1, 3, 4)), 5.0, 1e-12);
-  EXPECT_NEAR (line.distance (Vec3 (-3, 4, 0)), 5.0, 1e-12);
-  GroundTruthCurve circle;
-  circle.shape = GroundTruthCurve::Shape::Circle;
-  circle.a = Vec3 (0, 0, 1);
-  circle.b = Vec3::UnitZ ();
-  circle.radius = 2.0;
-  EXPECT_NEAR (circle.distance (Vec3 (5, 0, 5)), 5.0, 1e-12);
-  EXPECT_NEAR (circle.distance (Vec3 (0, 0, 1)), 2.0, 1e-12);
-}
-
-TEST (SimulationGeometry, BvhMatchesBruteForce)
-{
-  SceneGeometry geometry;
-  RandomStream rng (7);
-  for (int k = 0; k < 300; ++k)
-  {
-    const Vec3 c (20 * rng.uniform (), 20 * rng.uniform (), 5 * rng.uniform ());
-    auto sphere = std::make_shared<Sphere> (c, 0.2 + 0.5 * rng.uniform ());
-    sphere->info.segment = static_cast<std::uint32_t> (k + 1);
-    if (k % 5 == 0)
-      sphere->porosity = 0.5;
-    geometry.addPrimitive (sphere);
-  }
-  geometry.build ();
-  for (int r = 0; r < 5000; ++r)
-  {
-    Ray ray{Vec3 (10, 10, 2.5) + Vec3 (rng.gaussian (), rng.gaussian (), rng.gaussian ()),
-            Vec3 (rng.gaussian (), rng.gaussian (), rng.gaussian ()).normalized ()};
-    RayHit a, b;
-    const bool ha = geometry.intersect (ray, 50.0, r, a);
-    const bool hb = geometry.intersectBruteForce (ray, 50.0, r, b);
-    ASSERT_EQ (ha, hb);
-    if (ha)
-    {
-      EXPECT_EQ (a.primitive, b.primitive);
-      EXPECT_DOUBLE_EQ (a.t, b.t);
-    }
-  }
-}
-
-TEST (SimulationRandom, GaussianMoments)
-{
-  RandomStream rng (123);
-  double sum = 0, sum2 = 0;
-  const int n = 200000;
-  for (int i = 0; i < n; ++i)
-  {
-    const double g = rng.gaussian ();
-    sum += g;
-    sum2 += g * g;
-  }
-  EXPECT_NEAR (sum / n, 0.0, 0.01);
-  EXPECT_NEAR (sum2 / n, 1.0, 0.01);
 }

@@ -89,55 +89,6 @@ TEST (OffscreenRenderer, WritesPngOfRequestedSizeShowingTheCloud)
   std::remove (path.c_str ());
 }
 
-TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground)
-{
-  ASSERT_TRUE (pcl_ext::visualization::displayAvailable ())
-      << "this test needs an X display; scripts/test.sh starts Xvfb when none is set";
-  using namespace pcl_ext::visualization;
-  const RenderOptions one = makeMontageOptions (1, 200, 150);
-  EXPECT_EQ (one.columns, 1);
-  EXPECT_EQ (one.width, 200);
-  EXPECT_EQ (one.height, 150);
-  const RenderOptions nine = makeMontageOptions (9, 200, 150, 4);
-  EXPECT_EQ (nine.columns, 4);
-  EXPECT_EQ (nine.width, 800);
-  EXPECT_EQ (nine.height, 450);
-
-  // Three tiles in rows of two: the fourth place must be background, not the window's black.
-  const auto cloud = sphereCloud (5000);
-  std::vector<std::uint32_t> labels;
-  for (const auto& p : cloud)
-    labels.push_back (p.z > 0 ? 1 : 2);
-  std::vector<View> views;
-  for (const char* title : {"a", "b", "c"})
-    views.push_back (makeLabelView (title, cloud, labels, 3.0));
-  const RenderOptions options = makeMontageOptions (views.size (), 160, 120, 2);
-  const std::string path = temporaryPng ("montage");
-  std::remove (path.c_str ());
-  ASSERT_TRUE (renderToPng (views, path, options));
-  auto reader = vtkSmartPointer<vtkPNGReader>::New ();
-  reader->SetFileName (path.c_str ());
-  reader->Update ();
-  vtkImageData* image = reader->GetOutput ();
-  int dims[3];
-  image->GetDimensions (dims);
-  ASSERT_EQ (dims[0], 320);
-  ASSERT_EQ (dims[1], 240);
-  // PNG rows start at the bottom in VTK: the empty place is x >= 160, y < 120.
-  std::size_t drawn_bottom_left = 0, not_background_bottom_right = 0;
-  for (int y = 0; y < 120; ++y)
-    for (int x = 0; x < 320; ++x)
-    {
-      const auto* px = static_cast<unsigned char*> (image->GetScalarPointer (x, y, 0));
-      const bool background = px[0] > 245 && px[1] > 245 && px[2] > 245;
-      if (!background)
-        (x < 160 ? drawn_bottom_left : not_background_bottom_right) += 1;
-    }
-  EXPECT_GT (drawn_bottom_left, 500u);
-  EXPECT_EQ (not_background_bottom_right, 0u);
-  std::remove (path.c_str ());
-}
-
 TEST (OffscreenRenderer, RefusesNothingToDrawAndBadSizesWithoutWriting)
 {
   using namespace pcl_ext::visualization;
@@ -153,21 +104,6 @@ TEST (OffscreenRenderer, RefusesNothingToDrawAndBadSizesWithoutWriting)
   EXPECT_FALSE (renderToPng ({ok}, path, tiny));
   EXPECT_FALSE (renderToPng ({ok}, "/nonexistent-folder/x.png"));
   EXPECT_FALSE (std::ifstream (path).good ());
-}
-
-TEST (ColourMaps, LabelsAreStableAndDistinct)
-{
-  using namespace pcl_ext::visualization;
-  const auto a = colourByLabel ({0, 1, 2, 1});
-  EXPECT_EQ (a[0].r, 170);
-  EXPECT_EQ (a[1].r, a[3].r);
-  EXPECT_TRUE (a[1].r != a[2].r || a[1].g != a[2].g || a[1].b != a[2].b);
-  const auto s = colourByScalar ({0.0f, 1.0f, NAN}, ColourMap::Grey, 0.0f, 1.0f);
-  EXPECT_EQ (s[0].r, 0);
-  EXPECT_EQ (s[1].r, 255);
-  EXPECT_EQ (s[2].r, 70);
-  const auto c = colourByClass ({2});
-  EXPECT_EQ (c[0].r, 225);
 }
 
 TEST (OffscreenRenderer, LongTitlesStayInsideTheirPanel)

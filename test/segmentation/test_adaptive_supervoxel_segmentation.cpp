@@ -1,14 +1,13 @@
 /*
  * Tests of the adaptive super-voxels (Lim & Suter 2008, section 3.1).
  */
-#include "crf_test_clouds.h"
+#include "../features/crf_test_clouds.h"
 
 #include <pcl_ext/segmentation/adaptive_supervoxel_segmentation.h>
 
 #include <gtest/gtest.h>
 
 #include <limits>
-#include <map>
 
 using pcl_ext::AdaptiveSupervoxelSegmentation;
 using pcl_ext::SupervoxelSet;
@@ -105,60 +104,6 @@ TEST (AdaptiveSupervoxels, DeterministicForASeedAndAnyThreadCount)
   for (std::size_t v = 0; !differs && v < a.size (); ++v)
     differs = a.supervoxels[v].seed != c.supervoxels[v].seed;
   EXPECT_TRUE (differs) << "another seed should draw other mid-points";
-}
-
-TEST (AdaptiveSupervoxels, NoiseFromAPlanarPatch)
-{
-  // The mean distance to the plane of Gaussian noise sigma is sigma sqrt(2 / pi).
-  const auto cloud = crf_test::floorAndWall (0.02, 0.01);
-  std::vector<pcl::index_t> floor;
-  for (std::size_t i = 0; i < cloud->size (); ++i)
-    if ((*cloud)[i].x > 0.5f)
-      floor.push_back (static_cast<pcl::index_t> (i));
-  const double sigma = pcl_ext::estimateNoiseFromPlanarPatch (*cloud, floor);
-  EXPECT_NEAR (sigma, 0.01 * std::sqrt (2.0 / M_PI), 0.0005);
-  EXPECT_TRUE (std::isnan (pcl_ext::estimateNoiseFromPlanarPatch (*cloud, {0, 1})));
-  // The automatic estimate finds the same order of noise on the two planes.
-  pcl_ext::AdaptiveRadiusEstimator est;
-  ASSERT_TRUE (est.initialize (cloud, {}, pcl_ext::AdaptiveRadiusParameters ()));
-  EXPECT_GT (est.getNoise (), 0.005);
-  EXPECT_LT (est.getNoise (), 0.015);
-}
-
-TEST (AdaptiveSupervoxels, StreetBoundaryAdherenceAndReduction)
-{
-  pcl_ext::CrfInput in;
-  std::vector<std::uint32_t> labels;
-  ASSERT_TRUE (crf_test::streetScene (3, 60000, in, labels));
-  pcl_ext::SupervoxelSet set;
-  pcl_ext::SupervoxelParameters p;
-  ASSERT_TRUE (pcl_ext::computeAdaptiveSupervoxels (in.xyz, in.colours, p, set));
-  // A point is misplaced when it sits in a super-voxel whose majority class is not its own.
-  std::vector<char> misplaced (labels.size (), 0);
-  for (const auto& sv : set.supervoxels)
-  {
-    std::map<std::uint32_t, std::size_t> votes;
-    for (const auto i : sv.members)
-      ++votes[labels[i]];
-    std::uint32_t major = 0;
-    std::size_t best = 0;
-    for (const auto& [l, n] : votes)
-      if (n > best)
-        best = n, major = l;
-    for (const auto i : sv.members)
-      if (labels[i] != major)
-        misplaced[i] = 1;
-  }
-  std::size_t bad = 0;
-  for (const char m : misplaced)
-    bad += m;
-  const double fraction = static_cast<double> (bad) / labels.size ();
-  std::printf ("street: %zu points, %zu super-voxels (%.1f points per super-voxel), "
-               "%.2f %% of points in a super-voxel of another majority class\n",
-               labels.size (), set.size (), static_cast<double> (labels.size ()) / set.size (),
-               100.0 * fraction);
-  EXPECT_LT (fraction, 0.05);
-  EXPECT_GT (static_cast<double> (labels.size ()) / set.size (), 8.0);
 }
 
 TEST (AdaptiveSupervoxels, BadInputGivesEmptyOutput)

@@ -1,0 +1,115 @@
+/*
+ * Tests of PCD and PLY loading and saving: round trips and refused inputs.
+ */
+#include <pcl_ext/io/cloud_io.h>
+
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <dirent.h>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace
+{
+std::string
+freshFolder (const std::string& name)
+{
+  const std::string dir = testing::TempDir () + "/pcl_ext_" + name + "_" +
+                          std::to_string (::getpid ());
+  ::mkdir (dir.c_str (), 0755);
+  return dir;
+}
+
+std::vector<std::string>
+listFolder (const std::string& dir)
+{
+  std::vector<std::string> names;
+  if (DIR* d = ::opendir (dir.c_str ()))
+  {
+    while (dirent* e = ::readdir (d))
+      if (std::string (e->d_name) != "." && std::string (e->d_name) != "..")
+        names.push_back (e->d_name);
+    ::closedir (d);
+  }
+  return names;
+}
+}  // namespace
+
+TEST (CloudIo, RoundTripAndMalformedInput)
+{
+  const std::string dir = freshFolder ("cloud_io");
+  pcl::PointCloud<pcl::PointXYZI> cloud;
+  for (int i = 0; i < 10; ++i)
+  {
+    pcl::PointXYZI p;
+    p.x = i; p.y = 2 * i; p.z = 6000000.0f; p.intensity = 0.5f * i;
+    cloud.push_back (p);
+  }
+  for (const std::string ext : {"pcd", "ply"})
+  {
+    const std::string path = dir + "/c." + ext;
+    ASSERT_TRUE (pcl_ext::io::saveCloud (path, cloud));
+    pcl::PointCloud<pcl::PointXYZI> back;
+    ASSERT_TRUE (pcl_ext::io::loadCloud (path, back));
+    ASSERT_EQ (back.size (), cloud.size ());
+    EXPECT_EQ (back[7].y, 14.0f);
+    EXPECT_EQ (back[7].intensity, 3.5f);
+    std::remove (path.c_str ());
+  }
+  testing::internal::CaptureStderr ();
+  pcl::PCLPointCloud2 blob;
+  EXPECT_FALSE (pcl_ext::io::loadCloud (dir + "/missing.pcd", blob));
+  const std::string garbage = dir + "/garbage.pcd";
+  std::ofstream (garbage) << "VERSION .7\nFIELDS x y z\nSIZE 4 4\nnonsense\n";
+  EXPECT_FALSE (pcl_ext::io::loadCloud (garbage, blob));
+  const std::string truncated = dir + "/truncated.pcd";
+  std::ofstream (truncated) << "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
+                               "COUNT 1 1 1\nWIDTH 5\nHEIGHT 1\nPOINTS 5\nDATA binary\n\x01\x02";
+  EXPECT_FALSE (pcl_ext::io::loadCloud (truncated, blob));
+  // Files without a PCD header (PCL 1.13's reader crashes on them unless they are refused).
+  const std::string empty = dir + "/empty.pcd", text = dir + "/text.pcd";
+  const std::string no_fields = dir + "/nofields.pcd";
+  std::ofstream (empty) << "";
+  std::ofstream (text) << "not a point cloud\n";
+  std::ofstream (no_fields) << "VERSION 0.7\nFIELDS\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1\n";
+  for (const auto& f : {empty, text, no_fields})
+  {
+    EXPECT_FALSE (pcl_ext::io::loadCloud (f, blob)) << f;
+    std::remove (f.c_str ());
+  }
+  const std::string no_xyz = dir + "/noxyz.pcd";
+  std::ofstream (no_xyz) << "# .PCD v0.7\nVERSION 0.7\nFIELDS a\nSIZE 4\nTYPE F\nCOUNT 1\n"
+                            "WIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1\n";
+  EXPECT_FALSE (pcl_ext::io::loadCloud (no_xyz, blob));
+  EXPECT_FALSE (pcl_ext::io::loadCloud (dir + "/c.xyz", blob));
+  EXPECT_FALSE (pcl_ext::io::saveCloud (dir + "/out.txt", cloud));
+  testing::internal::GetCapturedStderr ();
+  for (const auto& f : {garbage, truncated, no_xyz})
+    std::remove (f.c_str ());
+  EXPECT_TRUE (listFolder (dir).empty ());
+  ::rmdir (dir.c_str ());
+}
+
+TEST (CloudIo, FolderIsRefusedWithoutHanging)
+{
+  // PCL's PCD reader never returns on a folder (its reads fail without reaching EOF).
+  const std::string dir = freshFolder ("cloud_io_folder");
+  const std::string folder = dir + "/folder.pcd", ply_folder = dir + "/folder.ply";
+  ASSERT_EQ (::mkdir (folder.c_str (), 0755), 0);
+  ASSERT_EQ (::mkdir (ply_folder.c_str (), 0755), 0);
+  testing::internal::CaptureStderr ();
+  pcl::PCLPointCloud2 blob;
+  EXPECT_FALSE (pcl_ext::io::loadCloud (folder, blob));
+  pcl::PointCloud<pcl::PointXYZ> typed;
+  EXPECT_FALSE (pcl_ext::io::loadCloud (ply_folder, typed));
+  const std::string message = testing::internal::GetCapturedStderr ();
+  EXPECT_NE (message.find ("folder.pcd: it is a folder"), std::string::npos) << message;
+  EXPECT_EQ (blob.width, 0u);
+  ::rmdir (folder.c_str ());
+  ::rmdir (ply_folder.c_str ());
+}

@@ -1,0 +1,89 @@
+/*
+ * Tests of montages: one tile per labelling of a cloud, every tile its own size however many
+ * there are. Renders, so it needs an X display (scripts/test.sh starts Xvfb when none is set).
+ */
+#include <pcl_ext/visualization/montage.h>
+
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <unistd.h>
+
+namespace
+{
+pcl::PointCloud<pcl::PointXYZ>
+sphereCloud (int n)
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 0; i < n; ++i)
+  {
+    // Fibonacci sphere: even coverage, no randomness.
+    const double z = 1.0 - 2.0 * (i + 0.5) / n;
+    const double r = std::sqrt (1.0 - z * z);
+    const double phi = i * 2.399963229728653;
+    cloud.push_back (pcl::PointXYZ (r * std::cos (phi), r * std::sin (phi), z));
+  }
+  return cloud;
+}
+
+std::string
+temporaryPng (const std::string& stem)
+{
+  return testing::TempDir () + "/" + stem + "_" + std::to_string (::getpid ()) + ".png";
+}
+}  // namespace
+
+TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground)
+{
+  ASSERT_TRUE (pcl_ext::visualization::displayAvailable ())
+      << "this test needs an X display; scripts/test.sh starts Xvfb when none is set";
+  using namespace pcl_ext::visualization;
+  const RenderOptions one = makeMontageOptions (1, 200, 150);
+  EXPECT_EQ (one.columns, 1);
+  EXPECT_EQ (one.width, 200);
+  EXPECT_EQ (one.height, 150);
+  const RenderOptions nine = makeMontageOptions (9, 200, 150, 4);
+  EXPECT_EQ (nine.columns, 4);
+  EXPECT_EQ (nine.width, 800);
+  EXPECT_EQ (nine.height, 450);
+
+  // Three tiles in rows of two: the fourth place must be background, not the window's black.
+  const auto cloud = sphereCloud (5000);
+  std::vector<std::uint32_t> labels;
+  for (const auto& p : cloud)
+    labels.push_back (p.z > 0 ? 1 : 2);
+  std::vector<View> views;
+  for (const char* title : {"a", "b", "c"})
+    views.push_back (makeLabelView (title, cloud, labels, 3.0));
+  const RenderOptions options = makeMontageOptions (views.size (), 160, 120, 2);
+  const std::string path = temporaryPng ("montage");
+  std::remove (path.c_str ());
+  ASSERT_TRUE (renderToPng (views, path, options));
+  auto reader = vtkSmartPointer<vtkPNGReader>::New ();
+  reader->SetFileName (path.c_str ());
+  reader->Update ();
+  vtkImageData* image = reader->GetOutput ();
+  int dims[3];
+  image->GetDimensions (dims);
+  ASSERT_EQ (dims[0], 320);
+  ASSERT_EQ (dims[1], 240);
+  // PNG rows start at the bottom in VTK: the empty place is x >= 160, y < 120.
+  std::size_t drawn_bottom_left = 0, not_background_bottom_right = 0;
+  for (int y = 0; y < 120; ++y)
+    for (int x = 0; x < 320; ++x)
+    {
+      const auto* px = static_cast<unsigned char*> (image->GetScalarPointer (x, y, 0));
+      const bool background = px[0] > 245 && px[1] > 245 && px[2] > 245;
+      if (!background)
+        (x < 160 ? drawn_bottom_left : not_background_bottom_right) += 1;
+    }
+  EXPECT_GT (drawn_bottom_left, 500u);
+  EXPECT_EQ (not_background_bottom_right, 0u);
+  std::remove (path.c_str ());
+}
