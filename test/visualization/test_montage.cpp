@@ -87,3 +87,52 @@ TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground
   EXPECT_EQ (not_background_bottom_right, 0u);
   std::remove (path.c_str ());
 }
+
+TEST (Montage, TileSizesColumnsAndLimits)
+{
+  using namespace pcl_ext::visualization;
+  const RenderOptions five = makeMontageOptions (5, 300, 200, 2);  // rows of 2: 3 rows
+  EXPECT_EQ (five.columns, 2);
+  EXPECT_EQ (five.width, 600);
+  EXPECT_EQ (five.height, 600);
+  const RenderOptions none = makeMontageOptions (0, 300, 200);  // taken as one tile
+  EXPECT_EQ (none.columns, 1);
+  EXPECT_EQ (none.width, 300);
+  EXPECT_EQ (none.height, 200);
+  const RenderOptions one_column = makeMontageOptions (3, 300, 200, 0);
+  EXPECT_EQ (one_column.columns, 1);
+  EXPECT_EQ (one_column.height, 600);
+  // Tiles no smaller than 16 pixels, the image no larger than 16384.
+  const RenderOptions tiny = makeMontageOptions (2, 1, 1);
+  EXPECT_EQ (tiny.width, 32);
+  EXPECT_EQ (tiny.height, 16);
+  const RenderOptions huge = makeMontageOptions (4, 10000, 10000, 4);
+  EXPECT_EQ (huge.width, 16384);
+  EXPECT_EQ (huge.height, 10000);
+}
+
+TEST (Montage, LabelViewColoursTheCloudByLabel)
+{
+  using namespace pcl_ext::visualization;
+  const auto cloud = sphereCloud (10);
+  std::vector<std::uint32_t> labels (10, 1);
+  labels[3] = 0;
+  const View view = makeLabelView ("split", cloud, labels, 4.0);
+  EXPECT_EQ (view.title, "split");
+  ASSERT_EQ (view.layers.size (), 1u);
+  EXPECT_EQ (view.layers[0].point_size, 4.0);
+  ASSERT_EQ (view.layers[0].cloud->size (), 10u);
+  const auto expected = colourByLabel (labels);
+  for (std::size_t i = 0; i < 10; ++i)
+  {
+    const auto& p = (*view.layers[0].cloud)[i];
+    EXPECT_EQ (p.x, cloud[i].x);
+    EXPECT_EQ (p.r, expected[i].r);
+    EXPECT_EQ (p.g, expected[i].g);
+    EXPECT_EQ (p.b, expected[i].b);
+  }
+  // Labels that do not match the cloud: an empty tile.
+  const View empty = makeLabelView ("bad", cloud, std::vector<std::uint32_t> (3, 1));
+  ASSERT_EQ (empty.layers.size (), 1u);
+  EXPECT_TRUE (empty.layers[0].cloud->empty ());
+}
