@@ -1,6 +1,6 @@
 /*
- * Base fixture of the command-line tool tests: each test gets a fresh temporary folder, and
- * run() executes the tool with arguments and keeps what it printed.
+ * Base fixture of the command-line tool tests: each test gets a fresh temporary folder,
+ * and run() executes the tool with arguments and keeps what it printed.
  */
 #pragma once
 
@@ -14,12 +14,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-namespace pcl_ext
-{
-namespace test
-{
-class AppTest : public ::testing::Test
-{
+namespace pcl_ext {
+namespace test {
+class AppTest : public ::testing::Test {
 protected:
   /** \param[in] executable the tool's path (the tests get it from CMake) */
   explicit AppTest (std::string executable) : executable_ (std::move (executable)) {}
@@ -28,8 +25,8 @@ protected:
   SetUp () override
   {
     std::string pattern =
-        (std::filesystem::temp_directory_path () / "pcl_ext_app_XXXXXX").string ();
-    ASSERT_NE (::mkdtemp (pattern.data ()), nullptr);
+        (std::filesystem::temp_directory_path() / "pcl_ext_app_XXXXXX").string();
+    ASSERT_NE (::mkdtemp (pattern.data()), nullptr);
     dir_ = pattern;
   }
 
@@ -42,23 +39,29 @@ protected:
 
   /** \a name in the test's folder. */
   std::string
-  path (const std::string& name) const { return dir_ + "/" + name; }
+  path (const std::string& name) const
+  {
+    return dir_ + "/" + name;
+  }
 
   bool
-  exists (const std::string& name) const { return std::filesystem::exists (path (name)); }
+  exists (const std::string& name) const
+  {
+    return std::filesystem::exists (path (name));
+  }
 
   /** Runs the tool with \a args; returns its exit code (-1 when it did not exit, e.g. a
-    * crash) and puts its stdout and stderr in output_. */
+   * crash) and puts its stdout and stderr in output_. */
   int
   run (const std::string& args)
   {
     const std::string command =
         executable_ + " " + args + " > '" + path ("log.txt") + "' 2>&1";
-    const int status = std::system (command.c_str ());
+    const int status = std::system (command.c_str());
     std::ifstream in (path ("log.txt"));
     std::stringstream s;
-    s << in.rdbuf ();
-    output_ = s.str ();
+    s << in.rdbuf();
+    output_ = s.str();
     return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
   }
 
@@ -68,5 +71,5 @@ protected:
 private:
   std::string executable_;
 };
-}  // namespace test
-}  // namespace pcl_ext
+} // namespace test
+} // namespace pcl_ext

@@ -16,20 +16,35 @@
 #include <cstdio>
 #include <iostream>
 
-namespace
-{
+namespace {
 void
 printMetrics (const pcl_ext::ClassificationMetrics& m)
 {
-  std::printf ("%-14s %9s %9s %9s %9s %9s\n", "class", "support", "precision", "recall", "F1", "IoU");
+  std::printf ("%-14s %9s %9s %9s %9s %9s\n",
+               "class",
+               "support",
+               "precision",
+               "recall",
+               "F1",
+               "IoU");
   for (const auto& c : m.classes)
-    std::printf ("%-14s %9zu %9.4f %9.4f %9.4f %9.4f\n", c.name.c_str (), c.support, c.precision,
-                 c.recall, c.f1, c.iou);
-  std::printf ("overall accuracy %.4f, macro F1 %.4f, mean IoU %.4f (%zu points evaluated, "
-               "%zu ignored)\n", m.overall_accuracy, m.macro_f1, m.mean_iou, m.evaluated_points,
-               m.ignored_points);
+    std::printf ("%-14s %9zu %9.4f %9.4f %9.4f %9.4f\n",
+                 c.name.c_str(),
+                 c.support,
+                 c.precision,
+                 c.recall,
+                 c.f1,
+                 c.iou);
+  std::printf (
+      "overall accuracy %.4f, macro F1 %.4f, mean IoU %.4f (%zu points evaluated, "
+      "%zu ignored)\n",
+      m.overall_accuracy,
+      m.macro_f1,
+      m.mean_iou,
+      m.evaluated_points,
+      m.ignored_points);
 }
-}  // namespace
+} // namespace
 
 int
 main (int argc, char** argv)
@@ -37,17 +52,21 @@ main (int argc, char** argv)
   std::string model_path, input, output, png, classes_file;
   bool truth = false;
   unsigned int threads = 0;
-  pcl_ext::apps::CommandLine cl (
-      "pcl_ext_crf_classify",
-      "Classifies a cloud with a multi-scale CRF model (Lim & Suter 2008) and writes it with a "
-      "'label' field holding the class id.");
+  pcl_ext::apps::CommandLine cl ("pcl_ext_crf_classify",
+                                 "Classifies a cloud with a multi-scale CRF model (Lim "
+                                 "& Suter 2008) and writes it with a "
+                                 "'label' field holding the class id.");
   cl.addPositional ("model.txt", model_path, "a model written by pcl_ext_crf_train");
-  cl.addPositional ("input", input, "PCD/PLY, or an Oakland .xyz_label_conf file with -classes");
+  cl.addPositional (
+      "input", input, "PCD/PLY, or an Oakland .xyz_label_conf file with -classes");
   cl.addPositional ("output.pcd", output, "the classified cloud");
-  cl.addOption ("png", png, "also render the result (and the truth with -truth) to this PNG");
-  cl.addOption ("classes", classes_file, "class file mapping the input's labels (Oakland)");
+  cl.addOption (
+      "png", png, "also render the result (and the truth with -truth) to this PNG");
+  cl.addOption (
+      "classes", classes_file, "class file mapping the input's labels (Oakland)");
   cl.addOption ("threads", threads, "threads (0: all cores)");
-  cl.addSwitch ("truth", truth, "the input's labels are ground truth: print the metrics");
+  cl.addSwitch (
+      "truth", truth, "the input's labels are ground truth: print the metrics");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
   if (!pcl_ext::io::checkOutputsWritable (output, {png}))
@@ -59,19 +78,16 @@ main (int argc, char** argv)
       return 1;
     timer.done (0);
   }
-  pcl_ext::CrfSettings settings = model.getSettings ();
+  pcl_ext::CrfSettings settings = model.getSettings();
   settings.threads = threads;
   model.setSettings (settings);
   pcl_ext::io::ClassMapping mapping;
-  if (!classes_file.empty ())
-  {
-    try
-    {
+  if (!classes_file.empty()) {
+    try {
       mapping.load (classes_file);
     }
-    catch (const std::exception& e)
-    {
-      std::cerr << "pcl_ext_crf_classify: " << e.what () << '\n';
+    catch (const std::exception& e) {
+      std::cerr << "pcl_ext_crf_classify: " << e.what() << '\n';
       return 1;
     }
   }
@@ -79,49 +95,56 @@ main (int argc, char** argv)
   {
     pcl_ext::apps::StageTimer timer ("Loading " + input);
     std::string error;
-    if (!pcl_ext::apps::loadCrfCloud (input, &mapping, cloud, error))
-    {
+    if (!pcl_ext::apps::loadCrfCloud (input, &mapping, cloud, error)) {
       std::cerr << "\npcl_ext_crf_classify: " << error << '\n';
       return 1;
     }
-    timer.done (cloud.input.xyz->size ());
+    timer.done (cloud.input.xyz->size());
   }
-  if (truth && cloud.labels.empty ())
-  {
+  if (truth && cloud.labels.empty()) {
     std::cerr << "pcl_ext_crf_classify: -truth needs a labelled input\n";
     return 1;
   }
   std::vector<std::uint32_t> labels;
   Eigen::MatrixXf probabilities;
   pcl_ext::apps::StageTimer timer ("Classifying");
-  if (!model.classify (cloud.input, labels, probabilities))
-  {
+  if (!model.classify (cloud.input, labels, probabilities)) {
     std::cerr << "\npcl_ext_crf_classify: classification failed (see above)\n";
     return 1;
   }
-  timer.done (labels.size ());
-  const auto& st = model.getStatistics ();
-  std::printf ("  super-voxels %.0f ms, features %.0f ms, inference %.0f ms (%zu super-voxels, "
-               "BP %d sweeps%s)\n", st.supervoxels_ms, st.features_ms, st.inference_ms,
-               st.supervoxels, st.iterations, st.converged ? ", converged" : ", not converged");
+  timer.done (labels.size());
+  const auto& st = model.getStatistics();
+  std::printf (
+      "  super-voxels %.0f ms, features %.0f ms, inference %.0f ms (%zu super-voxels, "
+      "BP %d sweeps%s)\n",
+      st.supervoxels_ms,
+      st.features_ms,
+      st.inference_ms,
+      st.supervoxels,
+      st.iterations,
+      st.converged ? ", converged" : ", not converged");
   std::vector<std::uint32_t> truth_labels = cloud.labels;
-  if (!pcl_ext::io::setLabelField (cloud.blob, "label", labels)
-      || !pcl_ext::io::saveCloud (output, cloud.blob))
+  if (!pcl_ext::io::setLabelField (cloud.blob, "label", labels) ||
+      !pcl_ext::io::saveCloud (output, cloud.blob))
     return 1;
-  if (truth)
-  {
+  if (truth) {
     pcl_ext::ClassificationMetrics metrics;
-    pcl_ext::evaluateClassification (labels, truth_labels, metrics, model.getClassNames ());
+    pcl_ext::evaluateClassification (
+        labels, truth_labels, metrics, model.getClassNames());
     printMetrics (metrics);
   }
-  if (!png.empty ())
-  {
+  if (!png.empty()) {
 #ifdef PCL_EXT_HAVE_VISUALIZATION
     using namespace pcl_ext::visualization;
     std::vector<View> views;
     if (truth)
-      views.push_back ({"ground truth", {{makeColouredCloud (*cloud.input.xyz, colourByLabel (truth_labels)), 2.0}}});
-    views.push_back ({"multi-scale CRF", {{makeColouredCloud (*cloud.input.xyz, colourByLabel (labels)), 2.0}}});
+      views.push_back (
+          {"ground truth",
+           {{makeColouredCloud (*cloud.input.xyz, colourByLabel (truth_labels)),
+             2.0}}});
+    views.push_back (
+        {"multi-scale CRF",
+         {{makeColouredCloud (*cloud.input.xyz, colourByLabel (labels)), 2.0}}});
     if (!renderToPng (views, png))
       return 1;
 #else

@@ -17,7 +17,8 @@ int
 main (int argc, char** argv)
 {
   std::string output, classes_file, mode_text = "mcrf", scales_text = "none",
-              expansion_text = "linear", ground_text = "lowest_in_block";
+                                    expansion_text = "linear",
+                                    ground_text = "lowest_in_block";
   double sigma = 1.0, noise = 0.0, min_radius = 0.5;
   int ground_reach = 3;
   int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200, knots = 2;
@@ -25,118 +26,131 @@ main (int argc, char** argv)
   bool no_balance = false;
   pcl_ext::apps::CommandLine cl (
       "pcl_ext_crf_train",
-      "Trains the multi-scale CRF over adaptive super-voxels (Lim & Suter 2008) on labelled "
-      "clouds: PCD/PLY with a 'label' field, or Oakland .xyz_label_conf files with -classes.\n"
+      "Trains the multi-scale CRF over adaptive super-voxels (Lim & Suter 2008) on "
+      "labelled "
+      "clouds: PCD/PLY with a 'label' field, or Oakland .xyz_label_conf files with "
+      "-classes.\n"
       "Usage: pcl_ext_crf_train -o model.txt [options] train1 [train2 ...]");
   cl.addOption ("o", output, "the model file to write (required)");
-  cl.addOption ("classes", classes_file, "class file: 'id name : source labels' per line");
-  cl.addOption ("mode", mode_text, "node | crf | mcrf (node-only, local CRF, multi-scale CRF)");
-  cl.addOption ("scales", scales_text, "radii (m) of the multi-scale features, ascending, "
-               "comma-separated, e.g. 0.5,1,2; 'none': the paper's single-scale features");
-  cl.addOption ("expansion", expansion_text, "inputs of the node model: linear "
-               "(the paper's), spline (piecewise-linear in each feature) or spline_products "
-               "(spline and the products of feature pairs)");
-  cl.addOption ("ground", ground_text, "local ground under the height feature: "
-               "lowest_in_block (lowest point of the cells around) or opening (morphological "
-               "opening of the cells' lowest points)");
-  cl.addOption ("ground_reach", ground_reach, "cells (1 m) on each side of the local ground block");
+  cl.addOption (
+      "classes", classes_file, "class file: 'id name : source labels' per line");
+  cl.addOption (
+      "mode", mode_text, "node | crf | mcrf (node-only, local CRF, multi-scale CRF)");
+  cl.addOption (
+      "scales",
+      scales_text,
+      "radii (m) of the multi-scale features, ascending, "
+      "comma-separated, e.g. 0.5,1,2; 'none': the paper's single-scale features");
+  cl.addOption (
+      "expansion",
+      expansion_text,
+      "inputs of the node model: linear "
+      "(the paper's), spline (piecewise-linear in each feature) or spline_products "
+      "(spline and the products of feature pairs)");
+  cl.addOption (
+      "ground",
+      ground_text,
+      "local ground under the height feature: "
+      "lowest_in_block (lowest point of the cells around) or opening (morphological "
+      "opening of the cells' lowest points)");
+  cl.addOption ("ground_reach",
+                ground_reach,
+                "cells (1 m) on each side of the local ground block");
   cl.addOption ("knots", knots, "hinges per feature of the spline expansions");
   cl.addOption ("sigma", sigma, "sigma of the Gaussian prior on the weights (eq. 9)");
-  cl.addOption ("noise", noise, "noise constant sigma of eq. 3 in metres (0: estimate)");
-  cl.addOption ("min_radius", min_radius, "lower bound on the super-voxel radius in metres "
-               "(0: none, the paper's; 0.5 was chosen by cross-validation on Oakland)");
-  cl.addOption ("max_k", max_k, "k threshold that stops the super-voxel radius growing");
+  cl.addOption (
+      "noise", noise, "noise constant sigma of eq. 3 in metres (0: estimate)");
+  cl.addOption (
+      "min_radius",
+      min_radius,
+      "lower bound on the super-voxel radius in metres "
+      "(0: none, the paper's; 0.5 was chosen by cross-validation on Oakland)");
+  cl.addOption (
+      "max_k", max_k, "k threshold that stops the super-voxel radius growing");
   cl.addOption ("m", local_edges, "local edges per super-voxel");
   cl.addOption ("l", regional_edges, "regional edges per super-voxel");
   cl.addOption ("iterations", iterations, "maximum L-BFGS iterations");
   cl.addOption ("seed", seed, "seed of the super-voxel mid-points and local points");
   cl.addOption ("threads", threads, "threads (0: all cores)");
-  cl.addSwitch ("no_balance", no_balance, "do not weight training nodes by class frequency");
+  cl.addSwitch (
+      "no_balance", no_balance, "do not weight training nodes by class frequency");
   // Inputs are every argument that is not an option: take them out before parsing.
   std::vector<std::string> inputs;
-  std::vector<const char*> args {argv[0]};
-  for (int i = 1; i < argc; ++i)
-  {
+  std::vector<const char*> args{argv[0]};
+  for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (!a.empty () && a[0] == '-')
-    {
+    if (!a.empty() && a[0] == '-') {
       args.push_back (argv[i]);
-      const bool is_switch = a == "-no_balance" || a == "-h" || a == "-help" || a == "--help";
+      const bool is_switch =
+          a == "-no_balance" || a == "-h" || a == "-help" || a == "--help";
       if (!is_switch && i + 1 < argc)
         args.push_back (argv[++i]);
     }
     else
       inputs.push_back (a);
   }
-  if (const int code = cl.parse (static_cast<int> (args.size ()), args.data ()); code >= 0)
+  if (const int code = cl.parse (static_cast<int> (args.size()), args.data());
+      code >= 0)
     return code;
   pcl_ext::CrfMode mode;
   pcl_ext::CrfNodeExpansion expansion;
   pcl_ext::GroundEstimate ground;
-  if (output.empty () || inputs.empty () || !pcl_ext::parseCrfMode (mode_text, mode)
-      || !pcl_ext::parseCrfNodeExpansion (expansion_text, expansion)
-      || !pcl_ext::parseGroundEstimate (ground_text, ground))
-  {
-    std::cerr << "pcl_ext_crf_train: need -o model.txt, at least one training cloud, a mode "
-                 "among node, crf, mcrf, an expansion among linear, spline, spline_products "
-                 "and a ground among lowest_in_block, opening (see -h)\n";
+  if (output.empty() || inputs.empty() || !pcl_ext::parseCrfMode (mode_text, mode) ||
+      !pcl_ext::parseCrfNodeExpansion (expansion_text, expansion) ||
+      !pcl_ext::parseGroundEstimate (ground_text, ground)) {
+    std::cerr
+        << "pcl_ext_crf_train: need -o model.txt, at least one training cloud, a mode "
+           "among node, crf, mcrf, an expansion among linear, spline, spline_products "
+           "and a ground among lowest_in_block, opening (see -h)\n";
     return 1;
   }
   if (!pcl_ext::io::checkWritable (output))
     return 1;
   pcl_ext::io::ClassMapping mapping;
-  if (!classes_file.empty ())
-  {
-    try
-    {
+  if (!classes_file.empty()) {
+    try {
       mapping.load (classes_file);
     }
-    catch (const std::exception& e)
-    {
-      std::cerr << "pcl_ext_crf_train: " << e.what () << '\n';
+    catch (const std::exception& e) {
+      std::cerr << "pcl_ext_crf_train: " << e.what() << '\n';
       return 1;
     }
   }
   std::vector<pcl_ext::CrfInput> clouds;
   std::vector<std::vector<std::uint32_t>> labels;
-  for (const auto& path : inputs)
-  {
+  for (const auto& path : inputs) {
     pcl_ext::apps::StageTimer timer ("Loading " + path);
     pcl_ext::apps::CrfCloud c;
     std::string error;
-    if (!pcl_ext::apps::loadCrfCloud (path, &mapping, c, error))
-    {
+    if (!pcl_ext::apps::loadCrfCloud (path, &mapping, c, error)) {
       std::cerr << "\npcl_ext_crf_train: " << error << '\n';
       return 1;
     }
-    if (c.labels.empty ())
-    {
+    if (c.labels.empty()) {
       std::cerr << "\npcl_ext_crf_train: " << path << " has no labels to train on\n";
       return 1;
     }
-    timer.done (c.input.xyz->size ());
+    timer.done (c.input.xyz->size());
     clouds.push_back (c.input);
     labels.push_back (c.labels);
   }
   pcl_ext::MultiscaleCrfModel model;
-  pcl_ext::CrfSettings s = model.getSettings ();
+  pcl_ext::CrfSettings s = model.getSettings();
   s.mode = mode;
   s.sigma = sigma;
   s.node_expansion = expansion;
   s.spline_knots = knots;
   s.features.ground_estimate = ground;
   s.features.ground_reach = ground_reach;
-  s.features.scales.clear ();
-  if (scales_text != "none")
-  {
+  s.features.scales.clear();
+  if (scales_text != "none") {
     std::istringstream in (scales_text);
-    for (std::string item; std::getline (in, item, ',');)
-    {
+    for (std::string item; std::getline (in, item, ',');) {
       char* end = nullptr;
-      const float r = std::strtof (item.c_str (), &end);
-      if (item.empty () || *end != '\0')
-      {
-        std::cerr << "pcl_ext_crf_train: -scales takes radii separated by commas, or none\n";
+      const float r = std::strtof (item.c_str(), &end);
+      if (item.empty() || *end != '\0') {
+        std::cerr
+            << "pcl_ext_crf_train: -scales takes radii separated by commas, or none\n";
         return 1;
       }
       s.features.scales.push_back (r);
@@ -152,23 +166,31 @@ main (int argc, char** argv)
   s.threads = threads;
   s.balance_classes = !no_balance;
   model.setSettings (s);
-  if (!mapping.empty ())
-    model.setClassNames (mapping.names ());
-  pcl_ext::apps::StageTimer timer ("Training the " + std::string (pcl_ext::crfModeName (mode)) + " model");
-  if (!model.train (clouds, labels))
-  {
+  if (!mapping.empty())
+    model.setClassNames (mapping.names());
+  pcl_ext::apps::StageTimer timer (
+      "Training the " + std::string (pcl_ext::crfModeName (mode)) + " model");
+  if (!model.train (clouds, labels)) {
     std::cerr << "\npcl_ext_crf_train: training failed (see above)\n";
     return 1;
   }
-  const auto& st = model.getStatistics ();
+  const auto& st = model.getStatistics();
   timer.done (st.points);
-  std::printf ("  super-voxels %.0f ms, features %.0f ms, optimisation %.0f ms (%d L-BFGS "
-               "iterations%s); %zu super-voxels, %zu local points, %zu local and %zu regional "
-               "edges\n", st.supervoxels_ms, st.features_ms, st.training_ms, st.iterations,
-               st.converged ? ", converged" : "", st.supervoxels, st.local_points, st.local_edges,
-               st.regional_edges);
+  std::printf (
+      "  super-voxels %.0f ms, features %.0f ms, optimisation %.0f ms (%d L-BFGS "
+      "iterations%s); %zu super-voxels, %zu local points, %zu local and %zu regional "
+      "edges\n",
+      st.supervoxels_ms,
+      st.features_ms,
+      st.training_ms,
+      st.iterations,
+      st.converged ? ", converged" : "",
+      st.supervoxels,
+      st.local_points,
+      st.local_edges,
+      st.regional_edges);
   if (!model.saveModel (output))
     return 1;
-  std::printf ("Model written to %s\n", output.c_str ());
+  std::printf ("Model written to %s\n", output.c_str());
   return 0;
 }

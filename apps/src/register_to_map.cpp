@@ -1,6 +1,6 @@
 /*
- * pcl_ext_register_to_map: register a building scan to its 2D footprint by plane matching
- * (Khoshelham & Gorte 2009).
+ * pcl_ext_register_to_map: register a building scan to its 2D footprint by plane
+ * matching (Khoshelham & Gorte 2009).
  */
 #include <pcl_ext/evaluation/registration_metrics.h>
 #include <pcl_ext/io/cloud_fields.h>
@@ -24,8 +24,7 @@
 #include <limits>
 #include <sstream>
 
-namespace
-{
+namespace {
 using Point = pcl::PointXYZ;
 
 // Tables 1-2: the distances of the matched scan planes' inliers to their map planes.
@@ -34,59 +33,76 @@ planeDistances (const pcl_ext::PlaneMatchingRegistration<Point, Point>& reg,
                 const pcl::PointCloud<Point>& scan)
 {
   std::vector<pcl::PointIndices> inliers;
-  for (const auto& plane : reg.getSourcePlanes ())
+  for (const auto& plane : reg.getSourcePlanes())
     inliers.push_back (plane.inliers);
   std::vector<Eigen::Vector4d> coefficients;
-  for (const auto& plane : reg.getTargetPlanes ())
-    coefficients.push_back (plane.coefficients ());
+  for (const auto& plane : reg.getTargetPlanes())
+    coefficients.push_back (plane.coefficients());
   pcl::Correspondences matches;
-  for (const auto& pair : reg.getMatchingResult ().matches)
+  for (const auto& pair : reg.getMatchingResult().matches)
     matches.emplace_back (pair.scan, pair.map, 0.f);
   pcl_ext::PlaneDistanceMetrics metrics;
-  pcl_ext::computePlaneDistances (scan, inliers, coefficients, matches,
-                                  reg.getFinalTransformationDouble (), metrics);
+  pcl_ext::computePlaneDistances (scan,
+                                  inliers,
+                                  coefficients,
+                                  matches,
+                                  reg.getFinalTransformationDouble(),
+                                  metrics);
   return metrics;
 }
 
 #ifdef PCL_EXT_HAVE_VISUALIZATION
-// Top view (figures 3 and 5): footprint outline in black, scan in grey, matched planes in colour.
+// Top view (figures 3 and 5): footprint outline in black, scan in grey, matched planes
+// in colour.
 bool
-renderTopView (const pcl::PointCloud<Point>& scan, const std::vector<pcl_ext::ScanPlane>& planes,
-               const pcl_ext::PlaneMatchingResult& result, const Eigen::Matrix4d& transform,
-               const std::vector<pcl_ext::MapPlane>& map, const std::string& title,
+renderTopView (const pcl::PointCloud<Point>& scan,
+               const std::vector<pcl_ext::ScanPlane>& planes,
+               const pcl_ext::PlaneMatchingResult& result,
+               const Eigen::Matrix4d& transform,
+               const std::vector<pcl_ext::MapPlane>& map,
+               const std::string& title,
                pcl_ext::visualization::View& view)
 {
-  pcl::PointCloud<pcl::PointXYZRGB>::Ptr outline (new pcl::PointCloud<pcl::PointXYZRGB>);
-  for (const auto& wall : map)
-  {
-    if (wall.isFloor ())
+  pcl::PointCloud<pcl::PointXYZRGB>::Ptr outline (
+      new pcl::PointCloud<pcl::PointXYZRGB>);
+  for (const auto& wall : map) {
+    if (wall.isFloor())
       continue;
-    const int steps = std::max (2, static_cast<int> (wall.length () / 0.1));
-    for (int i = 0; i <= steps; ++i)
-    {
-      const Eigen::Vector2d q = wall.start + (wall.end - wall.start) * (double (i) / steps);
+    const int steps = std::max (2, static_cast<int> (wall.length() / 0.1));
+    for (int i = 0; i <= steps; ++i) {
+      const Eigen::Vector2d q =
+          wall.start + (wall.end - wall.start) * (double (i) / steps);
       pcl::PointXYZRGB p (std::uint8_t (0), std::uint8_t (0), std::uint8_t (0));
-      p.x = static_cast<float> (q.x ());
-      p.y = static_cast<float> (q.y ());
-      p.z = 0.05f;  // a flat top view: a perspective camera would magnify anything higher
+      p.x = static_cast<float> (q.x());
+      p.y = static_cast<float> (q.y());
+      p.z =
+          0.05f; // a flat top view: a perspective camera would magnify anything higher
       outline->push_back (p);
     }
   }
-  std::vector<int> colour (scan.size (), -1);
-  for (std::size_t m = 0; m < result.matches.size (); ++m)
-    if (map[result.matches[m].map].isFloor () == false)  // the floor would cover the view
+  std::vector<int> colour (scan.size(), -1);
+  for (std::size_t m = 0; m < result.matches.size(); ++m)
+    if (map[result.matches[m].map].isFloor() == false) // the floor would cover the view
       for (const auto i : planes[result.matches[m].scan].inliers.indices)
         colour[i] = static_cast<int> (m);
-  static const std::uint8_t palette[8][3] = {{228, 26, 28}, {55, 126, 184}, {77, 175, 74}, {152, 78, 163},
-                                             {255, 127, 0}, {166, 86, 40}, {247, 129, 191}, {0, 150, 150}};
+  static const std::uint8_t palette[8][3] = {{228, 26, 28},
+                                             {55, 126, 184},
+                                             {77, 175, 74},
+                                             {152, 78, 163},
+                                             {255, 127, 0},
+                                             {166, 86, 40},
+                                             {247, 129, 191},
+                                             {0, 150, 150}};
   pcl::PointCloud<pcl::PointXYZRGB>::Ptr moved (new pcl::PointCloud<pcl::PointXYZRGB>);
-  for (std::size_t i = 0; i < scan.size (); ++i)
-  {
-    const Eigen::Vector4d q = transform * Eigen::Vector4d (scan[i].x, scan[i].y, scan[i].z, 1.0);
+  for (std::size_t i = 0; i < scan.size(); ++i) {
+    const Eigen::Vector4d q =
+        transform * Eigen::Vector4d (scan[i].x, scan[i].y, scan[i].z, 1.0);
     const std::uint8_t* c = colour[i] < 0 ? nullptr : palette[colour[i] % 8];
-    pcl::PointXYZRGB p (std::uint8_t (c ? c[0] : 170), std::uint8_t (c ? c[1] : 170), std::uint8_t (c ? c[2] : 170));
-    p.x = static_cast<float> (q.x ());
-    p.y = static_cast<float> (q.y ());
+    pcl::PointXYZRGB p (std::uint8_t (c ? c[0] : 170),
+                        std::uint8_t (c ? c[1] : 170),
+                        std::uint8_t (c ? c[2] : 170));
+    p.x = static_cast<float> (q.x());
+    p.y = static_cast<float> (q.y());
     p.z = 0.f;
     moved->push_back (p);
   }
@@ -95,47 +111,73 @@ renderTopView (const pcl::PointCloud<Point>& scan, const std::vector<pcl_ext::Sc
   return true;
 }
 #endif
-}  // namespace
+} // namespace
 
 int
 main (int argc, char** argv)
 {
-  std::string input, footprint_path, output, png, png_before, no_constraint, id, guess_path;
+  std::string input, footprint_path, output, png, png_before, no_constraint, id,
+      guess_path;
   std::string walls = "sac", label_field = "label";
   int k = 4, m = 10, n = 10, max_planes = 30, min_inliers = 200;
   unsigned int threads = 0, ground_label = 2, building_label = 6;
   double threshold = 0.4, angle = 3.0, distance = 0.5, floor_height = 0.0;
-  double max_rotation = std::numeric_limits<double>::infinity ();
-  double max_translation = std::numeric_limits<double>::infinity ();
+  double max_rotation = std::numeric_limits<double>::infinity();
+  double max_translation = std::numeric_limits<double>::infinity();
   bool similarity = false, oriented = false;
-  pcl_ext::apps::CommandLine cl ("pcl_ext_register_to_map",
-                                  "Registers a building scan to its 2D footprint by plane matching "
-                                  "(Khoshelham & Gorte 2009). The output is in the map's local frame "
-                                  "(map coordinates minus the printed origin).");
+  pcl_ext::apps::CommandLine cl (
+      "pcl_ext_register_to_map",
+      "Registers a building scan to its 2D footprint by plane matching "
+      "(Khoshelham & Gorte 2009). The output is in the map's local frame "
+      "(map coordinates minus the printed origin).");
   cl.addPositional ("scan.pcd", input, "the building scan (PCD or PLY)");
-  cl.addPositional ("footprint.(wkt|geojson|txt)", footprint_path, "footprint polygon file");
+  cl.addPositional (
+      "footprint.(wkt|geojson|txt)", footprint_path, "footprint polygon file");
   cl.addPositional ("output.pcd", output, "the registered scan");
   cl.addOption ("k", k, "initial pairs per combination (paper: k)");
   cl.addOption ("m", m, "scan planes used to initiate (paper: m)");
   cl.addOption ("n", n, "map planes used to initiate (paper: n)");
-  cl.addSwitch ("similarity", similarity, "estimate a similarity (with scale) instead of a rigid transform");
-  cl.addOption ("no_constraint", no_constraint, "switch a constraint off: vertical, orientation or residual (comma separated)");
-  cl.addOption ("angle", angle, "residual and extension tolerance on normals (degrees)");
-  cl.addOption ("distance", distance, "residual and extension tolerance on plane offsets (m)");
-  cl.addSwitch ("oriented", oriented, "use plane signs (scan normals to the scanner, walls outward)");
-  cl.addOption ("guess", guess_path,
-                "initial guess: a scan-to-map 4x4 transform file in map coordinates (e.g. the "
-                ".transform.txt of pcl_ext_generate_scene); none: the identity (a georeferenced scan)");
-  cl.addOption ("max_rotation_from_guess", max_rotation,
-                "search only within this rotation of the guess (degrees, > 0; unbounded when left out: the paper's global search)");
-  cl.addOption ("max_translation_from_guess", max_translation,
-                "search only within this translation of the guess (m, > 0; unbounded when left out)");
-  cl.addOption ("walls", walls,
-                "plane extraction: sac (sequential RANSAC, for terrestrial scans) or roof_outline (a "
-                "classified airborne cloud: ground plane and walls along the building outlines)");
-  cl.addOption ("label_field", label_field, "roof_outline: the field holding the point classes");
-  cl.addOption ("ground_label", ground_label, "roof_outline: class of ground points (LAS: 2)");
-  cl.addOption ("building_label", building_label, "roof_outline: class of building points (LAS: 6)");
+  cl.addSwitch ("similarity",
+                similarity,
+                "estimate a similarity (with scale) instead of a rigid transform");
+  cl.addOption (
+      "no_constraint",
+      no_constraint,
+      "switch a constraint off: vertical, orientation or residual (comma separated)");
+  cl.addOption (
+      "angle", angle, "residual and extension tolerance on normals (degrees)");
+  cl.addOption (
+      "distance", distance, "residual and extension tolerance on plane offsets (m)");
+  cl.addSwitch ("oriented",
+                oriented,
+                "use plane signs (scan normals to the scanner, walls outward)");
+  cl.addOption (
+      "guess",
+      guess_path,
+      "initial guess: a scan-to-map 4x4 transform file in map coordinates (e.g. the "
+      ".transform.txt of pcl_ext_generate_scene); none: the identity (a georeferenced "
+      "scan)");
+  cl.addOption ("max_rotation_from_guess",
+                max_rotation,
+                "search only within this rotation of the guess (degrees, > 0; "
+                "unbounded when left out: the paper's global search)");
+  cl.addOption ("max_translation_from_guess",
+                max_translation,
+                "search only within this translation of the guess (m, > 0; unbounded "
+                "when left out)");
+  cl.addOption (
+      "walls",
+      walls,
+      "plane extraction: sac (sequential RANSAC, for terrestrial scans) or "
+      "roof_outline (a "
+      "classified airborne cloud: ground plane and walls along the building outlines)");
+  cl.addOption (
+      "label_field", label_field, "roof_outline: the field holding the point classes");
+  cl.addOption (
+      "ground_label", ground_label, "roof_outline: class of ground points (LAS: 2)");
+  cl.addOption ("building_label",
+                building_label,
+                "roof_outline: class of building points (LAS: 6)");
   cl.addOption ("threshold", threshold, "sac: RANSAC inlier distance (m)");
   cl.addOption ("min_inliers", min_inliers, "sac: least points of a plane");
   cl.addOption ("max_planes", max_planes, "sac: most planes");
@@ -148,52 +190,45 @@ main (int argc, char** argv)
     return code;
 
   // Bad values are refused before anything is read or written.
-  if (!(max_rotation > 0.0))
-  {
-    std::cerr << "Error: -max_rotation_from_guess must be > 0 degrees (leave it out for no bound).\n";
+  if (!(max_rotation > 0.0)) {
+    std::cerr << "Error: -max_rotation_from_guess must be > 0 degrees (leave it out "
+                 "for no bound).\n";
     return 1;
   }
-  if (!(max_translation > 0.0))
-  {
-    std::cerr << "Error: -max_translation_from_guess must be > 0 m (leave it out for no bound).\n";
+  if (!(max_translation > 0.0)) {
+    std::cerr << "Error: -max_translation_from_guess must be > 0 m (leave it out for "
+                 "no bound).\n";
     return 1;
   }
   const bool roof_outline = walls == "roof_outline";
-  if (!roof_outline && walls != "sac")
-  {
+  if (!roof_outline && walls != "sac") {
     std::cerr << "Error: unknown -walls '" << walls << "' (sac, roof_outline).\n";
     return 1;
   }
   for (const char* option : {"label_field", "ground_label", "building_label"})
-    if (!roof_outline && cl.given (option))
-    {
+    if (!roof_outline && cl.given (option)) {
       std::cerr << "Error: -" << option << " applies to -walls roof_outline only.\n";
       return 1;
     }
-  if (roof_outline && ground_label == building_label)
-  {
+  if (roof_outline && ground_label == building_label) {
     std::cerr << "Error: -ground_label and -building_label must differ.\n";
     return 1;
   }
   if (!pcl_ext::io::checkOutputsWritable (output, {png, png_before}))
     return 1;
-  Eigen::Matrix4d guess = Eigen::Matrix4d::Identity ();
-  if (!guess_path.empty ())
-  {
-    try
-    {
+  Eigen::Matrix4d guess = Eigen::Matrix4d::Identity();
+  if (!guess_path.empty()) {
+    try {
       pcl_ext::io::loadTransform (guess_path, guess);
     }
-    catch (const pcl_ext::io::ReadError& e)
-    {
-      std::cerr << "Error: " << e.what () << "\n";
+    catch (const pcl_ext::io::ReadError& e) {
+      std::cerr << "Error: " << e.what() << "\n";
       return 1;
     }
   }
 
   pcl_ext::PlaneMatchingRegistration<Point, Point> reg;
-  for (std::stringstream list (no_constraint); list.good ();)
-  {
+  for (std::stringstream list (no_constraint); list.good();) {
     std::string name;
     std::getline (list, name, ',');
     if (name == "vertical")
@@ -202,9 +237,9 @@ main (int argc, char** argv)
       reg.setOrientationConstraint (false);
     else if (name == "residual")
       reg.setResidualConstraint (false);
-    else if (!name.empty ())
-    {
-      std::cerr << "Error: unknown constraint '" << name << "' (vertical, orientation, residual).\n";
+    else if (!name.empty()) {
+      std::cerr << "Error: unknown constraint '" << name
+                << "' (vertical, orientation, residual).\n";
       return 1;
     }
   }
@@ -215,38 +250,33 @@ main (int argc, char** argv)
     pcl::PCLPointCloud2 file;
     if (!pcl_ext::apps::loadInput (input, file, *scan))
       return 1;
-    if (roof_outline)
-    {
+    if (roof_outline) {
       std::vector<std::uint32_t> values;
       std::string error;
-      if (!pcl_ext::io::getLabelField (file, label_field, values, &error))
-      {
+      if (!pcl_ext::io::getLabelField (file, label_field, values, &error)) {
         std::cerr << "Error: " << input << ": " << error << " (-label_field).\n";
         return 1;
       }
       for (const auto v : values)
-        labels->push_back (pcl::Label {v});
+        labels->push_back (pcl::Label{v});
     }
   }
   std::vector<pcl_ext::io::Footprint> footprints;
-  try
-  {
+  try {
     pcl_ext::io::loadFootprints (footprint_path, footprints);
   }
-  catch (const pcl_ext::io::ReadError& e)
-  {
-    std::cerr << "Error: " << e.what () << "\n";
+  catch (const pcl_ext::io::ReadError& e) {
+    std::cerr << "Error: " << e.what() << "\n";
     return 1;
   }
-  if (!id.empty ())
-  {
+  if (!id.empty()) {
     std::vector<pcl_ext::io::Footprint> chosen;
     for (const auto& f : footprints)
       if (f.id == id)
         chosen.push_back (f);
-    if (chosen.empty ())
-    {
-      std::cerr << "Error: no footprint with id '" << id << "' in " << footprint_path << ".\n";
+    if (chosen.empty()) {
+      std::cerr << "Error: no footprint with id '" << id << "' in " << footprint_path
+                << ".\n";
       return 1;
     }
     footprints.swap (chosen);
@@ -256,21 +286,19 @@ main (int argc, char** argv)
   if (!reg.setFootprints (footprints, map_parameters))
     return 1;
 
-  if (roof_outline)
-  {
+  if (roof_outline) {
     pcl_ext::RoofOutlinePlaneExtraction<Point> extraction;
     extraction.setInputLabels (labels);
     extraction.setGroundLabel (ground_label);
     extraction.setBuildingLabel (building_label);
-    reg.setPlaneExtractor (extraction.asExtractor ());
+    reg.setPlaneExtractor (extraction.asExtractor());
   }
-  else
-  {
+  else {
     pcl_ext::SACPlaneExtraction<Point> extraction;
     extraction.setDistanceThreshold (threshold);
     extraction.setMinInliers (min_inliers);
     extraction.setMaxPlanes (max_planes);
-    reg.setPlaneExtractor (extraction.asExtractor ());
+    reg.setPlaneExtractor (extraction.asExtractor());
   }
   reg.setMaxRotationFromGuess (max_rotation);
   reg.setMaxTranslationFromGuess (max_translation);
@@ -285,67 +313,96 @@ main (int argc, char** argv)
 
   // The guess is in map coordinates; the registration works in the map's local frame.
   Eigen::Matrix4d local_guess = guess;
-  local_guess.topRightCorner<3, 1> () -= reg.getLocalOrigin ();
-  if (!guess_path.empty () || std::isfinite (max_rotation) || std::isfinite (max_translation))
-    std::printf ("Search within %g deg and %g m of the guess%s\n", max_rotation, max_translation,
-                 guess_path.empty () ? " (the identity)" : (" in " + guess_path).c_str ());
+  local_guess.topRightCorner<3, 1>() -= reg.getLocalOrigin();
+  if (!guess_path.empty() || std::isfinite (max_rotation) ||
+      std::isfinite (max_translation))
+    std::printf ("Search within %g deg and %g m of the guess%s\n",
+                 max_rotation,
+                 max_translation,
+                 guess_path.empty() ? " (the identity)"
+                                    : (" in " + guess_path).c_str());
 
   pcl::PointCloud<Point> registered;
   {
     pcl_ext::apps::StageTimer timer ("Extracting and matching planes");
-    reg.align (registered, local_guess.cast<float> ());
-    timer.done (reg.getMatchingResult ().matches.size ());
+    reg.align (registered, local_guess.cast<float>());
+    timer.done (reg.getMatchingResult().matches.size());
   }
-  const auto& result = reg.getMatchingResult ();
+  const auto& result = reg.getMatchingResult();
   const auto& s = result.statistics;
-  std::printf ("Planes: %zu scan, %zu map; local origin (%.3f, %.3f, %.3f)\n", reg.getSourcePlanes ().size (),
-               reg.getMapPlanes ().size (), reg.getLocalOrigin ().x (), reg.getLocalOrigin ().y (),
-               reg.getLocalOrigin ().z ());
-  std::printf ("Initial combinations (m = %d, n = %d, k = %d): %llu without constraints, %llu vertical, "
+  std::printf ("Planes: %zu scan, %zu map; local origin (%.3f, %.3f, %.3f)\n",
+               reg.getSourcePlanes().size(),
+               reg.getMapPlanes().size(),
+               reg.getLocalOrigin().x(),
+               reg.getLocalOrigin().y(),
+               reg.getLocalOrigin().z());
+  std::printf ("Initial combinations (m = %d, n = %d, k = %d): %llu without "
+               "constraints, %llu vertical, "
                "%llu + orientation (%llu degenerate), %llu + residual; search %.3f s\n",
-               s.m, s.n, s.k, (unsigned long long) s.unconstrained, (unsigned long long) s.vertical,
-               (unsigned long long) s.orientation, (unsigned long long) s.degenerate,
-               (unsigned long long) s.residual, s.seconds);
-  if (!reg.hasConverged ())
-  {
+               s.m,
+               s.n,
+               s.k,
+               (unsigned long long)s.unconstrained,
+               (unsigned long long)s.vertical,
+               (unsigned long long)s.orientation,
+               (unsigned long long)s.degenerate,
+               (unsigned long long)s.residual,
+               s.seconds);
+  if (!reg.hasConverged()) {
     std::cerr << "Error: the registration did not converge (see the messages above).\n";
     return 1;
   }
-  const Eigen::Matrix4d& t = reg.getFinalTransformationDouble ();
+  const Eigen::Matrix4d& t = reg.getFinalTransformationDouble();
   std::printf ("Transformation (scan to map - origin):\n");
   for (int r = 0; r < 4; ++r)
-    std::printf ("  %12.6f %12.6f %12.6f %12.4f\n", t (r, 0), t (r, 1), t (r, 2), t (r, 3));
-  std::printf ("Match set (%zu pairs): scan plane -> map plane [angle deg, distance m]\n", result.matches.size ());
-  for (std::size_t i = 0; i < result.matches.size (); ++i)
-  {
+    std::printf (
+        "  %12.6f %12.6f %12.6f %12.4f\n", t (r, 0), t (r, 1), t (r, 2), t (r, 3));
+  std::printf (
+      "Match set (%zu pairs): scan plane -> map plane [angle deg, distance m]\n",
+      result.matches.size());
+  for (std::size_t i = 0; i < result.matches.size(); ++i) {
     const auto& pair = result.matches[i];
-    const auto& map = reg.getMapPlanes ()[pair.map];
-    std::printf ("  %3d (%6zu pts) -> %3d (%s) [%.2f, %.3f]\n", pair.scan, reg.getSourcePlanes ()[pair.scan].support,
-                 pair.map, map.isFloor () ? "floor" : ("wall, edge " + std::to_string (map.edge)).c_str (),
-                 result.estimate.angle_residuals[i] * 180.0 / M_PI, result.estimate.distance_residuals[i]);
+    const auto& map = reg.getMapPlanes()[pair.map];
+    std::printf ("  %3d (%6zu pts) -> %3d (%s) [%.2f, %.3f]\n",
+                 pair.scan,
+                 reg.getSourcePlanes()[pair.scan].support,
+                 pair.map,
+                 map.isFloor() ? "floor"
+                               : ("wall, edge " + std::to_string (map.edge)).c_str(),
+                 result.estimate.angle_residuals[i] * 180.0 / M_PI,
+                 result.estimate.distance_residuals[i]);
   }
   const pcl_ext::PlaneDistanceMetrics d = planeDistances (reg, *scan);
-  std::printf ("Plane distances (Tables 1-2): mean %.3f m, max %.3f m, rms %.3f m over %zu points\n", d.mean,
-               d.max, d.rms, d.points);
+  std::printf ("Plane distances (Tables 1-2): mean %.3f m, max %.3f m, rms %.3f m over "
+               "%zu points\n",
+               d.mean,
+               d.max,
+               d.rms,
+               d.points);
   if (!pcl_ext::io::saveCloud (output, registered))
     return 1;
 #ifdef PCL_EXT_HAVE_VISUALIZATION
   pcl_ext::visualization::RenderOptions options;
   options.view_direction = Eigen::Vector3d (0, 0, -1);
-  options.up = Eigen::Vector3d::UnitY ();
+  options.up = Eigen::Vector3d::UnitY();
   options.zoom_out = 1.6;
-  for (const auto& [path, before] : {std::make_pair (png, false), std::make_pair (png_before, true)})
-  {
-    if (path.empty ())
+  for (const auto& [path, before] :
+       {std::make_pair (png, false), std::make_pair (png_before, true)}) {
+    if (path.empty())
       continue;
     pcl_ext::visualization::View view;
-    renderTopView (*scan, reg.getSourcePlanes (), result, before ? Eigen::Matrix4d::Identity () : t,
-                   reg.getMapPlanes (), before ? "before registration" : "registered to the footprint", view);
+    renderTopView (*scan,
+                   reg.getSourcePlanes(),
+                   result,
+                   before ? Eigen::Matrix4d::Identity() : t,
+                   reg.getMapPlanes(),
+                   before ? "before registration" : "registered to the footprint",
+                   view);
     if (!pcl_ext::visualization::renderToPng ({view}, path, options))
       return 1;
   }
 #else
-  if (!png.empty () || !png_before.empty ())
+  if (!png.empty() || !png_before.empty())
     std::cerr << "Warning: built without visualization, no PNG written.\n";
 #endif
   return 0;

@@ -1,7 +1,7 @@
 /*
- * pcl_ext_segment_profiles: segments a cloud by intersecting profiles (Sithole & Mapurisa) and
- * writes the input points with a `label` field (segment 1, 2, ... by decreasing size; 0 for
- * points in no segment).
+ * pcl_ext_segment_profiles: segments a cloud by intersecting profiles (Sithole &
+ * Mapurisa) and writes the input points with a `label` field (segment 1, 2, ... by
+ * decreasing size; 0 for points in no segment).
  */
 #include <pcl_ext/segmentation/cylinder_segment_join.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
@@ -23,18 +23,18 @@
 #include <iostream>
 #include <numeric>
 
-namespace
-{
+namespace {
 using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
 
-/** Write \a labels into the cloud's `label` field (a scene's own labels are replaced; the
-  * field is appended when absent). */
+/** Write \a labels into the cloud's `label` field (a scene's own labels are replaced;
+ * the field is appended when absent). */
 bool
-attachLabels (const pcl::PCLPointCloud2& input, const pcl::PointCloud<pcl::Label>& labels,
+attachLabels (const pcl::PCLPointCloud2& input,
+              const pcl::PointCloud<pcl::Label>& labels,
               pcl::PCLPointCloud2& output)
 {
-  std::vector<std::uint32_t> values (labels.size ());
-  for (std::size_t i = 0; i < labels.size (); ++i)
+  std::vector<std::uint32_t> values (labels.size());
+  for (std::size_t i = 0; i < labels.size(); ++i)
     values[i] = labels[i].label;
   output = input;
   return pcl_ext::io::setLabelField (output, "label", values);
@@ -55,53 +55,59 @@ parseMethod (const std::string& name, Segmentation::ProfileMethod& method)
 }
 
 #ifdef PCL_EXT_HAVE_VISUALIZATION
-/** Figure 3 and 5 of the paper for the first stack: points coloured by profile, and by chain
-  * (connected run of profile edges). */
+/** Figure 3 and 5 of the paper for the first stack: points coloured by profile, and by
+ * chain (connected run of profile edges). */
 bool
-renderProfiles (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Segmentation& seg,
+renderProfiles (const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                const Segmentation& seg,
                 const std::string& path)
 {
   const std::vector<int> profile = seg.getProfileOfPoints (0);
-  if (profile.size () != cloud.size () || seg.getStackEdges ().empty ())
+  if (profile.size() != cloud.size() || seg.getStackEdges().empty())
     return false;
-  std::vector<std::uint32_t> parent (cloud.size ());
-  std::iota (parent.begin (), parent.end (), 0u);
+  std::vector<std::uint32_t> parent (cloud.size());
+  std::iota (parent.begin(), parent.end(), 0u);
   const auto find = [&] (std::uint32_t x) {
     while (parent[x] != x)
       x = parent[x] = parent[parent[x]];
     return x;
   };
-  for (const auto& e : seg.getStackEdges ()[0])
-  {
+  for (const auto& e : seg.getStackEdges()[0]) {
     const std::uint32_t a = find (e.source), b = find (e.target);
     parent[std::max (a, b)] = std::min (a, b);
   }
-  std::vector<std::uint32_t> by_profile (cloud.size ()), by_chain (cloud.size ());
-  for (std::size_t i = 0; i < cloud.size (); ++i)
-  {
+  std::vector<std::uint32_t> by_profile (cloud.size()), by_chain (cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
     by_profile[i] = profile[i] < 0 ? 0 : 1 + static_cast<std::uint32_t> (profile[i]);
     by_chain[i] = profile[i] < 0 ? 0 : 1 + find (static_cast<std::uint32_t> (i));
   }
-  const Eigen::Vector3f phi = seg.getStackNormals ()[0];
+  const Eigen::Vector3f phi = seg.getStackNormals()[0];
   pcl_ext::visualization::View profiles, chains;
   char title[160];
-  std::snprintf (title, sizeof (title), "Stack 1 (normal %.2f %.2f %.2f): profiles, width %.4g",
-                 phi.x (), phi.y (), phi.z (), seg.getUsedProfileWidth ());
+  std::snprintf (title,
+                 sizeof (title),
+                 "Stack 1 (normal %.2f %.2f %.2f): profiles, width %.4g",
+                 phi.x(),
+                 phi.y(),
+                 phi.z(),
+                 seg.getUsedProfileWidth());
   profiles.title = title;
-  profiles.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
-                                  cloud, pcl_ext::visualization::colourByLabel (by_profile)),
-                              2.0});
+  profiles.layers.push_back (
+      {pcl_ext::visualization::makeColouredCloud (
+           cloud, pcl_ext::visualization::colourByLabel (by_profile)),
+       2.0});
   chains.title = "Stack 1: chains after profile segmentation";
-  chains.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
-                                cloud, pcl_ext::visualization::colourByLabel (by_chain)),
-                            2.0});
+  chains.layers.push_back (
+      {pcl_ext::visualization::makeColouredCloud (
+           cloud, pcl_ext::visualization::colourByLabel (by_chain)),
+       2.0});
   pcl_ext::visualization::RenderOptions options;
   options.width = 1600;
   options.height = 800;
   return pcl_ext::visualization::renderToPng ({profiles, chains}, path, options);
 }
 #endif
-}  // namespace
+} // namespace
 
 int
 main (int argc, char** argv)
@@ -110,83 +116,113 @@ main (int argc, char** argv)
   std::string method_name = "proximity", distribution = "hemisphere";
   unsigned int stacks = 4, threads = 0, neighbours = 4;
   double width = 0.0, width_factor = 1.5, threshold = 0.0, threshold_factor = 3.0;
-  double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0, turn_significance = 0.0;
+  double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0,
+         turn_significance = 0.0;
   double max_threshold_factor = 4.0;
-  bool aicc = false, local_threshold = false, side_frames = false, join_cylinders = false;
-  double cylinder_tolerance = 0.015, cylinder_min_radius = 0.02, cylinder_max_radius = 0.6;
+  bool aicc = false, local_threshold = false, side_frames = false,
+       join_cylinders = false;
+  double cylinder_tolerance = 0.015, cylinder_min_radius = 0.02,
+         cylinder_max_radius = 0.6;
   double cylinder_max_gap = 2.0;
   int min_size = 1;
-  pcl_ext::apps::CommandLine cl (
-      "pcl_ext_segment_profiles",
-      "Segments a cloud by intersecting profiles (Sithole & Mapurisa): stacks of thin profiles "
-      "along several normals, chains in every profile, segments = connected components of all "
-      "chains. Writes the input points with a 'label' field (1.. by decreasing size, 0: none).");
+  pcl_ext::apps::CommandLine cl ("pcl_ext_segment_profiles",
+                                 "Segments a cloud by intersecting profiles (Sithole & "
+                                 "Mapurisa): stacks of thin profiles "
+                                 "along several normals, chains in every profile, "
+                                 "segments = connected components of all "
+                                 "chains. Writes the input points with a 'label' field "
+                                 "(1.. by decreasing size, 0: none).");
   cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
   cl.addPositional ("output.pcd", output_path, "output cloud with a 'label' field");
   cl.addOption ("stacks", stacks, "number of stacks (stack normals spread evenly)");
-  cl.addOption ("distribution", distribution,
+  cl.addOption ("distribution",
+                distribution,
                 "stack normals over the 'hemisphere' or a 'horizontal' half circle");
-  cl.addOption ("width", width, "profile width (0: width_factor * average point spacing)");
-  cl.addOption ("width_factor", width_factor,
-                "profile width as a multiple of the spacing (curve fitting, noisy scans: 2.5)");
+  cl.addOption (
+      "width", width, "profile width (0: width_factor * average point spacing)");
+  cl.addOption (
+      "width_factor",
+      width_factor,
+      "profile width as a multiple of the spacing (curve fitting, noisy scans: 2.5)");
   cl.addOption ("method", method_name, "profile segmenter: proximity, mst or curve");
-  cl.addOption ("threshold", threshold,
+  cl.addOption ("threshold",
+                threshold,
                 "proximity threshold (0: threshold_factor * average point spacing)");
-  cl.addOption ("threshold_factor", threshold_factor, "threshold as a multiple of the spacing");
-  cl.addSwitch ("local_threshold", local_threshold,
-                "thresholds that follow the local density (the threshold times the local gap "
-                "in the profile over the mean gap), for clouds whose density varies (TLS: far "
-                "surfaces are sparser); not in the paper");
-  cl.addOption ("max_threshold_factor", max_threshold_factor,
+  cl.addOption (
+      "threshold_factor", threshold_factor, "threshold as a multiple of the spacing");
+  cl.addSwitch (
+      "local_threshold",
+      local_threshold,
+      "thresholds that follow the local density (the threshold times the local gap "
+      "in the profile over the mean gap), for clouds whose density varies (TLS: far "
+      "surfaces are sparser); not in the paper");
+  cl.addOption ("max_threshold_factor",
+                max_threshold_factor,
                 "local thresholds: the longest, as a multiple of the threshold");
   cl.addOption ("k", neighbours, "proximity chaining: links per point");
-  cl.addOption ("max_turn", max_turn_deg, "curve fitting: sharpest turn within a curve (deg)");
-  cl.addOption ("window", window,
-                "curve fitting: half length of the stretch fitted on each side of a point "
-                "(0: 2 x threshold)");
-  cl.addOption ("residual_factor", residual_factor,
-                "curve fitting: a stretch whose residual exceeds this multiple of the median "
-                "is not one curve");
-  cl.addOption ("turn_significance", turn_significance,
-                "curve fitting: a sharp turn must also exceed this many standard errors of the "
-                "fits (0: the angle alone, as in the paper; noisy scans: 3)");
-  cl.addSwitch ("aicc", aicc,
-                "curve fitting: select the polynomial by the small-sample AICc, not the "
-                "paper's AIC (noisy scans)");
-  cl.addSwitch ("side_frames", side_frames,
-                "curve fitting: fit each side of a point along its own axis (tight bends, "
-                "such as thin trunks cut obliquely); not in the paper");
-  cl.addSwitch ("join_cylinders", join_cylinders,
-                "then join the segments that lie on one cylinder: the spans of a pipe cut at "
-                "its supports, the legs of an elbow (pcl_ext::CylinderSegmentJoin); not in the "
-                "paper");
-  cl.addOption ("cylinder_tolerance", cylinder_tolerance,
+  cl.addOption (
+      "max_turn", max_turn_deg, "curve fitting: sharpest turn within a curve (deg)");
+  cl.addOption (
+      "window",
+      window,
+      "curve fitting: half length of the stretch fitted on each side of a point "
+      "(0: 2 x threshold)");
+  cl.addOption (
+      "residual_factor",
+      residual_factor,
+      "curve fitting: a stretch whose residual exceeds this multiple of the median "
+      "is not one curve");
+  cl.addOption (
+      "turn_significance",
+      turn_significance,
+      "curve fitting: a sharp turn must also exceed this many standard errors of the "
+      "fits (0: the angle alone, as in the paper; noisy scans: 3)");
+  cl.addSwitch (
+      "aicc",
+      aicc,
+      "curve fitting: select the polynomial by the small-sample AICc, not the "
+      "paper's AIC (noisy scans)");
+  cl.addSwitch (
+      "side_frames",
+      side_frames,
+      "curve fitting: fit each side of a point along its own axis (tight bends, "
+      "such as thin trunks cut obliquely); not in the paper");
+  cl.addSwitch (
+      "join_cylinders",
+      join_cylinders,
+      "then join the segments that lie on one cylinder: the spans of a pipe cut at "
+      "its supports, the legs of an elbow (pcl_ext::CylinderSegmentJoin); not in the "
+      "paper");
+  cl.addOption ("cylinder_tolerance",
+                cylinder_tolerance,
                 "joining cylinders: inlier band around a cylinder's surface");
-  cl.addOption ("cylinder_min_radius", cylinder_min_radius, "joining cylinders: smallest radius");
-  cl.addOption ("cylinder_max_radius", cylinder_max_radius, "joining cylinders: largest radius");
-  cl.addOption ("cylinder_max_gap", cylinder_max_gap,
+  cl.addOption (
+      "cylinder_min_radius", cylinder_min_radius, "joining cylinders: smallest radius");
+  cl.addOption (
+      "cylinder_max_radius", cylinder_max_radius, "joining cylinders: largest radius");
+  cl.addOption ("cylinder_max_gap",
+                cylinder_max_gap,
                 "joining cylinders: longest gap bridged along an axis or to an elbow");
   cl.addOption ("min_size", min_size, "smallest segment kept");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
-  cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
-  cl.addOption ("png_profiles", png_profiles_path,
+  cl.addOption (
+      "png", png_path, "also render the segments to this PNG; needs an X display");
+  cl.addOption ("png_profiles",
+                png_profiles_path,
                 "also render the first stack's profiles and chains to this PNG");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
   Segmentation::ProfileMethod method;
-  if (!parseMethod (method_name, method))
-  {
+  if (!parseMethod (method_name, method)) {
     std::cerr << "Error: -method must be proximity, mst or curve (got '" << method_name
               << "').\n";
     return 1;
   }
-  if (distribution != "hemisphere" && distribution != "horizontal")
-  {
+  if (distribution != "hemisphere" && distribution != "horizontal") {
     std::cerr << "Error: -distribution must be hemisphere or horizontal.\n";
     return 1;
   }
-  if (min_size < 1)
-  {
+  if (min_size < 1) {
     std::cerr << "Error: -min_size must be at least 1.\n";
     return 1;
   }
@@ -194,27 +230,28 @@ main (int argc, char** argv)
       (!(cylinder_tolerance > 0.0) || !std::isfinite (cylinder_tolerance) ||
        !(cylinder_min_radius > 0.0) || !(cylinder_max_radius >= cylinder_min_radius) ||
        !std::isfinite (cylinder_max_radius) || !(cylinder_max_gap >= 0.0) ||
-       !std::isfinite (cylinder_max_gap)))
-  {
-    std::cerr << "Error: joining cylinders needs -cylinder_tolerance > 0, 0 < "
-                 "-cylinder_min_radius <= -cylinder_max_radius and -cylinder_max_gap >= 0 "
-                 "(all finite).\n";
+       !std::isfinite (cylinder_max_gap))) {
+    std::cerr
+        << "Error: joining cylinders needs -cylinder_tolerance > 0, 0 < "
+           "-cylinder_min_radius <= -cylinder_max_radius and -cylinder_max_gap >= 0 "
+           "(all finite).\n";
     return 1;
   }
   if (!pcl_ext::io::checkOutputsWritable (output_path, {png_path, png_profiles_path}))
     return 1;
 
   pcl::PCLPointCloud2 input;
-  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   if (!pcl_ext::apps::loadInput (input_path, input, *cloud))
     return 1;
 
   Segmentation seg;
   seg.setInputCloud (cloud);
   seg.setNumberOfStacks (stacks);
-  seg.setStackDistribution (distribution == "hemisphere"
-                                ? Segmentation::StackDistribution::Hemisphere
-                                : Segmentation::StackDistribution::HorizontalHalfCircle);
+  seg.setStackDistribution (
+      distribution == "hemisphere"
+          ? Segmentation::StackDistribution::Hemisphere
+          : Segmentation::StackDistribution::HorizontalHalfCircle);
   seg.setProfileWidth (width);
   seg.setProfileWidthFactor (width_factor);
   seg.setDistanceThreshold (threshold);
@@ -234,15 +271,13 @@ main (int argc, char** argv)
   std::vector<pcl::PointIndices> clusters;
   pcl_ext::apps::StageTimer segment ("Segmenting");
   seg.extract (clusters);
-  if (clusters.empty ())
-  {
+  if (clusters.empty()) {
     std::cerr << "Error: segmentation failed (see the message above).\n";
     return 1;
   }
-  segment.done (cloud->size ());
+  segment.done (cloud->size());
   std::size_t joined_cylinders = 0;
-  if (join_cylinders)
-  {
+  if (join_cylinders) {
     pcl_ext::CylinderSegmentJoin<pcl::PointXYZ> join;
     join.setInputCloud (cloud);
     join.setInputSegments (clusters);
@@ -252,66 +287,63 @@ main (int argc, char** argv)
     join.setNumberOfThreads (threads);
     pcl_ext::apps::StageTimer joining ("Joining cylinders");
     join.join (clusters);
-    if (clusters.empty ())
-    {
+    if (clusters.empty()) {
       std::cerr << "Error: joining the cylinders failed (see the message above).\n";
       return 1;
     }
-    joining.done (cloud->size ());
-    for (const auto& c : join.getCylinders ())
+    joining.done (cloud->size());
+    for (const auto& c : join.getCylinders())
       joined_cylinders += c.output_segment >= 0;
   }
   std::size_t edges = 0;
-  for (const auto& stack : seg.getStackEdges ())
-    edges += stack.size ();
-  std::cout << "spacing " << seg.getUsedPointSpacing () << ", width "
-            << seg.getUsedProfileWidth () << ", threshold " << seg.getUsedDistanceThreshold ()
-            << "; " << seg.getStackEdges ().size () << " stacks, " << edges << " edges, "
-            << clusters.size () << " segments";
+  for (const auto& stack : seg.getStackEdges())
+    edges += stack.size();
+  std::cout << "spacing " << seg.getUsedPointSpacing() << ", width "
+            << seg.getUsedProfileWidth() << ", threshold "
+            << seg.getUsedDistanceThreshold() << "; " << seg.getStackEdges().size()
+            << " stacks, " << edges << " edges, " << clusters.size() << " segments";
   if (method == Segmentation::ProfileMethod::CurveFitting)
-    std::cout << ", " << seg.getBreakpoints ().size () << " curve ends";
+    std::cout << ", " << seg.getBreakpoints().size() << " curve ends";
   if (join_cylinders)
     std::cout << ", " << joined_cylinders << " cylinders joined";
   std::cout << "\n";
 
   pcl::PointCloud<pcl::Label> labels;
-  labels.resize (cloud->size ());
+  labels.resize (cloud->size());
   for (auto& l : labels)
     l.label = 0;
-  for (std::size_t c = 0; c < clusters.size (); ++c)
+  for (std::size_t c = 0; c < clusters.size(); ++c)
     for (const auto i : clusters[c].indices)
       labels[i].label = static_cast<std::uint32_t> (c + 1);
   pcl::PCLPointCloud2 output;
   pcl_ext::apps::StageTimer save ("Saving " + output_path);
-  if (!attachLabels (input, labels, output) || !pcl_ext::io::saveCloud (output_path, output))
+  if (!attachLabels (input, labels, output) ||
+      !pcl_ext::io::saveCloud (output_path, output))
     return 1;
-  save.done (labels.size ());
+  save.done (labels.size());
 
-  if (!png_path.empty () || !png_profiles_path.empty ())
-  {
+  if (!png_path.empty() || !png_profiles_path.empty()) {
 #ifdef PCL_EXT_HAVE_VISUALIZATION
-    if (!png_path.empty ())
-    {
+    if (!png_path.empty()) {
       pcl_ext::apps::StageTimer render ("Rendering " + png_path);
       std::vector<std::uint32_t> ids;
       for (const auto& l : labels)
         ids.push_back (l.label);
       pcl_ext::visualization::View view;
-      view.title = "Sithole & Mapurisa: " + std::to_string (clusters.size ()) +
+      view.title = "Sithole & Mapurisa: " + std::to_string (clusters.size()) +
                    " segments (" + method_name + ")";
       view.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
                                   *cloud, pcl_ext::visualization::colourByLabel (ids)),
                               2.0});
       if (!pcl_ext::visualization::renderToPng ({view}, png_path))
         return 1;
-      render.done (labels.size ());
+      render.done (labels.size());
     }
-    if (!png_profiles_path.empty ())
-    {
+    if (!png_profiles_path.empty()) {
       pcl_ext::apps::StageTimer render ("Rendering " + png_profiles_path);
       if (!renderProfiles (*cloud, seg, png_profiles_path))
         return 1;
-      render.done (labels.size ());
+      render.done (labels.size());
     }
 #else
     std::cerr << "Error: built without the renderer; -png is not available.\n";

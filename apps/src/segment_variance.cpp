@@ -1,10 +1,11 @@
 /*
- * pcl_ext_segment_variance: Belton & Lichti (2006) segmentation: classifies every point surface,
- * edge or boundary by local variance (section 2) and grows segments over the surface points
- * (section 3). Writes the input points with a `label` field: the segment (1, 2, ... by
- * decreasing size), 0 for points in no segment (edges, boundaries, segments too small).
- * Optionally intersects the segments locally (section 4): writes the intersection points and
- * puts edge and boundary points back into the segments they fit.
+ * pcl_ext_segment_variance: Belton & Lichti (2006) segmentation: classifies every point
+ * surface, edge or boundary by local variance (section 2) and grows segments over the
+ * surface points (section 3). Writes the input points with a `label` field: the segment
+ * (1, 2, ... by decreasing size), 0 for points in no segment (edges, boundaries,
+ * segments too small). Optionally intersects the segments locally (section 4): writes
+ * the intersection points and puts edge and boundary points back into the segments they
+ * fit.
  */
 #include "variance/variance_options.h"
 
@@ -37,90 +38,98 @@ main (int argc, char** argv)
   bool reintegrate = false;
   pcl_ext::apps::VarianceClassificationOptions options;
   unsigned int threads = 0;
-  pcl_ext::apps::CommandLine cl (
-      "pcl_ext_segment_variance",
-      "Segments a cloud by region growing over the Belton & Lichti (2006) classification: "
-      "surface points link to their nearest surface neighbours, edge and boundary points stop "
-      "the growth. Writes the input points with a 'label' field (segment 1.. by decreasing "
-      "size, 0: none).");
+  pcl_ext::apps::CommandLine cl ("pcl_ext_segment_variance",
+                                 "Segments a cloud by region growing over the Belton & "
+                                 "Lichti (2006) classification: "
+                                 "surface points link to their nearest surface "
+                                 "neighbours, edge and boundary points stop "
+                                 "the growth. Writes the input points with a 'label' "
+                                 "field (segment 1.. by decreasing "
+                                 "size, 0: none).");
   cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
   cl.addPositional ("output.pcd", output_path, "output cloud with a 'label' field");
   cl.addOption ("k", k, "neighbours per point (the paper's k)");
-  cl.addOption ("max_radius", max_radius,
-                "keep only the k neighbours within this distance (0: no cap, the paper's)");
+  cl.addOption (
+      "max_radius",
+      max_radius,
+      "keep only the k neighbours within this distance (0: no cap, the paper's)");
   options.addTo (cl);
-  cl.addOption ("max_distance", max_distance,
-                "longest link from a seed to a neighbour (0: no limit beyond the k neighbours)");
-  cl.addOption ("max_distance_factor", max_distance_factor,
-                "longest link from a seed as a multiple of its local point spacing (0: none)");
+  cl.addOption (
+      "max_distance",
+      max_distance,
+      "longest link from a seed to a neighbour (0: no limit beyond the k neighbours)");
+  cl.addOption (
+      "max_distance_factor",
+      max_distance_factor,
+      "longest link from a seed as a multiple of its local point spacing (0: none)");
   cl.addOption ("min_size", min_size, "smallest segment kept");
-  cl.addOption ("intersections", intersections_path,
-                "also write the local intersection points of the segments (section 4) to this "
-                "PCD: x y z, segment_a, segment_b and the two surface points index_a, index_b");
-  cl.addSwitch ("reintegrate", reintegrate,
-                "put edge and boundary points into the segment whose local plane they fit "
-                "(section 4) before writing output.pcd");
-  cl.addOption ("parallel_angle", parallel_angle,
-                "with -intersections or -reintegrate: segments whose normals differ by less "
-                "(degrees) are parallel, not intersected (eq. 9)");
+  cl.addOption (
+      "intersections",
+      intersections_path,
+      "also write the local intersection points of the segments (section 4) to this "
+      "PCD: x y z, segment_a, segment_b and the two surface points index_a, index_b");
+  cl.addSwitch (
+      "reintegrate",
+      reintegrate,
+      "put edge and boundary points into the segment whose local plane they fit "
+      "(section 4) before writing output.pcd");
+  cl.addOption (
+      "parallel_angle",
+      parallel_angle,
+      "with -intersections or -reintegrate: segments whose normals differ by less "
+      "(degrees) are parallel, not intersected (eq. 9)");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
-  cl.addOption ("png", png_path, "also render the segments to this PNG; needs an X display");
+  cl.addOption (
+      "png", png_path, "also render the segments to this PNG; needs an X display");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (!options.valid ())
+  if (!options.valid())
     return 1;
-  if (k < 3)
-  {
+  if (k < 3) {
     std::cerr << "Error: -k must be at least 3.\n";
     return 1;
   }
-  if (min_size < 1)
-  {
+  if (min_size < 1) {
     std::cerr << "Error: -min_size must be at least 1.\n";
     return 1;
   }
-  if (!(max_radius >= 0.0) || !std::isfinite (max_radius))
-  {
+  if (!(max_radius >= 0.0) || !std::isfinite (max_radius)) {
     std::cerr << "Error: -max_radius must be finite and >= 0.\n";
     return 1;
   }
-  if (!(max_distance >= 0.0))
-  {
+  if (!(max_distance >= 0.0)) {
     std::cerr << "Error: -max_distance must be >= 0.\n";
     return 1;
   }
-  if (!(max_distance_factor >= 0.0) || !std::isfinite (max_distance_factor))
-  {
+  if (!(max_distance_factor >= 0.0) || !std::isfinite (max_distance_factor)) {
     std::cerr << "Error: -max_distance_factor must be finite and >= 0.\n";
     return 1;
   }
-  if (!(parallel_angle >= 0.0 && parallel_angle <= 90.0))
-  {
+  if (!(parallel_angle >= 0.0 && parallel_angle <= 90.0)) {
     std::cerr << "Error: -parallel_angle must lie between 0 and 90 degrees.\n";
     return 1;
   }
-  const bool intersect = !intersections_path.empty () || reintegrate;
+  const bool intersect = !intersections_path.empty() || reintegrate;
   if (!pcl_ext::io::checkOutputsWritable (output_path, {png_path, intersections_path}))
     return 1;
 
   pcl::PCLPointCloud2 input;
-  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   if (!pcl_ext::apps::loadInput (input_path, input, *cloud))
     return 1;
 
   // One neighbourhood search for the segmentation and the intersections.
-  auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>> ();
+  auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>>();
   nb->setInputCloud (cloud);
   nb->setKSearch (k);
   nb->setMaxRadius (max_radius);
   nb->setNumberOfThreads (threads);
   pcl_ext::apps::StageTimer search ("Searching " + std::to_string (k) + " neighbours");
-  if (!nb->compute ())
-  {
+  if (!nb->compute()) {
     std::cerr << "Error: the neighbourhood search failed (see the message above).\n";
     return 1;
   }
-  search.done (cloud->size ());
+  search.done (cloud->size());
 
   pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
   options.applyTo (classifier);
@@ -135,91 +144,90 @@ main (int argc, char** argv)
   std::vector<pcl::PointIndices> clusters;
   pcl_ext::apps::StageTimer segment ("Classifying and segmenting");
   pcl_ext::segmentByLocalVariance (classifier, rg, clusters);
-  if (clusters.empty ())
-  {
-    std::cerr << "Error: segmentation failed or found no segment of at least " << min_size
-              << " points (see the message above).\n";
+  if (clusters.empty()) {
+    std::cerr << "Error: segmentation failed or found no segment of at least "
+              << min_size << " points (see the message above).\n";
     return 1;
   }
-  segment.done (cloud->size ());
+  segment.done (cloud->size());
   pcl::PointCloud<pcl::Label> labels;
   rg.getSegmentLabels (labels);
   std::size_t segmented = 0, classes[pcl_ext::kNumPointClasses] = {};
   for (const auto& c : clusters)
-    segmented += c.indices.size ();
-  for (const auto& c : *rg.getInputClasses ())
+    segmented += c.indices.size();
+  for (const auto& c : *rg.getInputClasses())
     ++classes[std::min<std::size_t> (c.label, pcl_ext::kNumPointClasses - 1)];
-  std::cout << clusters.size () << " segments, " << segmented << " points segmented, "
-            << cloud->size () - segmented << " not (surface " << classes[1] << ", edge "
-            << classes[2] << ", boundary " << classes[3] << ", unknown " << classes[0] << ")\n";
+  std::cout << clusters.size() << " segments, " << segmented << " points segmented, "
+            << cloud->size() - segmented << " not (surface " << classes[1] << ", edge "
+            << classes[2] << ", boundary " << classes[3] << ", unknown " << classes[0]
+            << ")\n";
 
   pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> intersections;
-  if (intersect)
-  {
+  if (intersect) {
     pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ> lsi;
     lsi.setInputCloud (cloud);
     lsi.setNeighbourhoods (nb);
     lsi.setSegmentLabels (pcl::make_shared<pcl::PointCloud<pcl::Label>> (labels));
     lsi.setPointClasses (
-        pcl::make_shared<pcl::PointCloud<pcl::Label>> (*rg.getInputClasses ()));
+        pcl::make_shared<pcl::PointCloud<pcl::Label>> (*rg.getInputClasses()));
     lsi.setParallelAngleThreshold (parallel_angle * M_PI / 180.0);
     lsi.setNumberOfThreads (threads);
     pcl::PointCloud<pcl::Label> reintegrated;
     pcl_ext::apps::StageTimer stage ("Intersecting segments");
-    if (!lsi.compute (intersections, reintegrated))
-    {
-      std::cerr << "Error: the local surface intersection failed (see the message above).\n";
+    if (!lsi.compute (intersections, reintegrated)) {
+      std::cerr
+          << "Error: the local surface intersection failed (see the message above).\n";
       return 1;
     }
-    stage.done (intersections.size ());
-    const auto& r = lsi.getReport ();
-    std::cout << intersections.size () << " intersection points from " << r.pairs
+    stage.done (intersections.size());
+    const auto& r = lsi.getReport();
+    std::cout << intersections.size() << " intersection points from " << r.pairs
               << " pairs of segments' surface points (" << r.parallel << " parallel, "
-              << r.beyond_tolerance << " too far, " << r.no_plane << " without a plane); "
-              << r.examined << " edge and boundary points: " << r.reintegrated
-              << " fit one segment, " << r.ambiguous << " several, " << r.left << " none\n";
+              << r.beyond_tolerance << " too far, " << r.no_plane
+              << " without a plane); " << r.examined
+              << " edge and boundary points: " << r.reintegrated << " fit one segment, "
+              << r.ambiguous << " several, " << r.left << " none\n";
     if (reintegrate)
       labels = reintegrated;
-    if (!intersections_path.empty ())
-    {
+    if (!intersections_path.empty()) {
       pcl_ext::apps::StageTimer save ("Saving " + intersections_path);
       if (!pcl_ext::io::saveCloud (intersections_path, intersections))
         return 1;
-      save.done (intersections.size ());
+      save.done (intersections.size());
     }
   }
 
-  std::vector<std::uint32_t> ids (labels.size ());
-  for (std::size_t i = 0; i < labels.size (); ++i)
+  std::vector<std::uint32_t> ids (labels.size());
+  for (std::size_t i = 0; i < labels.size(); ++i)
     ids[i] = labels[i].label;
   pcl::PCLPointCloud2 output = input;
   pcl_ext::apps::StageTimer save ("Saving " + output_path);
   if (!pcl_ext::io::setLabelField (output, "label", ids) ||
       !pcl_ext::io::saveCloud (output_path, output))
     return 1;
-  save.done (ids.size ());
+  save.done (ids.size());
 
-  if (!png_path.empty ())
-  {
+  if (!png_path.empty()) {
 #ifdef PCL_EXT_HAVE_VISUALIZATION
     pcl_ext::apps::StageTimer render ("Rendering " + png_path);
     pcl_ext::visualization::View view;
-    view.title = "Belton & Lichti: " + std::to_string (clusters.size ()) + " segments";
-    if (!intersections.empty ())
+    view.title = "Belton & Lichti: " + std::to_string (clusters.size()) + " segments";
+    if (!intersections.empty())
       view.title += ", local intersections in black";
     view.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
                                 *cloud, pcl_ext::visualization::colourByLabel (ids)),
                             2.0});
     // Intersection points in black, larger, on top of the segments.
-    if (!intersections.empty ())
+    if (!intersections.empty())
       view.layers.push_back (
           {pcl_ext::visualization::makeColouredCloud (
-               intersections, std::vector<pcl_ext::visualization::Colour> (
-                                  intersections.size (), pcl_ext::visualization::Colour {0, 0, 0})),
+               intersections,
+               std::vector<pcl_ext::visualization::Colour> (
+                   intersections.size(), pcl_ext::visualization::Colour{0, 0, 0})),
            4.0});
     if (!pcl_ext::visualization::renderToPng ({view}, png_path))
       return 1;
-    render.done (ids.size ());
+    render.done (ids.size());
 #else
     std::cerr << "Error: built without the renderer; -png is not available.\n";
     return 1;

@@ -1,5 +1,6 @@
 /*
- * pcl_ext: the multi-scale CRF graph of one cloud (Lim & Suter 2008, section 3.2, figure 3).
+ * pcl_ext: the multi-scale CRF graph of one cloud (Lim & Suter 2008, section 3.2,
+ * figure 3).
  */
 #include "crf_internal.h"
 
@@ -11,72 +12,82 @@
 #include <chrono>
 #include <random>
 
-namespace pcl_ext
-{
-namespace crf
-{
-namespace
-{
+namespace pcl_ext {
+namespace crf {
+namespace {
 double
 msSince (std::chrono::steady_clock::time_point t0)
 {
-  return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ();
+  return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now() -
+                                                    t0)
+      .count();
 }
 
-/** m members of \a sv other than its mid-point, drawn with a generator seeded per super-voxel
-  * so that the choice does not depend on the order super-voxels are processed in. */
+/** m members of \a sv other than its mid-point, drawn with a generator seeded per
+ * super-voxel so that the choice does not depend on the order super-voxels are
+ * processed in. */
 void
-pickLocalPoints (const Supervoxel& sv, std::size_t v, std::uint64_t seed, int m,
+pickLocalPoints (const Supervoxel& sv,
+                 std::size_t v,
+                 std::uint64_t seed,
+                 int m,
                  std::vector<pcl::index_t>& out)
 {
-  out.clear ();
+  out.clear();
   std::vector<pcl::index_t> pool;
   for (const auto i : sv.members)
     if (i != sv.seed)
       pool.push_back (i);
   std::mt19937_64 rng (seed ^ (0x9E3779B97F4A7C15ull * (v + 1)));
-  const std::size_t take = std::min (pool.size (), static_cast<std::size_t> (m));
-  for (std::size_t j = 0; j < take; ++j)
-  {
-    std::swap (pool[j], pool[j + rng () % (pool.size () - j)]);
+  const std::size_t take = std::min (pool.size(), static_cast<std::size_t> (m));
+  for (std::size_t j = 0; j < take; ++j) {
+    std::swap (pool[j], pool[j + rng() % (pool.size() - j)]);
     out.push_back (pool[j]);
   }
 }
-}  // namespace
+} // namespace
 
 bool
-buildGraph (const CrfInput& input, const CrfSettings& settings, SupervoxelSet& supervoxels,
-            Eigen::MatrixXf& raw, Graph& graph, CrfStatistics& statistics)
+buildGraph (const CrfInput& input,
+            const CrfSettings& settings,
+            SupervoxelSet& supervoxels,
+            Eigen::MatrixXf& raw,
+            Graph& graph,
+            CrfStatistics& statistics)
 {
-  graph = Graph ();
-  auto t0 = std::chrono::steady_clock::now ();
+  graph = Graph();
+  auto t0 = std::chrono::steady_clock::now();
   AdaptiveRadiusEstimator estimator;
   SupervoxelParameters sv_parameters = settings.supervoxels;
   sv_parameters.threads = settings.threads;
-  if (!computeAdaptiveSupervoxels (input.xyz, settings.features.colour ? input.colours
-                                                                       : std::vector<Eigen::Vector3f> (),
-                                   sv_parameters, supervoxels, &estimator))
+  if (!computeAdaptiveSupervoxels (
+          input.xyz,
+          settings.features.colour ? input.colours : std::vector<Eigen::Vector3f>(),
+          sv_parameters,
+          supervoxels,
+          &estimator))
     return false;
-  const std::size_t S = supervoxels.size ();
+  const std::size_t S = supervoxels.size();
   const bool local = settings.mode != CrfMode::NodeOnly;
   // Local points and their own radii (section 3.1, last paragraph).
   std::vector<std::vector<pcl::index_t>> picked (S);
   if (local)
     for (std::size_t v = 0; v < S; ++v)
-      pickLocalPoints (supervoxels.supervoxels[v], v, settings.supervoxels.seed,
-                       settings.local_edges, picked[v]);
+      pickLocalPoints (supervoxels.supervoxels[v],
+                       v,
+                       settings.supervoxels.seed,
+                       settings.local_edges,
+                       picked[v]);
   graph.num_supervoxels = S;
   std::vector<float> radii;
-  for (std::size_t v = 0; v < S; ++v)
-  {
+  for (std::size_t v = 0; v < S; ++v) {
     graph.node_point.push_back (supervoxels.supervoxels[v].seed);
     radii.push_back (supervoxels.supervoxels[v].radius);
   }
   for (std::size_t v = 0; v < S; ++v)
-    for (const auto i : picked[v])
-    {
+    for (const auto i : picked[v]) {
       graph.edge_a.push_back (static_cast<std::uint32_t> (v));
-      graph.edge_b.push_back (static_cast<std::uint32_t> (graph.node_point.size ()));
+      graph.edge_b.push_back (static_cast<std::uint32_t> (graph.node_point.size()));
       graph.edge_regional.push_back (0);
       graph.node_point.push_back (i);
       radii.push_back (0.f);
@@ -84,25 +95,35 @@ buildGraph (const CrfInput& input, const CrfSettings& settings, SupervoxelSet& s
   const int threads = static_cast<int> (resolveThreadCount (settings.threads));
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 16)
   for (std::ptrdiff_t n = static_cast<std::ptrdiff_t> (S);
-       n < static_cast<std::ptrdiff_t> (graph.node_point.size ()); ++n)
+       n < static_cast<std::ptrdiff_t> (graph.node_point.size());
+       ++n)
     radii[n] = estimator.estimate (graph.node_point[n]);
   statistics.supervoxels_ms = msSince (t0);
 
-  t0 = std::chrono::steady_clock::now ();
+  t0 = std::chrono::steady_clock::now();
   LocalGround ground;
-  ground.build (*input.xyz, settings.features.up, settings.features.ground_cell,
-                settings.features.ground_reach, settings.features.ground_estimate);
-  if (!computeSaliencyFeatures (*input.xyz, estimator.tree (), input.colours, input.intensity,
-                                ground, graph.node_point, radii, settings.features, raw,
+  ground.build (*input.xyz,
+                settings.features.up,
+                settings.features.ground_cell,
+                settings.features.ground_reach,
+                settings.features.ground_estimate);
+  if (!computeSaliencyFeatures (*input.xyz,
+                                estimator.tree(),
+                                input.colours,
+                                input.intensity,
+                                ground,
+                                graph.node_point,
+                                radii,
+                                settings.features,
+                                raw,
                                 settings.threads))
     return false;
   if (settings.mode == CrfMode::MultiscaleCrf)
     for (std::size_t v = 0; v < S; ++v)
-      for (const auto k : supervoxels.adjacency[v])
-      {
+      for (const auto k : supervoxels.adjacency[v]) {
         // Regional edges are undirected: keep one of each pair that names the other.
         const auto& back = supervoxels.adjacency[k];
-        if (k < v && std::find (back.begin (), back.end (), v) != back.end ())
+        if (k < v && std::find (back.begin(), back.end(), v) != back.end())
           continue;
         graph.edge_a.push_back (static_cast<std::uint32_t> (v));
         graph.edge_b.push_back (k);
@@ -110,40 +131,40 @@ buildGraph (const CrfInput& input, const CrfSettings& settings, SupervoxelSet& s
       }
   statistics.features_ms = msSince (t0);
   statistics.supervoxels = S;
-  statistics.local_points = graph.node_point.size () - S;
+  statistics.local_points = graph.node_point.size() - S;
   statistics.regional_edges = static_cast<std::size_t> (
-      std::count (graph.edge_regional.begin (), graph.edge_regional.end (), 1));
-  statistics.local_edges = graph.edge_regional.size () - statistics.regional_edges;
-  graph.labels.assign (graph.node_point.size (), -1);
+      std::count (graph.edge_regional.begin(), graph.edge_regional.end(), 1));
+  statistics.local_edges = graph.edge_regional.size() - statistics.regional_edges;
+  graph.labels.assign (graph.node_point.size(), -1);
   return true;
 }
 
 void
-finishGraph (const Eigen::MatrixXf& raw, const Eigen::VectorXd& mean,
-             const Eigen::VectorXd& scale, Graph& graph)
+finishGraph (const Eigen::MatrixXf& raw,
+             const Eigen::VectorXd& mean,
+             const Eigen::VectorXd& scale,
+             Graph& graph)
 {
-  graph.z.resize (raw.rows (), raw.cols ());
-  for (Eigen::Index n = 0; n < raw.rows (); ++n)
-    for (Eigen::Index d = 0; d < raw.cols (); ++d)
-    {
+  graph.z.resize (raw.rows(), raw.cols());
+  for (Eigen::Index n = 0; n < raw.rows(); ++n)
+    for (Eigen::Index d = 0; d < raw.cols(); ++d) {
       const double z = (raw (n, d) - mean (d)) / scale (d);
-      graph.z (n, d) = std::isfinite (z) ? static_cast<float> (std::max (-5.0, std::min (5.0, z)))
-                                         : 0.f;
+      graph.z (n, d) = std::isfinite (z)
+                           ? static_cast<float> (std::max (-5.0, std::min (5.0, z)))
+                           : 0.f;
     }
-  const std::size_t N = graph.size ();
+  const std::size_t N = graph.size();
   std::vector<std::size_t> counts (N + 1, 0);
-  for (std::size_t e = 0; e < graph.edge_a.size (); ++e)
-  {
+  for (std::size_t e = 0; e < graph.edge_a.size(); ++e) {
     ++counts[graph.edge_a[e] + 1];
     ++counts[graph.edge_b[e] + 1];
   }
   for (std::size_t n = 0; n < N; ++n)
     counts[n + 1] += counts[n];
   graph.adj_offsets = counts;
-  graph.adj_edge.resize (counts.back ());
-  std::vector<std::size_t> fill (counts.begin (), counts.end () - 1);
-  for (std::size_t e = 0; e < graph.edge_a.size (); ++e)
-  {
+  graph.adj_edge.resize (counts.back());
+  std::vector<std::size_t> fill (counts.begin(), counts.end() - 1);
+  for (std::size_t e = 0; e < graph.edge_a.size(); ++e) {
     graph.adj_edge[fill[graph.edge_a[e]]++] = static_cast<std::uint32_t> (e);
     graph.adj_edge[fill[graph.edge_b[e]]++] = static_cast<std::uint32_t> (e);
   }
@@ -152,23 +173,21 @@ finishGraph (const Eigen::MatrixXf& raw, const Eigen::VectorXd& mean,
 std::vector<std::vector<double>>
 fitKnots (const Eigen::MatrixXf& z, CrfNodeExpansion expansion, int knots)
 {
-  std::vector<std::vector<double>> out (static_cast<std::size_t> (z.cols ()));
-  if (expansion == CrfNodeExpansion::Linear || z.rows () == 0)
+  std::vector<std::vector<double>> out (static_cast<std::size_t> (z.cols()));
+  if (expansion == CrfNodeExpansion::Linear || z.rows() == 0)
     return out;
-  std::vector<float> v (static_cast<std::size_t> (z.rows ()));
-  for (Eigen::Index d = 0; d < z.cols (); ++d)
-  {
-    for (Eigen::Index n = 0; n < z.rows (); ++n)
+  std::vector<float> v (static_cast<std::size_t> (z.rows()));
+  for (Eigen::Index d = 0; d < z.cols(); ++d) {
+    for (Eigen::Index n = 0; n < z.rows(); ++n)
       v[static_cast<std::size_t> (n)] = z (n, d);
-    std::sort (v.begin (), v.end ());
+    std::sort (v.begin(), v.end());
     auto& t = out[static_cast<std::size_t> (d)];
-    for (int k = 1; k <= knots; ++k)
-    {
+    for (int k = 1; k <= knots; ++k) {
       const double q = static_cast<double> (k) / (knots + 1);
-      const double x = v[static_cast<std::size_t> (q * (v.size () - 1) + 0.5)];
-      // Knots at a (clamped) extreme, or repeated where a feature takes few values, would add
-      // inputs that are zero or copies of another.
-      if (x > v.front () && x < v.back () && (t.empty () || x > t.back () + 1e-6))
+      const double x = v[static_cast<std::size_t> (q * (v.size() - 1) + 0.5)];
+      // Knots at a (clamped) extreme, or repeated where a feature takes few values,
+      // would add inputs that are zero or copies of another.
+      if (x > v.front() && x < v.back() && (t.empty() || x > t.back() + 1e-6))
         t.push_back (x);
     }
   }
@@ -176,28 +195,29 @@ fitKnots (const Eigen::MatrixXf& z, CrfNodeExpansion expansion, int knots)
 }
 
 std::size_t
-expandedSize (std::size_t dims, CrfNodeExpansion expansion,
+expandedSize (std::size_t dims,
+              CrfNodeExpansion expansion,
               const std::vector<std::vector<double>>& knots)
 {
   std::size_t n = dims;
   if (expansion != CrfNodeExpansion::Linear)
     for (const auto& t : knots)
-      n += t.size ();
+      n += t.size();
   if (expansion == CrfNodeExpansion::SplineProducts)
     n += dims * (dims - 1) / 2;
   return n;
 }
 
 void
-expandFeatures (CrfNodeExpansion expansion, const std::vector<std::vector<double>>& knots,
+expandFeatures (CrfNodeExpansion expansion,
+                const std::vector<std::vector<double>>& knots,
                 Graph& graph)
 {
-  const Eigen::Index D = graph.z.cols ();
+  const Eigen::Index D = graph.z.cols();
   const Eigen::Index Dn = static_cast<Eigen::Index> (
       expandedSize (static_cast<std::size_t> (D), expansion, knots));
-  graph.phi.resize (graph.z.rows (), Dn);
-  for (Eigen::Index n = 0; n < graph.z.rows (); ++n)
-  {
+  graph.phi.resize (graph.z.rows(), Dn);
+  for (Eigen::Index n = 0; n < graph.z.rows(); ++n) {
     const auto z = graph.z.row (n);
     auto out = graph.phi.row (n);
     out.head (D) = z;
@@ -216,27 +236,33 @@ expandFeatures (CrfNodeExpansion expansion, const std::vector<std::vector<double
 Eigen::VectorXd
 packWeights (const MultiscaleCrfModel::Weights& w)
 {
-  const Eigen::Index nb = w.node_s.size (), eb = w.local_edge.size ();
+  const Eigen::Index nb = w.node_s.size(), eb = w.local_edge.size();
   Eigen::VectorXd theta (2 * nb + 2 * eb);
-  theta.segment (0, nb) = Eigen::Map<const Eigen::VectorXd> (w.node_s.data (), nb);
-  theta.segment (nb, nb) = Eigen::Map<const Eigen::VectorXd> (w.node_x.data (), nb);
-  theta.segment (2 * nb, eb) = Eigen::Map<const Eigen::VectorXd> (w.local_edge.data (), eb);
-  theta.segment (2 * nb + eb, eb) = Eigen::Map<const Eigen::VectorXd> (w.regional_edge.data (), eb);
+  theta.segment (0, nb) = Eigen::Map<const Eigen::VectorXd> (w.node_s.data(), nb);
+  theta.segment (nb, nb) = Eigen::Map<const Eigen::VectorXd> (w.node_x.data(), nb);
+  theta.segment (2 * nb, eb) =
+      Eigen::Map<const Eigen::VectorXd> (w.local_edge.data(), eb);
+  theta.segment (2 * nb + eb, eb) =
+      Eigen::Map<const Eigen::VectorXd> (w.regional_edge.data(), eb);
   return theta;
 }
 
 void
-unpackWeights (const Eigen::VectorXd& theta, std::size_t classes, std::size_t node_dims,
-               std::size_t edge_dims, MultiscaleCrfModel::Weights& w)
+unpackWeights (const Eigen::VectorXd& theta,
+               std::size_t classes,
+               std::size_t node_dims,
+               std::size_t edge_dims,
+               MultiscaleCrfModel::Weights& w)
 {
   const Eigen::Index C = static_cast<Eigen::Index> (classes);
   const Eigen::Index N1 = static_cast<Eigen::Index> (node_dims) + 1;
   const Eigen::Index E1 = static_cast<Eigen::Index> (edge_dims) + 1;
   const Eigen::Index nb = C * N1, eb = C * E1;
-  w.node_s = Eigen::Map<const Eigen::MatrixXd> (theta.data (), C, N1);
-  w.node_x = Eigen::Map<const Eigen::MatrixXd> (theta.data () + nb, C, N1);
-  w.local_edge = Eigen::Map<const Eigen::MatrixXd> (theta.data () + 2 * nb, C, E1);
-  w.regional_edge = Eigen::Map<const Eigen::MatrixXd> (theta.data () + 2 * nb + eb, C, E1);
+  w.node_s = Eigen::Map<const Eigen::MatrixXd> (theta.data(), C, N1);
+  w.node_x = Eigen::Map<const Eigen::MatrixXd> (theta.data() + nb, C, N1);
+  w.local_edge = Eigen::Map<const Eigen::MatrixXd> (theta.data() + 2 * nb, C, E1);
+  w.regional_edge =
+      Eigen::Map<const Eigen::MatrixXd> (theta.data() + 2 * nb + eb, C, E1);
 }
-}  // namespace crf
-}  // namespace pcl_ext
+} // namespace crf
+} // namespace pcl_ext

@@ -12,36 +12,43 @@
 #include <string>
 #include <vector>
 
-namespace pcl_ext
-{
-/** Standardisation, the node expansion and the four weight blocks (column 0: the bias): the
-  * node blocks C x (Dn + 1) over the expanded features, the edge blocks C x (D + 1). */
-struct MultiscaleCrfModel::Weights
-{
+namespace pcl_ext {
+/** Standardisation, the node expansion and the four weight blocks (column 0: the bias):
+ * the node blocks C x (Dn + 1) over the expanded features, the edge blocks C x (D + 1).
+ */
+struct MultiscaleCrfModel::Weights {
   std::vector<std::string> feature_names;
-  Eigen::VectorXd mean, scale;  // z = clamp((f - mean) / scale, -kClamp, kClamp)
+  Eigen::VectorXd mean, scale; // z = clamp((f - mean) / scale, -kClamp, kClamp)
   CrfNodeExpansion expansion = CrfNodeExpansion::Linear;
-  std::vector<std::vector<double>> knots;  // per feature, ascending (spline expansions only)
+  std::vector<std::vector<double>>
+      knots; // per feature, ascending (spline expansions only)
   Eigen::MatrixXd node_s, node_x, local_edge, regional_edge;
-  double edge_scale = 1.0;  // beta: the log edge potentials are multiplied by it (stage 3)
+  double edge_scale =
+      1.0; // beta: the log edge potentials are multiplied by it (stage 3)
 };
 
-namespace crf
-{
+namespace crf {
 constexpr float kClamp = 5.f;
 /** Edge features z_i z_j are clamped to [-kEdgeClamp, kEdgeClamp]. */
 constexpr double kEdgeClamp = 3.0;
-/** The diagonal of a log edge potential is capped here, in training and inference alike. */
+/** The diagonal of a log edge potential is capped here, in training and inference
+ * alike. */
 constexpr double kMaxLogPotential = 50.0;
 
-/** Edge potentials are kept associative: log psi(c, c) = softplus(lambda^c . g) >= 0, so that an
-  * edge can only favour agreement (unbounded linear potentials turned repulsive on unseen
-  * feature combinations and made loopy BP oscillate). */
+/** Edge potentials are kept associative: log psi(c, c) = softplus(lambda^c . g) >= 0,
+ * so that an edge can only favour agreement (unbounded linear potentials turned
+ * repulsive on unseen feature combinations and made loopy BP oscillate). */
 inline double
-softplus (double u) { return u > 30.0 ? u : std::log1p (std::exp (u)); }
+softplus (double u)
+{
+  return u > 30.0 ? u : std::log1p (std::exp (u));
+}
 
 inline double
-sigmoid (double u) { return 1.0 / (1.0 + std::exp (-u)); }
+sigmoid (double u)
+{
+  return 1.0 / (1.0 + std::exp (-u));
+}
 
 inline double
 edgeFeature (float a, float b)
@@ -51,91 +58,126 @@ edgeFeature (float a, float b)
 }
 
 /** The graph: super-voxel nodes 0 .. S-1, then local point nodes; undirected edges. */
-struct Graph
-{
+struct Graph {
   std::size_t num_supervoxels = 0;
-  Eigen::MatrixXf z;                      // one standardised feature row per node (edges)
-  Eigen::MatrixXf phi;                    // its expansion (CrfNodeExpansion), the node inputs
-  std::vector<pcl::index_t> node_point;   // the point each node describes
+  Eigen::MatrixXf z;   // one standardised feature row per node (edges)
+  Eigen::MatrixXf phi; // its expansion (CrfNodeExpansion), the node inputs
+  std::vector<pcl::index_t> node_point; // the point each node describes
   std::vector<std::uint32_t> edge_a, edge_b;
-  std::vector<char> edge_regional;        // 1: regional (eq. 7), 0: local (eq. 6)
-  std::vector<int> labels;                // class index per node, -1 unknown
-  // adjacency in CSR: for node n, entries [adj_offsets[n], adj_offsets[n+1]) of adj_edge
+  std::vector<char> edge_regional; // 1: regional (eq. 7), 0: local (eq. 6)
+  std::vector<int> labels;         // class index per node, -1 unknown
+  // adjacency in CSR: for node n, entries [adj_offsets[n], adj_offsets[n+1]) of
+  // adj_edge
   std::vector<std::size_t> adj_offsets;
   std::vector<std::uint32_t> adj_edge;
 
   std::size_t
-  size () const { return node_point.size (); }
+  size () const
+  {
+    return node_point.size();
+  }
 
   std::uint32_t
-  other (std::uint32_t e, std::uint32_t n) const { return edge_a[e] == n ? edge_b[e] : edge_a[e]; }
+  other (std::uint32_t e, std::uint32_t n) const
+  {
+    return edge_a[e] == n ? edge_b[e] : edge_a[e];
+  }
 };
 
-/** Super-voxels, local points, raw features and edges of one cloud (mode decides which). */
+/** Super-voxels, local points, raw features and edges of one cloud (mode decides
+ * which). */
 bool
-buildGraph (const CrfInput& input, const CrfSettings& settings, SupervoxelSet& supervoxels,
-            Eigen::MatrixXf& raw_features, Graph& graph, CrfStatistics& statistics);
+buildGraph (const CrfInput& input,
+            const CrfSettings& settings,
+            SupervoxelSet& supervoxels,
+            Eigen::MatrixXf& raw_features,
+            Graph& graph,
+            CrfStatistics& statistics);
 
 /** Standardise raw features into graph.z and build the adjacency. */
 void
-finishGraph (const Eigen::MatrixXf& raw, const Eigen::VectorXd& mean,
-             const Eigen::VectorXd& scale, Graph& graph);
+finishGraph (const Eigen::MatrixXf& raw,
+             const Eigen::VectorXd& mean,
+             const Eigen::VectorXd& scale,
+             Graph& graph);
 
 /** The knots of the spline expansions: per feature (column of \a z), the K quantiles
-  * k / (K + 1) of its values, without repeats and without the column's extremes (a hinge there
-  * is zero or linear everywhere). Empty lists for the linear expansion. */
+ * k / (K + 1) of its values, without repeats and without the column's extremes (a hinge
+ * there is zero or linear everywhere). Empty lists for the linear expansion. */
 std::vector<std::vector<double>>
 fitKnots (const Eigen::MatrixXf& z, CrfNodeExpansion expansion, int knots);
 
 /** Number of node inputs of an expansion of \a dims features with \a knots. */
 std::size_t
-expandedSize (std::size_t dims, CrfNodeExpansion expansion,
+expandedSize (std::size_t dims,
+              CrfNodeExpansion expansion,
               const std::vector<std::vector<double>>& knots);
 
 /** graph.phi from graph.z (see CrfNodeExpansion). */
 void
-expandFeatures (CrfNodeExpansion expansion, const std::vector<std::vector<double>>& knots,
+expandFeatures (CrfNodeExpansion expansion,
+                const std::vector<std::vector<double>>& knots,
                 Graph& graph);
 
 /** Parameter vector layout: [node_s, node_x] each C x (Dn + 1), then [local_edge,
-  * regional_edge] each C x (D + 1). */
+ * regional_edge] each C x (D + 1). */
 Eigen::VectorXd
 packWeights (const MultiscaleCrfModel::Weights& w);
 
 void
-unpackWeights (const Eigen::VectorXd& theta, std::size_t classes, std::size_t node_dims,
-               std::size_t edge_dims, MultiscaleCrfModel::Weights& w);
+unpackWeights (const Eigen::VectorXd& theta,
+               std::size_t classes,
+               std::size_t node_dims,
+               std::size_t edge_dims,
+               MultiscaleCrfModel::Weights& w);
 
-/** Penalised negative pseudo-log-likelihood and its gradient (see crf_model.h); each node
-  * hears from each neighbour o the message BP's first sweep would send given o's class
-  * probabilities \a context.col(o) (C x N; with no columns, neighbours are ignored). */
+/** Penalised negative pseudo-log-likelihood and its gradient (see crf_model.h); each
+ * node hears from each neighbour o the message BP's first sweep would send given o's
+ * class probabilities \a context.col(o) (C x N; with no columns, neighbours are
+ * ignored). */
 double
-pseudoLikelihood (const Graph& graph, const std::vector<double>& node_weights,
-                  const Eigen::MatrixXd& context, const Eigen::VectorXd& theta,
-                  std::size_t classes, double sigma, Eigen::VectorXd& gradient,
+pseudoLikelihood (const Graph& graph,
+                  const std::vector<double>& node_weights,
+                  const Eigen::MatrixXd& context,
+                  const Eigen::VectorXd& theta,
+                  std::size_t classes,
+                  double sigma,
+                  Eigen::VectorXd& gradient,
                   unsigned int threads);
 
-/** Minimise the penalised negative pseudo-log-likelihood by L-BFGS from \a theta; returns
-  * the iterations done. With \a edges_only, the node blocks are held where they are. */
+/** Minimise the penalised negative pseudo-log-likelihood by L-BFGS from \a theta;
+ * returns the iterations done. With \a edges_only, the node blocks are held where they
+ * are. */
 int
-trainWeights (const Graph& graph, const std::vector<double>& node_weights,
-              const Eigen::MatrixXd& context, std::size_t classes,
-              const CrfSettings& settings, bool edges_only, Eigen::VectorXd& theta,
-              bool& converged, double& value);
+trainWeights (const Graph& graph,
+              const std::vector<double>& node_weights,
+              const Eigen::MatrixXd& context,
+              std::size_t classes,
+              const CrfSettings& settings,
+              bool edges_only,
+              Eigen::VectorXd& theta,
+              bool& converged,
+              double& value);
 
-/** Loopy BP marginals of the super-voxel nodes (rows) over classes. \a messages, when given
-  * and of the graph's size (C x 2E, log messages), are the starting messages (else all zero),
-  * and receive the last ones. */
+/** Loopy BP marginals of the super-voxel nodes (rows) over classes. \a messages, when
+ * given and of the graph's size (C x 2E, log messages), are the starting messages (else
+ * all zero), and receive the last ones. */
 void
-beliefPropagation (const Graph& graph, const MultiscaleCrfModel::Weights& w,
-                   const CrfSettings& settings, Eigen::MatrixXf& marginals, int& iterations,
-                   bool& converged, Eigen::MatrixXd* messages = nullptr);
+beliefPropagation (const Graph& graph,
+                   const MultiscaleCrfModel::Weights& w,
+                   const CrfSettings& settings,
+                   Eigen::MatrixXf& marginals,
+                   int& iterations,
+                   bool& converged,
+                   Eigen::MatrixXd* messages = nullptr);
 
 /** Stage 3 of training: the factor beta on the log edge potentials that minimises the
-  * weighted negative log-likelihood of the labelled super-voxels under their BP marginals on
-  * the training graph, searched on the grid 0.1, 0.2, .., 1.5. */
+ * weighted negative log-likelihood of the labelled super-voxels under their BP
+ * marginals on the training graph, searched on the grid 0.1, 0.2, .., 1.5. */
 double
-fitEdgeScale (const Graph& graph, const MultiscaleCrfModel::Weights& w,
-              const std::vector<double>& node_weights, const CrfSettings& settings);
-}  // namespace crf
-}  // namespace pcl_ext
+fitEdgeScale (const Graph& graph,
+              const MultiscaleCrfModel::Weights& w,
+              const std::vector<double>& node_weights,
+              const CrfSettings& settings);
+} // namespace crf
+} // namespace pcl_ext

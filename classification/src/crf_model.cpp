@@ -1,5 +1,6 @@
 /*
- * pcl_ext: training and classification of the multi-scale CRF (Lim & Suter 2008, section 3.2).
+ * pcl_ext: training and classification of the multi-scale CRF (Lim & Suter 2008,
+ * section 3.2).
  */
 #include "crf_internal.h"
 
@@ -12,16 +13,17 @@
 #include <cmath>
 #include <set>
 
-namespace pcl_ext
-{
+namespace pcl_ext {
 const char*
 crfModeName (CrfMode mode)
 {
-  switch (mode)
-  {
-    case CrfMode::NodeOnly: return "node";
-    case CrfMode::LocalCrf: return "crf";
-    default: return "mcrf";
+  switch (mode) {
+  case CrfMode::NodeOnly:
+    return "node";
+  case CrfMode::LocalCrf:
+    return "crf";
+  default:
+    return "mcrf";
   }
 }
 
@@ -29,8 +31,7 @@ bool
 parseCrfMode (const std::string& text, CrfMode& mode)
 {
   for (const CrfMode m : {CrfMode::NodeOnly, CrfMode::LocalCrf, CrfMode::MultiscaleCrf})
-    if (text == crfModeName (m))
-    {
+    if (text == crfModeName (m)) {
       mode = m;
       return true;
     }
@@ -40,21 +41,23 @@ parseCrfMode (const std::string& text, CrfMode& mode)
 const char*
 crfNodeExpansionName (CrfNodeExpansion expansion)
 {
-  switch (expansion)
-  {
-    case CrfNodeExpansion::Linear: return "linear";
-    case CrfNodeExpansion::Spline: return "spline";
-    default: return "spline_products";
+  switch (expansion) {
+  case CrfNodeExpansion::Linear:
+    return "linear";
+  case CrfNodeExpansion::Spline:
+    return "spline";
+  default:
+    return "spline_products";
   }
 }
 
 bool
 parseCrfNodeExpansion (const std::string& text, CrfNodeExpansion& expansion)
 {
-  for (const CrfNodeExpansion e : {CrfNodeExpansion::Linear, CrfNodeExpansion::Spline,
+  for (const CrfNodeExpansion e : {CrfNodeExpansion::Linear,
+                                   CrfNodeExpansion::Spline,
                                    CrfNodeExpansion::SplineProducts})
-    if (text == crfNodeExpansionName (e))
-    {
+    if (text == crfNodeExpansionName (e)) {
       expansion = e;
       return true;
     }
@@ -81,32 +84,33 @@ checkCrfSettings (const CrfSettings& s, const char* caller)
     bad = "the BP damping must be in [0, 1)";
   else if (!(s.bp_tolerance > 0.0) || !std::isfinite (s.bp_tolerance))
     bad = "the BP tolerance must be positive and finite";
-  else if (!(s.features.ground_cell > 0.f) || !std::isfinite (s.features.ground_cell)
-           || s.features.ground_reach < 0 || !s.features.up.allFinite ()
-           || s.features.up.norm () == 0.f)
+  else if (!(s.features.ground_cell > 0.f) || !std::isfinite (s.features.ground_cell) ||
+           s.features.ground_reach < 0 || !s.features.up.allFinite() ||
+           s.features.up.norm() == 0.f)
     bad = "the ground grid needs a positive cell, a reach >= 0 and a non-zero up axis";
   else if (!validFeatureScales (s.features.scales))
     bad = "the feature scales must be positive, finite and ascending";
-  if (bad)
-  {
+  if (bad) {
     PCL_ERROR ("[pcl_ext::%s] Invalid CRF settings: %s.\n", caller, bad);
     return false;
   }
   return checkAdaptiveRadiusParameters (s.supervoxels.radius, caller);
 }
 
-MultiscaleCrfModel::MultiscaleCrfModel () : weights_ (new Weights) {}
-MultiscaleCrfModel::~MultiscaleCrfModel () = default;
+MultiscaleCrfModel::MultiscaleCrfModel() : weights_ (new Weights) {}
+MultiscaleCrfModel::~MultiscaleCrfModel() = default;
 MultiscaleCrfModel::MultiscaleCrfModel (const MultiscaleCrfModel& o)
-  : settings_ (o.settings_), names_ (o.names_), class_ids_ (o.class_ids_),
-    weights_ (new Weights (*o.weights_)), trained_ (o.trained_)
+: settings_ (o.settings_)
+, names_ (o.names_)
+, class_ids_ (o.class_ids_)
+, weights_ (new Weights (*o.weights_))
+, trained_ (o.trained_)
 {}
 
 MultiscaleCrfModel&
 MultiscaleCrfModel::operator= (const MultiscaleCrfModel& o)
 {
-  if (this != &o)
-  {
+  if (this != &o) {
     settings_ = o.settings_;
     names_ = o.names_;
     class_ids_ = o.class_ids_;
@@ -117,37 +121,38 @@ MultiscaleCrfModel::operator= (const MultiscaleCrfModel& o)
 }
 
 std::vector<std::string>
-MultiscaleCrfModel::getFeatureNames () const
+MultiscaleCrfModel::getFeatureNames() const
 {
   return weights_->feature_names;
 }
 
-namespace
-{
+namespace {
 double
 msSince (std::chrono::steady_clock::time_point t0)
 {
-  return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - t0).count ();
+  return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now() -
+                                                    t0)
+      .count();
 }
 
 bool
 checkInput (const CrfInput& in, const char* caller)
 {
-  if (!in.xyz || in.xyz->empty ())
-  {
+  if (!in.xyz || in.xyz->empty()) {
     PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::%s] Empty input cloud.\n", caller);
     return false;
   }
-  if ((!in.colours.empty () && in.colours.size () != in.xyz->size ())
-      || (!in.intensity.empty () && in.intensity.size () != in.xyz->size ()))
-  {
-    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::%s] Colours or intensities do not match the "
-               "cloud.\n", caller);
+  if ((!in.colours.empty() && in.colours.size() != in.xyz->size()) ||
+      (!in.intensity.empty() && in.intensity.size() != in.xyz->size())) {
+    PCL_ERROR (
+        "[pcl_ext::MultiscaleCrfModel::%s] Colours or intensities do not match the "
+        "cloud.\n",
+        caller);
     return false;
   }
   return true;
 }
-}  // namespace
+} // namespace
 
 bool
 MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
@@ -155,67 +160,70 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
 {
   if (!checkCrfSettings (settings_, "MultiscaleCrfModel::train"))
     return false;
-  if (inputs.empty () || inputs.size () != labels.size ())
-  {
-    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] Need at least one cloud and one label "
-               "list per cloud.\n");
+  if (inputs.empty() || inputs.size() != labels.size()) {
+    PCL_ERROR (
+        "[pcl_ext::MultiscaleCrfModel::train] Need at least one cloud and one label "
+        "list per cloud.\n");
     return false;
   }
   CrfSettings settings = settings_;
   settings.features.colour = settings.features.intensity = true;
   std::set<std::uint32_t> found;
-  for (std::size_t c = 0; c < inputs.size (); ++c)
-  {
+  for (std::size_t c = 0; c < inputs.size(); ++c) {
     if (!checkInput (inputs[c], "train"))
       return false;
-    if (labels[c].size () != inputs[c].xyz->size ())
-    {
-      PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] Cloud %zu has %zu points but %zu "
-                 "labels.\n", c, inputs[c].xyz->size (), labels[c].size ());
+    if (labels[c].size() != inputs[c].xyz->size()) {
+      PCL_ERROR (
+          "[pcl_ext::MultiscaleCrfModel::train] Cloud %zu has %zu points but %zu "
+          "labels.\n",
+          c,
+          inputs[c].xyz->size(),
+          labels[c].size());
       return false;
     }
-    settings.features.colour = settings.features.colour && !inputs[c].colours.empty ();
-    settings.features.intensity = settings.features.intensity && !inputs[c].intensity.empty ();
+    settings.features.colour = settings.features.colour && !inputs[c].colours.empty();
+    settings.features.intensity =
+        settings.features.intensity && !inputs[c].intensity.empty();
     for (const auto l : labels[c])
       if (l != 0)
         found.insert (l);
   }
   // The classes: the named ones (each must occur), else those found.
   std::vector<std::uint32_t> ids;
-  if (!names_.empty ())
-  {
-    for (const auto& [id, name] : names_)
-    {
-      if (id == 0 || !found.count (id))
-      {
+  if (!names_.empty()) {
+    for (const auto& [id, name] : names_) {
+      if (id == 0 || !found.count (id)) {
         PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] Class %u (%s) has no training "
-                   "points.\n", id, name.c_str ());
+                   "points.\n",
+                   id,
+                   name.c_str());
         return false;
       }
       ids.push_back (id);
     }
   }
   else
-    ids.assign (found.begin (), found.end ());
-  if (ids.size () < 2)
-  {
-    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] Need at least two classes with labelled "
-               "points (found %zu); is the input labelled?\n", ids.size ());
+    ids.assign (found.begin(), found.end());
+  if (ids.size() < 2) {
+    PCL_ERROR (
+        "[pcl_ext::MultiscaleCrfModel::train] Need at least two classes with labelled "
+        "points (found %zu); is the input labelled?\n",
+        ids.size());
     return false;
   }
   auto class_index = [&] (std::uint32_t l) -> int {
-    const auto it = std::lower_bound (ids.begin (), ids.end (), l);
-    return it != ids.end () && *it == l ? static_cast<int> (it - ids.begin ()) : -1;
+    const auto it = std::lower_bound (ids.begin(), ids.end(), l);
+    return it != ids.end() && *it == l ? static_cast<int> (it - ids.begin()) : -1;
   };
-  const std::size_t C = ids.size ();
+  const std::size_t C = ids.size();
 
-  // One graph per cloud, merged into one (features are standardised after all are known).
+  // One graph per cloud, merged into one (features are standardised after all are
+  // known).
   CrfStatistics stats;
   crf::Graph graph;
   Eigen::MatrixXf raw;
   SupervoxelSet last;
-  for (std::size_t c = 0; c < inputs.size (); ++c)
-  {
+  for (std::size_t c = 0; c < inputs.size(); ++c) {
     crf::Graph g;
     Eigen::MatrixXf r;
     CrfStatistics s;
@@ -223,59 +231,61 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
       return false;
     stats.supervoxels_ms += s.supervoxels_ms;
     stats.features_ms += s.features_ms;
-    stats.points += inputs[c].xyz->size ();
+    stats.points += inputs[c].xyz->size();
     stats.supervoxels += s.supervoxels;
     stats.local_points += s.local_points;
     stats.local_edges += s.local_edges;
     stats.regional_edges += s.regional_edges;
     // Labels: super-voxels by majority of their members, local points their own.
-    for (std::size_t v = 0; v < g.num_supervoxels; ++v)
-    {
+    for (std::size_t v = 0; v < g.num_supervoxels; ++v) {
       std::vector<std::size_t> votes (C, 0);
-      for (const auto i : last.supervoxels[v].members)
-      {
+      for (const auto i : last.supervoxels[v].members) {
         const int k = class_index (labels[c][i]);
         if (k >= 0)
           ++votes[k];
       }
-      const auto best = std::max_element (votes.begin (), votes.end ());
-      g.labels[v] = *best > 0 ? static_cast<int> (best - votes.begin ()) : -1;
+      const auto best = std::max_element (votes.begin(), votes.end());
+      g.labels[v] = *best > 0 ? static_cast<int> (best - votes.begin()) : -1;
     }
-    for (std::size_t n = g.num_supervoxels; n < g.size (); ++n)
+    for (std::size_t n = g.num_supervoxels; n < g.size(); ++n)
       g.labels[n] = class_index (labels[c][g.node_point[n]]);
-    // Append: super-voxel nodes stay first so that node type is "index < num_supervoxels".
-    const std::size_t S0 = graph.num_supervoxels, L0 = graph.size () - S0;
+    // Append: super-voxel nodes stay first so that node type is "index <
+    // num_supervoxels".
+    const std::size_t S0 = graph.num_supervoxels, L0 = graph.size() - S0;
     const std::size_t S1 = g.num_supervoxels;
-    auto remap_old = [&] (std::uint32_t n) { return n < S0 ? n : static_cast<std::uint32_t> (n + S1); };
+    auto remap_old = [&] (std::uint32_t n) {
+      return n < S0 ? n : static_cast<std::uint32_t> (n + S1);
+    };
     auto remap_new = [&] (std::uint32_t n) {
-      return n < S1 ? static_cast<std::uint32_t> (S0 + n) : static_cast<std::uint32_t> (S0 + S1 + L0 + (n - S1));
+      return n < S1 ? static_cast<std::uint32_t> (S0 + n)
+                    : static_cast<std::uint32_t> (S0 + S1 + L0 + (n - S1));
     };
     crf::Graph merged;
     merged.num_supervoxels = S0 + S1;
-    Eigen::MatrixXf mraw (raw.rows () + r.rows (), r.cols ());
-    auto put = [&] (std::size_t at, const Eigen::MatrixXf& src, std::size_t from, std::size_t count,
+    Eigen::MatrixXf mraw (raw.rows() + r.rows(), r.cols());
+    auto put = [&] (std::size_t at,
+                    const Eigen::MatrixXf& src,
+                    std::size_t from,
+                    std::size_t count,
                     const crf::Graph& gsrc) {
-      for (std::size_t k = 0; k < count; ++k)
-      {
+      for (std::size_t k = 0; k < count; ++k) {
         mraw.row (at + k) = src.row (from + k);
         merged.node_point[at + k] = gsrc.node_point[from + k];
         merged.labels[at + k] = gsrc.labels[from + k];
       }
     };
-    merged.node_point.resize (mraw.rows ());
-    merged.labels.resize (mraw.rows ());
+    merged.node_point.resize (mraw.rows());
+    merged.labels.resize (mraw.rows());
     put (0, raw, 0, S0, graph);
     put (S0, r, 0, S1, g);
     put (S0 + S1, raw, S0, L0, graph);
-    put (S0 + S1 + L0, r, S1, g.size () - S1, g);
-    for (std::size_t e = 0; e < graph.edge_a.size (); ++e)
-    {
+    put (S0 + S1 + L0, r, S1, g.size() - S1, g);
+    for (std::size_t e = 0; e < graph.edge_a.size(); ++e) {
       merged.edge_a.push_back (remap_old (graph.edge_a[e]));
       merged.edge_b.push_back (remap_old (graph.edge_b[e]));
       merged.edge_regional.push_back (graph.edge_regional[e]);
     }
-    for (std::size_t e = 0; e < g.edge_a.size (); ++e)
-    {
+    for (std::size_t e = 0; e < g.edge_a.size(); ++e) {
       merged.edge_a.push_back (remap_new (g.edge_a[e]));
       merged.edge_b.push_back (remap_new (g.edge_b[e]));
       merged.edge_regional.push_back (g.edge_regional[e]);
@@ -285,87 +295,94 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
   }
 
   // Feature scaling from every node's features.
-  const Eigen::Index D = raw.cols ();
+  const Eigen::Index D = raw.cols();
   Eigen::VectorXd mean = Eigen::VectorXd::Zero (D), scale = Eigen::VectorXd::Ones (D);
-  for (Eigen::Index d = 0; d < D; ++d)
-  {
+  for (Eigen::Index d = 0; d < D; ++d) {
     double s = 0, ss = 0;
-    for (Eigen::Index n = 0; n < raw.rows (); ++n)
-    {
+    for (Eigen::Index n = 0; n < raw.rows(); ++n) {
       s += raw (n, d);
       ss += static_cast<double> (raw (n, d)) * raw (n, d);
     }
-    mean (d) = s / raw.rows ();
-    const double var = ss / raw.rows () - mean (d) * mean (d);
+    mean (d) = s / raw.rows();
+    const double var = ss / raw.rows() - mean (d) * mean (d);
     scale (d) = var > 1e-12 ? std::sqrt (var) : 1.0;
   }
   crf::finishGraph (raw, mean, scale, graph);
   const std::vector<std::vector<double>> knots =
       crf::fitKnots (graph.z, settings.node_expansion, settings.spline_knots);
   crf::expandFeatures (settings.node_expansion, knots, graph);
-  const Eigen::Index Dn = graph.phi.cols ();
+  const Eigen::Index Dn = graph.phi.cols();
 
   // Node weights: nodes that take part in this mode, balanced by class frequency.
-  std::vector<double> node_weights (graph.size (), 0.0);
+  std::vector<double> node_weights (graph.size(), 0.0);
   std::vector<double> count (C, 0.0);
   const bool use_local = settings.mode != CrfMode::NodeOnly;
-  for (std::size_t n = 0; n < graph.size (); ++n)
-    if (graph.labels[n] >= 0 && (n < graph.num_supervoxels || use_local))
-    {
+  for (std::size_t n = 0; n < graph.size(); ++n)
+    if (graph.labels[n] >= 0 && (n < graph.num_supervoxels || use_local)) {
       node_weights[n] = 1.0;
       count[graph.labels[n]] += 1.0;
     }
   double total = 0.0;
   for (const double c : count)
     total += c;
-  if (total == 0.0)
-  {
+  if (total == 0.0) {
     PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] No labelled super-voxel.\n");
     return false;
   }
   for (std::size_t k = 0; k < C; ++k)
-    if (count[k] == 0.0)
-    {
-      PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] Class %u has no labelled super-voxel "
-                 "or point in the graph.\n", ids[k]);
+    if (count[k] == 0.0) {
+      PCL_ERROR (
+          "[pcl_ext::MultiscaleCrfModel::train] Class %u has no labelled super-voxel "
+          "or point in the graph.\n",
+          ids[k]);
       return false;
     }
   if (settings.balance_classes)
-    for (std::size_t n = 0; n < graph.size (); ++n)
+    for (std::size_t n = 0; n < graph.size(); ++n)
       if (node_weights[n] > 0.0)
         node_weights[n] = std::sqrt (total / (C * count[graph.labels[n]]));
 
-  auto t0 = std::chrono::steady_clock::now ();
-  Eigen::VectorXd theta =
-      Eigen::VectorXd::Zero (static_cast<Eigen::Index> (2 * C * (Dn + 1) + 2 * C * (D + 1)));
+  auto t0 = std::chrono::steady_clock::now();
+  Eigen::VectorXd theta = Eigen::VectorXd::Zero (
+      static_cast<Eigen::Index> (2 * C * (Dn + 1) + 2 * C * (D + 1)));
   bool converged = false;
   double value = 0.0;
   // Stage 1: node potentials alone (multinomial logistic regression; all of NodeOnly).
-  int iterations = crf::trainWeights (graph, node_weights, Eigen::MatrixXd (), C, settings, false,
-                                      theta, converged, value);
-  if (settings.mode != CrfMode::NodeOnly)
-  {
-    // Stage 2: the edge weights, with the node weights held at stage 1. Each node hears from
-    // its neighbours the message BP's first sweep sends, computed from their stage-1 class
-    // probabilities (stacked pseudo-likelihood). The node weights stay fixed and the
-    // neighbours enter through their probabilities, not their labels: otherwise the edges
-    // explain the labels alone, rare classes get large edge potentials that a small belief
-    // already triggers in BP, and inference collapses onto those classes.
+  int iterations = crf::trainWeights (graph,
+                                      node_weights,
+                                      Eigen::MatrixXd(),
+                                      C,
+                                      settings,
+                                      false,
+                                      theta,
+                                      converged,
+                                      value);
+  if (settings.mode != CrfMode::NodeOnly) {
+    // Stage 2: the edge weights, with the node weights held at stage 1. Each node hears
+    // from its neighbours the message BP's first sweep sends, computed from their
+    // stage-1 class probabilities (stacked pseudo-likelihood). The node weights stay
+    // fixed and the neighbours enter through their probabilities, not their labels:
+    // otherwise the edges explain the labels alone, rare classes get large edge
+    // potentials that a small belief already triggers in BP, and inference collapses
+    // onto those classes.
     const Eigen::Index D1 = Dn + 1;
-    const Eigen::Map<const Eigen::MatrixXd> ws (theta.data (), static_cast<Eigen::Index> (C), D1);
-    const Eigen::Map<const Eigen::MatrixXd> wx (theta.data () + C * D1, static_cast<Eigen::Index> (C), D1);
-    Eigen::MatrixXd context (static_cast<Eigen::Index> (C), static_cast<Eigen::Index> (graph.size ()));
-    for (std::size_t n = 0; n < graph.size (); ++n)
-    {
+    const Eigen::Map<const Eigen::MatrixXd> ws (
+        theta.data(), static_cast<Eigen::Index> (C), D1);
+    const Eigen::Map<const Eigen::MatrixXd> wx (
+        theta.data() + C * D1, static_cast<Eigen::Index> (C), D1);
+    Eigen::MatrixXd context (static_cast<Eigen::Index> (C),
+                             static_cast<Eigen::Index> (graph.size()));
+    for (std::size_t n = 0; n < graph.size(); ++n) {
       const auto& W = n < graph.num_supervoxels ? ws : wx;
       const Eigen::VectorXd score =
-          W.col (0)
-          + W.rightCols (Dn) * graph.phi.row (static_cast<Eigen::Index> (n)).transpose ().cast<double> ();
-      const Eigen::VectorXd p = (score.array () - score.maxCoeff ()).exp ().matrix ();
-      context.col (static_cast<Eigen::Index> (n)) = p / p.sum ();
+          W.col (0) +
+          W.rightCols (Dn) *
+              graph.phi.row (static_cast<Eigen::Index> (n)).transpose().cast<double>();
+      const Eigen::VectorXd p = (score.array() - score.maxCoeff()).exp().matrix();
+      context.col (static_cast<Eigen::Index> (n)) = p / p.sum();
     }
-    iterations += crf::trainWeights (graph, node_weights, context, C, settings, true, theta,
-                                     converged, value);
+    iterations += crf::trainWeights (
+        graph, node_weights, context, C, settings, true, theta, converged, value);
   }
   Weights w;
   w.feature_names = saliencyFeatureNames (settings.features);
@@ -373,7 +390,8 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
   w.scale = scale;
   w.expansion = settings.node_expansion;
   w.knots = knots;
-  crf::unpackWeights (theta, C, static_cast<std::size_t> (Dn), static_cast<std::size_t> (D), w);
+  crf::unpackWeights (
+      theta, C, static_cast<std::size_t> (Dn), static_cast<std::size_t> (D), w);
   // Stage 3: the weight of the edges against the nodes at inference (see crf_model.h).
   w.edge_scale = settings.edge_scale > 0.0 ? settings.edge_scale : 1.0;
   if (settings.mode != CrfMode::NodeOnly && settings.edge_scale == 0.0)
@@ -396,26 +414,29 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
 }
 
 bool
-MultiscaleCrfModel::classify (const CrfInput& input, std::vector<std::uint32_t>& labels,
+MultiscaleCrfModel::classify (const CrfInput& input,
+                              std::vector<std::uint32_t>& labels,
                               Eigen::MatrixXf& probabilities)
 {
-  labels.clear ();
+  labels.clear();
   probabilities.resize (0, 0);
-  last_supervoxels_.clear ();
+  last_supervoxels_.clear();
   last_marginals_.resize (0, 0);
-  if (!trained_)
-  {
-    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::classify] The model is not trained (train or "
-               "loadModel first).\n");
+  if (!trained_) {
+    PCL_ERROR (
+        "[pcl_ext::MultiscaleCrfModel::classify] The model is not trained (train or "
+        "loadModel first).\n");
     return false;
   }
-  if (!checkCrfSettings (settings_, "MultiscaleCrfModel::classify") || !checkInput (input, "classify"))
+  if (!checkCrfSettings (settings_, "MultiscaleCrfModel::classify") ||
+      !checkInput (input, "classify"))
     return false;
-  if ((settings_.features.colour && input.colours.empty ())
-      || (settings_.features.intensity && input.intensity.empty ()))
-  {
-    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::classify] The model uses %s%s%s, which the input "
-               "does not have.\n", settings_.features.colour ? "colour" : "",
+  if ((settings_.features.colour && input.colours.empty()) ||
+      (settings_.features.intensity && input.intensity.empty())) {
+    PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::classify] The model uses %s%s%s, which "
+               "the input "
+               "does not have.\n",
+               settings_.features.colour ? "colour" : "",
                settings_.features.colour && settings_.features.intensity ? " and " : "",
                settings_.features.intensity ? "intensity" : "");
     return false;
@@ -428,29 +449,35 @@ MultiscaleCrfModel::classify (const CrfInput& input, std::vector<std::uint32_t>&
     return false;
   crf::finishGraph (raw, weights_->mean, weights_->scale, graph);
   crf::expandFeatures (weights_->expansion, weights_->knots, graph);
-  auto t0 = std::chrono::steady_clock::now ();
+  auto t0 = std::chrono::steady_clock::now();
   Eigen::MatrixXf marginals;
-  crf::beliefPropagation (graph, *weights_, settings_, marginals, stats.iterations, stats.converged);
-  // Eq. 11: a point in several super-voxels takes the label maximising the product of their
-  // probabilities (summed logs, normalised into per-point probabilities).
-  const std::size_t N = input.xyz->size ();
-  const Eigen::Index C = static_cast<Eigen::Index> (class_ids_.size ());
+  crf::beliefPropagation (
+      graph, *weights_, settings_, marginals, stats.iterations, stats.converged);
+  // Eq. 11: a point in several super-voxels takes the label maximising the product of
+  // their probabilities (summed logs, normalised into per-point probabilities).
+  const std::size_t N = input.xyz->size();
+  const Eigen::Index C = static_cast<Eigen::Index> (class_ids_.size());
   probabilities = Eigen::MatrixXf::Zero (static_cast<Eigen::Index> (N), C);
   labels.assign (N, 0);
-#pragma omp parallel for num_threads(static_cast<int> (resolveThreadCount (settings_.threads))) schedule(static)
-  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t> (N); ++i)
-  {
+#pragma omp parallel for num_threads(                                                  \
+    static_cast <int> (resolveThreadCount(settings_.threads))) schedule(static)
+  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t> (N); ++i) {
     const std::size_t b = svs.membership_offsets[i], e = svs.membership_offsets[i + 1];
     if (b == e)
       continue;
     Eigen::VectorXd logp = Eigen::VectorXd::Zero (C);
     for (std::size_t k = b; k < e; ++k)
-      logp += marginals.row (svs.membership[k]).transpose ().cast<double> ()
-                  .cwiseMax (1e-30).array ().log ().matrix ();
+      logp += marginals.row (svs.membership[k])
+                  .transpose()
+                  .cast<double>()
+                  .cwiseMax (1e-30)
+                  .array()
+                  .log()
+                  .matrix();
     Eigen::Index best;
     const double mx = logp.maxCoeff (&best);
-    const Eigen::VectorXd p = (logp.array () - mx).exp ().matrix ();
-    probabilities.row (i) = (p / p.sum ()).transpose ().cast<float> ();
+    const Eigen::VectorXd p = (logp.array() - mx).exp().matrix();
+    probabilities.row (i) = (p / p.sum()).transpose().cast<float>();
     labels[i] = class_ids_[best];
   }
   stats.inference_ms = msSince (t0);
@@ -460,4 +487,4 @@ MultiscaleCrfModel::classify (const CrfInput& input, std::vector<std::uint32_t>&
   last_marginals_ = std::move (marginals);
   return true;
 }
-}  // namespace pcl_ext
+} // namespace pcl_ext

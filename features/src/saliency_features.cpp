@@ -12,24 +12,34 @@
 #include <cstdio>
 #include <limits>
 
-namespace pcl_ext
-{
-namespace
-{
+namespace pcl_ext {
+namespace {
 constexpr double kTiny = 1e-12;
 constexpr std::size_t kMinRegion = 5;
-const char* const kScaleFeatures[] = {"clutterness", "surfaceness", "curveness", "linearity",
-                                      "planarity", "scattering", "normal_angle", "tangent_angle",
-                                      "log_density", "top_above", "bottom_below"};
-constexpr std::size_t kNumScaleFeatures = sizeof (kScaleFeatures) / sizeof (kScaleFeatures[0]);
+const char* const kScaleFeatures[] = {"clutterness",
+                                      "surfaceness",
+                                      "curveness",
+                                      "linearity",
+                                      "planarity",
+                                      "scattering",
+                                      "normal_angle",
+                                      "tangent_angle",
+                                      "log_density",
+                                      "top_above",
+                                      "bottom_below"};
+constexpr std::size_t kNumScaleFeatures =
+    sizeof (kScaleFeatures) / sizeof (kScaleFeatures[0]);
 
-/** The eigen-decomposition of the points \a nn and their eq. 12 saliencies over radius \a r
-  * (clutterness, surfaceness, curveness) into out(0 .. 2). */
-template <typename Row> EigenDecomposition
-saliencies (const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::Indices& nn, double r,
+/** The eigen-decomposition of the points \a nn and their eq. 12 saliencies over radius
+ * \a r (clutterness, surfaceness, curveness) into out(0 .. 2). */
+template <typename Row>
+EigenDecomposition
+saliencies (const pcl::PointCloud<pcl::PointXYZ>& cloud,
+            const pcl::Indices& nn,
+            double r,
             Row& out)
 {
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero ();
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   Eigen::Vector3d centroid;
   EigenDecomposition eig;
   computeLocalCovariance (cloud, nn, cov, centroid);
@@ -42,10 +52,14 @@ saliencies (const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::Indices& nn,
 }
 
 /** Eq. 12, the dimensionality features and the angles of the eigen-decomposition of the
-  * points \a nn over radius \a r, into out(0 .. 7). */
-template <typename Row> void
-eigenFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::Indices& nn, double r,
-               const Eigen::Vector3d& up, Row&& out)
+ * points \a nn over radius \a r, into out(0 .. 7). */
+template <typename Row>
+void
+eigenFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
+               const pcl::Indices& nn,
+               double r,
+               const Eigen::Vector3d& up,
+               Row&& out)
 {
   const EigenDecomposition eig = saliencies (cloud, nn, r, out);
   const Eigen::Vector3d& l = eig.values;
@@ -53,10 +67,12 @@ eigenFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud, const pcl::Indices& 
   out (3) = static_cast<float> (std::max (0.0, l (2) - l (1)) / l3);
   out (4) = static_cast<float> (std::max (0.0, l (1) - l (0)) / l3);
   out (5) = static_cast<float> (std::max (0.0, l (0)) / l3);
-  out (6) = static_cast<float> (std::acos (std::min (1.0, std::abs (eig.vectors.col (0).dot (up)))));
-  out (7) = static_cast<float> (std::acos (std::min (1.0, std::abs (eig.vectors.col (2).dot (up)))));
+  out (6) = static_cast<float> (
+      std::acos (std::min (1.0, std::abs (eig.vectors.col (0).dot (up)))));
+  out (7) = static_cast<float> (
+      std::acos (std::min (1.0, std::abs (eig.vectors.col (2).dot (up)))));
 }
-}  // namespace
+} // namespace
 
 std::vector<float>
 defaultFeatureScales ()
@@ -75,20 +91,21 @@ featureScaleSuffix (float radius)
 bool
 validFeatureScales (const std::vector<float>& scales)
 {
-  for (std::size_t k = 0; k < scales.size (); ++k)
-    if (!(scales[k] > 0.f) || !std::isfinite (scales[k]) || (k > 0 && !(scales[k] > scales[k - 1])))
+  for (std::size_t k = 0; k < scales.size(); ++k)
+    if (!(scales[k] > 0.f) || !std::isfinite (scales[k]) ||
+        (k > 0 && !(scales[k] > scales[k - 1])))
       return false;
   return true;
 }
 
-namespace
-{
-/** Block minimum (\a take_min) or maximum of \a in over the (2 reach + 1)^2 cells around each
-  * cell of a w x h grid, separably (rows, then columns); +inf cells are left out. */
+namespace {
+/** Block minimum (\a take_min) or maximum of \a in over the (2 reach + 1)^2 cells
+ * around each cell of a w x h grid, separably (rows, then columns); +inf cells are left
+ * out. */
 std::vector<float>
 blockExtremum (const std::vector<float>& in, int w, int h, int reach, bool take_min)
 {
-  const float inf = std::numeric_limits<float>::infinity ();
+  const float inf = std::numeric_limits<float>::infinity();
   auto pick = [take_min] (float m, float c) {
     if (!std::isfinite (c))
       return m;
@@ -96,18 +113,16 @@ blockExtremum (const std::vector<float>& in, int w, int h, int reach, bool take_
       return c;
     return take_min ? std::min (m, c) : std::max (m, c);
   };
-  std::vector<float> rows (in.size (), inf), out (in.size (), inf);
+  std::vector<float> rows (in.size(), inf), out (in.size(), inf);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-    {
+    for (int x = 0; x < w; ++x) {
       float m = inf;
       for (int dx = std::max (0, x - reach); dx <= std::min (w - 1, x + reach); ++dx)
         m = pick (m, in[static_cast<std::size_t> (y) * w + dx]);
       rows[static_cast<std::size_t> (y) * w + x] = m;
     }
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-    {
+    for (int x = 0; x < w; ++x) {
       float m = inf;
       for (int dy = std::max (0, y - reach); dy <= std::min (h - 1, y + reach); ++dy)
         m = pick (m, rows[static_cast<std::size_t> (dy) * w + x]);
@@ -115,7 +130,7 @@ blockExtremum (const std::vector<float>& in, int w, int h, int reach, bool take_
     }
   return out;
 }
-}  // namespace
+} // namespace
 
 const char*
 groundEstimateName (GroundEstimate estimate)
@@ -136,66 +151,74 @@ parseGroundEstimate (const std::string& text, GroundEstimate& estimate)
 }
 
 void
-LocalGround::build (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Vector3f& up,
-                    float cell, int reach, GroundEstimate estimate)
+LocalGround::build (const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                    const Eigen::Vector3f& up,
+                    float cell,
+                    int reach,
+                    GroundEstimate estimate)
 {
-  up_ = up.normalized ();
-  u_ = up_.unitOrthogonal ();
+  up_ = up.normalized();
+  u_ = up_.unitOrthogonal();
   v_ = up_.cross (u_);
   cell_ = cell > 0.f ? cell : 1.f;
   reach_ = std::max (0, reach);
-  Eigen::Vector2f lo = Eigen::Vector2f::Constant (std::numeric_limits<float>::max ());
+  Eigen::Vector2f lo = Eigen::Vector2f::Constant (std::numeric_limits<float>::max());
   Eigen::Vector2f hi = -lo;
   for (const auto& p : cloud)
-    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
-    {
-      const Eigen::Vector2f q (p.getVector3fMap ().dot (u_), p.getVector3fMap ().dot (v_));
+    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z)) {
+      const Eigen::Vector2f q (p.getVector3fMap().dot (u_),
+                               p.getVector3fMap().dot (v_));
       lo = lo.cwiseMin (q);
       hi = hi.cwiseMax (q);
     }
-  ground_.clear ();
-  size_ = Eigen::Vector2i::Zero ();
-  if (lo.x () > hi.x ())
+  ground_.clear();
+  size_ = Eigen::Vector2i::Zero();
+  if (lo.x() > hi.x())
     return;
-  origin_ = (lo / cell_).array ().floor ().cast<int> ().matrix ();
-  size_ = (hi / cell_).array ().floor ().cast<int> ().matrix () - origin_ + Eigen::Vector2i::Ones ();
-  const float inf = std::numeric_limits<float>::infinity ();
-  std::vector<float> cells (static_cast<std::size_t> (size_.x ()) * size_.y (), inf);
+  origin_ = (lo / cell_).array().floor().cast<int>().matrix();
+  size_ = (hi / cell_).array().floor().cast<int>().matrix() - origin_ +
+          Eigen::Vector2i::Ones();
+  const float inf = std::numeric_limits<float>::infinity();
+  std::vector<float> cells (static_cast<std::size_t> (size_.x()) * size_.y(), inf);
   for (const auto& p : cloud)
-    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
-    {
-      const Eigen::Vector3f q = p.getVector3fMap ();
-      const int cx = static_cast<int> (std::floor (q.dot (u_) / cell_)) - origin_.x ();
-      const int cy = static_cast<int> (std::floor (q.dot (v_) / cell_)) - origin_.y ();
-      float& c = cells[static_cast<std::size_t> (cy) * size_.x () + cx];
+    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z)) {
+      const Eigen::Vector3f q = p.getVector3fMap();
+      const int cx = static_cast<int> (std::floor (q.dot (u_) / cell_)) - origin_.x();
+      const int cy = static_cast<int> (std::floor (q.dot (v_) / cell_)) - origin_.y();
+      float& c = cells[static_cast<std::size_t> (cy) * size_.x() + cx];
       c = std::min (c, q.dot (up_));
     }
-  ground_ = blockExtremum (cells, size_.x (), size_.y (), reach_, true);
+  ground_ = blockExtremum (cells, size_.x(), size_.y(), reach_, true);
   if (estimate == GroundEstimate::Opening)
-    ground_ = blockExtremum (ground_, size_.x (), size_.y (), reach_, false);
+    ground_ = blockExtremum (ground_, size_.x(), size_.y(), reach_, false);
 }
 
 float
 LocalGround::heightAbove (const Eigen::Vector3f& p) const
 {
   const float h = p.dot (up_);
-  if (ground_.empty ())
+  if (ground_.empty())
     return 0.f;
-  const int cx = static_cast<int> (std::floor (p.dot (u_) / cell_)) - origin_.x ();
-  const int cy = static_cast<int> (std::floor (p.dot (v_) / cell_)) - origin_.y ();
-  if (cx < 0 || cy < 0 || cx >= size_.x () || cy >= size_.y ())
+  const int cx = static_cast<int> (std::floor (p.dot (u_) / cell_)) - origin_.x();
+  const int cy = static_cast<int> (std::floor (p.dot (v_) / cell_)) - origin_.y();
+  if (cx < 0 || cy < 0 || cx >= size_.x() || cy >= size_.y())
     return 0.f;
-  const float g = ground_[static_cast<std::size_t> (cy) * size_.x () + cx];
+  const float g = ground_[static_cast<std::size_t> (cy) * size_.x() + cx];
   return std::isfinite (g) ? h - g : 0.f;
 }
 
 std::vector<std::string>
 saliencyFeatureNames (const SaliencyFeatureOptions& options)
 {
-  std::vector<std::string> names {"clutterness", "surfaceness", "curveness", "normal_angle",
-                                  "tangent_angle", "height", "log_radius"};
+  std::vector<std::string> names{"clutterness",
+                                 "surfaceness",
+                                 "curveness",
+                                 "normal_angle",
+                                 "tangent_angle",
+                                 "height",
+                                 "log_radius"};
   if (options.colour)
-    names.insert (names.end (), {"red", "green", "blue"});
+    names.insert (names.end(), {"red", "green", "blue"});
   if (options.intensity)
     names.emplace_back ("intensity");
   for (const float r : options.scales)
@@ -208,100 +231,101 @@ bool
 computeSaliencyFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
                          const search::KdTree3f& tree,
                          const std::vector<Eigen::Vector3f>& colours,
-                         const std::vector<float>& intensity, const LocalGround& ground,
+                         const std::vector<float>& intensity,
+                         const LocalGround& ground,
                          const std::vector<pcl::index_t>& centres,
-                         const std::vector<float>& radii, const SaliencyFeatureOptions& options,
-                         Eigen::MatrixXf& features, unsigned int threads)
+                         const std::vector<float>& radii,
+                         const SaliencyFeatureOptions& options,
+                         Eigen::MatrixXf& features,
+                         unsigned int threads)
 {
   features.resize (0, 0);
   const char* bad = nullptr;
-  if (centres.size () != radii.size ())
+  if (centres.size() != radii.size())
     bad = "one radius per centre is needed";
-  else if (options.colour && colours.size () != cloud.size ())
+  else if (options.colour && colours.size() != cloud.size())
     bad = "colour features need one colour per point";
-  else if (options.intensity && intensity.size () != cloud.size ())
+  else if (options.intensity && intensity.size() != cloud.size())
     bad = "intensity features need one intensity per point";
-  else if (tree.size () == 0)
+  else if (tree.size() == 0)
     bad = "the search tree is empty";
   else if (!validFeatureScales (options.scales))
     bad = "feature scales must be positive, finite and ascending";
-  if (bad)
-  {
+  if (bad) {
     PCL_ERROR ("[pcl_ext::computeSaliencyFeatures] %s.\n", bad);
     return false;
   }
-  const Eigen::Vector3f up = options.up.normalized ();
-  const std::size_t dims = saliencyFeatureNames (options).size ();
-  features.resize (static_cast<Eigen::Index> (centres.size ()), static_cast<Eigen::Index> (dims));
+  const Eigen::Vector3f up = options.up.normalized();
+  const std::size_t dims = saliencyFeatureNames (options).size();
+  features.resize (static_cast<Eigen::Index> (centres.size()),
+                   static_cast<Eigen::Index> (dims));
   const int nthreads = static_cast<int> (resolveThreadCount (threads));
 #pragma omp parallel num_threads(nthreads)
   {
     pcl::Indices nn, wide, at;
     std::vector<float> d2, wide_d2;
 #pragma omp for schedule(dynamic, 64)
-    for (std::ptrdiff_t row = 0; row < static_cast<std::ptrdiff_t> (centres.size ()); ++row)
-    {
+    for (std::ptrdiff_t row = 0; row < static_cast<std::ptrdiff_t> (centres.size());
+         ++row) {
       const auto& p = cloud[static_cast<std::size_t> (centres[row])];
       const double r = std::max (static_cast<double> (radii[row]), 1e-6);
       tree.radiusSearch (p.data, r, nn, d2);
-      if (nn.size () < kMinRegion)
-      {
-        const std::size_t k = std::min (kMinRegion, tree.size ());
+      if (nn.size() < kMinRegion) {
+        const std::size_t k = std::min (kMinRegion, tree.size());
         nn.resize (k);
         d2.resize (k);
-        nn.resize (tree.nearestKSearch (p.data, k, nn.data (), d2.data ()));
+        nn.resize (tree.nearestKSearch (p.data, k, nn.data(), d2.data()));
       }
       auto out = features.row (row);
       const EigenDecomposition eig = saliencies (cloud, nn, r, out);
-      const double cn = std::min (1.0, std::abs (eig.vectors.col (0).dot (up.cast<double> ())));
-      const double ct = std::min (1.0, std::abs (eig.vectors.col (2).dot (up.cast<double> ())));
+      const double cn =
+          std::min (1.0, std::abs (eig.vectors.col (0).dot (up.cast<double>())));
+      const double ct =
+          std::min (1.0, std::abs (eig.vectors.col (2).dot (up.cast<double>())));
       out (3) = static_cast<float> (std::acos (cn));
       out (4) = static_cast<float> (std::acos (ct));
-      out (5) = ground.heightAbove (p.getVector3fMap ());
+      out (5) = ground.heightAbove (p.getVector3fMap());
       out (6) = static_cast<float> (std::log (r));
       Eigen::Index col = 7;
-      if (options.colour)
-      {
-        Eigen::Vector3f sum = Eigen::Vector3f::Zero ();
+      if (options.colour) {
+        Eigen::Vector3f sum = Eigen::Vector3f::Zero();
         for (const auto i : nn)
           sum += colours[static_cast<std::size_t> (i)];
-        out.segment<3> (col) = sum / static_cast<float> (std::max<std::size_t> (1, nn.size ()));
+        out.segment<3> (col) =
+            sum / static_cast<float> (std::max<std::size_t> (1, nn.size()));
         col += 3;
       }
-      if (options.intensity)
-      {
+      if (options.intensity) {
         double sum = 0.0;
         for (const auto i : nn)
           sum += intensity[static_cast<std::size_t> (i)];
-        out (col) = static_cast<float> (sum / std::max<std::size_t> (1, nn.size ()));
+        out (col) = static_cast<float> (sum / std::max<std::size_t> (1, nn.size()));
         ++col;
       }
-      if (options.scales.empty ())
+      if (options.scales.empty())
         continue;
       // One search at the largest radius; the smaller ones are its subsets.
-      const Eigen::Vector3f pv = p.getVector3fMap ();
-      tree.radiusSearch (p.data, options.scales.back (), wide, wide_d2);
-      for (const float R : options.scales)
-      {
-        at.clear ();
+      const Eigen::Vector3f pv = p.getVector3fMap();
+      tree.radiusSearch (p.data, options.scales.back(), wide, wide_d2);
+      for (const float R : options.scales) {
+        at.clear();
         const float R2 = R * R;
-        for (std::size_t k = 0; k < wide.size (); ++k)
+        for (std::size_t k = 0; k < wide.size(); ++k)
           if (wide_d2[k] <= R2)
             at.push_back (wide[k]);
-        const double density = static_cast<double> (at.size ());
-        if (at.size () < kMinRegion)
-        {
-          const std::size_t k = std::min (kMinRegion, tree.size ());
+        const double density = static_cast<double> (at.size());
+        if (at.size() < kMinRegion) {
+          const std::size_t k = std::min (kMinRegion, tree.size());
           at.resize (k);
           std::vector<float> kd2 (k);
-          at.resize (tree.nearestKSearch (p.data, k, at.data (), kd2.data ()));
+          at.resize (tree.nearestKSearch (p.data, k, at.data(), kd2.data()));
         }
-        eigenFeatures (cloud, at, R, up.cast<double> (), out.segment<8> (col));
+        eigenFeatures (cloud, at, R, up.cast<double>(), out.segment<8> (col));
         float top = 0.f, bottom = 0.f;
         const float h = pv.dot (up);
-        for (const auto i : at)
-        {
-          const float hi = cloud[static_cast<std::size_t> (i)].getVector3fMap ().dot (up);
+        for (const auto i : at) {
+          const float hi =
+              cloud[static_cast<std::size_t> (i)].getVector3fMap().dot (up);
           top = std::max (top, hi - h);
           bottom = std::max (bottom, h - hi);
         }
@@ -314,4 +338,4 @@ computeSaliencyFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
   }
   return true;
 }
-}  // namespace pcl_ext
+} // namespace pcl_ext

@@ -1,8 +1,9 @@
 /*
- * pcl_ext: initiate-and-extend plane matching (Khoshelham & Gorte 2009, section 3.3), the
- * public entry points: the checks, the search run over threads and the choice of the best
- * match set. The search itself is in plane_matching_context.cpp (candidate generation),
- * plane_matching_search.cpp, plane_matching_scoring.cpp and plane_matching_extension.cpp.
+ * pcl_ext: initiate-and-extend plane matching (Khoshelham & Gorte 2009, section 3.3),
+ * the public entry points: the checks, the search run over threads and the choice of
+ * the best match set. The search itself is in plane_matching_context.cpp (candidate
+ * generation), plane_matching_search.cpp, plane_matching_scoring.cpp and
+ * plane_matching_extension.cpp.
  */
 #include <pcl_ext/registration/plane_matching.h>
 
@@ -20,24 +21,24 @@
 #include <omp.h>
 #endif
 
-namespace pcl_ext
-{
-namespace
-{
+namespace pcl_ext {
+namespace {
 bool
 checkPlanes (const std::vector<RegistrationPlane>& planes, const char* which)
 {
-  for (std::size_t i = 0; i < planes.size (); ++i)
-    if (!planes[i].normal.allFinite () || !std::isfinite (planes[i].d) ||
-        std::abs (planes[i].normal.norm () - 1.0) > 1e-6)
-    {
-      PCL_ERROR ("[pcl_ext::matchPlanes] %s plane %zu is not finite or its normal is not of unit "
-                 "length.\n", which, i);
+  for (std::size_t i = 0; i < planes.size(); ++i)
+    if (!planes[i].normal.allFinite() || !std::isfinite (planes[i].d) ||
+        std::abs (planes[i].normal.norm() - 1.0) > 1e-6) {
+      PCL_ERROR ("[pcl_ext::matchPlanes] %s plane %zu is not finite or its normal is "
+                 "not of unit "
+                 "length.\n",
+                 which,
+                 i);
       return false;
     }
   return true;
 }
-}  // namespace
+} // namespace
 
 std::uint64_t
 countInitialCombinations (int m, int n, int k)
@@ -71,13 +72,13 @@ checkPlaneMatchingParameters (const PlaneMatchingParameters& p)
   else if (!(p.max_rotation_from_guess_deg > 0.0))
     bad = "the rotation bound around the guess must be positive (infinity: no bound)";
   else if (!(p.max_translation_from_guess > 0.0))
-    bad = "the translation bound around the guess must be positive (infinity: no bound)";
+    bad =
+        "the translation bound around the guess must be positive (infinity: no bound)";
   else if (p.min_matches < 0)
     bad = "the minimum number of matches must be >= 0";
   else if (!(p.min_conditioning > 0.0 && p.min_conditioning < 1.0))
     bad = "the minimum conditioning must be in (0, 1)";
-  if (bad)
-  {
+  if (bad) {
     PCL_ERROR ("[pcl_ext::matchPlanes] Invalid parameters: %s.\n", bad);
     return false;
   }
@@ -85,19 +86,20 @@ checkPlaneMatchingParameters (const PlaneMatchingParameters& p)
 }
 
 bool
-matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<RegistrationPlane>& map,
-             const PlaneMatchingParameters& parameters, PlaneMatchingResult& result,
+matchPlanes (const std::vector<RegistrationPlane>& scan,
+             const std::vector<RegistrationPlane>& map,
+             const PlaneMatchingParameters& parameters,
+             PlaneMatchingResult& result,
              const Eigen::Matrix4d& guess)
 {
   using plane_matching::Candidate;
   using plane_matching::Worker;
-  const auto start = std::chrono::steady_clock::now ();
-  result = PlaneMatchingResult ();
+  const auto start = std::chrono::steady_clock::now();
+  result = PlaneMatchingResult();
   if (!checkPlaneMatchingParameters (parameters) || !checkPlanes (scan, "scan") ||
       !checkPlanes (map, "map"))
     return false;
-  if (!guess.allFinite ())
-  {
+  if (!guess.allFinite()) {
     PCL_ERROR ("[pcl_ext::matchPlanes] The guess is not finite.\n");
     return false;
   }
@@ -108,32 +110,31 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
     return false;
   const int m = stats.m, n = stats.n;
 
-  // Tasks: the first pair of each combination. Dynamic scheduling balances them; the best match
-  // set is chosen by a total order that includes the enumeration order, so threads do not matter.
+  // Tasks: the first pair of each combination. Dynamic scheduling balances them; the
+  // best match set is chosen by a total order that includes the enumeration order, so
+  // threads do not matter.
   std::vector<std::pair<int, int>> tasks;
   for (int s0 = 0; s0 <= m - k; ++s0)
     for (int m0 = 0; m0 < n; ++m0)
       tasks.emplace_back (s0, m0);
   int threads = 1;
 #ifdef _OPENMP
-  threads =
-      parameters.threads == 0 ? omp_get_max_threads () : static_cast<int> (parameters.threads);
+  threads = parameters.threads == 0 ? omp_get_max_threads()
+                                    : static_cast<int> (parameters.threads);
 #endif
-  threads = std::max (1, std::min<int> (threads, static_cast<int> (tasks.size ())));
+  threads = std::max (1, std::min<int> (threads, static_cast<int> (tasks.size())));
   std::vector<Worker> workers (threads, Worker (c));
-#pragma omp parallel for num_threads (threads) schedule (dynamic, 1)
-  for (std::ptrdiff_t t = 0; t < static_cast<std::ptrdiff_t> (tasks.size ()); ++t)
-  {
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
+  for (std::ptrdiff_t t = 0; t < static_cast<std::ptrdiff_t> (tasks.size()); ++t) {
     int id = 0;
 #ifdef _OPENMP
-    id = omp_get_thread_num ();
+    id = omp_get_thread_num();
 #endif
     workers[id].run (tasks[t].first, tasks[t].second, static_cast<std::uint64_t> (t));
   }
 
   Candidate best;
-  for (auto& w : workers)
-  {
+  for (auto& w : workers) {
     stats.orientation += w.stats.orientation;
     stats.degenerate += w.stats.degenerate;
     stats.residual += w.stats.residual;
@@ -142,25 +143,28 @@ matchPlanes (const std::vector<RegistrationPlane>& scan, const std::vector<Regis
       best = std::move (w.best);
   }
   stats.seconds =
-      std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+      std::chrono::duration<double> (std::chrono::steady_clock::now() - start).count();
   const std::size_t needed = parameters.min_matches > 0 ? parameters.min_matches : k;
-  if (!best.valid)
-  {
-    PCL_ERROR ("[pcl_ext::matchPlanes] No combination of %d pairs gave a valid transform (%llu "
-               "combinations after the constraints, %llu degenerate).\n", k,
+  if (!best.valid) {
+    PCL_ERROR ("[pcl_ext::matchPlanes] No combination of %d pairs gave a valid "
+               "transform (%llu "
+               "combinations after the constraints, %llu degenerate).\n",
+               k,
                static_cast<unsigned long long> (stats.orientation),
                static_cast<unsigned long long> (stats.degenerate));
     return false;
   }
   result.matches = best.matches;
   result.estimate = best.estimate;
-  if (best.matches.size () < needed)
-  {
-    PCL_ERROR ("[pcl_ext::matchPlanes] The best match set has %zu pairs, fewer than the %zu "
-               "required.\n", best.matches.size (), needed);
+  if (best.matches.size() < needed) {
+    PCL_ERROR (
+        "[pcl_ext::matchPlanes] The best match set has %zu pairs, fewer than the %zu "
+        "required.\n",
+        best.matches.size(),
+        needed);
     return false;
   }
   result.converged = true;
   return true;
 }
-}  // namespace pcl_ext
+} // namespace pcl_ext

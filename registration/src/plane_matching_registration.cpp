@@ -1,6 +1,6 @@
 /*
- * pcl_ext: registration by plane matching, instantiated for the XYZ point types (source and
- * target of the same type).
+ * pcl_ext: registration by plane matching, instantiated for the XYZ point types (source
+ * and target of the same type).
  */
 #include <pcl_ext/common/instantiate.h>
 #include <pcl_ext/registration/impl/plane_matching_registration.hpp>

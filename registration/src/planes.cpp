@@ -5,23 +5,23 @@
 
 #include <cmath>
 
-namespace pcl_ext
-{
+namespace pcl_ext {
 PlaneTransformer::PlaneTransformer (const Eigen::Matrix4d& transformation)
-  : block_ (transformation.topLeftCorner<3, 3> ())
+: block_ (transformation.topLeftCorner<3, 3>())
 {
-  scale_ = std::cbrt (block_.determinant ());
+  scale_ = std::cbrt (block_.determinant());
   rotation_ = block_ / scale_;
-  t_ = transformation.topRightCorner<3, 1> ();
+  t_ = transformation.topRightCorner<3, 1>();
 }
 
 Eigen::AlignedBox3d
 PlaneTransformer::extent (const RegistrationPlane& plane) const
 {
   Eigen::AlignedBox3d out;
-  if (!plane.extent.isEmpty ())
+  if (!plane.extent.isEmpty())
     for (int c = 0; c < 8; ++c)
-      out.extend (point (plane.extent.corner (static_cast<Eigen::AlignedBox3d::CornerType> (c))));
+      out.extend (point (
+          plane.extent.corner (static_cast<Eigen::AlignedBox3d::CornerType> (c))));
   return out;
 }
 
@@ -32,7 +32,7 @@ PlaneTransformer::operator() (const RegistrationPlane& plane) const
   out.normal = normal (plane);
   out.d = scale_ * plane.d + out.normal.dot (t_);
   out.centroid = point (plane.centroid);
-  if (!plane.extent.isEmpty ())
+  if (!plane.extent.isEmpty())
     out.extent = extent (plane);
   return out;
 }
@@ -42,4 +42,4 @@ transformPlane (const RegistrationPlane& plane, const Eigen::Matrix4d& transform
 {
   return PlaneTransformer (transformation) (plane);
 }
-}  // namespace pcl_ext
+} // namespace pcl_ext

@@ -10,32 +10,30 @@
 #include <cmath>
 #include <random>
 
-namespace pcl_ext
-{
-namespace
-{
+namespace pcl_ext {
+namespace {
 constexpr double kPi = 3.14159265358979323846;
-// Fewer than this many points give no plane: the radius never shrinks below the distance to
-// the 5th neighbour (pcl_ext's floor; the paper does not say).
+// Fewer than this many points give no plane: the radius never shrinks below the
+// distance to the 5th neighbour (pcl_ext's floor; the paper does not say).
 constexpr std::size_t kMinPoints = 5;
 
 double
-maxColourVariance (const std::vector<Eigen::Vector3f>& colours, const pcl::Indices& indices)
+maxColourVariance (const std::vector<Eigen::Vector3f>& colours,
+                   const pcl::Indices& indices)
 {
-  if (colours.empty () || indices.size () < 2)
+  if (colours.empty() || indices.size() < 2)
     return 0.0;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero (), sq = Eigen::Vector3d::Zero ();
-  for (const auto i : indices)
-  {
-    const Eigen::Vector3d c = colours[static_cast<std::size_t> (i)].cast<double> ();
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero(), sq = Eigen::Vector3d::Zero();
+  for (const auto i : indices) {
+    const Eigen::Vector3d c = colours[static_cast<std::size_t> (i)].cast<double>();
     sum += c;
     sq += c.cwiseProduct (c);
   }
-  const double n = static_cast<double> (indices.size ());
+  const double n = static_cast<double> (indices.size());
   const Eigen::Vector3d var = sq / n - (sum / n).cwiseProduct (sum / n);
-  return std::max (0.0, var.maxCoeff ());
+  return std::max (0.0, var.maxCoeff());
 }
-}  // namespace
+} // namespace
 
 bool
 checkAdaptiveRadiusParameters (const AdaptiveRadiusParameters& p, const char* caller)
@@ -53,16 +51,17 @@ checkAdaptiveRadiusParameters (const AdaptiveRadiusParameters& p, const char* ca
     bad = "the saturation tolerance must be finite and >= 0";
   else if (!(p.noise >= 0.0) || !std::isfinite (p.noise))
     bad = "the noise constant must be finite and >= 0";
-  else if (!(p.c1 > 0.0) || !std::isfinite (p.c1) || !(p.c2 >= 0.0) || !std::isfinite (p.c2))
+  else if (!(p.c1 > 0.0) || !std::isfinite (p.c1) || !(p.c2 >= 0.0) ||
+           !std::isfinite (p.c2))
     bad = "c1 must be > 0 and c2 >= 0, both finite";
   else if (!(p.epsilon > 0.0 && p.epsilon <= 1.0))
     bad = "epsilon must be in (0, 1]";
   else if (!(p.colour_weight >= 0.0) || !std::isfinite (p.colour_weight))
     bad = "the colour weight must be finite and >= 0";
-  else if (!(p.min_radius >= 0.0) || !(p.max_radius > p.min_radius) || std::isnan (p.max_radius))
+  else if (!(p.min_radius >= 0.0) || !(p.max_radius > p.min_radius) ||
+           std::isnan (p.max_radius))
     bad = "the radius bounds must satisfy 0 <= min < max";
-  if (bad)
-  {
+  if (bad) {
     PCL_ERROR ("[pcl_ext::%s] Invalid adaptive radius parameters: %s.\n", caller, bad);
     return false;
   }
@@ -76,67 +75,69 @@ estimateNoiseFromPlanarPatch (const pcl::PointCloud<pcl::PointXYZ>& cloud,
   Eigen::Matrix3d cov;
   Eigen::Vector3d centroid;
   if (computeLocalCovariance (cloud, patch, cov, centroid) < 3)
-    return std::numeric_limits<double>::quiet_NaN ();
+    return std::numeric_limits<double>::quiet_NaN();
   EigenDecomposition eig;
   if (!computeEigenDecomposition (cov, eig))
-    return std::numeric_limits<double>::quiet_NaN ();
-  const Eigen::Vector3d n = eig.normal ();
+    return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Vector3d n = eig.normal();
   double sum = 0.0;
   std::size_t count = 0;
-  for (const auto i : patch)
-  {
+  for (const auto i : patch) {
     const auto& p = cloud[static_cast<std::size_t> (i)];
     if (!std::isfinite (p.x) || !std::isfinite (p.y) || !std::isfinite (p.z))
       continue;
-    sum += std::abs ((p.getVector3fMap ().cast<double> () - centroid).dot (n));
+    sum += std::abs ((p.getVector3fMap().cast<double>() - centroid).dot (n));
     ++count;
   }
   return sum / static_cast<double> (count);
 }
 
 bool
-AdaptiveRadiusEstimator::initialize (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
-                                     const std::vector<Eigen::Vector3f>& colours,
-                                     const AdaptiveRadiusParameters& parameters)
+AdaptiveRadiusEstimator::initialize (
+    const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+    const std::vector<Eigen::Vector3f>& colours,
+    const AdaptiveRadiusParameters& parameters)
 {
-  cloud_.reset ();
+  cloud_.reset();
   finite_ = 0;
-  if (!checkAdaptiveRadiusParameters (parameters, "AdaptiveRadiusEstimator::initialize"))
+  if (!checkAdaptiveRadiusParameters (parameters,
+                                      "AdaptiveRadiusEstimator::initialize"))
     return false;
-  if (!cloud || (!colours.empty () && colours.size () != cloud->size ()))
-  {
-    PCL_ERROR ("[pcl_ext::AdaptiveRadiusEstimator::initialize] No cloud, or colours do not "
-               "match it.\n");
+  if (!cloud || (!colours.empty() && colours.size() != cloud->size())) {
+    PCL_ERROR (
+        "[pcl_ext::AdaptiveRadiusEstimator::initialize] No cloud, or colours do not "
+        "match it.\n");
     return false;
   }
   std::vector<float> xyz;
   std::vector<pcl::index_t> ids;
-  xyz.reserve (cloud->size () * 3);
-  for (std::size_t i = 0; i < cloud->size (); ++i)
-  {
+  xyz.reserve (cloud->size() * 3);
+  for (std::size_t i = 0; i < cloud->size(); ++i) {
     const auto& p = (*cloud)[i];
     if (!std::isfinite (p.x) || !std::isfinite (p.y) || !std::isfinite (p.z))
       continue;
-    xyz.insert (xyz.end (), {p.x, p.y, p.z});
+    xyz.insert (xyz.end(), {p.x, p.y, p.z});
     ids.push_back (static_cast<pcl::index_t> (i));
   }
-  if (ids.size () < static_cast<std::size_t> (parameters.initial_k))
-  {
-    PCL_ERROR ("[pcl_ext::AdaptiveRadiusEstimator::initialize] %zu finite points, fewer than "
-               "k = %d.\n", ids.size (), parameters.initial_k);
+  if (ids.size() < static_cast<std::size_t> (parameters.initial_k)) {
+    PCL_ERROR (
+        "[pcl_ext::AdaptiveRadiusEstimator::initialize] %zu finite points, fewer than "
+        "k = %d.\n",
+        ids.size(),
+        parameters.initial_k);
     return false;
   }
-  finite_ = ids.size ();
+  finite_ = ids.size();
   tree_.build (std::move (xyz), std::move (ids));
   cloud_ = cloud;
   colours_ = colours;
   parameters_ = parameters;
-  noise_ = parameters.noise > 0.0 ? parameters.noise : estimateNoise ();
+  noise_ = parameters.noise > 0.0 ? parameters.noise : estimateNoise();
   return true;
 }
 
 double
-AdaptiveRadiusEstimator::estimateNoise () const
+AdaptiveRadiusEstimator::estimateNoise() const
 {
   std::mt19937_64 rng (1);
   const std::size_t samples = std::min<std::size_t> (512, finite_);
@@ -145,37 +146,38 @@ AdaptiveRadiusEstimator::estimateNoise () const
   std::vector<double> spacing;
   pcl::Indices nn (k);
   std::vector<float> d2 (k);
-  for (std::size_t s = 0; s < samples; ++s)
-  {
-    const std::size_t pos = rng () % finite_;
-    const std::size_t found = tree_.nearestKSearch (tree_.point (pos), k, nn.data (), d2.data ());
+  for (std::size_t s = 0; s < samples; ++s) {
+    const std::size_t pos = rng() % finite_;
+    const std::size_t found =
+        tree_.nearestKSearch (tree_.point (pos), k, nn.data(), d2.data());
     Eigen::Matrix3d cov;
     Eigen::Vector3d c;
     EigenDecomposition eig;
-    if (found < 3 || computeLocalCovariance (*cloud_, nn.begin (), nn.begin () + found, cov, c) < 3
-        || !computeEigenDecomposition (cov, eig))
+    if (found < 3 ||
+        computeLocalCovariance (*cloud_, nn.begin(), nn.begin() + found, cov, c) < 3 ||
+        !computeEigenDecomposition (cov, eig))
       continue;
-    const double total = eig.values.sum ();
+    const double total = eig.values.sum();
     if (total <= 0.0)
       continue;
     flat_and_rms.emplace_back (eig.values (0) / total, std::sqrt (eig.values (0)));
     spacing.push_back (std::sqrt (d2[found - 1]));
   }
-  if (flat_and_rms.empty ())
+  if (flat_and_rms.empty())
     return 0.0;
-  std::sort (flat_and_rms.begin (), flat_and_rms.end ());
-  const std::size_t flattest = std::max<std::size_t> (1, flat_and_rms.size () / 10);
+  std::sort (flat_and_rms.begin(), flat_and_rms.end());
+  const std::size_t flattest = std::max<std::size_t> (1, flat_and_rms.size() / 10);
   std::vector<double> rms;
   for (std::size_t i = 0; i < flattest; ++i)
     rms.push_back (flat_and_rms[i].second);
-  std::nth_element (rms.begin (), rms.begin () + rms.size () / 2, rms.end ());
-  double sigma = rms[rms.size () / 2];
-  // A noise-free cloud would make every radius collapse: fall back to 1 % of the typical
-  // k-neighbourhood size, which still lets curvature decide.
-  if (!(sigma > 0.0))
-  {
-    std::nth_element (spacing.begin (), spacing.begin () + spacing.size () / 2, spacing.end ());
-    sigma = 0.01 * spacing[spacing.size () / 2];
+  std::nth_element (rms.begin(), rms.begin() + rms.size() / 2, rms.end());
+  double sigma = rms[rms.size() / 2];
+  // A noise-free cloud would make every radius collapse: fall back to 1 % of the
+  // typical k-neighbourhood size, which still lets curvature decide.
+  if (!(sigma > 0.0)) {
+    std::nth_element (
+        spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
+    sigma = 0.01 * spacing[spacing.size() / 2];
   }
   return sigma;
 }
@@ -188,43 +190,44 @@ AdaptiveRadiusEstimator::estimate (pcl::index_t index, int* steps) const
   const std::size_t k0 = static_cast<std::size_t> (parameters_.initial_k);
   pcl::Indices nn (k0);
   std::vector<float> d2 (k0);
-  const std::size_t found = tree_.nearestKSearch (q, k0, nn.data (), d2.data ());
+  const std::size_t found = tree_.nearestKSearch (q, k0, nn.data(), d2.data());
   nn.resize (found);
   d2.resize (found);
-  double r = std::sqrt (static_cast<double> (d2.back ()));
+  double r = std::sqrt (static_cast<double> (d2.back()));
   const double r_floor =
       std::max (parameters_.min_radius,
                 static_cast<double> (std::sqrt (d2[std::min (found, kMinPoints) - 1])));
   const double bracket_base = parameters_.c2 * noise_ * noise_;
   const Eigen::Vector3d pd (p.x, p.y, p.z);
   int it = 0;
-  for (; it < parameters_.max_iterations && r > 0.0; )
-  {
-    const double n = static_cast<double> (nn.size ());
-    const double rho = n / (kPi * r * r);  // eq. 1
+  for (; it < parameters_.max_iterations && r > 0.0;) {
+    const double n = static_cast<double> (nn.size());
+    const double rho = n / (kPi * r * r); // eq. 1
     Eigen::Matrix3d cov;
     Eigen::Vector3d centroid;
     EigenDecomposition eig;
-    if (computeLocalCovariance (*cloud_, nn, cov, centroid) < 3
-        || !computeEigenDecomposition (cov, eig))
+    if (computeLocalCovariance (*cloud_, nn, cov, centroid) < 3 ||
+        !computeEigenDecomposition (cov, eig))
       break;
-    const double d = std::abs ((pd - centroid).dot (eig.normal ()));
+    const double d = std::abs ((pd - centroid).dot (eig.normal()));
     double mu = 0.0;
     for (const float s : d2)
       mu += std::sqrt (static_cast<double> (s));
-    mu /= std::max (1.0, n - 1.0);  // the point itself is at distance 0
-    const double kappa = std::max (2.0 * d / (mu * mu), 1e-12);  // eq. 2
+    mu /= std::max (1.0, n - 1.0); // the point itself is at distance 0
+    const double kappa = std::max (2.0 * d / (mu * mu), 1e-12); // eq. 2
     const double colour = std::max (
         0.05, 1.0 - parameters_.colour_weight * maxColourVariance (colours_, nn));
     const double r_opt =
-        std::cbrt ((parameters_.c1 * noise_ / std::sqrt (parameters_.epsilon * rho) + bracket_base)
-                   / kappa) * colour;
-    double r_new = (1.0 - parameters_.damping) * r + parameters_.damping * r_opt;  // eq. 3
+        std::cbrt ((parameters_.c1 * noise_ / std::sqrt (parameters_.epsilon * rho) +
+                    bracket_base) /
+                   kappa) *
+        colour;
+    double r_new =
+        (1.0 - parameters_.damping) * r + parameters_.damping * r_opt; // eq. 3
     r_new = std::min (std::max (r_new, r_floor), parameters_.max_radius);
-    const double k_new = kPi * rho * r_new * r_new;  // eq. 4
+    const double k_new = kPi * rho * r_new * r_new; // eq. 4
     ++it;
-    if (k_new >= parameters_.max_k)
-    {
+    if (k_new >= parameters_.max_k) {
       r = std::min (r_new, std::sqrt (parameters_.max_k / (kPi * rho)));
       break;
     }
@@ -233,7 +236,7 @@ AdaptiveRadiusEstimator::estimate (pcl::index_t index, int* steps) const
     if (saturated || it == parameters_.max_iterations)
       break;
     tree_.radiusSearch (q, r, nn, d2, static_cast<std::size_t> (4 * parameters_.max_k));
-    if (nn.size () < 3)
+    if (nn.size() < 3)
       break;
   }
   if (steps)
@@ -242,7 +245,9 @@ AdaptiveRadiusEstimator::estimate (pcl::index_t index, int* steps) const
 }
 
 void
-AdaptiveRadiusEstimator::neighbours (pcl::index_t index, float radius, pcl::Indices& result) const
+AdaptiveRadiusEstimator::neighbours (pcl::index_t index,
+                                     float radius,
+                                     pcl::Indices& result) const
 {
   const auto& p = (*cloud_)[static_cast<std::size_t> (index)];
   const float q[3] = {p.x, p.y, p.z};
@@ -251,12 +256,13 @@ AdaptiveRadiusEstimator::neighbours (pcl::index_t index, float radius, pcl::Indi
 }
 
 void
-AdaptiveRadiusEstimator::nearest (const Eigen::Vector3f& position, std::size_t k,
+AdaptiveRadiusEstimator::nearest (const Eigen::Vector3f& position,
+                                  std::size_t k,
                                   pcl::Indices& result) const
 {
   k = std::min (k, finite_);
   result.resize (k);
   std::vector<float> d2 (k);
-  result.resize (tree_.nearestKSearch (position.data (), k, result.data (), d2.data ()));
+  result.resize (tree_.nearestKSearch (position.data(), k, result.data(), d2.data()));
 }
-}  // namespace pcl_ext
+} // namespace pcl_ext

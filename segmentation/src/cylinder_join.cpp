@@ -9,18 +9,15 @@
 #include <cmath>
 #include <map>
 
-namespace pcl_ext
-{
-namespace cylinder_join
-{
-namespace
-{
+namespace pcl_ext {
+namespace cylinder_join {
+namespace {
 /** Distance of \a q from the axis of \a c. */
 double
 offAxis (const Eigen::Vector3d& q, const cylinders::Cylinder& c)
 {
   const Eigen::Vector3d w = q - c.point;
-  return (w - w.dot (c.axis) * c.axis).norm ();
+  return (w - w.dot (c.axis) * c.axis).norm();
 }
 
 /** The end of \a c facing \a target along its axis. */
@@ -35,28 +32,33 @@ facingEnd (const cylinders::Cylinder& c, const Eigen::Vector3d& target)
 std::uint64_t
 segmentSeed (std::uint64_t seed, std::size_t segment)
 {
-  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (segment + 1);  // splitmix64
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (segment + 1); // splitmix64
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
   return z ^ (z >> 31);
 }
-}  // namespace
+} // namespace
 
 bool
 validParameters (const JoinParameters& p)
 {
-  const auto finite_non_negative = [] (double x) { return x >= 0.0 && std::isfinite (x); };
+  const auto finite_non_negative = [] (double x) {
+    return x >= 0.0 && std::isfinite (x);
+  };
   return cylinders::validParameters (p.detection) && finite_non_negative (p.max_gap) &&
          finite_non_negative (p.max_axis_angle) && p.max_axis_angle < M_PI / 2 &&
          p.min_elbow_angle > p.max_axis_angle && p.min_elbow_angle <= M_PI / 2 &&
-         finite_non_negative (p.max_radius_difference) && p.max_radius_difference < 1.0 &&
-         finite_non_negative (p.max_axis_offset) && finite_non_negative (p.whole_segment_fraction) &&
+         finite_non_negative (p.max_radius_difference) &&
+         p.max_radius_difference < 1.0 && finite_non_negative (p.max_axis_offset) &&
+         finite_non_negative (p.whole_segment_fraction) &&
          p.whole_segment_fraction <= 1.0 && finite_non_negative (p.absorb_fraction) &&
          p.absorb_fraction <= 1.0 && p.threads >= 1;
 }
 
 bool
-continues (const cylinders::Cylinder& a, const cylinders::Cylinder& b, const JoinParameters& p)
+continues (const cylinders::Cylinder& a,
+           const cylinders::Cylinder& b,
+           const JoinParameters& p)
 {
   // Radii compared where the two face each other (they differ along a cone).
   const Eigen::Vector3d a_end = facingEnd (a, b.point), b_end = facingEnd (b, a.point);
@@ -67,10 +69,9 @@ continues (const cylinders::Cylinder& a, const cylinders::Cylinder& b, const Joi
     return false;
   const double lateral = p.max_axis_offset * r + p.detection.distance_tolerance;
   const double cosine = std::abs (a.axis.dot (b.axis));
-  if (cosine >= std::cos (p.max_axis_angle))
-  {
-    // One straight run: the axis of each passes through the other's facing end (axes fitted
-    // to short pieces tilt a little, so they are not extrapolated past the gap).
+  if (cosine >= std::cos (p.max_axis_angle)) {
+    // One straight run: the axis of each passes through the other's facing end (axes
+    // fitted to short pieces tilt a little, so they are not extrapolated past the gap).
     if (offAxis (b_end, a) > lateral || offAxis (a_end, b) > lateral)
       return false;
     const double gap =
@@ -79,54 +80,57 @@ continues (const cylinders::Cylinder& a, const cylinders::Cylinder& b, const Joi
   }
   if (cosine > std::cos (p.min_elbow_angle))
     return false;
-  // An elbow: the axes (nearly) meet, beyond or at the end of each leg and not farther from
-  // it than the longest gap (the bend lies between).
+  // An elbow: the axes (nearly) meet, beyond or at the end of each leg and not farther
+  // from it than the longest gap (the bend lies between).
   const Eigen::Vector3d w = a.point - b.point;
   const double ab = a.axis.dot (b.axis), aw = a.axis.dot (w), bw = b.axis.dot (w);
   const double denominator = 1.0 - ab * ab;
   const double s = (ab * bw - aw) / denominator, t = (bw - ab * aw) / denominator;
-  if (((a.point + s * a.axis) - (b.point + t * b.axis)).norm () > lateral)
+  if (((a.point + s * a.axis) - (b.point + t * b.axis)).norm() > lateral)
     return false;
-  const double beyond_a = std::abs (s) - a.half_length, beyond_b = std::abs (t) - b.half_length;
-  return beyond_a > -r && beyond_a <= p.max_gap && beyond_b > -r && beyond_b <= p.max_gap;
+  const double beyond_a = std::abs (s) - a.half_length,
+               beyond_b = std::abs (t) - b.half_length;
+  return beyond_a > -r && beyond_a <= p.max_gap && beyond_b > -r &&
+         beyond_b <= p.max_gap;
 }
 
 bool
 joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
                       const std::vector<std::vector<std::uint32_t>>& segments,
-                      const JoinParameters& p, JoinResult& result)
+                      const JoinParameters& p,
+                      JoinResult& result)
 {
-  result = JoinResult ();
+  result = JoinResult();
   if (!validParameters (p))
     return false;
   for (const auto& segment : segments)
     for (const auto i : segment)
-      if (i >= xyz.size ())
+      if (i >= xyz.size())
         return false;
-  result.labels.assign (xyz.size (), kNoSegment);
-  for (std::uint32_t s = 0; s < segments.size (); ++s)
+  result.labels.assign (xyz.size(), kNoSegment);
+  for (std::uint32_t s = 0; s < segments.size(); ++s)
     for (const auto i : segments[s])
       if (result.labels[i] == kNoSegment)
         result.labels[i] = s;
   // Each segment's own points (a position listed twice belongs to its first segment).
-  std::vector<std::vector<std::uint32_t>> members (segments.size ());
-  for (std::uint32_t i = 0; i < xyz.size (); ++i)
+  std::vector<std::vector<std::uint32_t>> members (segments.size());
+  for (std::uint32_t i = 0; i < xyz.size(); ++i)
     if (result.labels[i] != kNoSegment)
       members[result.labels[i]].push_back (i);
 
-  // The cylinders of each segment, in its slot: deterministic for any number of threads.
-  std::vector<std::vector<cylinders::Cylinder>> found (segments.size ());
-#pragma omp parallel num_threads(static_cast<int> (p.threads))
+  // The cylinders of each segment, in its slot: deterministic for any number of
+  // threads.
+  std::vector<std::vector<cylinders::Cylinder>> found (segments.size());
+#pragma omp parallel num_threads(static_cast <int> (p.threads))
   {
     std::vector<Eigen::Vector3d> points;
 #pragma omp for schedule(dynamic, 1)
-    for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t> (segments.size ()); ++s)
-    {
+    for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t> (segments.size()); ++s) {
       const auto& own = members[s];
-      if (own.size () < p.detection.min_points)
+      if (own.size() < p.detection.min_points)
         continue;
-      points.resize (own.size ());
-      for (std::size_t k = 0; k < own.size (); ++k)
+      points.resize (own.size());
+      for (std::size_t k = 0; k < own.size(); ++k)
         points[k] = xyz[own[k]];
       cylinders::DetectionParameters detection = p.detection;
       detection.seed = segmentSeed (p.detection.seed, static_cast<std::size_t> (s));
@@ -136,9 +140,8 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
           i = own[i];
     }
   }
-  for (std::uint32_t s = 0; s < segments.size (); ++s)
-    for (auto& cylinder : found[s])
-    {
+  for (std::uint32_t s = 0; s < segments.size(); ++s)
+    for (auto& cylinder : found[s]) {
       Piece piece;
       piece.segment = s;
       piece.cylinder = std::move (cylinder);
@@ -146,7 +149,7 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
     }
 
   // Groups of pieces that continue one another.
-  const std::size_t n = result.pieces.size ();
+  const std::size_t n = result.pieces.size();
   UnionFind sets (n);
   for (std::uint32_t a = 0; a < n; ++a)
     for (std::uint32_t b = a + 1; b < n; ++b)
@@ -157,17 +160,16 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
     ++group_size[sets.find (k)];
 
   // Which joined groups each segment holds pieces of, and how much of it each covers.
-  std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>> cover;  // segment -> root -> points
-  for (std::uint32_t k = 0; k < n; ++k)
-  {
+  std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>>
+      cover; // segment -> root -> points
+  for (std::uint32_t k = 0; k < n; ++k) {
     const std::uint32_t root = sets.find (k);
     if (group_size[root] >= 2)
-      cover[result.pieces[k].segment][root] += result.pieces[k].cylinder.inliers.size ();
+      cover[result.pieces[k].segment][root] += result.pieces[k].cylinder.inliers.size();
   }
-  std::uint32_t next = static_cast<std::uint32_t> (segments.size ());
+  std::uint32_t next = static_cast<std::uint32_t> (segments.size());
   std::vector<std::uint32_t> label_of_root (n, kNoSegment);
-  for (std::uint32_t k = 0; k < n; ++k)
-  {
+  for (std::uint32_t k = 0; k < n; ++k) {
     Piece& piece = result.pieces[k];
     const std::uint32_t root = sets.find (k);
     if (group_size[root] < 2)
@@ -177,8 +179,8 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
     const std::uint32_t label = label_of_root[root];
     const auto& held = cover[piece.segment];
     const auto& own = members[piece.segment];
-    if (held.size () == 1 &&
-        static_cast<double> (held.begin ()->second) >= p.whole_segment_fraction * own.size ())
+    if (held.size() == 1 && static_cast<double> (held.begin()->second) >=
+                                p.whole_segment_fraction * own.size())
       for (const auto i : own)
         result.labels[i] = label;
     else
@@ -186,40 +188,36 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
         result.labels[i] = label;
   }
 
-  // Segments without a piece of their own that lie on a joined group's surface, between or
-  // next to its pieces (the fragments a segmenter leaves where a branch leaves a trunk):
-  // they join the group whole when most of their points are on it.
-  if (p.absorb_fraction > 0.0)
-  {
+  // Segments without a piece of their own that lie on a joined group's surface, between
+  // or next to its pieces (the fragments a segmenter leaves where a branch leaves a
+  // trunk): they join the group whole when most of their points are on it.
+  if (p.absorb_fraction > 0.0) {
     std::vector<std::uint32_t> joined_pieces;
     for (std::uint32_t k = 0; k < n; ++k)
       if (group_size[sets.find (k)] >= 2)
         joined_pieces.push_back (k);
     const double tol = p.detection.distance_tolerance;
-    for (std::uint32_t s = 0; s < segments.size (); ++s)
-    {
-      if (cover.count (s) || members[s].empty ())
+    for (std::uint32_t s = 0; s < segments.size(); ++s) {
+      if (cover.count (s) || members[s].empty())
         continue;
       std::vector<std::size_t> on (n, 0);
       for (const auto i : members[s])
-        for (const auto k : joined_pieces)
-        {
+        for (const auto k : joined_pieces) {
           const cylinders::Cylinder& c = result.pieces[k].cylinder;
           const Eigen::Vector3d w = xyz[i] - c.point;
           const double t = w.dot (c.axis);
           if (std::abs (t) > c.half_length + p.max_gap)
             continue;
-          if (std::abs ((w - t * c.axis).norm () - (c.radius + c.taper * t)) <= tol)
-          {
+          if (std::abs ((w - t * c.axis).norm() - (c.radius + c.taper * t)) <= tol) {
             ++on[sets.find (k)];
             break;
           }
         }
-      const auto most = std::max_element (on.begin (), on.end ());
-      if (most != on.end () &&
-          static_cast<double> (*most) >= p.absorb_fraction * members[s].size ())
+      const auto most = std::max_element (on.begin(), on.end());
+      if (most != on.end() &&
+          static_cast<double> (*most) >= p.absorb_fraction * members[s].size())
         for (const auto i : members[s])
-          result.labels[i] = label_of_root[most - on.begin ()];
+          result.labels[i] = label_of_root[most - on.begin()];
     }
   }
 
@@ -227,19 +225,17 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
   std::vector<std::uint32_t> compact (next, kNoSegment);
   std::uint32_t count = 0;
   for (auto& label : result.labels)
-    if (label != kNoSegment)
-    {
+    if (label != kNoSegment) {
       if (compact[label] == kNoSegment)
         compact[label] = count++;
       label = compact[label];
     }
   result.num_segments = count;
-  for (std::uint32_t k = 0; k < n; ++k)
-  {
+  for (std::uint32_t k = 0; k < n; ++k) {
     const std::uint32_t label = label_of_root[sets.find (k)];
     result.pieces[k].joined = label == kNoSegment ? kNoSegment : compact[label];
   }
   return true;
 }
-}  // namespace cylinder_join
-}  // namespace pcl_ext
+} // namespace cylinder_join
+} // namespace pcl_ext

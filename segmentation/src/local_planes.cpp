@@ -1,6 +1,6 @@
 /*
- * pcl_ext: non-template local plane kernels, and the segment plane fit precompiled for the
- * common point types.
+ * pcl_ext: non-template local plane kernels, and the segment plane fit precompiled for
+ * the common point types.
  */
 #include <pcl_ext/common/instantiate.h>
 #include <pcl_ext/segmentation/impl/local_planes.hpp>
@@ -12,20 +12,23 @@
 double
 pcl_ext::normalAngle (const Eigen::Vector3d& n1, const Eigen::Vector3d& n2)
 {
-  // atan2 of |n1 x n2| and |n1 . n2| keeps its accuracy near 0, where arccos of a dot product
-  // close to 1 loses half the digits (the parallel test works at small angles).
-  return std::atan2 (n1.cross (n2).norm (), std::abs (n1.dot (n2)));
+  // atan2 of |n1 x n2| and |n1 . n2| keeps its accuracy near 0, where arccos of a dot
+  // product close to 1 loses half the digits (the parallel test works at small angles).
+  return std::atan2 (n1.cross (n2).norm(), std::abs (n1.dot (n2)));
 }
 
 bool
-pcl_ext::intersectLocalPlanes (const LocalPlane& plane1, const LocalPlane& plane2,
-                               const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
-                               Eigen::Vector3d& point, Eigen::Vector3d& direction)
+pcl_ext::intersectLocalPlanes (const LocalPlane& plane1,
+                               const LocalPlane& plane2,
+                               const Eigen::Vector3d& p1,
+                               const Eigen::Vector3d& p2,
+                               Eigen::Vector3d& point,
+                               Eigen::Vector3d& direction)
 {
   const Eigen::Vector3d& n1 = plane1.normal;
   const Eigen::Vector3d& n2 = plane2.normal;
   const Eigen::Vector3d a = n1.cross (n2);
-  const double det = a.squaredNorm ();  // 1 - c^2 = sin^2(theta) for unit normals
+  const double det = a.squaredNorm(); // 1 - c^2 = sin^2(theta) for unit normals
   if (!(det > 0.0) || !std::isfinite (det))
     return false;
   const Eigen::Vector3d m = 0.5 * (p1 + p2);
@@ -36,7 +39,7 @@ pcl_ext::intersectLocalPlanes (const LocalPlane& plane1, const LocalPlane& plane
   const double beta = (-r2 + c * r1) / det;
   point = m + alpha * n1 + beta * n2;
   direction = a / std::sqrt (det);
-  return point.allFinite ();
+  return point.allFinite();
 }
 
 PCL_EXT_INSTANTIATE (fitSegmentPlane, PCL_EXT_XYZ_POINT_TYPES)

@@ -1,5 +1,6 @@
 /*
- * pcl_ext: the graph of profile edges and its segments (Sithole & Mapurisa, section 2.3 and 3).
+ * pcl_ext: the graph of profile edges and its segments (Sithole & Mapurisa, section 2.3
+ * and 3).
  */
 #include <pcl_ext/segmentation/profile_graph.h>
 
@@ -9,46 +10,45 @@
 #include <limits>
 #include <utility>
 
-namespace pcl_ext
-{
-namespace profiles
-{
-namespace
-{
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max ();
+namespace pcl_ext {
+namespace profiles {
+namespace {
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 /** Both directions of every edge, as compressed rows. */
 void
-buildAdjacency (std::size_t n, const std::vector<std::vector<GraphEdge>>& stack_edges,
-                std::vector<std::uint32_t>& offsets, std::vector<std::uint32_t>& neighbours)
+buildAdjacency (std::size_t n,
+                const std::vector<std::vector<GraphEdge>>& stack_edges,
+                std::vector<std::uint32_t>& offsets,
+                std::vector<std::uint32_t>& neighbours)
 {
   offsets.assign (n + 1, 0);
   for (const auto& edges : stack_edges)
-    for (const GraphEdge& e : edges)
-    {
+    for (const GraphEdge& e : edges) {
       ++offsets[e.source + 1];
       ++offsets[e.target + 1];
     }
   for (std::size_t i = 0; i < n; ++i)
     offsets[i + 1] += offsets[i];
   neighbours.resize (offsets[n]);
-  std::vector<std::uint32_t> next (offsets.begin (), offsets.end () - 1);
+  std::vector<std::uint32_t> next (offsets.begin(), offsets.end() - 1);
   for (const auto& edges : stack_edges)
-    for (const GraphEdge& e : edges)
-    {
+    for (const GraphEdge& e : edges) {
       neighbours[next[e.source]++] = e.target;
       neighbours[next[e.target]++] = e.source;
     }
 }
-}  // namespace
+} // namespace
 
 std::size_t
-labelSegments (std::size_t n, const std::vector<std::vector<GraphEdge>>& stack_edges,
-               const std::vector<std::uint8_t>& breakpoints, std::vector<std::uint32_t>& labels)
+labelSegments (std::size_t n,
+               const std::vector<std::vector<GraphEdge>>& stack_edges,
+               const std::vector<std::uint8_t>& breakpoints,
+               std::vector<std::uint32_t>& labels)
 {
-  const bool has_breaks = breakpoints.size () == n &&
-                          std::find (breakpoints.begin (), breakpoints.end (), 1) !=
-                              breakpoints.end ();
+  const bool has_breaks =
+      breakpoints.size() == n &&
+      std::find (breakpoints.begin(), breakpoints.end(), 1) != breakpoints.end();
   const auto is_break = [&] (std::uint32_t i) { return has_breaks && breakpoints[i]; };
   UnionFind sets (n);
   for (const auto& edges : stack_edges)
@@ -61,16 +61,15 @@ labelSegments (std::size_t n, const std::vector<std::vector<GraphEdge>>& stack_e
     if (!is_break (i))
       root[i] = sets.find (i);
 
-  if (has_breaks)
-  {
+  if (has_breaks) {
     std::vector<std::uint32_t> offsets, neighbours;
     buildAdjacency (n, stack_edges, offsets, neighbours);
-    // A component whose every point touches a breakpoint lies inside the band along a crease
-    // (the crease points themselves, whose fits were not judged): it has no interior, so it
-    // is not a segment of its own but rejoins a neighbour like the breakpoints do.
+    // A component whose every point touches a breakpoint lies inside the band along a
+    // crease (the crease points themselves, whose fits were not judged): it has no
+    // interior, so it is not a segment of its own but rejoins a neighbour like the
+    // breakpoints do.
     std::vector<std::uint8_t> interior (n, 0);
-    for (std::uint32_t i = 0; i < n; ++i)
-    {
+    for (std::uint32_t i = 0; i < n; ++i) {
       if (root[i] == kNone)
         continue;
       bool touches = false;
@@ -81,38 +80,32 @@ labelSegments (std::size_t n, const std::vector<std::vector<GraphEdge>>& stack_e
     }
     std::vector<std::uint32_t> open;
     for (std::uint32_t i = 0; i < n; ++i)
-      if (root[i] == kNone || !interior[root[i]])
-      {
+      if (root[i] == kNone || !interior[root[i]]) {
         root[i] = kNone;
         open.push_back (i);
       }
-    // Synchronous waves: a wave only reads labels of earlier waves, so the result does not
-    // depend on the order points are visited in.
+    // Synchronous waves: a wave only reads labels of earlier waves, so the result does
+    // not depend on the order points are visited in.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> tally, pending;
-    while (!open.empty ())
-    {
-      pending.clear ();
+    while (!open.empty()) {
+      pending.clear();
       std::vector<std::uint32_t> still_open;
-      for (const std::uint32_t i : open)
-      {
-        tally.clear ();
+      for (const std::uint32_t i : open) {
+        tally.clear();
         for (std::uint32_t k = offsets[i]; k < offsets[i + 1]; ++k)
           if (root[neighbours[k]] != kNone)
             tally.emplace_back (root[neighbours[k]], 0);
-        if (tally.empty ())
-        {
+        if (tally.empty()) {
           still_open.push_back (i);
           continue;
         }
-        std::sort (tally.begin (), tally.end ());
+        std::sort (tally.begin(), tally.end());
         std::uint32_t best = kNone, best_count = 0;
-        for (std::size_t a = 0; a < tally.size ();)
-        {
+        for (std::size_t a = 0; a < tally.size();) {
           std::size_t b = a;
-          while (b < tally.size () && tally[b].first == tally[a].first)
+          while (b < tally.size() && tally[b].first == tally[a].first)
             ++b;
-          if (b - a > best_count)
-          {
+          if (b - a > best_count) {
             best_count = static_cast<std::uint32_t> (b - a);
             best = tally[a].first;
           }
@@ -120,7 +113,7 @@ labelSegments (std::size_t n, const std::vector<std::vector<GraphEdge>>& stack_e
         }
         pending.emplace_back (i, best);
       }
-      if (pending.empty ())
+      if (pending.empty())
         break;
       for (const auto& p : pending)
         root[p.first] = p.second;
@@ -138,8 +131,7 @@ labelSegments (std::size_t n, const std::vector<std::vector<GraphEdge>>& stack_e
   labels.assign (n, 0);
   std::vector<std::uint32_t> number (n, kNone);
   std::uint32_t count = 0;
-  for (std::uint32_t i = 0; i < n; ++i)
-  {
+  for (std::uint32_t i = 0; i < n; ++i) {
     std::uint32_t& id = number[root[i]];
     if (id == kNone)
       id = count++;
@@ -147,5 +139,5 @@ labelSegments (std::size_t n, const std::vector<std::vector<GraphEdge>>& stack_e
   }
   return count;
 }
-}  // namespace profiles
-}  // namespace pcl_ext
+} // namespace profiles
+} // namespace pcl_ext

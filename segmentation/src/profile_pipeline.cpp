@@ -1,5 +1,6 @@
 /*
- * pcl_ext: the profile-intersection segmentation on plain coordinates (Sithole & Mapurisa).
+ * pcl_ext: the profile-intersection segmentation on plain coordinates (Sithole &
+ * Mapurisa).
  */
 #include <pcl_ext/segmentation/profile_pipeline.h>
 #include <pcl_ext/segmentation/profile_segmenters.h>
@@ -8,17 +9,14 @@
 #include <cmath>
 #include <utility>
 
-namespace pcl_ext
-{
-namespace profiles
-{
-namespace
-{
-/** The local gap is the median over a point and this many nearest: four a side of a chain. */
+namespace pcl_ext {
+namespace profiles {
+namespace {
+/** The local gap is the median over a point and this many nearest: four a side of a
+ * chain. */
 constexpr unsigned int kLocalGapNeighbours = 8;
 
-struct Task
-{
+struct Task {
   std::uint32_t stack;
   std::uint32_t profile;
 };
@@ -26,15 +24,16 @@ struct Task
 bool
 validParameters (const PipelineParameters& p)
 {
-  if (p.normals.empty () || !(p.width > 0.0) || !std::isfinite (p.width) ||
+  if (p.normals.empty() || !(p.width > 0.0) || !std::isfinite (p.width) ||
       !(p.threshold >= 0.0) || !std::isfinite (p.threshold) || p.threads == 0)
     return false;
   for (const auto& n : p.normals)
-    if (!n.allFinite () || n.norm () < 1e-6f)
+    if (!n.allFinite() || n.norm() < 1e-6f)
       return false;
   if (p.method == ProfileMethod::Proximity && p.proximity_neighbours == 0)
     return false;
-  if (p.local_threshold && (!(p.max_threshold >= p.threshold) || !std::isfinite (p.max_threshold)))
+  if (p.local_threshold &&
+      (!(p.max_threshold >= p.threshold) || !std::isfinite (p.max_threshold)))
     return false;
   if (p.method == ProfileMethod::CurveFitting &&
       (!(p.curve_window > 0.0) || !(p.tangent_radius > 0.0) || !(p.max_turn > 0.0) ||
@@ -46,28 +45,30 @@ validParameters (const PipelineParameters& p)
 
 /** The median of the residuals of the evaluated points: the stack's noise level. */
 double
-medianResidual (const std::vector<std::uint8_t>& evaluated, const std::vector<float>& rms)
+medianResidual (const std::vector<std::uint8_t>& evaluated,
+                const std::vector<float>& rms)
 {
   std::vector<float> values;
-  for (std::size_t i = 0; i < rms.size (); ++i)
+  for (std::size_t i = 0; i < rms.size(); ++i)
     if (evaluated[i])
       values.push_back (rms[i]);
-  if (values.empty ())
+  if (values.empty())
     return 0.0;
-  std::nth_element (values.begin (), values.begin () + values.size () / 2, values.end ());
-  return values[values.size () / 2];
+  std::nth_element (values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
 }
-}  // namespace
+} // namespace
 
 bool
 runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
-                        const PipelineParameters& parameters, PipelineResult& result)
+                        const PipelineParameters& parameters,
+                        PipelineResult& result)
 {
-  result = PipelineResult ();
+  result = PipelineResult();
   if (!validParameters (parameters))
     return false;
-  const std::size_t n = xyz.size ();
-  const std::size_t num_stacks = parameters.normals.size ();
+  const std::size_t n = xyz.size();
+  const std::size_t num_stacks = parameters.normals.size();
   result.stacks.resize (num_stacks);
   result.edges.resize (num_stacks);
   if (n == 0)
@@ -80,13 +81,12 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
 
   std::vector<Task> tasks;
   for (std::uint32_t s = 0; s < num_stacks; ++s)
-    for (std::uint32_t p = 0; p < result.stacks[s].numProfiles (); ++p)
+    for (std::uint32_t p = 0; p < result.stacks[s].numProfiles(); ++p)
       tasks.push_back ({s, p});
 
   const bool curves = parameters.method == ProfileMethod::CurveFitting;
   std::vector<CurveScores> stack_scores (curves ? num_stacks : 0);
-  for (auto& scores : stack_scores)
-  {
+  for (auto& scores : stack_scores) {
     scores.evaluated.assign (n, 0);
     scores.turn.assign (n, 0.f);
     scores.rms.assign (n, 0.f);
@@ -105,24 +105,23 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     const std::uint32_t end = stack.offsets[task.profile + 1];
     points.uv.resize (end - begin);
     points.t.resize (end - begin);
-    for (std::uint32_t i = begin; i < end; ++i)
-    {
+    for (std::uint32_t i = begin; i < end; ++i) {
       const Eigen::Vector3f& p = xyz[stack.order[i]];
       points.uv[i - begin] = Eigen::Vector2f (stack.u.dot (p), stack.v.dot (p));
       points.t[i - begin] = static_cast<float> (stack.normal.dot (p) - stack.origin);
     }
-    return stack.order.data () + begin;
+    return stack.order.data() + begin;
   };
 
-  // Local thresholds: the local gap of every point in every stack first, then each stack's
-  // mean gap, the in-profile counterpart of the average spacing the threshold was set from.
-  const bool adaptive =
-      parameters.local_threshold && parameters.max_threshold > parameters.threshold &&
-      parameters.threshold > 0.0;
+  // Local thresholds: the local gap of every point in every stack first, then each
+  // stack's mean gap, the in-profile counterpart of the average spacing the threshold
+  // was set from.
+  const bool adaptive = parameters.local_threshold &&
+                        parameters.max_threshold > parameters.threshold &&
+                        parameters.threshold > 0.0;
   std::vector<std::vector<float>> stack_gaps (adaptive ? num_stacks : 0);
   std::vector<double> mean_gap (num_stacks, 0.0);
-  if (adaptive)
-  {
+  if (adaptive) {
     for (auto& gaps : stack_gaps)
       gaps.assign (n, 0.f);
 #pragma omp parallel num_threads(threads)
@@ -130,24 +129,22 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
       ProfilePoints points;
       std::vector<float> gaps;
 #pragma omp for schedule(dynamic, 4)
-      for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (tasks.size ()); ++k)
-      {
+      for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (tasks.size()); ++k) {
         const std::uint32_t* members = load_profile (tasks[k], points);
         localGaps (points, parameters.max_threshold, kLocalGapNeighbours, gaps);
-        std::vector<float>& out = stack_gaps[tasks[k].stack];  // profiles are disjoint
-        for (std::size_t i = 0; i < gaps.size (); ++i)
+        std::vector<float>& out = stack_gaps[tasks[k].stack]; // profiles are disjoint
+        for (std::size_t i = 0; i < gaps.size(); ++i)
           out[members[i]] = gaps[i];
       }
     }
-    // Points with no neighbour within reach (gap at the maximum) are left out of the mean.
+    // Points with no neighbour within reach (gap at the maximum) are left out of the
+    // mean.
     const float cap = static_cast<float> (parameters.max_threshold);
-    for (std::size_t s = 0; s < num_stacks; ++s)
-    {
+    for (std::size_t s = 0; s < num_stacks; ++s) {
       double sum = 0.0;
       std::size_t count = 0;
       for (const float g : stack_gaps[s])
-        if (g < cap)
-        {
+        if (g < cap) {
           sum += g;
           ++count;
         }
@@ -155,9 +152,9 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     }
   }
 
-  // One result slot per profile, concatenated in profile order afterwards: deterministic for
-  // any number of threads.
-  std::vector<std::vector<GraphEdge>> task_edges (tasks.size ());
+  // One result slot per profile, concatenated in profile order afterwards:
+  // deterministic for any number of threads.
+  std::vector<std::vector<GraphEdge>> task_edges (tasks.size());
 #pragma omp parallel num_threads(threads)
   {
     ProfilePoints points;
@@ -166,29 +163,31 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     std::vector<float> thresholds, window_scale;
     CurveFitParameters point_fit = fit;
 #pragma omp for schedule(dynamic, 4)
-    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (tasks.size ()); ++k)
-    {
+    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (tasks.size()); ++k) {
       const std::uint32_t* members = load_profile (tasks[k], points);
-      const std::size_t m = points.uv.size ();
-      // The threshold scaled by how much sparser than the stack's mean the point's stretch
-      // of profile is; never below the global threshold, never above the maximum.
+      const std::size_t m = points.uv.size();
+      // The threshold scaled by how much sparser than the stack's mean the point's
+      // stretch of profile is; never below the global threshold, never above the
+      // maximum.
       const bool local_here = adaptive && mean_gap[tasks[k].stack] > 0.0;
-      if (local_here)
-      {
+      if (local_here) {
         const std::vector<float>& gaps = stack_gaps[tasks[k].stack];
         const double ratio = parameters.threshold / mean_gap[tasks[k].stack];
         thresholds.resize (m);
         for (std::size_t i = 0; i < m; ++i)
-          thresholds[i] = static_cast<float> (
-              std::clamp (ratio * gaps[members[i]], parameters.threshold,
-                          parameters.max_threshold));
+          thresholds[i] = static_cast<float> (std::clamp (ratio * gaps[members[i]],
+                                                          parameters.threshold,
+                                                          parameters.max_threshold));
       }
-      const double link_threshold = local_here ? parameters.max_threshold : parameters.threshold;
+      const double link_threshold =
+          local_here ? parameters.max_threshold : parameters.threshold;
       const std::vector<float>* link_thresholds = local_here ? &thresholds : nullptr;
-      switch (parameters.method)
-      {
+      switch (parameters.method) {
       case ProfileMethod::Proximity:
-        proximityEdges (points, link_threshold, parameters.proximity_neighbours, local,
+        proximityEdges (points,
+                        link_threshold,
+                        parameters.proximity_neighbours,
+                        local,
                         link_thresholds);
         break;
       case ProfileMethod::MinimumSpanningTree:
@@ -196,20 +195,18 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
         spanningTreeEdges (points, link_threshold, local, link_thresholds);
         break;
       }
-      if (curves)
-      {
+      if (curves) {
         point_fit.window_scale = nullptr;
-        if (local_here)
-        {
+        if (local_here) {
           window_scale.resize (m);
           for (std::size_t i = 0; i < m; ++i)
             window_scale[i] = static_cast<float> (thresholds[i] / parameters.threshold);
           point_fit.window_scale = &window_scale;
         }
         scoreCurveTurns (points, local, point_fit, scores);
-        CurveScores& out = stack_scores[tasks[k].stack];  // profiles of a stack are disjoint
-        for (std::size_t i = 0; i < m; ++i)
-        {
+        CurveScores& out =
+            stack_scores[tasks[k].stack]; // profiles of a stack are disjoint
+        for (std::size_t i = 0; i < m; ++i) {
           out.evaluated[members[i]] = scores.evaluated[i];
           out.turn[members[i]] = scores.turn[i];
           out.turn_sigma[members[i]] = scores.turn_sigma[i];
@@ -217,43 +214,41 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
         }
       }
       auto& edges = task_edges[k];
-      edges.reserve (local.size ());
+      edges.reserve (local.size());
       for (const LocalEdge& e : local)
         edges.push_back ({members[e.a], members[e.b]});
     }
   }
-  for (std::size_t k = 0; k < tasks.size (); ++k)
-  {
+  for (std::size_t k = 0; k < tasks.size(); ++k) {
     auto& edges = result.edges[tasks[k].stack];
-    edges.insert (edges.end (), task_edges[k].begin (), task_edges[k].end ());
+    edges.insert (edges.end(), task_edges[k].begin(), task_edges[k].end());
   }
-  task_edges.clear ();
+  task_edges.clear();
 
-  if (curves)
-  {
-    // A point ends a curve in some stack when the normal turns sharply there, or when its
-    // stretch of profile is not one curve (a junction): residual far above the stack's noise.
-    // A sharp turn must also be more than turn_significance standard errors: with the noise
-    // of a scan and about ten points a side, a 30 degree turn is often the noise alone, and
-    // such false ends, dense enough, cut a surface apart. The stack's median residual is the
-    // noise: a fit's own residual is inflated exactly where a side straddles a crease.
+  if (curves) {
+    // A point ends a curve in some stack when the normal turns sharply there, or when
+    // its stretch of profile is not one curve (a junction): residual far above the
+    // stack's noise. A sharp turn must also be more than turn_significance standard
+    // errors: with the noise of a scan and about ten points a side, a 30 degree turn is
+    // often the noise alone, and such false ends, dense enough, cut a surface apart.
+    // The stack's median residual is the noise: a fit's own residual is inflated
+    // exactly where a side straddles a crease.
     result.breakpoints.assign (n, 0);
-    for (const CurveScores& scores : stack_scores)
-    {
+    for (const CurveScores& scores : stack_scores) {
       const double noise = medianResidual (scores.evaluated, scores.rms);
-      const double tolerance = std::max (parameters.residual_factor * noise,
-                                         parameters.min_residual);
+      const double tolerance =
+          std::max (parameters.residual_factor * noise, parameters.min_residual);
       const double z = parameters.turn_significance * noise;
       for (std::size_t i = 0; i < n; ++i)
-        if (scores.evaluated[i] &&
-            ((scores.turn[i] > parameters.max_turn &&
-              scores.turn[i] > z * scores.turn_sigma[i]) ||
-             scores.rms[i] > tolerance))
+        if (scores.evaluated[i] && ((scores.turn[i] > parameters.max_turn &&
+                                     scores.turn[i] > z * scores.turn_sigma[i]) ||
+                                    scores.rms[i] > tolerance))
           result.breakpoints[i] = 1;
     }
   }
-  result.num_segments = labelSegments (n, result.edges, result.breakpoints, result.labels);
+  result.num_segments =
+      labelSegments (n, result.edges, result.breakpoints, result.labels);
   return true;
 }
-}  // namespace profiles
-}  // namespace pcl_ext
+} // namespace profiles
+} // namespace pcl_ext

@@ -10,70 +10,74 @@
 #include <cmath>
 #include <utility>
 
-namespace pcl_ext
-{
-namespace profiles
-{
+namespace pcl_ext {
+namespace profiles {
 void
-proximityEdges (const ProfilePoints& profile, double threshold, unsigned int neighbours,
-                std::vector<LocalEdge>& edges, const std::vector<float>* thresholds)
+proximityEdges (const ProfilePoints& profile,
+                double threshold,
+                unsigned int neighbours,
+                std::vector<LocalEdge>& edges,
+                const std::vector<float>* thresholds)
 {
-  edges.clear ();
-  const std::size_t n = profile.uv.size ();
+  edges.clear();
+  const std::size_t n = profile.uv.size();
   if (n < 2 || !(threshold >= 0.0) || neighbours == 0)
     return;
   const std::vector<std::uint32_t> rep = detail::coincidentRepresentatives (profile.uv);
-  // Small cells searched ring by ring: in dense parts of a profile the k nearest are found in
-  // the first rings, and the threshold only bounds the search in sparse parts.
+  // Small cells searched ring by ring: in dense parts of a profile the k nearest are
+  // found in the first rings, and the threshold only bounds the search in sparse parts.
   const float radius = static_cast<float> (threshold);
   detail::ProfileGrid grid;
-  grid.build (profile.uv, (thresholds && !thresholds->empty ()
-                               ? std::min (*std::min_element (thresholds->begin (),
-                                                              thresholds->end ()), radius)
-                               : radius) / 3.f);
+  grid.build (
+      profile.uv,
+      (thresholds && !thresholds->empty()
+           ? std::min (*std::min_element (thresholds->begin(), thresholds->end()),
+                       radius)
+           : radius) /
+          3.f);
   const auto limit = [&] (std::uint32_t i) {
     return thresholds ? std::min ((*thresholds)[i], radius) : radius;
   };
   const std::int64_t max_ring =
-      static_cast<std::int64_t> (std::ceil (radius / grid.cellSize ())) + 1;
+      static_cast<std::int64_t> (std::ceil (radius / grid.cellSize())) + 1;
   const std::size_t k = neighbours;
   // The k nearest of each point (ties by index), kept sorted by insertion.
   std::vector<std::uint32_t> lists (n * k);
   std::vector<std::uint32_t> sizes (n, 0);
   std::vector<std::pair<float, std::uint32_t>> best;
-  for (std::uint32_t i = 0; i < n; ++i)
-  {
+  for (std::uint32_t i = 0; i < n; ++i) {
     if (rep[i] != i)
       continue;
     const float reach_i = limit (i);
     const float r2 = reach_i * reach_i;
-    // With local thresholds a link must be within both ends' thresholds: a sparse point does
-    // not reach into a dense surface farther than that surface's own links do.
-    grid.nearestInRings (profile.uv[i], k, reach_i, max_ring,
-                         [&] (std::uint32_t j, float d2) {
-                           return j != i && rep[j] == j && d2 <= r2 &&
-                                  !(thresholds && d2 > limit (j) * limit (j));
-                         },
-                         best);
-    sizes[i] = static_cast<std::uint32_t> (best.size ());
-    for (std::size_t m = 0; m < best.size (); ++m)
+    // With local thresholds a link must be within both ends' thresholds: a sparse point
+    // does not reach into a dense surface farther than that surface's own links do.
+    grid.nearestInRings (
+        profile.uv[i],
+        k,
+        reach_i,
+        max_ring,
+        [&] (std::uint32_t j, float d2) {
+          return j != i && rep[j] == j && d2 <= r2 &&
+                 !(thresholds && d2 > limit (j) * limit (j));
+        },
+        best);
+    sizes[i] = static_cast<std::uint32_t> (best.size());
+    for (std::size_t m = 0; m < best.size(); ++m)
       lists[i * k + m] = best[m].second;
   }
-  // Each link once: i-j is emitted by the smaller index, or by the larger when the smaller
-  // did not choose it. Coincident points hang on their representative.
+  // Each link once: i-j is emitted by the smaller index, or by the larger when the
+  // smaller did not choose it. Coincident points hang on their representative.
   const auto chose = [&] (std::uint32_t a, std::uint32_t b) {
-    return std::find (lists.begin () + a * k, lists.begin () + a * k + sizes[a], b) !=
-           lists.begin () + a * k + sizes[a];
+    return std::find (lists.begin() + a * k, lists.begin() + a * k + sizes[a], b) !=
+           lists.begin() + a * k + sizes[a];
   };
-  for (std::uint32_t i = 0; i < n; ++i)
-  {
-    if (rep[i] != i)
-    {
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (rep[i] != i) {
       edges.push_back ({rep[i], i});
       continue;
     }
-    for (std::uint32_t m = 0; m < sizes[i]; ++m)
-    {
+    for (std::uint32_t m = 0; m < sizes[i]; ++m) {
       const std::uint32_t j = lists[i * k + m];
       if (j > i)
         edges.push_back ({i, j});
@@ -82,5 +86,5 @@ proximityEdges (const ProfilePoints& profile, double threshold, unsigned int nei
     }
   }
 }
-}  // namespace profiles
-}  // namespace pcl_ext
+} // namespace profiles
+} // namespace pcl_ext

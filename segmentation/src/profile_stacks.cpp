@@ -11,30 +11,28 @@
 #include <numeric>
 #include <utility>
 
-namespace pcl_ext
-{
-namespace profiles
-{
-namespace
-{
+namespace pcl_ext {
+namespace profiles {
+namespace {
 Eigen::Vector3f
 fromAngles (double azimuth, double elevation)
 {
-  return Eigen::Vector3f (static_cast<float> (std::cos (elevation) * std::cos (azimuth)),
-                          static_cast<float> (std::cos (elevation) * std::sin (azimuth)),
-                          static_cast<float> (std::sin (elevation)));
+  return Eigen::Vector3f (
+      static_cast<float> (std::cos (elevation) * std::cos (azimuth)),
+      static_cast<float> (std::cos (elevation) * std::sin (azimuth)),
+      static_cast<float> (std::sin (elevation)));
 }
 
 std::vector<Eigen::Vector3f>
 hemisphereNormals (unsigned int count)
 {
-  // Equal-elevation sets (1 to 4 stacks): the elevation that makes the normals of 3 stacks
-  // orthogonal and those of 4 stacks the cube diagonals; 2 stacks are 90 degrees apart.
+  // Equal-elevation sets (1 to 4 stacks): the elevation that makes the normals of 3
+  // stacks orthogonal and those of 4 stacks the cube diagonals; 2 stacks are 90 degrees
+  // apart.
   const double deg = M_PI / 180.0;
   const double diagonal = std::asin (1.0 / std::sqrt (3.0));
   std::vector<Eigen::Vector3f> normals;
-  switch (count)
-  {
+  switch (count) {
   case 1:
     normals.push_back (fromAngles (45 * deg, diagonal));
     break;
@@ -50,24 +48,22 @@ hemisphereNormals (unsigned int count)
       normals.push_back (fromAngles ((45 + 90 * k) * deg, diagonal));
     break;
   case 5:
-  case 6:
-  {
-    // The icosahedron's six axes (63.4 degrees apart), turned off the coordinate planes.
+  case 6: {
+    // The icosahedron's six axes (63.4 degrees apart), turned off the coordinate
+    // planes.
     const float g = static_cast<float> ((1.0 + std::sqrt (5.0)) / 2.0);
-    const Eigen::Vector3f axes[6] = {{0, 1, g}, {0, -1, g}, {1, g, 0},
-                                     {-1, g, 0}, {g, 0, 1}, {-g, 0, 1}};
+    const Eigen::Vector3f axes[6] = {
+        {0, 1, g}, {0, -1, g}, {1, g, 0}, {-1, g, 0}, {g, 0, 1}, {-g, 0, 1}};
     const Eigen::Matrix3f turn =
-        Eigen::AngleAxisf (0.3f, Eigen::Vector3f (1.f, 2.f, 3.f).normalized ())
-            .toRotationMatrix ();
-    for (unsigned int k = 0; k < count; ++k)
-    {
-      Eigen::Vector3f n = (turn * axes[k]).normalized ();
-      normals.push_back (n.z () < 0 ? Eigen::Vector3f (-n) : n);
+        Eigen::AngleAxisf (0.3f, Eigen::Vector3f (1.f, 2.f, 3.f).normalized())
+            .toRotationMatrix();
+    for (unsigned int k = 0; k < count; ++k) {
+      Eigen::Vector3f n = (turn * axes[k]).normalized();
+      normals.push_back (n.z() < 0 ? Eigen::Vector3f (-n) : n);
     }
     break;
   }
-  default:
-  {
+  default: {
     // Fibonacci spiral: equal-area bands in z, golden-angle steps in azimuth.
     const double golden = M_PI * (3.0 - std::sqrt (5.0));
     for (unsigned int k = 0; k < count; ++k)
@@ -76,7 +72,7 @@ hemisphereNormals (unsigned int count)
   }
   return normals;
 }
-}  // namespace
+} // namespace
 
 std::vector<Eigen::Vector3f>
 makeStackNormals (unsigned int count, StackDistribution distribution)
@@ -94,12 +90,11 @@ makeStackNormals (unsigned int count, StackDistribution distribution)
 double
 estimatePointSpacing (const std::vector<Eigen::Vector3f>& xyz, std::size_t samples)
 {
-  const std::size_t n = xyz.size ();
+  const std::size_t n = xyz.size();
   if (n < 2 || samples == 0)
     return 0.0;
   Eigen::Vector3f lo = xyz[0], hi = xyz[0];
-  for (const auto& p : xyz)
-  {
+  for (const auto& p : xyz) {
     lo = lo.cwiseMin (p);
     hi = hi.cwiseMax (p);
   }
@@ -108,53 +103,49 @@ estimatePointSpacing (const std::vector<Eigen::Vector3f>& xyz, std::size_t sampl
   std::vector<std::pair<float, std::uint32_t>> sorted (n);
   for (std::size_t i = 0; i < n; ++i)
     sorted[i] = {xyz[i][axis], static_cast<std::uint32_t> (i)};
-  std::sort (sorted.begin (), sorted.end ());
+  std::sort (sorted.begin(), sorted.end());
 
-  // The sweep stops once the coordinate gap alone exceeds the best distance; the step cap only
-  // matters for pathological clouds (everything at one coordinate), where it gives an upper
-  // bound instead of a quadratic run time.
+  // The sweep stops once the coordinate gap alone exceeds the best distance; the step
+  // cap only matters for pathological clouds (everything at one coordinate), where it
+  // gives an upper bound instead of a quadratic run time.
   const std::size_t max_steps = 8192;
   constexpr std::size_t k = 6;
   const std::size_t m = std::min (samples, n);
   double sum = 0.0;
   std::size_t found = 0;
-  std::vector<float> nearest;  // the k smallest squared distances, ascending
-  for (std::size_t s = 0; s < m; ++s)
-  {
+  std::vector<float> nearest; // the k smallest squared distances, ascending
+  for (std::size_t s = 0; s < m; ++s) {
     const std::size_t r = s * n / m;
     const Eigen::Vector3f& p = xyz[sorted[r].second];
     const float c = sorted[r].first;
-    nearest.clear ();
+    nearest.clear();
     const auto bound = [&] {
-      return nearest.size () < k ? std::numeric_limits<float>::infinity () : nearest.back ();
+      return nearest.size() < k ? std::numeric_limits<float>::infinity()
+                                : nearest.back();
     };
     const auto visit = [&] (std::size_t q) {
-      const float d2 = (xyz[sorted[q].second] - p).squaredNorm ();
-      if (d2 > 0.f && d2 < bound ())
-      {
-        nearest.insert (std::upper_bound (nearest.begin (), nearest.end (), d2), d2);
-        if (nearest.size () > k)
-          nearest.pop_back ();
+      const float d2 = (xyz[sorted[q].second] - p).squaredNorm();
+      if (d2 > 0.f && d2 < bound()) {
+        nearest.insert (std::upper_bound (nearest.begin(), nearest.end(), d2), d2);
+        if (nearest.size() > k)
+          nearest.pop_back();
       }
     };
-    for (std::size_t q = r + 1, steps = 0; q < n && steps < max_steps; ++q, ++steps)
-    {
+    for (std::size_t q = r + 1, steps = 0; q < n && steps < max_steps; ++q, ++steps) {
       const float dc = sorted[q].first - c;
-      if (dc * dc >= bound ())
+      if (dc * dc >= bound())
         break;
       visit (q);
     }
-    for (std::size_t q = r, steps = 0; q-- > 0 && steps < max_steps; ++steps)
-    {
+    for (std::size_t q = r, steps = 0; q-- > 0 && steps < max_steps; ++steps) {
       const float dc = c - sorted[q].first;
-      if (dc * dc >= bound ())
+      if (dc * dc >= bound())
         break;
       visit (q);
     }
-    if (nearest.size () == k)
-    {
+    if (nearest.size() == k) {
       // k points within r on a surface: pi r^2 / k of surface per point.
-      sum += std::sqrt (static_cast<double> (nearest.back ()) * M_PI / k);
+      sum += std::sqrt (static_cast<double> (nearest.back()) * M_PI / k);
       ++found;
     }
   }
@@ -162,80 +153,80 @@ estimatePointSpacing (const std::vector<Eigen::Vector3f>& xyz, std::size_t sampl
 }
 
 bool
-buildStack (const std::vector<Eigen::Vector3f>& xyz, const Eigen::Vector3f& normal,
-            double width, Stack& stack)
+buildStack (const std::vector<Eigen::Vector3f>& xyz,
+            const Eigen::Vector3f& normal,
+            double width,
+            Stack& stack)
 {
-  stack = Stack ();
-  const std::size_t n = xyz.size ();
-  if (n == 0 || !(width > 0.0) || !std::isfinite (width) || !normal.allFinite () ||
-      normal.norm () < 1e-6f)
+  stack = Stack();
+  const std::size_t n = xyz.size();
+  if (n == 0 || !(width > 0.0) || !std::isfinite (width) || !normal.allFinite() ||
+      normal.norm() < 1e-6f)
     return false;
-  stack.normal = normal.normalized ();
-  // Any orthonormal in-profile basis; start from the coordinate axis least along the normal.
+  stack.normal = normal.normalized();
+  // Any orthonormal in-profile basis; start from the coordinate axis least along the
+  // normal.
   int least = 0;
-  stack.normal.cwiseAbs ().minCoeff (&least);
-  stack.u = stack.normal.cross (Eigen::Vector3f::Unit (least)).normalized ();
+  stack.normal.cwiseAbs().minCoeff (&least);
+  stack.u = stack.normal.cross (Eigen::Vector3f::Unit (least)).normalized();
   stack.v = stack.normal.cross (stack.u);
   stack.width = width;
 
-  const Eigen::Vector3d nd = stack.normal.cast<double> ();
+  const Eigen::Vector3d nd = stack.normal.cast<double>();
   std::vector<double> t (n);
-  double lo = std::numeric_limits<double>::infinity ();
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    t[i] = nd.dot (xyz[i].cast<double> ());
+  double lo = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    t[i] = nd.dot (xyz[i].cast<double>());
     lo = std::min (lo, t[i]);
   }
   stack.origin = lo;
   std::vector<std::uint64_t> id (n);
   std::uint64_t max_id = 0;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    // Clamped: a width tiny against the extent must not overflow (those profiles are empty).
+  for (std::size_t i = 0; i < n; ++i) {
+    // Clamped: a width tiny against the extent must not overflow (those profiles are
+    // empty).
     const double f = std::floor ((t[i] - lo) / width);
-    id[i] = f < 1e18 ? static_cast<std::uint64_t> (f) : static_cast<std::uint64_t> (1e18);
+    id[i] =
+        f < 1e18 ? static_cast<std::uint64_t> (f) : static_cast<std::uint64_t> (1e18);
     max_id = std::max (max_id, id[i]);
   }
 
   stack.order.resize (n);
   stack.profile_of_point.resize (n);
-  if (max_id <= 4 * n + 16)
-  {
+  if (max_id <= 4 * n + 16) {
     // Counting sort by profile number; positions stay ascending within each profile.
     std::vector<std::uint32_t> count (max_id + 2, 0);
     for (std::size_t i = 0; i < n; ++i)
       ++count[id[i] + 1];
-    std::partial_sum (count.begin (), count.end (), count.begin ());
-    std::vector<std::uint32_t> next (count.begin (), count.end () - 1);
+    std::partial_sum (count.begin(), count.end(), count.begin());
+    std::vector<std::uint32_t> next (count.begin(), count.end() - 1);
     for (std::size_t i = 0; i < n; ++i)
       stack.order[next[id[i]]++] = static_cast<std::uint32_t> (i);
     stack.offsets.push_back (0);
     std::vector<std::uint32_t> compact (max_id + 1, 0);
-    for (std::uint64_t p = 0; p <= max_id; ++p)
-    {
-      compact[p] = static_cast<std::uint32_t> (stack.offsets.size () - 1);
+    for (std::uint64_t p = 0; p <= max_id; ++p) {
+      compact[p] = static_cast<std::uint32_t> (stack.offsets.size() - 1);
       if (count[p + 1] > count[p])
         stack.offsets.push_back (count[p + 1]);
     }
     for (std::size_t i = 0; i < n; ++i)
       stack.profile_of_point[i] = compact[id[i]];
   }
-  else
-  {
-    std::iota (stack.order.begin (), stack.order.end (), 0u);
-    std::stable_sort (stack.order.begin (), stack.order.end (),
+  else {
+    std::iota (stack.order.begin(), stack.order.end(), 0u);
+    std::stable_sort (stack.order.begin(),
+                      stack.order.end(),
                       [&] (std::uint32_t a, std::uint32_t b) { return id[a] < id[b]; });
     stack.offsets.push_back (0);
-    for (std::size_t k = 0; k < n; ++k)
-    {
+    for (std::size_t k = 0; k < n; ++k) {
       if (k > 0 && id[stack.order[k]] != id[stack.order[k - 1]])
         stack.offsets.push_back (static_cast<std::uint32_t> (k));
       stack.profile_of_point[stack.order[k]] =
-          static_cast<std::uint32_t> (stack.offsets.size () - 1);
+          static_cast<std::uint32_t> (stack.offsets.size() - 1);
     }
     stack.offsets.push_back (static_cast<std::uint32_t> (n));
   }
   return true;
 }
-}  // namespace profiles
-}  // namespace pcl_ext
+} // namespace profiles
+} // namespace pcl_ext

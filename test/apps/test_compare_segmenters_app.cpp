@@ -1,7 +1,7 @@
 /*
- * pcl_ext_compare_segmenters run as a command on a small generated scene: the table's numbers
- * are the metrics library's numbers for the labels the tool wrote; bad usage fails without
- * output.
+ * pcl_ext_compare_segmenters run as a command on a small generated scene: the table's
+ * numbers are the metrics library's numbers for the labels the tool wrote; bad usage
+ * fails without output.
  */
 #include "../app_test.h"
 
@@ -24,35 +24,33 @@
 
 namespace fs = std::filesystem;
 
-namespace
-{
+namespace {
 using Row = std::map<std::string, std::string>;
 
-/** A CSV file as rows keyed by the header's column names (the tool writes no quoted cells). */
+/** A CSV file as rows keyed by the header's column names (the tool writes no quoted
+ * cells). */
 std::vector<Row>
 readCsv (const std::string& path, std::vector<std::string>& header)
 {
   std::ifstream in (path);
   std::string line;
   std::vector<Row> rows;
-  header.clear ();
-  while (std::getline (in, line))
-  {
+  header.clear();
+  while (std::getline (in, line)) {
     std::vector<std::string> cells;
     std::stringstream s (line);
     std::string cell;
     while (std::getline (s, cell, ','))
       cells.push_back (cell);
-    if (!line.empty () && line.back () == ',')
-      cells.emplace_back ();
-    if (header.empty ())
-    {
+    if (!line.empty() && line.back() == ',')
+      cells.emplace_back();
+    if (header.empty()) {
       header = cells;
       continue;
     }
     Row row;
-    for (std::size_t i = 0; i < header.size (); ++i)
-      row[header[i]] = i < cells.size () ? cells[i] : std::string ("<missing>");
+    for (std::size_t i = 0; i < header.size(); ++i)
+      row[header[i]] = i < cells.size() ? cells[i] : std::string ("<missing>");
     rows.push_back (row);
   }
   return rows;
@@ -62,23 +60,23 @@ double
 number (const Row& row, const std::string& column)
 {
   const auto it = row.find (column);
-  if (it == row.end () || it->second.empty ())
+  if (it == row.end() || it->second.empty())
     return -1e300;
   return std::stod (it->second);
 }
 
-class CompareSegmentersApp : public pcl_ext::test::AppTest
-{
+class CompareSegmentersApp : public pcl_ext::test::AppTest {
 protected:
-  CompareSegmentersApp () : AppTest (COMPARE_SEGMENTERS_EXE) {}
+  CompareSegmentersApp() : AppTest (COMPARE_SEGMENTERS_EXE) {}
 
   void
   SetUp () override
   {
-    AppTest::SetUp ();
-    if (HasFatalFailure ())
+    AppTest::SetUp();
+    if (HasFatalFailure())
       return;
-    // Eight floating cubes (28 visible faces), small enough for every method in seconds.
+    // Eight floating cubes (28 visible faces), small enough for every method in
+    // seconds.
     pcl_ext::simulation::SceneParameters parameters;
     parameters.points = 12000;
     parameters.threads = 2;
@@ -87,12 +85,14 @@ protected:
     ASSERT_TRUE (pcl_ext::simulation::saveScene (path ("cubes.pcd"), scene));
   }
 };
-}  // namespace
+} // namespace
 
 TEST_F (CompareSegmentersApp, TableHoldsTheMetricsOfTheWrittenLabels)
 {
-  ASSERT_EQ (run (path ("cubes.pcd") + " -truth_field segment -threads 2 -csv " + path ("t.csv") +
-                  " -labels " + path ("labels.pcd")), 0) << output_;
+  ASSERT_EQ (run (path ("cubes.pcd") + " -truth_field segment -threads 2 -csv " +
+                  path ("t.csv") + " -labels " + path ("labels.pcd")),
+             0)
+      << output_;
   EXPECT_NE (output_.find ("mean IoU"), std::string::npos) << output_;
 
   std::vector<std::string> header;
@@ -101,12 +101,11 @@ TEST_F (CompareSegmentersApp, TableHoldsTheMetricsOfTheWrittenLabels)
   ASSERT_TRUE (pcl_ext::io::loadCloud (path ("labels.pcd"), labelled));
   std::vector<std::uint32_t> truth;
   ASSERT_TRUE (pcl_ext::io::getLabelField (labelled, "segment", truth));
-  ASSERT_GE (rows.size (), 9u);  // four or more pcl_ext methods and the five stock ones
+  ASSERT_GE (rows.size(), 9u); // four or more pcl_ext methods and the five stock ones
 
   std::set<std::string> libraries;
   std::set<std::vector<std::uint32_t>> distinct_labellings;
-  for (const auto& row : rows)
-  {
+  for (const auto& row : rows) {
     const std::string name = row.at ("method");
     SCOPED_TRACE (name);
     libraries.insert (row.at ("library"));
@@ -114,7 +113,7 @@ TEST_F (CompareSegmentersApp, TableHoldsTheMetricsOfTheWrittenLabels)
     // The labels the tool wrote for this method, scored by the metrics library.
     std::vector<std::uint32_t> predicted;
     ASSERT_TRUE (pcl_ext::io::getLabelField (labelled, name, predicted));
-    ASSERT_EQ (predicted.size (), truth.size ());
+    ASSERT_EQ (predicted.size(), truth.size());
     distinct_labellings.insert (predicted);
     pcl_ext::SegmentationMetrics m;
     ASSERT_TRUE (pcl_ext::evaluateSegmentation (predicted, truth, m));
@@ -123,36 +122,40 @@ TEST_F (CompareSegmentersApp, TableHoldsTheMetricsOfTheWrittenLabels)
     EXPECT_DOUBLE_EQ (number (row, "weighted_mean_best_iou"), m.weighted_mean_best_iou);
     EXPECT_EQ (number (row, "correct"), static_cast<double> (m.correct));
     EXPECT_EQ (number (row, "over_segmented"), static_cast<double> (m.over_segmented));
-    EXPECT_EQ (number (row, "under_segmented"), static_cast<double> (m.under_segmented));
+    EXPECT_EQ (number (row, "under_segmented"),
+               static_cast<double> (m.under_segmented));
     EXPECT_EQ (number (row, "missed"), static_cast<double> (m.missed));
     EXPECT_EQ (number (row, "noise"), static_cast<double> (m.noise));
-    EXPECT_EQ (number (row, "truth_segments"), static_cast<double> (m.num_truth_segments));
-    EXPECT_EQ (number (row, "evaluated_points"), static_cast<double> (m.evaluated_points));
+    EXPECT_EQ (number (row, "truth_segments"),
+               static_cast<double> (m.num_truth_segments));
+    EXPECT_EQ (number (row, "evaluated_points"),
+               static_cast<double> (m.evaluated_points));
     EXPECT_DOUBLE_EQ (number (row, "unsegmented_fraction"), m.unsegmented_fraction);
-    std::set<std::uint32_t> segments (predicted.begin (), predicted.end ());
+    std::set<std::uint32_t> segments (predicted.begin(), predicted.end());
     segments.erase (0);
-    EXPECT_EQ (number (row, "segments"), static_cast<double> (segments.size ()));
+    EXPECT_EQ (number (row, "segments"), static_cast<double> (segments.size()));
     EXPECT_GT (number (row, "seconds"), 0.0);
     EXPECT_GE (number (row, "peak_memory_bytes"), 0.0);
     EXPECT_EQ (row.at ("normals") == "yes", name == "region_growing" || name == "cec");
   }
-  EXPECT_EQ (libraries, (std::set<std::string> {"PCL", "pcl_ext"}));
+  EXPECT_EQ (libraries, (std::set<std::string>{"PCL", "pcl_ext"}));
   // Each method's own labels, not one labelling copied into every field.
-  EXPECT_GT (distinct_labellings.size (), rows.size () / 2);
+  EXPECT_GT (distinct_labellings.size(), rows.size() / 2);
 }
 
 TEST_F (CompareSegmentersApp, WithoutTruthOnlyCountsAndTimes)
 {
-  ASSERT_EQ (run (path ("cubes.pcd") + " -methods euclidean,proximity -threads 2 -csv " +
-                  path ("t.csv")), 0) << output_;
+  ASSERT_EQ (run (path ("cubes.pcd") +
+                  " -methods euclidean,proximity -threads 2 -csv " + path ("t.csv")),
+             0)
+      << output_;
   EXPECT_EQ (output_.find ("mean IoU"), std::string::npos) << output_;
   std::vector<std::string> header;
   const auto rows = readCsv (path ("t.csv"), header);
-  ASSERT_EQ (rows.size (), 2u);
-  EXPECT_EQ (rows[0].at ("method"), "proximity");  // table order, not command-line order
+  ASSERT_EQ (rows.size(), 2u);
+  EXPECT_EQ (rows[0].at ("method"), "proximity"); // table order, not command-line order
   EXPECT_EQ (rows[1].at ("method"), "euclidean");
-  for (const auto& row : rows)
-  {
+  for (const auto& row : rows) {
     EXPECT_GT (number (row, "segments"), 0.0);
     EXPECT_EQ (row.at ("mean_best_iou"), "");
     EXPECT_EQ (row.at ("correct"), "");
@@ -164,19 +167,24 @@ TEST_F (CompareSegmentersApp, MontageHasOneTilePerResultAndTheTruth)
 {
   ASSERT_NE (std::getenv ("DISPLAY"), nullptr)
       << "this test needs an X display; scripts/test.sh starts Xvfb when none is set";
-  ASSERT_EQ (run (path ("cubes.pcd") + " -truth_field object -methods euclidean,proximity "
-                  "-threads 2 -tile_width 300 -tile_height 200 -png " + path ("m.png")), 0)
+  ASSERT_EQ (run (path ("cubes.pcd") +
+                  " -truth_field object -methods euclidean,proximity "
+                  "-threads 2 -tile_width 300 -tile_height 200 -png " +
+                  path ("m.png")),
+             0)
       << output_;
-  // PNG: 8-byte signature, then the IHDR chunk: length, type, width and height (big-endian).
+  // PNG: 8-byte signature, then the IHDR chunk: length, type, width and height
+  // (big-endian).
   std::ifstream in (path ("m.png"), std::ios::binary);
   unsigned char header[24] = {0};
   in.read (reinterpret_cast<char*> (header), sizeof (header));
-  ASSERT_TRUE (in.good ());
+  ASSERT_TRUE (in.good());
   EXPECT_EQ (std::string (reinterpret_cast<char*> (header + 12), 4), "IHDR");
   const auto big_endian = [&header] (int at) {
-    return (header[at] << 24) | (header[at + 1] << 16) | (header[at + 2] << 8) | header[at + 3];
+    return (header[at] << 24) | (header[at + 1] << 16) | (header[at + 2] << 8) |
+           header[at + 3];
   };
-  EXPECT_EQ (big_endian (16), 3 * 300);  // truth, proximity, euclidean in one row
+  EXPECT_EQ (big_endian (16), 3 * 300); // truth, proximity, euclidean in one row
   EXPECT_EQ (big_endian (20), 200);
 }
 
@@ -184,8 +192,10 @@ TEST_F (CompareSegmentersApp, ProfileOptionsReachTheSegmenter)
 {
   // The options not in the paper change what the profile segmenters return.
   const auto labels_of = [&] (const std::string& options, const std::string& method) {
-    EXPECT_EQ (run (path ("cubes.pcd") + " -threads 2 -methods " + method + " -labels " +
-                    path ("l.pcd") + options), 0) << output_;
+    EXPECT_EQ (run (path ("cubes.pcd") + " -threads 2 -methods " + method +
+                    " -labels " + path ("l.pcd") + options),
+               0)
+        << output_;
     pcl::PCLPointCloud2 labelled;
     std::vector<std::uint32_t> labels;
     EXPECT_TRUE (pcl_ext::io::loadCloud (path ("l.pcd"), labelled));
@@ -193,11 +203,11 @@ TEST_F (CompareSegmentersApp, ProfileOptionsReachTheSegmenter)
     return labels;
   };
   const auto curve = labels_of ("", "curve");
-  ASSERT_FALSE (curve.empty ());
+  ASSERT_FALSE (curve.empty());
   EXPECT_NE (labels_of (" -aicc -turn_significance 3", "curve"), curve);
   EXPECT_NE (labels_of (" -side_frames", "curve"), curve);
   const auto proximity = labels_of ("", "proximity");
-  ASSERT_FALSE (proximity.empty ());
+  ASSERT_FALSE (proximity.empty());
   EXPECT_NE (labels_of (" -local_threshold", "proximity"), proximity);
 }
 
@@ -205,11 +215,13 @@ TEST_F (CompareSegmentersApp, BadUsageFailsWithoutOutput)
 {
   const std::string cubes = path ("cubes.pcd"), csv = path ("t.csv");
   EXPECT_EQ (run ("-h"), 0);
-  EXPECT_NE (output_.find ("region_growing"), std::string::npos) << output_;  // methods listed
+  EXPECT_NE (output_.find ("region_growing"), std::string::npos)
+      << output_; // methods listed
 
   EXPECT_EQ (run (cubes + " -methods euclidean,watershed -csv " + csv), 1);
   EXPECT_NE (output_.find ("unknown method 'watershed'"), std::string::npos) << output_;
-  EXPECT_EQ (run (cubes + " -truth_field no_such_field -methods euclidean -csv " + csv), 1);
+  EXPECT_EQ (run (cubes + " -truth_field no_such_field -methods euclidean -csv " + csv),
+             1);
   EXPECT_NE (output_.find ("no_such_field"), std::string::npos) << output_;
   EXPECT_EQ (run (path ("missing.pcd") + " -methods euclidean -csv " + csv), 1);
   EXPECT_NE (output_.find ("missing.pcd"), std::string::npos) << output_;

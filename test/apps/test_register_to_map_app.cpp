@@ -1,7 +1,7 @@
 /*
- * pcl_ext_register_to_map run as a command: the building scene registered from a guess within
- * bounds, a classified airborne cloud registered with roof outline walls, and bad option
- * values refused before anything is written.
+ * pcl_ext_register_to_map run as a command: the building scene registered from a guess
+ * within bounds, a classified airborne cloud registered with roof outline walls, and
+ * bad option values refused before anything is written.
  */
 #include "../app_test.h"
 
@@ -23,21 +23,20 @@
 #include <limits>
 #include <string>
 
-namespace
-{
-class RegisterToMapApp : public pcl_ext::test::AppTest
-{
+namespace {
+class RegisterToMapApp : public pcl_ext::test::AppTest {
 protected:
-  RegisterToMapApp () : AppTest (PCL_EXT_REGISTER_TO_MAP_EXE) {}
+  RegisterToMapApp() : AppTest (PCL_EXT_REGISTER_TO_MAP_EXE) {}
 
-  // The building scene (an H whose courtyards differ, so the pose is unique) scanned from a
-  // known pose: b.pcd, b.footprint.wkt and b.transform.txt (scan to map).
+  // The building scene (an H whose courtyards differ, so the pose is unique) scanned
+  // from a known pose: b.pcd, b.footprint.wkt and b.transform.txt (scan to map).
   void
   generateBuilding ()
   {
-    const std::string command = std::string (PCL_EXT_GENERATE_SCENE_EXE) + " building '" + path ("b.pcd") +
-                                "' -points 30000 -seed 3 -threads 1 -pose 30,0,0,5,-3,0 > /dev/null 2>&1";
-    ASSERT_EQ (std::system (command.c_str ()), 0);
+    const std::string command =
+        std::string (PCL_EXT_GENERATE_SCENE_EXE) + " building '" + path ("b.pcd") +
+        "' -points 30000 -seed 3 -threads 1 -pose 30,0,0,5,-3,0 > /dev/null 2>&1";
+    ASSERT_EQ (std::system (command.c_str()), 0);
     pcl_ext::io::loadTransform (path ("b.transform.txt"), truth_);
   }
 
@@ -57,66 +56,82 @@ protected:
     Eigen::Vector3d origin = Eigen::Vector3d::Constant (std::nan (""));
     const auto at = output_.find ("local origin (");
     if (at != std::string::npos)
-      std::sscanf (output_.c_str () + at, "local origin (%lf, %lf, %lf)", &origin.x (), &origin.y (), &origin.z ());
+      std::sscanf (output_.c_str() + at,
+                   "local origin (%lf, %lf, %lf)",
+                   &origin.x(),
+                   &origin.y(),
+                   &origin.z());
     return origin;
   }
 
-  // Largest distance between a registered point (plus the origin) and where \a truth puts the
-  // input point.
+  // Largest distance between a registered point (plus the origin) and where \a truth
+  // puts the input point.
   double
-  largestError (const std::string& input, const std::string& registered, const Eigen::Matrix4d& truth) const
+  largestError (const std::string& input,
+                const std::string& registered,
+                const Eigen::Matrix4d& truth) const
   {
     pcl::PointCloud<pcl::PointXYZ> in, out;
-    if (pcl::io::loadPCDFile (path (input), in) != 0 || pcl::io::loadPCDFile (path (registered), out) != 0 ||
-        in.size () != out.size ())
-      return std::numeric_limits<double>::infinity ();
-    const Eigen::Vector3d origin = printedOrigin ();
+    if (pcl::io::loadPCDFile (path (input), in) != 0 ||
+        pcl::io::loadPCDFile (path (registered), out) != 0 || in.size() != out.size())
+      return std::numeric_limits<double>::infinity();
+    const Eigen::Vector3d origin = printedOrigin();
     double worst = 0.0;
-    for (std::size_t i = 0; i < in.size (); ++i)
-    {
-      const Eigen::Vector3d expected = (truth * in[i].getVector4fMap ().cast<double> ()).head<3> ();
-      worst = std::max (worst, (out[i].getVector3fMap ().cast<double> () + origin - expected).norm ());
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      const Eigen::Vector3d expected =
+          (truth * in[i].getVector4fMap().cast<double>()).head<3>();
+      worst = std::max (
+          worst, (out[i].getVector3fMap().cast<double>() + origin - expected).norm());
     }
     return worst;
   }
 
-  Eigen::Matrix4d truth_ = Eigen::Matrix4d::Identity ();
+  Eigen::Matrix4d truth_ = Eigen::Matrix4d::Identity();
 };
 
 Eigen::Matrix4d
 rigid (double yaw_deg, const Eigen::Vector3d& translation)
 {
-  Eigen::Matrix4d t = Eigen::Matrix4d::Identity ();
-  t.topLeftCorner<3, 3> () = Eigen::AngleAxisd (yaw_deg * M_PI / 180.0, Eigen::Vector3d::UnitZ ()).toRotationMatrix ();
-  t.topRightCorner<3, 1> () = translation;
+  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+  t.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisd (yaw_deg * M_PI / 180.0, Eigen::Vector3d::UnitZ())
+          .toRotationMatrix();
+  t.topRightCorner<3, 1>() = translation;
   return t;
 }
-}  // namespace
+} // namespace
 
 TEST_F (RegisterToMapApp, GuessWithBoundsFindsTheSamePoseAsTheGlobalSearch)
 {
-  generateBuilding ();
-  ASSERT_FALSE (HasFatalFailure ());
+  generateBuilding();
+  ASSERT_FALSE (HasFatalFailure());
   // The global search (no guess, no bounds).
-  ASSERT_EQ (run (path ("b.pcd") + " " + path ("b.footprint.wkt") + " " + path ("global.pcd") + " -threads 1"), 0)
+  ASSERT_EQ (run (path ("b.pcd") + " " + path ("b.footprint.wkt") + " " +
+                  path ("global.pcd") + " -threads 1"),
+             0)
       << output_;
   EXPECT_EQ (output_.find ("of the guess"), std::string::npos) << output_;
   EXPECT_LT (largestError ("b.pcd", "global.pcd", truth_), 0.1) << output_;
 
-  // A rough pose: 4 deg and 1.8 m off the truth; the search stays within 10 deg and 5 m of it.
+  // A rough pose: 4 deg and 1.8 m off the truth; the search stays within 10 deg and 5 m
+  // of it.
   writeTransform ("guess.txt", rigid (4.0, Eigen::Vector3d (1.5, -1.0, 0.2)) * truth_);
-  ASSERT_EQ (run (path ("b.pcd") + " " + path ("b.footprint.wkt") + " " + path ("bounded.pcd") +
-                  " -threads 1 -guess " + path ("guess.txt") +
-                  " -max_rotation_from_guess 10 -max_translation_from_guess 5"), 0)
+  ASSERT_EQ (run (path ("b.pcd") + " " + path ("b.footprint.wkt") + " " +
+                  path ("bounded.pcd") + " -threads 1 -guess " + path ("guess.txt") +
+                  " -max_rotation_from_guess 10 -max_translation_from_guess 5"),
+             0)
       << output_;
-  EXPECT_NE (output_.find ("Search within 10 deg and 5 m of the guess in "), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("Search within 10 deg and 5 m of the guess in "),
+             std::string::npos)
+      << output_;
   EXPECT_LT (largestError ("b.pcd", "bounded.pcd", truth_), 0.1) << output_;
 
   // A guess a quarter turn off, and bounds that exclude the truth: no pose, no output.
-  writeTransform ("far.txt", rigid (90.0, Eigen::Vector3d::Zero ()) * truth_);
-  EXPECT_EQ (run (path ("b.pcd") + " " + path ("b.footprint.wkt") + " " + path ("far.pcd") +
-                  " -threads 1 -guess " + path ("far.txt") +
-                  " -max_rotation_from_guess 5 -max_translation_from_guess 2"), 1)
+  writeTransform ("far.txt", rigid (90.0, Eigen::Vector3d::Zero()) * truth_);
+  EXPECT_EQ (run (path ("b.pcd") + " " + path ("b.footprint.wkt") + " " +
+                  path ("far.pcd") + " -threads 1 -guess " + path ("far.txt") +
+                  " -max_rotation_from_guess 5 -max_translation_from_guess 2"),
+             1)
       << output_;
   EXPECT_NE (output_.find ("did not converge"), std::string::npos) << output_;
   EXPECT_FALSE (exists ("far.pcd"));
@@ -124,46 +139,51 @@ TEST_F (RegisterToMapApp, GuessWithBoundsFindsTheSamePoseAsTheGlobalSearch)
 
 TEST_F (RegisterToMapApp, RoofOutlineWallsRegisterAClassifiedAirborneCloud)
 {
-  // The two buildings of the roof outline tests, moved by 2 deg and (0.8, -0.5, 0.3) m; the
-  // guess is the identity (a georeferenced cloud), the map the two footprints.
-  const auto scene = pcl_ext::test::twoBuildings ();
+  // The two buildings of the roof outline tests, moved by 2 deg and (0.8, -0.5, 0.3) m;
+  // the guess is the identity (a georeferenced cloud), the map the two footprints.
+  const auto scene = pcl_ext::test::twoBuildings();
   const Eigen::Matrix4d moved = rigid (2.0, Eigen::Vector3d (0.8, -0.5, 0.3));
   pcl::PointCloud<pcl::PointXYZL> cloud;
-  for (std::size_t i = 0; i < scene.cloud->size (); ++i)
-  {
-    const Eigen::Vector4d q = moved * (*scene.cloud)[i].getVector4fMap ().cast<double> ();
+  for (std::size_t i = 0; i < scene.cloud->size(); ++i) {
+    const Eigen::Vector4d q = moved * (*scene.cloud)[i].getVector4fMap().cast<double>();
     pcl::PointXYZL p;
-    p.x = static_cast<float> (q.x ());
-    p.y = static_cast<float> (q.y ());
-    p.z = static_cast<float> (q.z ());
+    p.x = static_cast<float> (q.x());
+    p.y = static_cast<float> (q.y());
+    p.z = static_cast<float> (q.z());
     p.label = (*scene.labels)[i].label == pcl_ext::test::kGround ? 2u : 6u;
     cloud.push_back (p);
   }
   ASSERT_EQ (pcl::io::savePCDFileBinary (path ("airborne.pcd"), cloud), 0);
-  std::ofstream (path ("map.wkt")) << pcl_ext::test::twoBuildingsWkt () << "\n";
+  std::ofstream (path ("map.wkt")) << pcl_ext::test::twoBuildingsWkt() << "\n";
 
   const std::string common = path ("airborne.pcd") + " " + path ("map.wkt") + " ";
-  ASSERT_EQ (run (common + path ("out.pcd") + " -threads 1 -walls roof_outline -ground_label 2 -building_label 6 "
-                  "-m 16 -n 16 -max_rotation_from_guess 10 -max_translation_from_guess 5"), 0)
+  ASSERT_EQ (
+      run (common + path ("out.pcd") +
+           " -threads 1 -walls roof_outline -ground_label 2 -building_label 6 "
+           "-m 16 -n 16 -max_rotation_from_guess 10 -max_translation_from_guess 5"),
+      0)
       << output_;
-  // Outline walls stand half a roof spacing inside the true walls and are fitted to a jagged
-  // band: the pose is recovered to a few centimetres per metre, not exactly.
-  EXPECT_LT (largestError ("airborne.pcd", "out.pcd", moved.inverse ()), 0.3) << output_;
+  // Outline walls stand half a roof spacing inside the true walls and are fitted to a
+  // jagged band: the pose is recovered to a few centimetres per metre, not exactly.
+  EXPECT_LT (largestError ("airborne.pcd", "out.pcd", moved.inverse()), 0.3) << output_;
 
-  // The same cloud through sequential RANSAC finds roofs and ground, not the walls: the outline
-  // walls are what make the airborne cloud usable.
-  EXPECT_EQ (run (common + path ("sac.pcd") + " -threads 1 -max_rotation_from_guess 10 "
-                  "-max_translation_from_guess 5"), 1)
+  // The same cloud through sequential RANSAC finds roofs and ground, not the walls: the
+  // outline walls are what make the airborne cloud usable.
+  EXPECT_EQ (run (common + path ("sac.pcd") +
+                  " -threads 1 -max_rotation_from_guess 10 "
+                  "-max_translation_from_guess 5"),
+             1)
       << output_;
   EXPECT_FALSE (exists ("sac.pcd"));
 }
 
 TEST_F (RegisterToMapApp, BadOptionValuesAreRefusedWithoutOutput)
 {
-  generateBuilding ();
-  ASSERT_FALSE (HasFatalFailure ());
+  generateBuilding();
+  ASSERT_FALSE (HasFatalFailure());
   std::ofstream (path ("bad_transform.txt")) << "1 0 0 0\n0 1 0 0\n0 0 1\n";
-  const std::string common = path ("b.pcd") + " " + path ("b.footprint.wkt") + " " + path ("out.pcd") + " ";
+  const std::string common =
+      path ("b.pcd") + " " + path ("b.footprint.wkt") + " " + path ("out.pcd") + " ";
   const std::pair<std::string, std::string> bad[] = {
       {"-max_rotation_from_guess 0", "-max_rotation_from_guess must be > 0"},
       {"-max_rotation_from_guess -5", "-max_rotation_from_guess must be > 0"},
@@ -180,8 +200,7 @@ TEST_F (RegisterToMapApp, BadOptionValuesAreRefusedWithoutOutput)
       {"-walls roof_outline -ground_label -1", "ground_label"},
       {"-walls roof_outline -ground_label 6 -building_label 6", "must differ"},
       {"-walls roof_outline -label_field nothing", "nothing"}};
-  for (const auto& [options, message] : bad)
-  {
+  for (const auto& [options, message] : bad) {
     EXPECT_EQ (run (common + options), 1) << options << ": " << output_;
     EXPECT_NE (output_.find (message), std::string::npos) << options << ": " << output_;
     EXPECT_FALSE (exists ("out.pcd")) << options;

@@ -1,6 +1,6 @@
 /*
- * pcl_ext_segment_profiles run as a command: the curve-fitting options reach the segmenter,
- * usage errors, and no output on failure.
+ * pcl_ext_segment_profiles run as a command: the curve-fitting options reach the
+ * segmenter, usage errors, and no output on failure.
  */
 #include "../app_test.h"
 
@@ -16,18 +16,16 @@
 #include <algorithm>
 #include <string>
 
-namespace
-{
-class SegmentProfilesApp : public pcl_ext::test::AppTest
-{
+namespace {
+class SegmentProfilesApp : public pcl_ext::test::AppTest {
 protected:
-  SegmentProfilesApp () : AppTest (PCL_EXT_SEGMENT_PROFILES_EXE) {}
+  SegmentProfilesApp() : AppTest (PCL_EXT_SEGMENT_PROFILES_EXE) {}
 
   void
   SetUp () override
   {
-    AppTest::SetUp ();
-    if (HasFatalFailure ())
+    AppTest::SetUp();
+    if (HasFatalFailure())
       return;
     // A pipe inside a coaxial pipe closed by an annular step: three touching surfaces.
     profile_test::LabelledCloud scene;
@@ -52,7 +50,7 @@ protected:
 
   std::vector<std::uint32_t> truth_;
 };
-}  // namespace
+} // namespace
 
 TEST_F (SegmentProfilesApp, CurveFittingSeparatesTheCoaxialSurfaces)
 {
@@ -61,75 +59,76 @@ TEST_F (SegmentProfilesApp, CurveFittingSeparatesTheCoaxialSurfaces)
   EXPECT_NE (output_.find ("3 segments"), std::string::npos) << output_;
   pcl::PointCloud<pcl::PointXYZL> out;
   ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
-  ASSERT_EQ (out.size (), truth_.size ());
+  ASSERT_EQ (out.size(), truth_.size());
   std::vector<pcl::PointIndices> segments;
-  for (std::size_t i = 0; i < out.size (); ++i)
-    if (out[i].label > 0)
-    {
-      segments.resize (std::max<std::size_t> (segments.size (), out[i].label));
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (out[i].label > 0) {
+      segments.resize (std::max<std::size_t> (segments.size(), out[i].label));
       segments[out[i].label - 1].indices.push_back (static_cast<pcl::index_t> (i));
     }
   pcl_ext::SegmentationMetrics m;
   ASSERT_TRUE (pcl_ext::evaluateSegmentation (segments, truth_, m));
   EXPECT_EQ (m.correct, 3u);
   EXPECT_GE (m.mean_best_iou, 0.9);
-  const long ends = curveEnds ();
+  const long ends = curveEnds();
   EXPECT_GT (ends, 0) << output_;
 
   // No turn is significant at 1e6 standard errors: only the residual test ends curves.
   ASSERT_EQ (run (io + " -method curve -turn_significance 1e6 -aicc"), 0) << output_;
-  EXPECT_LT (curveEnds (), ends) << output_;
+  EXPECT_LT (curveEnds(), ends) << output_;
   // AICc alone changes the fits, and so the curve ends.
   ASSERT_EQ (run (io + " -method curve -aicc"), 0) << output_;
-  EXPECT_GT (curveEnds (), 0) << output_;
-  EXPECT_NE (curveEnds (), ends) << output_;
+  EXPECT_GT (curveEnds(), 0) << output_;
+  EXPECT_NE (curveEnds(), ends) << output_;
   // Proximity does not fit curves and prints no curve ends.
   ASSERT_EQ (run (io), 0) << output_;
-  EXPECT_EQ (curveEnds (), -1) << output_;
+  EXPECT_EQ (curveEnds(), -1) << output_;
 }
 
 TEST_F (SegmentProfilesApp, LocalThresholdJoinsTheSparseSurface)
 {
-  // A dense square (1 cm grid) sets the automatic spacing; a square 3 m away sampled at 4 cm,
-  // like a surface far from the scanner, breaks into pieces with the one threshold.
+  // A dense square (1 cm grid) sets the automatic spacing; a square 3 m away sampled at
+  // 4 cm, like a surface far from the scanner, breaks into pieces with the one
+  // threshold.
   profile_test::LabelledCloud scene;
   std::mt19937 rng (3);
-  const Eigen::Vector3d x = Eigen::Vector3d::UnitX (), y = Eigen::Vector3d::UnitY ();
-  profile_test::addRectangle (scene, Eigen::Vector3d::Zero (), x, y, 1.0, 1.0, 0.01, 1, rng);
-  profile_test::addRectangle (scene, Eigen::Vector3d (4, 0, 0), x, y, 1.0, 1.0, 0.04, 2, rng);
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY();
+  profile_test::addRectangle (
+      scene, Eigen::Vector3d::Zero(), x, y, 1.0, 1.0, 0.01, 1, rng);
+  profile_test::addRectangle (
+      scene, Eigen::Vector3d (4, 0, 0), x, y, 1.0, 1.0, 0.04, 2, rng);
   ASSERT_EQ (pcl::io::savePCDFileBinary (path ("density.pcd"), *scene.cloud), 0);
   const auto best_iou_of_sparse = [&] () {
     pcl::PointCloud<pcl::PointXYZL> out;
     EXPECT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
     std::vector<pcl::PointIndices> segments;
-    for (std::size_t i = 0; i < out.size (); ++i)
-      if (out[i].label > 0)
-      {
-        segments.resize (std::max<std::size_t> (segments.size (), out[i].label));
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (out[i].label > 0) {
+        segments.resize (std::max<std::size_t> (segments.size(), out[i].label));
         segments[out[i].label - 1].indices.push_back (static_cast<pcl::index_t> (i));
       }
     pcl_ext::SegmentationMetrics m;
     EXPECT_TRUE (pcl_ext::evaluateSegmentation (segments, scene.labels, m));
-    EXPECT_EQ (m.segments.size (), 2u);
-    EXPECT_GE (m.segments[0].iou, 0.99);  // the dense square is whole either way
+    EXPECT_EQ (m.segments.size(), 2u);
+    EXPECT_GE (m.segments[0].iou, 0.99); // the dense square is whole either way
     return m.segments[1].iou;
   };
   const std::string io = path ("density.pcd") + " " + path ("out.pcd") + " -threads 2";
   ASSERT_EQ (run (io), 0) << output_;
-  const double global = best_iou_of_sparse ();
+  const double global = best_iou_of_sparse();
   ASSERT_EQ (run (io + " -local_threshold"), 0) << output_;
-  const double local = best_iou_of_sparse ();
+  const double local = best_iou_of_sparse();
   EXPECT_LT (global, 0.5);
   EXPECT_GE (local, 0.99);
   // A maximum equal to the threshold turns the local thresholds off.
   ASSERT_EQ (run (io + " -local_threshold -max_threshold_factor 1"), 0) << output_;
-  EXPECT_DOUBLE_EQ (best_iou_of_sparse (), global);
+  EXPECT_DOUBLE_EQ (best_iou_of_sparse(), global);
 }
 
 TEST_F (SegmentProfilesApp, JoinCylindersJoinsThePipeSpans)
 {
-  // One pipe (radius 0.1 m) with 0.6 m missing, as where it rests on a support: two segments
-  // for the profiles, one after the cylinder join.
+  // One pipe (radius 0.1 m) with 0.6 m missing, as where it rests on a support: two
+  // segments for the profiles, one after the cylinder join.
   profile_test::LabelledCloud scene;
   std::mt19937 rng (4);
   profile_test::addCylinderX (scene, -2.0, -0.3, 0.1, 0.02, 1, rng);
@@ -143,7 +142,7 @@ TEST_F (SegmentProfilesApp, JoinCylindersJoinsThePipeSpans)
   EXPECT_NE (output_.find ("2 cylinders joined"), std::string::npos) << output_;
   pcl::PointCloud<pcl::PointXYZL> out;
   ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
-  ASSERT_EQ (out.size (), scene.labels.size ());
+  ASSERT_EQ (out.size(), scene.labels.size());
   for (const auto& p : out)
     EXPECT_EQ (p.label, 1u);
   // A gap longer than the longest bridged keeps the spans apart.
@@ -165,7 +164,9 @@ TEST_F (SegmentProfilesApp, BadUsageFailsWithoutOutput)
   EXPECT_EQ (run (io + " -method bogus"), 1);
   EXPECT_EQ (run (io + " -min_size 0"), 1);
   EXPECT_EQ (run (io + " -join_cylinders -cylinder_tolerance 0"), 1);
-  EXPECT_EQ (run (io + " -join_cylinders -cylinder_min_radius 0.5 -cylinder_max_radius 0.1"), 1);
+  EXPECT_EQ (
+      run (io + " -join_cylinders -cylinder_min_radius 0.5 -cylinder_max_radius 0.1"),
+      1);
   EXPECT_EQ (run (io + " -join_cylinders -cylinder_max_gap nan"), 1);
   EXPECT_FALSE (exists ("out.pcd"));
 }

@@ -1,8 +1,8 @@
 /*
- * pcl_ext_segment_variance run as a command: segments of a cube written into the `label` field
- * next to the input's own fields, the classifier's options beyond the paper (-noise_sigma,
- * -boundary_band, -boundary_band_fraction, -crease_angle, -max_radius), usage errors, and no
- * output on failure.
+ * pcl_ext_segment_variance run as a command: segments of a cube written into the
+ * `label` field next to the input's own fields, the classifier's options beyond the
+ * paper (-noise_sigma, -boundary_band, -boundary_band_fraction, -crease_angle,
+ * -max_radius), usage errors, and no output on failure.
  */
 #include "../app_test.h"
 
@@ -21,24 +21,22 @@
 #include <set>
 #include <string>
 
-namespace
-{
-class SegmentVarianceApp : public pcl_ext::test::AppTest
-{
+namespace {
+class SegmentVarianceApp : public pcl_ext::test::AppTest {
 protected:
-  SegmentVarianceApp () : AppTest (PCL_EXT_SEGMENT_VARIANCE_EXE) {}
+  SegmentVarianceApp() : AppTest (PCL_EXT_SEGMENT_VARIANCE_EXE) {}
 
   void
   SetUp () override
   {
-    AppTest::SetUp ();
-    if (HasFatalFailure ())
+    AppTest::SetUp();
+    if (HasFatalFailure())
       return;
-    // A closed unit cube with 1 mm noise, coloured, so the output must keep the colours.
+    // A closed unit cube with 1 mm noise, coloured, so the output must keep the
+    // colours.
     const auto cube = pcl_ext::test::makeCube (1.0, 0.025, 0.001);
     pcl::PointCloud<pcl::PointXYZRGB> cloud;
-    for (const auto& p : *cube.cloud)
-    {
+    for (const auto& p : *cube.cloud) {
       pcl::PointXYZRGB q (p.x, p.y, p.z, 10, 20, 30);
       cloud.push_back (q);
     }
@@ -48,27 +46,27 @@ protected:
 
   std::vector<double> crease_distance_;
 };
-}  // namespace
+} // namespace
 
 TEST_F (SegmentVarianceApp, CubeFacesAreLabelledSegments)
 {
-  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -threads 2"), 0) << output_;
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -threads 2"), 0)
+      << output_;
   EXPECT_NE (output_.find ("6 segments"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("[done, "), std::string::npos) << output_;
   pcl::PointCloud<pcl::PointXYZRGBL> out;
   ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
-  ASSERT_EQ (out.size (), crease_distance_.size ());
+  ASSERT_EQ (out.size(), crease_distance_.size());
   std::set<std::uint32_t> ids;
-  for (std::size_t i = 0; i < out.size (); ++i)
-  {
+  for (std::size_t i = 0; i < out.size(); ++i) {
     ids.insert (out[i].label);
-    EXPECT_EQ (out[i].r, 10);  // the input's fields are kept
+    EXPECT_EQ (out[i].r, 10); // the input's fields are kept
     EXPECT_EQ (out[i].b, 30);
     // Unsegmented points are the edge band (about a neighbourhood radius, 0.1 m here).
     if (out[i].label == 0)
       EXPECT_LT (crease_distance_[i], 0.12) << i;
   }
-  EXPECT_EQ (ids, (std::set<std::uint32_t> {0, 1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ (ids, (std::set<std::uint32_t>{0, 1, 2, 3, 4, 5, 6}));
 
   // A minimum size above a face leaves nothing: an error, and no output written.
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("none.pcd") + " -min_size 5000"), 1);
@@ -77,28 +75,27 @@ TEST_F (SegmentVarianceApp, CubeFacesAreLabelledSegments)
 
 TEST_F (SegmentVarianceApp, ClassifierOptionsReachTheSegmentation)
 {
-  // The options beyond the paper pass through to the classification: with the cube's 1 mm
-  // noise removed, the boundary band on and a 45 degree crease angle, the faces are still the
-  // 6 segments; a radius cap
-  // below the k = 50 neighbourhood radius (about 0.1 m at this spacing) narrows the edge band
-  // the segments stop at.
+  // The options beyond the paper pass through to the classification: with the cube's 1
+  // mm noise removed, the boundary band on and a 45 degree crease angle, the faces are
+  // still the 6 segments; a radius cap below the k = 50 neighbourhood radius (about 0.1
+  // m at this spacing) narrows the edge band the segments stop at.
   ASSERT_EQ (run (path ("cube.pcd") + " " + path ("noise.pcd") +
                   " -threads 2 -noise_sigma 0.001 -boundary_band -crease_angle 45"),
              0)
       << output_;
   EXPECT_NE (output_.find ("6 segments"), std::string::npos) << output_;
-  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("capped.pcd") + " -threads 2 -max_radius 0.06"),
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("capped.pcd") +
+                  " -threads 2 -max_radius 0.06"),
              0)
       << output_;
   EXPECT_NE (output_.find ("6 segments"), std::string::npos) << output_;
   pcl::PointCloud<pcl::PointXYZRGBL> noise, capped;
   ASSERT_EQ (pcl::io::loadPCDFile (path ("noise.pcd"), noise), 0);
   ASSERT_EQ (pcl::io::loadPCDFile (path ("capped.pcd"), capped), 0);
-  ASSERT_EQ (capped.size (), crease_distance_.size ());
-  ASSERT_EQ (noise.size (), crease_distance_.size ());
+  ASSERT_EQ (capped.size(), crease_distance_.size());
+  ASSERT_EQ (noise.size(), crease_distance_.size());
   std::size_t unsegmented = 0, far_capped = 0, far_uncapped = 0;
-  for (std::size_t i = 0; i < capped.size (); ++i)
-  {
+  for (std::size_t i = 0; i < capped.size(); ++i) {
     unsegmented += capped[i].label == 0;
     far_capped += capped[i].label == 0 && crease_distance_[i] > 0.07;
     far_uncapped += noise[i].label == 0 && crease_distance_[i] > 0.07;
@@ -106,11 +103,14 @@ TEST_F (SegmentVarianceApp, ClassifierOptionsReachTheSegmentation)
   EXPECT_GT (unsegmented, 0u);
   EXPECT_EQ (far_capped, 0u);
   EXPECT_GT (far_uncapped, 1000u);
-  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -noise_sigma -0.001"), 1);
+  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -noise_sigma -0.001"),
+             1);
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -noise_sigma nan"), 1);
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -max_radius -1"), 1);
   EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -crease_angle 91"), 1);
-  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -boundary_band_fraction -1"), 1);
+  EXPECT_EQ (
+      run (path ("cube.pcd") + " " + path ("out.pcd") + " -boundary_band_fraction -1"),
+      1);
   EXPECT_FALSE (exists ("out.pcd"));
   EXPECT_EQ (run ("-h"), 0);
   EXPECT_NE (output_.find ("-noise_sigma"), std::string::npos) << output_;
@@ -123,18 +123,22 @@ TEST_F (SegmentVarianceApp, ClassifierOptionsReachTheSegmentation)
 TEST_F (SegmentVarianceApp, RendersThePng)
 {
   if (!std::getenv ("DISPLAY"))
-    GTEST_SKIP () << "no X display for rendering";
-  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -png " + path ("out.png")), 0)
+    GTEST_SKIP() << "no X display for rendering";
+  ASSERT_EQ (
+      run (path ("cube.pcd") + " " + path ("out.pcd") + " -png " + path ("out.png")), 0)
       << output_;
-  // PNG signature, then the IHDR chunk: width and height, big-endian, at bytes 16 and 20.
+  // PNG signature, then the IHDR chunk: width and height, big-endian, at bytes 16
+  // and 20.
   std::ifstream png (path ("out.png"), std::ios::binary);
   unsigned char header[24] = {};
   ASSERT_TRUE (png.read (reinterpret_cast<char*> (header), sizeof (header)));
   EXPECT_EQ (header[1], 'P');
-  EXPECT_EQ ((header[16] << 24) | (header[17] << 16) | (header[18] << 8) | header[19], 1280);
-  EXPECT_EQ ((header[20] << 24) | (header[21] << 16) | (header[22] << 8) | header[23], 720);
+  EXPECT_EQ ((header[16] << 24) | (header[17] << 16) | (header[18] << 8) | header[19],
+             1280);
+  EXPECT_EQ ((header[20] << 24) | (header[21] << 16) | (header[22] << 8) | header[23],
+             720);
   png.seekg (0, std::ios::end);
-  EXPECT_GT (png.tellg (), 20000);  // more than a blank image compresses to
+  EXPECT_GT (png.tellg(), 20000); // more than a blank image compresses to
 }
 
 TEST_F (SegmentVarianceApp, BadUsageAndInputFailWithoutOutput)
@@ -177,13 +181,13 @@ TEST_F (SegmentVarianceApp, IntersectionsLieOnTheCubeEdges)
   EXPECT_NE (output_.find ("intersection points from"), std::string::npos) << output_;
   pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> edges;
   ASSERT_EQ (pcl::io::loadPCDFile (path ("edges.pcd"), edges), 0);
-  ASSERT_GT (edges.size (), 100u);
+  ASSERT_GT (edges.size(), 100u);
   // Distance to the nearest of the unit cube's 12 edges: two coordinates at 0 or 1.
   std::vector<double> distances;
-  for (const auto& e : edges)
-  {
+  for (const auto& e : edges) {
     EXPECT_NE (e.segment_a, e.segment_b);
-    EXPECT_TRUE (e.segment_a >= 1 && e.segment_a <= 6 && e.segment_b >= 1 && e.segment_b <= 6);
+    EXPECT_TRUE (e.segment_a >= 1 && e.segment_a <= 6 && e.segment_b >= 1 &&
+                 e.segment_b <= 6);
     const double p[3] = {e.x, e.y, e.z};
     double d[3], best = 1e9;
     for (int a = 0; a < 3; ++a)
@@ -192,19 +196,19 @@ TEST_F (SegmentVarianceApp, IntersectionsLieOnTheCubeEdges)
       best = std::min (best, std::hypot (d[a], d[(a + 1) % 3]));
     distances.push_back (best);
   }
-  std::nth_element (distances.begin (), distances.begin () + distances.size () / 2,
-                    distances.end ());
-  EXPECT_LT (distances[distances.size () / 2], 0.003);  // 3 noise sigmas
+  std::nth_element (
+      distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+  EXPECT_LT (distances[distances.size() / 2], 0.003); // 3 noise sigmas
 
   // Re-integration leaves fewer points without a segment, and never a wrong face: every
-  // re-integrated point keeps to a face it lies on (within the 1 mm noise and the band).
+  // re-integrated point keeps to a face it lies on (within the 1 mm noise and the
+  // band).
   pcl::PointCloud<pcl::PointXYZRGBL> plain, out;
   ASSERT_EQ (pcl::io::loadPCDFile (path ("plain.pcd"), plain), 0);
   ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
-  ASSERT_EQ (plain.size (), out.size ());
+  ASSERT_EQ (plain.size(), out.size());
   std::size_t unsegmented_before = 0, unsegmented_after = 0, changed_segmented = 0;
-  for (std::size_t i = 0; i < out.size (); ++i)
-  {
+  for (std::size_t i = 0; i < out.size(); ++i) {
     unsegmented_before += plain[i].label == 0;
     unsegmented_after += out[i].label == 0;
     changed_segmented += plain[i].label != 0 && out[i].label != plain[i].label;
@@ -216,7 +220,7 @@ TEST_F (SegmentVarianceApp, IntersectionsLieOnTheCubeEdges)
 TEST_F (SegmentVarianceApp, RendersTheIntersectionsOnThePng)
 {
   if (!std::getenv ("DISPLAY"))
-    GTEST_SKIP () << "no X display for rendering";
+    GTEST_SKIP() << "no X display for rendering";
   ASSERT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -intersections " +
                   path ("edges.pcd") + " -png " + path ("out.png")),
              0)
@@ -225,16 +229,19 @@ TEST_F (SegmentVarianceApp, RendersTheIntersectionsOnThePng)
   unsigned char header[24] = {};
   ASSERT_TRUE (png.read (reinterpret_cast<char*> (header), sizeof (header)));
   EXPECT_EQ (header[1], 'P');
-  EXPECT_EQ ((header[16] << 24) | (header[17] << 16) | (header[18] << 8) | header[19], 1280);
+  EXPECT_EQ ((header[16] << 24) | (header[17] << 16) | (header[18] << 8) | header[19],
+             1280);
   png.seekg (0, std::ios::end);
-  EXPECT_GT (png.tellg (), 20000);
+  EXPECT_GT (png.tellg(), 20000);
 }
 
 TEST_F (SegmentVarianceApp, BadIntersectionOptionsFailWithoutOutput)
 {
   const std::string io = path ("cube.pcd") + " " + path ("out.pcd");
-  EXPECT_EQ (run (io + " -intersections " + path ("edges.pcd") + " -parallel_angle 95"), 1);
-  EXPECT_EQ (run (io + " -intersections " + path ("edges.pcd") + " -parallel_angle -1"), 1);
+  EXPECT_EQ (run (io + " -intersections " + path ("edges.pcd") + " -parallel_angle 95"),
+             1);
+  EXPECT_EQ (run (io + " -intersections " + path ("edges.pcd") + " -parallel_angle -1"),
+             1);
   EXPECT_EQ (run (io + " -intersections " + path ("no/such/folder/edges.pcd")), 1);
   EXPECT_FALSE (exists ("out.pcd"));
   EXPECT_FALSE (exists ("edges.pcd"));

@@ -1,9 +1,11 @@
 /*
- * Benchmark: the shared neighbourhood pass against a plain pcl::search::KdTree (FLANN) loop.
+ * Benchmark: the shared neighbourhood pass against a plain pcl::search::KdTree (FLANN)
+ * loop.
  *
- * The cloud is a generated TLS scene (default: `indoor`, 1M points). Both sides build their tree and fill the same compact output (k indices and squared
- * distances per point) with the same number of OpenMP threads, on the same cloud, in one run.
- * Prints the times and the ratio ours / FLANN (lower is better).
+ * The cloud is a generated TLS scene (default: `indoor`, 1M points). Both sides build
+ * their tree and fill the same compact output (k indices and squared distances per
+ * point) with the same number of OpenMP threads, on the same cloud, in one run. Prints
+ * the times and the ratio ours / FLANN (lower is better).
  */
 #include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/common/parallel.h>
@@ -21,8 +23,7 @@
 #include <iostream>
 #include <random>
 
-namespace
-{
+namespace {
 using Point = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Point>;
 
@@ -41,50 +42,55 @@ makeScene (const std::string& name, std::size_t points, unsigned seed)
 }
 
 double
-seconds (std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
+seconds (std::chrono::steady_clock::time_point a,
+         std::chrono::steady_clock::time_point b)
 {
-  return std::chrono::duration<double> (b - a).count ();
+  return std::chrono::duration<double> (b - a).count();
 }
 
 /** The stock-PCL way: build a FLANN tree, query every point in an OpenMP loop. */
 double
-runFlann (const Cloud::ConstPtr& cloud, int k, unsigned threads, pcl::Indices& out_indices,
+runFlann (const Cloud::ConstPtr& cloud,
+          int k,
+          unsigned threads,
+          pcl::Indices& out_indices,
           std::vector<float>& out_d2)
 {
-  const auto t0 = std::chrono::steady_clock::now ();
+  const auto t0 = std::chrono::steady_clock::now();
   pcl::search::KdTree<Point> tree;
   tree.setInputCloud (cloud);
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (cloud->size ());
-  out_indices.resize (cloud->size () * k);
-  out_d2.resize (cloud->size () * k);
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (cloud->size());
+  out_indices.resize (cloud->size() * k);
+  out_d2.resize (cloud->size() * k);
 #pragma omp parallel num_threads(threads)
   {
     pcl::Indices nn (k);
     std::vector<float> d2 (k);
 #pragma omp for schedule(dynamic, 256)
-    for (std::ptrdiff_t i = 0; i < n; ++i)
-    {
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
       tree.nearestKSearch ((*cloud)[i], k, nn, d2);
-      std::copy (nn.begin (), nn.end (), out_indices.begin () + i * k);
-      std::copy (d2.begin (), d2.end (), out_d2.begin () + i * k);
+      std::copy (nn.begin(), nn.end(), out_indices.begin() + i * k);
+      std::copy (d2.begin(), d2.end(), out_d2.begin() + i * k);
     }
   }
-  return seconds (t0, std::chrono::steady_clock::now ());
+  return seconds (t0, std::chrono::steady_clock::now());
 }
 
 double
-runOurs (const Cloud::ConstPtr& cloud, int k, unsigned threads,
+runOurs (const Cloud::ConstPtr& cloud,
+         int k,
+         unsigned threads,
          pcl_ext::Neighbourhoods<Point>& nb)
 {
-  const auto t0 = std::chrono::steady_clock::now ();
+  const auto t0 = std::chrono::steady_clock::now();
   nb.setInputCloud (cloud);
   nb.setKSearch (k);
   nb.setNumberOfThreads (threads);
-  if (!nb.compute ())
+  if (!nb.compute())
     return -1.0;
-  return seconds (t0, std::chrono::steady_clock::now ());
+  return seconds (t0, std::chrono::steady_clock::now());
 }
-}  // namespace
+} // namespace
 
 int
 main (int argc, char** argv)
@@ -92,9 +98,10 @@ main (int argc, char** argv)
   int points = 1000000, k = 50, repeats = 3;
   std::string scene = "indoor";
   unsigned int threads = 2, seed = 1;
-  pcl_ext::apps::CommandLine cl ("pcl_ext_benchmark_neighbourhoods",
-                                  "Times the shared neighbourhood pass (pcl_ext::Neighbourhoods, "
-                                  "nanoflann) against a pcl::search::KdTree (FLANN) kNN loop.");
+  pcl_ext::apps::CommandLine cl (
+      "pcl_ext_benchmark_neighbourhoods",
+      "Times the shared neighbourhood pass (pcl_ext::Neighbourhoods, "
+      "nanoflann) against a pcl::search::KdTree (FLANN) kNN loop.");
   cl.addOption ("scene", scene, "generated TLS scene (see pcl_ext_generate_scene)");
   cl.addOption ("points", points, "target points of the generated scene");
   cl.addOption ("k", k, "neighbours per point");
@@ -103,32 +110,30 @@ main (int argc, char** argv)
   cl.addOption ("seed", seed, "random seed of the generated scene");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (points < 1 || k < 1 || k > points || repeats < 1)
-  {
+  if (points < 1 || k < 1 || k > points || repeats < 1) {
     std::cerr << "Error: need points >= 1, 1 <= k <= points, repeats >= 1.\n";
     return 1;
   }
   threads = pcl_ext::resolveThreadCount (threads);
 
   Cloud::ConstPtr cloud = makeScene (scene, static_cast<std::size_t> (points), seed);
-  if (cloud->size () < static_cast<std::size_t> (k))
-  {
-    std::cerr << "Error: could not generate scene '" << scene << "' with at least k points.\n";
+  if (cloud->size() < static_cast<std::size_t> (k)) {
+    std::cerr << "Error: could not generate scene '" << scene
+              << "' with at least k points.\n";
     return 1;
   }
-  std::cout << "cloud: " << cloud->size () << " points (scene '" << scene << "', seed " << seed
-            << "), k = " << k << ", threads = " << threads << "\n";
+  std::cout << "cloud: " << cloud->size() << " points (scene '" << scene << "', seed "
+            << seed << "), k = " << k << ", threads = " << threads << "\n";
 
   double best_flann = 1e30, best_ours = 1e30;
   pcl::Indices flann_indices;
   std::vector<float> flann_d2;
   pcl_ext::Neighbourhoods<Point> nb;
-  for (int r = 0; r < repeats; ++r)
-  {
-    best_flann = std::min (best_flann, runFlann (cloud, k, threads, flann_indices, flann_d2));
+  for (int r = 0; r < repeats; ++r) {
+    best_flann =
+        std::min (best_flann, runFlann (cloud, k, threads, flann_indices, flann_d2));
     const double ours = runOurs (cloud, k, threads, nb);
-    if (ours < 0)
-    {
+    if (ours < 0) {
       std::cerr << "Error: neighbourhood computation failed.\n";
       return 1;
     }
@@ -137,9 +142,11 @@ main (int argc, char** argv)
 
   // Same neighbourhoods (by distance: ties may order differently).
   double max_diff = 0;
-  for (std::size_t i = 0; i < flann_d2.size (); ++i)
-    max_diff = std::max (max_diff, std::abs (double (flann_d2[i]) - nb.getSquaredDistances ()[i]));
-  const bool agree = nb.getSquaredDistances ().size () == flann_d2.size () && max_diff < 1e-6;
+  for (std::size_t i = 0; i < flann_d2.size(); ++i)
+    max_diff = std::max (max_diff,
+                         std::abs (double (flann_d2[i]) - nb.getSquaredDistances()[i]));
+  const bool agree =
+      nb.getSquaredDistances().size() == flann_d2.size() && max_diff < 1e-6;
 
   std::cout << std::fixed << std::setprecision (3)
             << "pcl::search::KdTree (FLANN) loop : " << best_flann << " s\n"

@@ -1,8 +1,8 @@
 /*
- * Benchmark: Belton & Lichti segmentation (pcl_ext::VarianceRegionGrowing: neighbourhood
- * search, classification and region growing) against stock PCL's normals + region growing
- * (pcl::NormalEstimationOMP + pcl::RegionGrowing), same cloud, same threads, in one run.
- * Prints both times, the ratio and where our time goes.
+ * Benchmark: Belton & Lichti segmentation (pcl_ext::VarianceRegionGrowing:
+ * neighbourhood search, classification and region growing) against stock PCL's normals
+ * + region growing (pcl::NormalEstimationOMP + pcl::RegionGrowing), same cloud, same
+ * threads, in one run. Prints both times, the ratio and where our time goes.
  */
 #include "benchmark_support.h"
 
@@ -21,13 +21,12 @@
 #include <iostream>
 #include <string>
 
-namespace
-{
+namespace {
 using Point = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Point>;
 using pcl_ext::benchmark::Clock;
 using pcl_ext::benchmark::seconds;
-}  // namespace
+} // namespace
 
 int
 main (int argc, char** argv)
@@ -37,7 +36,8 @@ main (int argc, char** argv)
   std::string scene_name = "indoor";
   pcl_ext::apps::CommandLine cl (
       "pcl_ext_benchmark_variance_segmentation",
-      "Times Belton & Lichti segmentation (search + classification + region growing) against "
+      "Times Belton & Lichti segmentation (search + classification + region growing) "
+      "against "
       "pcl::NormalEstimationOMP + pcl::RegionGrowing on the same generated scene.");
   cl.addOption ("points", points, "points in the generated scene");
   cl.addOption ("scene", scene_name, "generated scene");
@@ -48,27 +48,25 @@ main (int argc, char** argv)
   cl.addOption ("seed", seed, "random seed of the scene");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (points < 100 || k < 3 || rg_k < 1 || repeats < 1)
-  {
+  if (points < 100 || k < 3 || rg_k < 1 || repeats < 1) {
     std::cerr << "Error: need points >= 100, k >= 3, rg_k >= 1, repeats >= 1.\n";
     return 1;
   }
   threads = pcl_ext::resolveThreadCount (threads);
 
-  const Cloud::Ptr cloud =
-      pcl_ext::benchmark::generateXyzCloud (scene_name, static_cast<std::size_t> (points), seed);
-  if (cloud->empty ())
+  const Cloud::Ptr cloud = pcl_ext::benchmark::generateXyzCloud (
+      scene_name, static_cast<std::size_t> (points), seed);
+  if (cloud->empty())
     return 1;
-  std::cout << "cloud: " << cloud->size () << " points (" << scene_name << ", seed " << seed
-            << "), k = " << k << ", pcl::RegionGrowing k = " << rg_k << ", threads = "
-            << threads << "\n";
+  std::cout << "cloud: " << cloud->size() << " points (" << scene_name << ", seed "
+            << seed << "), k = " << k << ", pcl::RegionGrowing k = " << rg_k
+            << ", threads = " << threads << "\n";
 
   // 1. Ours, as a user calls it: one call that searches, classifies and grows.
   double t_ours = 1e30;
   std::size_t ours_segments = 0;
-  for (int r = 0; r < repeats; ++r)
-  {
-    const auto t0 = Clock::now ();
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = Clock::now();
     pcl_ext::VarianceRegionGrowing<Point> rg;
     rg.setInputCloud (cloud);
     rg.setKSearch (k);
@@ -78,61 +76,61 @@ main (int argc, char** argv)
     classifier.setNumberOfThreads (threads);
     std::vector<pcl::PointIndices> clusters;
     pcl_ext::segmentByLocalVariance (classifier, rg, clusters);
-    t_ours = std::min (t_ours, seconds (t0, Clock::now ()));
-    if (clusters.empty ())
+    t_ours = std::min (t_ours, seconds (t0, Clock::now()));
+    if (clusters.empty())
       return 1;
-    ours_segments = clusters.size ();
+    ours_segments = clusters.size();
   }
 
-  // 2. Stock PCL: normals (OpenMP), then region growing (single-threaded in PCL) with its own
+  // 2. Stock PCL: normals (OpenMP), then region growing (single-threaded in PCL) with
+  // its own
   //    FLANN tree, as a user would chain them.
   double t_stock = 1e30, t_normals = 0, t_growing = 0;
   std::size_t stock_segments = 0;
-  for (int r = 0; r < repeats; ++r)
-  {
-    const auto t0 = Clock::now ();
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = Clock::now();
     pcl::PointCloud<pcl::Normal>::Ptr normals (new pcl::PointCloud<pcl::Normal>);
     pcl::NormalEstimationOMP<Point, pcl::Normal> ne (threads);
     ne.setInputCloud (cloud);
     ne.setKSearch (k);
     ne.compute (*normals);
-    const auto t1 = Clock::now ();
+    const auto t1 = Clock::now();
     pcl::RegionGrowing<Point, pcl::Normal> stock;
     stock.setInputCloud (cloud);
     stock.setInputNormals (normals);
-    stock.setSearchMethod (pcl::search::KdTree<Point>::Ptr (new pcl::search::KdTree<Point>));
+    stock.setSearchMethod (
+        pcl::search::KdTree<Point>::Ptr (new pcl::search::KdTree<Point>));
     stock.setNumberOfNeighbours (rg_k);
     stock.setSmoothnessThreshold (3.0 * M_PI / 180.0);
     stock.setCurvatureThreshold (1.0);
     stock.setMinClusterSize (50);
     std::vector<pcl::PointIndices> clusters;
     stock.extract (clusters);
-    const auto t2 = Clock::now ();
-    if (seconds (t0, t2) < t_stock)
-    {
+    const auto t2 = Clock::now();
+    if (seconds (t0, t2) < t_stock) {
       t_stock = seconds (t0, t2);
       t_normals = seconds (t0, t1);
       t_growing = seconds (t1, t2);
     }
-    stock_segments = clusters.size ();
+    stock_segments = clusters.size();
   }
 
   // 3. Where our time goes: the same steps one by one, sharing the neighbourhoods.
-  const auto t0 = Clock::now ();
+  const auto t0 = Clock::now();
   pcl_ext::Neighbourhoods<Point>::Ptr nb (new pcl_ext::Neighbourhoods<Point>);
   nb->setInputCloud (cloud);
   nb->setKSearch (k);
   nb->setNumberOfThreads (threads);
-  if (!nb->compute ())
+  if (!nb->compute())
     return 1;
-  const auto t1 = Clock::now ();
+  const auto t1 = Clock::now();
   pcl::PointCloud<pcl::Label>::Ptr classes (new pcl::PointCloud<pcl::Label>);
   pcl_ext::LocalVarianceClassification<Point> lvc;
   lvc.setInputCloud (cloud);
   lvc.setNeighbourhoods (nb);
   lvc.setNumberOfThreads (threads);
   lvc.classify (*classes);
-  const auto t2 = Clock::now ();
+  const auto t2 = Clock::now();
   pcl_ext::VarianceRegionGrowing<Point> rg;
   rg.setInputCloud (cloud);
   rg.setNeighbourhoods (nb);
@@ -141,7 +139,7 @@ main (int argc, char** argv)
   rg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;
   rg.extract (clusters);
-  const auto t3 = Clock::now ();
+  const auto t3 = Clock::now();
 
   std::cout << std::fixed << std::setprecision (3)
             << "pcl_ext::VarianceRegionGrowing (search + classes + growing): " << t_ours

@@ -14,11 +14,12 @@
 #include <utility>
 #include <vector>
 
-namespace crf_test
-{
+namespace crf_test {
 /** A generated street scene (Lim & Suter's classes) as CRF input plus its labels. */
 inline bool
-streetScene (std::uint64_t seed, std::size_t points, pcl_ext::CrfInput& input,
+streetScene (std::uint64_t seed,
+             std::size_t points,
+             pcl_ext::CrfInput& input,
              std::vector<std::uint32_t>& labels,
              pcl_ext::simulation::SyntheticScene* keep = nullptr)
 {
@@ -33,4 +34,4 @@ streetScene (std::uint64_t seed, std::size_t points, pcl_ext::CrfInput& input,
     *keep = std::move (scene);
   return true;
 }
-}  // namespace crf_test
+} // namespace crf_test

@@ -1,6 +1,7 @@
 /*
- * Tests of MultiscaleCrfModel, the multi-scale CRF (Lim & Suter 2008, section 3.2) without the
- * point type, on generated street scenes: training, inference, model files, bad input.
+ * Tests of MultiscaleCrfModel, the multi-scale CRF (Lim & Suter 2008, section 3.2)
+ * without the point type, on generated street scenes: training, inference, model files,
+ * bad input.
  */
 #include "crf_test_scenes.h"
 
@@ -17,12 +18,10 @@
 using pcl_ext::CrfMode;
 using pcl_ext::MultiscaleCrfModel;
 
-namespace
-{
+namespace {
 constexpr std::size_t kPoints = 40000;
 
-struct Street
-{
+struct Street {
   pcl_ext::CrfInput input;
   std::vector<std::uint32_t> labels;
 };
@@ -32,8 +31,7 @@ street (std::uint64_t seed)
 {
   static std::map<std::uint64_t, Street> cache;
   auto it = cache.find (seed);
-  if (it == cache.end ())
-  {
+  if (it == cache.end()) {
     Street s;
     crf_test::streetScene (seed, kPoints, s.input, s.labels);
     it = cache.emplace (seed, std::move (s)).first;
@@ -47,10 +45,9 @@ trained (CrfMode mode)
 {
   static std::map<CrfMode, MultiscaleCrfModel> models;
   auto it = models.find (mode);
-  if (it == models.end ())
-  {
+  if (it == models.end()) {
     MultiscaleCrfModel m;
-    pcl_ext::CrfSettings m_settings = m.getSettings ();
+    pcl_ext::CrfSettings m_settings = m.getSettings();
     m_settings.mode = mode;
     m.setSettings (m_settings);
     EXPECT_TRUE (m.train ({street (1).input}, {street (1).labels}));
@@ -60,7 +57,9 @@ trained (CrfMode mode)
 }
 
 double
-accuracy (MultiscaleCrfModel& m, const Street& s, pcl_ext::ClassificationMetrics* out = nullptr)
+accuracy (MultiscaleCrfModel& m,
+          const Street& s,
+          pcl_ext::ClassificationMetrics* out = nullptr)
 {
   std::vector<std::uint32_t> labels;
   Eigen::MatrixXf prob;
@@ -76,24 +75,28 @@ accuracy (MultiscaleCrfModel& m, const Street& s, pcl_ext::ClassificationMetrics
 std::string
 tempPath (const char* name)
 {
-  return std::string (::testing::TempDir ()) + name;
+  return std::string (::testing::TempDir()) + name;
 }
-}  // namespace
+} // namespace
 
 TEST (MultiscaleCrf, StreetTrainOnOneSeedTestOnAnother)
 {
-  for (const CrfMode mode : {CrfMode::NodeOnly, CrfMode::LocalCrf, CrfMode::MultiscaleCrf})
-  {
+  for (const CrfMode mode :
+       {CrfMode::NodeOnly, CrfMode::LocalCrf, CrfMode::MultiscaleCrf}) {
     MultiscaleCrfModel& m = trained (mode);
-    ASSERT_TRUE (m.isTrained ());
+    ASSERT_TRUE (m.isTrained());
     pcl_ext::ClassificationMetrics metrics;
     const double oa = accuracy (m, street (2), &metrics);
-    const auto& st = m.getStatistics ();
+    const auto& st = m.getStatistics();
     std::printf ("street %-4s: overall accuracy %.4f, macro F1 %.4f (%zu super-voxels, "
-                 "BP %d sweeps%s)\n", pcl_ext::crfModeName (mode), oa, metrics.macro_f1,
-                 st.supervoxels, st.iterations, st.converged ? ", converged" : "");
-    if (mode == CrfMode::MultiscaleCrf)
-    {
+                 "BP %d sweeps%s)\n",
+                 pcl_ext::crfModeName (mode),
+                 oa,
+                 metrics.macro_f1,
+                 st.supervoxels,
+                 st.iterations,
+                 st.converged ? ", converged" : "");
+    if (mode == CrfMode::MultiscaleCrf) {
       EXPECT_GE (oa, 0.95);
       EXPECT_TRUE (st.converged);
     }
@@ -108,34 +111,40 @@ TEST (MultiscaleCrf, ProbabilitiesFollowEquation11)
   std::vector<std::uint32_t> labels;
   Eigen::MatrixXf prob;
   ASSERT_TRUE (m.classify (street (2).input, labels, prob));
-  ASSERT_EQ (prob.rows (), static_cast<Eigen::Index> (labels.size ()));
-  ASSERT_EQ (prob.cols (), 5);
-  const auto& svs = m.getSupervoxels ();
-  const Eigen::MatrixXf& marg = m.getSupervoxelProbabilities ();
-  for (std::size_t i = 0; i < labels.size (); i += 97)
-  {
-    EXPECT_NEAR (prob.row (i).sum (), 1.f, 1e-4f);
+  ASSERT_EQ (prob.rows(), static_cast<Eigen::Index> (labels.size()));
+  ASSERT_EQ (prob.cols(), 5);
+  const auto& svs = m.getSupervoxels();
+  const Eigen::MatrixXf& marg = m.getSupervoxelProbabilities();
+  for (std::size_t i = 0; i < labels.size(); i += 97) {
+    EXPECT_NEAR (prob.row (i).sum(), 1.f, 1e-4f);
     Eigen::VectorXd logp = Eigen::VectorXd::Zero (5);
-    for (std::size_t k = svs.membership_offsets[i]; k < svs.membership_offsets[i + 1]; ++k)
-      logp += marg.row (svs.membership[k]).transpose ().cast<double> ().array ().max (1e-30).log ().matrix ();
+    for (std::size_t k = svs.membership_offsets[i]; k < svs.membership_offsets[i + 1];
+         ++k)
+      logp += marg.row (svs.membership[k])
+                  .transpose()
+                  .cast<double>()
+                  .array()
+                  .max (1e-30)
+                  .log()
+                  .matrix();
     Eigen::Index best;
     logp.maxCoeff (&best);
-    EXPECT_EQ (labels[i], m.getClassLabels ()[best]);
+    EXPECT_EQ (labels[i], m.getClassLabels()[best]);
   }
 }
 
 TEST (MultiscaleCrf, DeterministicForAnyThreadCount)
 {
   MultiscaleCrfModel a, b;
-  pcl_ext::CrfSettings a_settings = a.getSettings ();
+  pcl_ext::CrfSettings a_settings = a.getSettings();
   a_settings.threads = 1;
   a.setSettings (a_settings);
-  pcl_ext::CrfSettings b_settings = b.getSettings ();
+  pcl_ext::CrfSettings b_settings = b.getSettings();
   b_settings.threads = 2;
   b.setSettings (b_settings);
   ASSERT_TRUE (a.train ({street (1).input}, {street (1).labels}));
   ASSERT_TRUE (b.train ({street (1).input}, {street (1).labels}));
-  EXPECT_EQ (a.toText (), b.toText ());
+  EXPECT_EQ (a.toText(), b.toText());
   std::vector<std::uint32_t> la, lb;
   Eigen::MatrixXf pa, pb;
   ASSERT_TRUE (a.classify (street (2).input, la, pa));
@@ -151,7 +160,7 @@ TEST (MultiscaleCrf, SaveAndLoadGiveTheSameLabels)
   ASSERT_TRUE (m.saveModel (path));
   MultiscaleCrfModel loaded;
   ASSERT_TRUE (loaded.loadModel (path));
-  EXPECT_EQ (loaded.toText (), m.toText ());
+  EXPECT_EQ (loaded.toText(), m.toText());
   std::vector<std::uint32_t> la, lb;
   Eigen::MatrixXf pa, pb;
   ASSERT_TRUE (m.classify (street (2).input, la, pa));
@@ -161,15 +170,15 @@ TEST (MultiscaleCrf, SaveAndLoadGiveTheSameLabels)
 
 TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
 {
-  const std::string good = trained (CrfMode::MultiscaleCrf).toText ();
+  const std::string good = trained (CrfMode::MultiscaleCrf).toText();
   auto replaced = [&] (const std::string& from, const std::string& to) {
     std::string t = good;
     const auto at = t.find (from);
     EXPECT_NE (at, std::string::npos) << from;
-    return at == std::string::npos ? t : t.replace (at, from.size (), to);
+    return at == std::string::npos ? t : t.replace (at, from.size(), to);
   };
   const std::string cols =
-      std::to_string (trained (CrfMode::MultiscaleCrf).getFeatureNames ().size () + 1);
+      std::to_string (trained (CrfMode::MultiscaleCrf).getFeatureNames().size() + 1);
   const std::vector<std::pair<const char*, std::string>> cases = {
       {"empty", ""},
       {"not a model", "hello world\n"},
@@ -177,16 +186,18 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
       {"unknown ground estimate", replaced (" lowest_in_block\n", " lowest\n")},
       {"no ground estimate", replaced (" lowest_in_block\n", "\n")},
       {"unknown mode", replaced ("mode mcrf", "mode best")},
-      {"truncated", good.substr (0, good.size () / 2)},
+      {"truncated", good.substr (0, good.size() / 2)},
       {"no end", replaced ("end\n", "")},
       {"bad number", replaced ("prior_sigma 1", "prior_sigma one")},
       {"negative sigma", replaced ("prior_sigma 1", "prior_sigma -1")},
       {"other feature set", replaced ("feature clutterness", "feature spin_image")},
       {"too few classes", replaced ("classes 5", "classes 4")},
       {"wrong matrix size", replaced ("weights local_edge 5", "weights local_edge 4")},
-      {"NaN weight", replaced ("weights regional_edge 5 " + cols + "\n",
-                               "weights regional_edge 5 " + cols + "\nnan ")},
-      // The feature set follows the scales: a single-scale model claiming scales is refused.
+      {"NaN weight",
+       replaced ("weights regional_edge 5 " + cols + "\n",
+                 "weights regional_edge 5 " + cols + "\nnan ")},
+      // The feature set follows the scales: a single-scale model claiming scales is
+      // refused.
       {"other feature scales", replaced ("feature_scales 0", "feature_scales 1 0.5")},
       {"negative scale", replaced ("feature_scales 0", "feature_scales 1 -1")},
       {"scale count", replaced ("feature_scales 0", "feature_scales 1")},
@@ -195,11 +206,10 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
       {"no edge scale", replaced ("edge_scale ", "edge_scales ")},
       {"negative edge scale", replaced ("edge_scale ", "edge_scale -")},
   };
-  for (const auto& [name, text] : cases)
-  {
+  for (const auto& [name, text] : cases) {
     MultiscaleCrfModel m;
     EXPECT_FALSE (m.parseModel (text, name)) << name;
-    EXPECT_FALSE (m.isTrained ()) << name;
+    EXPECT_FALSE (m.isTrained()) << name;
   }
   MultiscaleCrfModel m;
   EXPECT_FALSE (m.loadModel (tempPath ("no_such_model.txt")));
@@ -207,7 +217,7 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
   MultiscaleCrfModel kept;
   ASSERT_TRUE (kept.parseModel (good, "good"));
   EXPECT_FALSE (kept.parseModel (cases[4].second, "truncated"));
-  EXPECT_EQ (kept.toText (), good);
+  EXPECT_EQ (kept.toText(), good);
 }
 
 TEST (MultiscaleCrf, NodeExpansionsAreStoredAndRefusedWhenInconsistent)
@@ -215,28 +225,26 @@ TEST (MultiscaleCrf, NodeExpansionsAreStoredAndRefusedWhenInconsistent)
   // The spline expansion with products: a knots line per feature, node weights over the
   // expanded inputs, edge weights over the features alone.
   MultiscaleCrfModel m;
-  pcl_ext::CrfSettings m_settings = m.getSettings ();
+  pcl_ext::CrfSettings m_settings = m.getSettings();
   m_settings.mode = CrfMode::MultiscaleCrf;
   m_settings.node_expansion = pcl_ext::CrfNodeExpansion::SplineProducts;
   m_settings.spline_knots = 3;
   m.setSettings (m_settings);
   ASSERT_TRUE (m.train ({street (1).input}, {street (1).labels}));
   EXPECT_GE (accuracy (m, street (2)), 0.95);
-  const std::string good = m.toText ();
-  const std::size_t D = m.getFeatureNames ().size ();
+  const std::string good = m.toText();
+  const std::size_t D = m.getFeatureNames().size();
   std::size_t knots = 0, lines = 0;
   for (std::size_t at = good.find ("\nknots "); at != std::string::npos;
-       at = good.find ("\nknots ", at + 1))
-  {
+       at = good.find ("\nknots ", at + 1)) {
     std::istringstream line (good.substr (at + 7, good.find ('\n', at + 1) - at - 7));
     std::string name;
     std::size_t n = 0;
     line >> name >> n;
-    EXPECT_EQ (name, m.getFeatureNames ()[lines]);
+    EXPECT_EQ (name, m.getFeatureNames()[lines]);
     EXPECT_LE (n, 3u);
     double previous = -6.0, t = 0.0;
-    for (std::size_t k = 0; k < n && line >> t; ++k)
-    {
+    for (std::size_t k = 0; k < n && line >> t; ++k) {
       EXPECT_GT (t, previous) << name;
       EXPECT_LT (t, 5.0) << name;
       previous = t;
@@ -248,11 +256,13 @@ TEST (MultiscaleCrf, NodeExpansionsAreStoredAndRefusedWhenInconsistent)
   EXPECT_GT (knots, D) << "most features take more than two values";
   const std::string node_cols = std::to_string (D + knots + D * (D - 1) / 2 + 1);
   const std::string edge_cols = std::to_string (D + 1);
-  EXPECT_NE (good.find ("weights node_supervoxel 5 " + node_cols + "\n"), std::string::npos);
-  EXPECT_NE (good.find ("weights regional_edge 5 " + edge_cols + "\n"), std::string::npos);
+  EXPECT_NE (good.find ("weights node_supervoxel 5 " + node_cols + "\n"),
+             std::string::npos);
+  EXPECT_NE (good.find ("weights regional_edge 5 " + edge_cols + "\n"),
+             std::string::npos);
   MultiscaleCrfModel loaded;
   ASSERT_TRUE (loaded.parseModel (good, "spline model"));
-  EXPECT_EQ (loaded.toText (), good);
+  EXPECT_EQ (loaded.toText(), good);
   std::vector<std::uint32_t> la, lb;
   Eigen::MatrixXf pa, pb;
   ASSERT_TRUE (m.classify (street (2).input, la, pa));
@@ -263,15 +273,17 @@ TEST (MultiscaleCrf, NodeExpansionsAreStoredAndRefusedWhenInconsistent)
     std::string t = good;
     const auto at = t.find (from);
     EXPECT_NE (at, std::string::npos) << from;
-    return at == std::string::npos ? t : t.replace (at, from.size (), to);
+    return at == std::string::npos ? t : t.replace (at, from.size(), to);
   };
   const std::string first = good.substr (good.find ("knots clutterness"));
   const std::string first_line = first.substr (0, first.find ('\n') + 1);
   const std::vector<std::pair<const char*, std::string>> cases = {
-      {"unknown expansion", replaced ("node_expansion spline_products", "node_expansion cubic")},
+      {"unknown expansion",
+       replaced ("node_expansion spline_products", "node_expansion cubic")},
       {"no knots", replaced (first_line, "")},
       {"more knots than K",
-       replaced ("node_expansion spline_products 3", "node_expansion spline_products 1")},
+       replaced ("node_expansion spline_products 3",
+                 "node_expansion spline_products 1")},
       {"knots descending", replaced (first_line, "knots clutterness 2 1 0\n")},
       {"knots of another feature", replaced (first_line, "knots height 1 0\n")},
       {"NaN knot", replaced (first_line, "knots clutterness 1 nan\n")},
@@ -279,14 +291,13 @@ TEST (MultiscaleCrf, NodeExpansionsAreStoredAndRefusedWhenInconsistent)
       {"linear with spline weights",
        replaced ("node_expansion spline_products 3", "node_expansion linear 3")},
   };
-  for (const auto& [name, text] : cases)
-  {
+  for (const auto& [name, text] : cases) {
     MultiscaleCrfModel bad;
     EXPECT_FALSE (bad.parseModel (text, name)) << name;
-    EXPECT_FALSE (bad.isTrained ()) << name;
+    EXPECT_FALSE (bad.isTrained()) << name;
   }
   MultiscaleCrfModel bad_knots;
-  pcl_ext::CrfSettings bad_knots_settings = bad_knots.getSettings ();
+  pcl_ext::CrfSettings bad_knots_settings = bad_knots.getSettings();
   bad_knots_settings.spline_knots = 0;
   bad_knots.setSettings (bad_knots_settings);
   EXPECT_FALSE (bad_knots.train ({street (1).input}, {street (1).labels}));
@@ -298,24 +309,28 @@ TEST (MultiscaleCrf, BadTrainingInput)
   MultiscaleCrfModel m;
   EXPECT_FALSE (m.train ({}, {}));
   EXPECT_FALSE (m.train ({s.input}, {}));
-  EXPECT_FALSE (m.train ({s.input}, {std::vector<std::uint32_t> (10, 1)}));  // size mismatch
-  EXPECT_FALSE (m.train ({s.input}, {std::vector<std::uint32_t> (s.labels.size (), 0)}));  // unlabelled
-  EXPECT_FALSE (m.train ({s.input}, {std::vector<std::uint32_t> (s.labels.size (), 3)}));  // one class
+  EXPECT_FALSE (
+      m.train ({s.input}, {std::vector<std::uint32_t> (10, 1)})); // size mismatch
+  EXPECT_FALSE (m.train (
+      {s.input}, {std::vector<std::uint32_t> (s.labels.size(), 0)})); // unlabelled
+  EXPECT_FALSE (m.train (
+      {s.input}, {std::vector<std::uint32_t> (s.labels.size(), 3)})); // one class
   MultiscaleCrfModel named;
-  named.setClassNames ({{1, "vegetation"}, {2, "trunk"}, {9, "water"}});  // water has no points
+  named.setClassNames (
+      {{1, "vegetation"}, {2, "trunk"}, {9, "water"}}); // water has no points
   EXPECT_FALSE (named.train ({s.input}, {s.labels}));
   pcl_ext::CrfInput empty;
-  empty.xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  empty.xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   EXPECT_FALSE (m.train ({empty}, {{}}));
   MultiscaleCrfModel bad_sigma;
-  pcl_ext::CrfSettings bad_sigma_settings = bad_sigma.getSettings ();
+  pcl_ext::CrfSettings bad_sigma_settings = bad_sigma.getSettings();
   bad_sigma_settings.sigma = -1.0;
   bad_sigma.setSettings (bad_sigma_settings);
   EXPECT_FALSE (bad_sigma.train ({s.input}, {s.labels}));
-  EXPECT_FALSE (m.isTrained ());
+  EXPECT_FALSE (m.isTrained());
   EXPECT_FALSE (m.saveModel (tempPath ("untrained.txt")));
   std::ifstream none (tempPath ("untrained.txt"));
-  EXPECT_FALSE (none.good ()) << "no partial model file";
+  EXPECT_FALSE (none.good()) << "no partial model file";
 }
 
 TEST (MultiscaleCrf, BadClassificationInput)
@@ -324,18 +339,18 @@ TEST (MultiscaleCrf, BadClassificationInput)
   Eigen::MatrixXf prob;
   MultiscaleCrfModel untrained;
   EXPECT_FALSE (untrained.classify (street (2).input, labels, prob));
-  EXPECT_TRUE (labels.empty ());
+  EXPECT_TRUE (labels.empty());
   MultiscaleCrfModel& m = trained (CrfMode::MultiscaleCrf);
   pcl_ext::CrfInput no_colour = street (2).input;
-  no_colour.colours.clear ();  // the model was trained with colour
+  no_colour.colours.clear(); // the model was trained with colour
   EXPECT_FALSE (m.classify (no_colour, labels, prob));
-  EXPECT_TRUE (labels.empty ());
+  EXPECT_TRUE (labels.empty());
   pcl_ext::CrfInput empty;
   EXPECT_FALSE (m.classify (empty, labels, prob));
   // NaN points get label 0; the others are classified.
   pcl_ext::CrfInput with_nan = street (2).input;
   auto xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (*with_nan.xyz);
-  (*xyz)[10].x = std::numeric_limits<float>::quiet_NaN ();
+  (*xyz)[10].x = std::numeric_limits<float>::quiet_NaN();
   with_nan.xyz = xyz;
   ASSERT_TRUE (m.classify (with_nan, labels, prob));
   EXPECT_EQ (labels[10], 0u);

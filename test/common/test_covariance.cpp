@@ -8,15 +8,14 @@
 #include <cmath>
 #include <random>
 
-namespace
-{
+namespace {
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 
 pcl::Indices
 allIndices (const Cloud& cloud)
 {
-  pcl::Indices idx (cloud.size ());
-  for (std::size_t i = 0; i < idx.size (); ++i)
+  pcl::Indices idx (cloud.size());
+  for (std::size_t i = 0; i < idx.size(); ++i)
     idx[i] = static_cast<pcl::index_t> (i);
   return idx;
 }
@@ -27,7 +26,7 @@ decompose (const Cloud& cloud, Eigen::Vector3d* centroid_out = nullptr)
   Eigen::Matrix3d cov;
   Eigen::Vector3d centroid;
   EXPECT_EQ (pcl_ext::computeLocalCovariance (cloud, allIndices (cloud), cov, centroid),
-             cloud.size ());
+             cloud.size());
   pcl_ext::EigenDecomposition eig;
   EXPECT_TRUE (pcl_ext::computeEigenDecomposition (cov, eig));
   if (centroid_out)
@@ -37,53 +36,56 @@ decompose (const Cloud& cloud, Eigen::Vector3d* centroid_out = nullptr)
 
 // A regular n x n grid on the plane through origin o spanned by unit vectors u and v.
 Cloud
-grid (const Eigen::Vector3d& o, const Eigen::Vector3d& u, const Eigen::Vector3d& v, int n,
+grid (const Eigen::Vector3d& o,
+      const Eigen::Vector3d& u,
+      const Eigen::Vector3d& v,
+      int n,
       double spacing)
 {
   Cloud cloud;
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-    {
+    for (int j = 0; j < n; ++j) {
       const Eigen::Vector3d p = o + (i * spacing) * u + (j * spacing) * v;
-      cloud.push_back (pcl::PointXYZ (static_cast<float> (p.x ()), static_cast<float> (p.y ()),
-                                      static_cast<float> (p.z ())));
+      cloud.push_back (pcl::PointXYZ (static_cast<float> (p.x()),
+                                      static_cast<float> (p.y()),
+                                      static_cast<float> (p.z())));
     }
   return cloud;
 }
-}  // namespace
+} // namespace
 
 TEST (Covariance, PlaneHasZeroSmallestEigenvalueAndItsNormal)
 {
-  const Eigen::Vector3d u = Eigen::Vector3d (1, 1, 0).normalized ();
-  const Eigen::Vector3d v = Eigen::Vector3d (-1, 1, 1).normalized ();
-  const Eigen::Vector3d n = u.cross (v).normalized ();
+  const Eigen::Vector3d u = Eigen::Vector3d (1, 1, 0).normalized();
+  const Eigen::Vector3d v = Eigen::Vector3d (-1, 1, 1).normalized();
+  const Eigen::Vector3d n = u.cross (v).normalized();
   const auto eig = decompose (grid (Eigen::Vector3d (2, -3, 1), u, v, 11, 0.1));
   EXPECT_NEAR (eig.values[0], 0.0, 1e-12);
   // A regular grid of 11 x 11 with spacing 0.1: variance along each axis is
   // (spacing^2) (n^2 - 1) / 12 = 0.01 * 120 / 12 = 0.1.
   EXPECT_NEAR (eig.values[1], 0.1, 1e-6);
   EXPECT_NEAR (eig.values[2], 0.1, 1e-6);
-  EXPECT_NEAR (std::abs (eig.normal ().dot (n)), 1.0, 1e-9);
-  const auto f = pcl_ext::computeEigenFeatures (eig.values, eig.normal ());
+  EXPECT_NEAR (std::abs (eig.normal().dot (n)), 1.0, 1e-9);
+  const auto f = pcl_ext::computeEigenFeatures (eig.values, eig.normal());
   EXPECT_NEAR (f.surface_variance, 0.0, 1e-9);
   EXPECT_NEAR (f.planarity, 1.0, 1e-6);
   EXPECT_NEAR (f.linearity, 0.0, 1e-6);
   EXPECT_NEAR (f.scattering, 0.0, 1e-9);
-  // Float input leaves l0 ~ (1e-7 * |coordinate|)^2 ~ 1e-13 and the cube root magnifies it.
+  // Float input leaves l0 ~ (1e-7 * |coordinate|)^2 ~ 1e-13 and the cube root magnifies
+  // it.
   EXPECT_NEAR (f.omnivariance, 0.0, 1e-4);
   EXPECT_NEAR (f.anisotropy, 1.0, 1e-9);
   EXPECT_NEAR (f.eigenentropy, std::log (2.0), 1e-6);
-  EXPECT_NEAR (f.verticality, 1.0 - std::abs (n.z ()), 1e-6);
+  EXPECT_NEAR (f.verticality, 1.0 - std::abs (n.z()), 1e-6);
 }
 
 TEST (Covariance, LineHasOneNonZeroEigenvalue)
 {
   Cloud cloud;
-  const Eigen::Vector3d d = Eigen::Vector3d (1, 2, 3).normalized ();
-  for (int i = 0; i < 21; ++i)
-  {
+  const Eigen::Vector3d d = Eigen::Vector3d (1, 2, 3).normalized();
+  for (int i = 0; i < 21; ++i) {
     const Eigen::Vector3d p = Eigen::Vector3d (1, 1, 1) + 0.05 * i * d;
-    cloud.push_back (pcl::PointXYZ (p.x (), p.y (), p.z ()));
+    cloud.push_back (pcl::PointXYZ (p.x(), p.y(), p.z()));
   }
   const auto eig = decompose (cloud);
   EXPECT_NEAR (eig.values[0], 0.0, 1e-10);
@@ -91,7 +93,7 @@ TEST (Covariance, LineHasOneNonZeroEigenvalue)
   // 21 points spaced 0.05: variance 0.0025 * (21^2 - 1) / 12.
   EXPECT_NEAR (eig.values[2], 0.0025 * 440.0 / 12.0, 1e-6);
   EXPECT_NEAR (std::abs (eig.vectors.col (2).dot (d)), 1.0, 1e-6);
-  const auto f = pcl_ext::computeEigenFeatures (eig.values, eig.normal ());
+  const auto f = pcl_ext::computeEigenFeatures (eig.values, eig.normal());
   EXPECT_NEAR (f.linearity, 1.0, 1e-6);
   EXPECT_NEAR (f.planarity, 0.0, 1e-6);
   EXPECT_NEAR (f.eigenentropy, 0.0, 1e-6);
@@ -103,33 +105,32 @@ TEST (Covariance, SphereAndIsotropicBlobHaveEqualEigenvalues)
   Cloud sphere;
   const double r = 2.0;
   for (int a = 0; a < 3; ++a)
-    for (int s : {-1, 1})
-    {
-      Eigen::Vector3d p = Eigen::Vector3d::Zero ();
+    for (int s : {-1, 1}) {
+      Eigen::Vector3d p = Eigen::Vector3d::Zero();
       p[a] = s * r;
-      sphere.push_back (pcl::PointXYZ (p.x () + 5, p.y () - 7, p.z () + 1));
+      sphere.push_back (pcl::PointXYZ (p.x() + 5, p.y() - 7, p.z() + 1));
     }
   for (int sx : {-1, 1})
     for (int sy : {-1, 1})
-      for (int sz : {-1, 1})
-      {
+      for (int sz : {-1, 1}) {
         const Eigen::Vector3d p = Eigen::Vector3d (sx, sy, sz) * (r / std::sqrt (3.0));
-        sphere.push_back (pcl::PointXYZ (p.x () + 5, p.y () - 7, p.z () + 1));
+        sphere.push_back (pcl::PointXYZ (p.x() + 5, p.y() - 7, p.z() + 1));
       }
   Eigen::Vector3d centroid;
   const auto eig = decompose (sphere, &centroid);
-  EXPECT_NEAR ((centroid - Eigen::Vector3d (5, -7, 1)).norm (), 0.0, 1e-5);
+  EXPECT_NEAR ((centroid - Eigen::Vector3d (5, -7, 1)).norm(), 0.0, 1e-5);
   // Each axis: (2 r^2 + 8 r^2 / 3) / 14.
   const double expected = (2.0 * r * r + 8.0 * r * r / 3.0) / 14.0;
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR (eig.values[i], expected, 1e-5);
-  const auto f = pcl_ext::computeEigenFeatures (eig.values, eig.normal ());
+  const auto f = pcl_ext::computeEigenFeatures (eig.values, eig.normal());
   EXPECT_NEAR (f.surface_variance, 1.0 / 3.0, 1e-5);
   EXPECT_NEAR (f.scattering, 1.0, 1e-5);
   EXPECT_NEAR (f.eigenentropy, std::log (3.0), 1e-5);
   EXPECT_NEAR (f.omnivariance, 1.0 / 3.0, 1e-5);
 
-  // A large Gaussian blob tends to the same: eigenvalues within a few percent of sigma^2.
+  // A large Gaussian blob tends to the same: eigenvalues within a few percent of
+  // sigma^2.
   std::mt19937 rng (7);
   std::normal_distribution<double> g (0.0, 0.5);
   Cloud blob;
@@ -142,29 +143,31 @@ TEST (Covariance, SphereAndIsotropicBlobHaveEqualEigenvalues)
 
 TEST (Covariance, GeoreferencedOffsetsKeepFullPrecision)
 {
-  // A horizontal patch at UTM-like coordinates. Float holds these x, y to 0.5 m, so the patch
-  // spans whole float steps; the plane itself (z constant) is exact and must come out flat.
+  // A horizontal patch at UTM-like coordinates. Float holds these x, y to 0.5 m, so the
+  // patch spans whole float steps; the plane itself (z constant) is exact and must come
+  // out flat.
   Cloud cloud;
   for (int i = 0; i < 20; ++i)
     for (int j = 0; j < 20; ++j)
-      cloud.push_back (pcl::PointXYZ (6000000.0f + 0.5f * i, 500000.0f + 0.5f * j, 12.25f));
+      cloud.push_back (
+          pcl::PointXYZ (6000000.0f + 0.5f * i, 500000.0f + 0.5f * j, 12.25f));
   Eigen::Vector3d centroid;
   const auto eig = decompose (cloud, &centroid);
   EXPECT_NEAR (eig.values[0], 0.0, 1e-9);
-  EXPECT_NEAR (std::abs (eig.normal ().z ()), 1.0, 1e-9);
-  EXPECT_NEAR (centroid.x (), 6000000.0 + 0.5 * 9.5, 1e-6);
-  EXPECT_NEAR (centroid.y (), 500000.0 + 0.5 * 9.5, 1e-6);
+  EXPECT_NEAR (std::abs (eig.normal().z()), 1.0, 1e-9);
+  EXPECT_NEAR (centroid.x(), 6000000.0 + 0.5 * 9.5, 1e-6);
+  EXPECT_NEAR (centroid.y(), 500000.0 + 0.5 * 9.5, 1e-6);
   // 20 points spaced 0.5: variance 0.25 (400 - 1) / 12.
   // The closed-form 3x3 solver is accurate to a few 1e-9 relative.
   EXPECT_NEAR (eig.values[1], 0.25 * 399.0 / 12.0, 1e-8 * 8.3125);
 
-  // The naive single-pass float formula E[x^2] - E[x]^2 fails here; show the kernel does not
-  // by comparing with the same patch near the origin.
+  // The naive single-pass float formula E[x^2] - E[x]^2 fails here; show the kernel
+  // does not by comparing with the same patch near the origin.
   Cloud local;
   for (const auto& p : cloud)
     local.push_back (pcl::PointXYZ (p.x - 6000000.0f, p.y - 500000.0f, p.z));
   const auto local_eig = decompose (local);
-  EXPECT_NEAR ((eig.values - local_eig.values).norm (), 0.0, 1e-12);
+  EXPECT_NEAR ((eig.values - local_eig.values).norm(), 0.0, 1e-12);
 }
 
 TEST (Covariance, DegenerateAndInvalidInput)
@@ -174,9 +177,10 @@ TEST (Covariance, DegenerateAndInvalidInput)
   for (int i = 0; i < 5; ++i)
     same.push_back (pcl::PointXYZ (1, 2, 3));
   const auto eig = decompose (same);
-  EXPECT_EQ (eig.values, Eigen::Vector3d::Zero ());
+  EXPECT_EQ (eig.values, Eigen::Vector3d::Zero());
   EXPECT_TRUE (std::isnan (pcl_ext::surfaceVariance (eig.values)));
-  EXPECT_FALSE (pcl_ext::isFinite (pcl_ext::computeEigenFeatures (eig.values, eig.normal ())));
+  EXPECT_FALSE (
+      pcl_ext::isFinite (pcl_ext::computeEigenFeatures (eig.values, eig.normal())));
 
   // NaN points are skipped; no finite point leaves the outputs untouched and returns 0.
   Cloud with_nan;
@@ -185,18 +189,20 @@ TEST (Covariance, DegenerateAndInvalidInput)
   with_nan.push_back (pcl::PointXYZ (1, 0, 0));
   Eigen::Matrix3d cov = Eigen::Matrix3d::Constant (-1);
   Eigen::Vector3d c;
-  EXPECT_EQ (pcl_ext::computeLocalCovariance (with_nan, allIndices (with_nan), cov, c), 2u);
+  EXPECT_EQ (pcl_ext::computeLocalCovariance (with_nan, allIndices (with_nan), cov, c),
+             2u);
   EXPECT_NEAR (cov (0, 0), 0.25, 1e-12);
   Cloud only_nan;
   only_nan.push_back (pcl::PointXYZ (NAN, NAN, NAN));
   cov.setConstant (-1);
-  EXPECT_EQ (pcl_ext::computeLocalCovariance (only_nan, allIndices (only_nan), cov, c), 0u);
+  EXPECT_EQ (pcl_ext::computeLocalCovariance (only_nan, allIndices (only_nan), cov, c),
+             0u);
   EXPECT_EQ (cov (0, 0), -1);
   Cloud empty;
-  EXPECT_EQ (pcl_ext::computeLocalCovariance (empty, pcl::Indices (), cov, c), 0u);
+  EXPECT_EQ (pcl_ext::computeLocalCovariance (empty, pcl::Indices(), cov, c), 0u);
 
   pcl_ext::EigenDecomposition bad;
-  Eigen::Matrix3d nan_cov = Eigen::Matrix3d::Identity ();
+  Eigen::Matrix3d nan_cov = Eigen::Matrix3d::Identity();
   nan_cov (1, 1) = NAN;
   EXPECT_FALSE (pcl_ext::computeEigenDecomposition (nan_cov, bad));
 }

@@ -1,5 +1,6 @@
 /*
- * Tests of the index check every class runs before it reads the points its indices name.
+ * Tests of the index check every class runs before it reads the points its indices
+ * name.
  */
 #include <pcl_ext/common/indices.h>
 
@@ -10,25 +11,27 @@
 TEST (Indices, InRangeForEveryPointOfTheCloud)
 {
   EXPECT_TRUE (pcl_ext::indicesInRange ({0, 1, 4}, 5, "[test]"));
-  EXPECT_TRUE (pcl_ext::indicesInRange ({4, 4, 0}, 5, "[test]"));  // repeats are not errors
+  EXPECT_TRUE (
+      pcl_ext::indicesInRange ({4, 4, 0}, 5, "[test]")); // repeats are not errors
   EXPECT_TRUE (pcl_ext::indicesInRange ({}, 0, "[test]"));
   EXPECT_TRUE (pcl_ext::indicesInRange ({}, 5, "[test]"));
 }
 
 TEST (Indices, OutOfRangeIsReportedWithTheCallerAndTheFirstBadIndex)
 {
-  testing::internal::CaptureStderr ();
+  testing::internal::CaptureStderr();
   EXPECT_FALSE (pcl_ext::indicesInRange ({0, 5, 7}, 5, "[pcl_ext::Test::compute]"));
-  std::string message = testing::internal::GetCapturedStderr ();
-  EXPECT_NE (message.find ("[pcl_ext::Test::compute] Index 5 is out of range for a cloud of 5 "
-                           "points."),
-             std::string::npos)
+  std::string message = testing::internal::GetCapturedStderr();
+  EXPECT_NE (
+      message.find ("[pcl_ext::Test::compute] Index 5 is out of range for a cloud of 5 "
+                    "points."),
+      std::string::npos)
       << message;
-  testing::internal::CaptureStderr ();
+  testing::internal::CaptureStderr();
   EXPECT_FALSE (pcl_ext::indicesInRange ({2, -1}, 5, "[test]"));
-  message = testing::internal::GetCapturedStderr ();
+  message = testing::internal::GetCapturedStderr();
   EXPECT_NE (message.find ("Index -1 is out of range"), std::string::npos) << message;
-  testing::internal::CaptureStderr ();
+  testing::internal::CaptureStderr();
   EXPECT_FALSE (pcl_ext::indicesInRange ({0}, 0, "[test]"));
-  testing::internal::GetCapturedStderr ();
+  testing::internal::GetCapturedStderr();
 }

@@ -18,7 +18,7 @@ TEST (ClassificationMetrics, WorkedExample)
   EXPECT_EQ (m.evaluated_points, 7u);
   EXPECT_EQ (m.ignored_points, 2u);
   EXPECT_EQ (m.correct_points, 4u);
-  ASSERT_EQ (m.confusion.size (), 2u);
+  ASSERT_EQ (m.confusion.size(), 2u);
   EXPECT_EQ (m.confusion[0], (std::vector<std::size_t>{2, 1}));
   EXPECT_EQ (m.confusion[1], (std::vector<std::size_t>{1, 2}));
   EXPECT_EQ (m.unclassified, (std::vector<std::size_t>{1, 0}));
@@ -44,10 +44,10 @@ TEST (ClassificationMetrics, WorkedExample)
 TEST (ClassificationMetrics, NamesAddRowsButOnlyTruthClassesAreAveraged)
 {
   const Labels truth = {1, 1, 2, 2};
-  const Labels predicted = {1, 1, 2, 5};  // 5 occurs only in the prediction
+  const Labels predicted = {1, 1, 2, 5}; // 5 occurs only in the prediction
   pcl_ext::ClassificationMetrics m;
-  ASSERT_TRUE (pcl_ext::evaluateClassification (predicted, truth, m,
-                                                {{1, "ground"}, {2, "facade"}, {3, "wire"}}));
+  ASSERT_TRUE (pcl_ext::evaluateClassification (
+      predicted, truth, m, {{1, "ground"}, {2, "facade"}, {3, "wire"}}));
   EXPECT_EQ (m.labels, (Labels{1, 2, 3, 5}));
   EXPECT_EQ (m.classes[0].name, "ground");
   EXPECT_EQ (m.classes[2].name, "wire");
@@ -71,13 +71,13 @@ TEST (ClassificationMetrics, PerfectEmptyAndMismatched)
   EXPECT_DOUBLE_EQ (m.mean_iou, 1.0);
 
   ASSERT_TRUE (pcl_ext::evaluateClassification ({}, {}, m));
-  EXPECT_TRUE (m.labels.empty ());
+  EXPECT_TRUE (m.labels.empty());
   EXPECT_DOUBLE_EQ (m.overall_accuracy, 0.0);
 
   ASSERT_TRUE (pcl_ext::evaluateClassification ({1, 2}, {0, 0}, m));
   EXPECT_EQ (m.ignored_points, 2u);
   EXPECT_EQ (m.evaluated_points, 0u);
-  EXPECT_TRUE (m.labels.empty ());
+  EXPECT_TRUE (m.labels.empty());
 
   EXPECT_FALSE (pcl_ext::evaluateClassification ({1}, {1, 1}, m));
 }

@@ -11,8 +11,7 @@
 using pcl_ext::SegmentOutcome;
 using Labels = std::vector<std::uint32_t>;
 
-namespace
-{
+namespace {
 /** n copies of label. */
 Labels
 run (std::uint32_t label, std::size_t n)
@@ -25,7 +24,7 @@ concat (std::initializer_list<Labels> parts)
 {
   Labels all;
   for (const auto& p : parts)
-    all.insert (all.end (), p.begin (), p.end ());
+    all.insert (all.end(), p.begin(), p.end());
   return all;
 }
 
@@ -36,7 +35,7 @@ evaluate (const Labels& predicted, const Labels& truth, double tolerance = 0.8)
   EXPECT_TRUE (pcl_ext::evaluateSegmentation (predicted, truth, m, tolerance));
   return m;
 }
-}  // namespace
+} // namespace
 
 TEST (SegmentationMetrics, PerfectUnderRelabelling)
 {
@@ -50,7 +49,7 @@ TEST (SegmentationMetrics, PerfectUnderRelabelling)
   EXPECT_DOUBLE_EQ (m.mean_best_iou, 1.0);
   EXPECT_DOUBLE_EQ (m.weighted_mean_best_iou, 1.0);
   EXPECT_DOUBLE_EQ (m.unsegmented_fraction, 0.0);
-  ASSERT_EQ (m.segments.size (), 3u);
+  ASSERT_EQ (m.segments.size(), 3u);
   EXPECT_EQ (m.segments[0].truth_label, 1u);
   EXPECT_EQ (m.segments[0].best_predicted, 50u);
   EXPECT_EQ (m.segments[1].best_predicted, 7u);
@@ -70,7 +69,7 @@ TEST (SegmentationMetrics, OverSegmentedIntoTwoHalves)
   EXPECT_EQ (m.noise, 0u);
   EXPECT_EQ (m.segments[0].outcome, SegmentOutcome::OverSegmented);
   EXPECT_DOUBLE_EQ (m.segments[0].iou, 0.5);
-  EXPECT_EQ (m.segments[0].best_predicted, 1u);  // tie: the smaller label
+  EXPECT_EQ (m.segments[0].best_predicted, 1u); // tie: the smaller label
   EXPECT_EQ (m.segments[0].overlap, 5u);
 }
 
@@ -92,7 +91,8 @@ TEST (SegmentationMetrics, UnderSegmentedByOneMergedSegment)
 
 TEST (SegmentationMetrics, MissedAndNoise)
 {
-  // 4 of 10 points found, the rest unsegmented: the segment is missed, the fragment is noise.
+  // 4 of 10 points found, the rest unsegmented: the segment is missed, the fragment is
+  // noise.
   const Labels truth = run (1, 10);
   const Labels predicted = concat ({run (6, 4), run (0, 6)});
   const auto m = evaluate (predicted, truth);
@@ -115,7 +115,8 @@ TEST (SegmentationMetrics, NothingPredicted)
 
 TEST (SegmentationMetrics, IgnoreLabelIsNotScored)
 {
-  // The predicted segment also covers points the ground truth ignores: still a perfect match.
+  // The predicted segment also covers points the ground truth ignores: still a perfect
+  // match.
   const Labels truth = concat ({run (1, 4), run (0, 4)});
   const Labels predicted = run (1, 8);
   const auto m = evaluate (predicted, truth);
@@ -136,7 +137,7 @@ TEST (SegmentationMetrics, ToleranceDecidesBetweenCorrectAndOver)
   const Labels predicted = concat ({run (1, 8), run (2, 2)});
   const auto loose = evaluate (predicted, truth, 0.8);
   EXPECT_EQ (loose.correct, 1u);
-  EXPECT_EQ (loose.noise, 1u);  // the 2-point fragment
+  EXPECT_EQ (loose.noise, 1u); // the 2-point fragment
   const auto strict = evaluate (predicted, truth, 0.9);
   EXPECT_EQ (strict.correct, 0u);
   EXPECT_EQ (strict.over_segmented, 1u);
@@ -145,12 +146,17 @@ TEST (SegmentationMetrics, ToleranceDecidesBetweenCorrectAndOver)
 
 TEST (SegmentationMetrics, MixedScene)
 {
-  // 1: correct (9 of 10, one stray point in 99); 2: over (4 + 4); 3 and 4: under (merged in 30);
-  // 5: missed (scattered over 40..44 and unsegmented); 99: noise.
-  const Labels truth = concat ({run (1, 10), run (2, 8), run (3, 5), run (4, 5),
-                                run (5, 5), run (0, 3)});
-  const Labels predicted = concat ({run (10, 9), run (99, 1), run (20, 4), run (21, 4),
-                                    run (30, 10), Labels{40, 41, 42, 0, 0}, run (99, 3)});
+  // 1: correct (9 of 10, one stray point in 99); 2: over (4 + 4); 3 and 4: under
+  // (merged in 30); 5: missed (scattered over 40..44 and unsegmented); 99: noise.
+  const Labels truth = concat (
+      {run (1, 10), run (2, 8), run (3, 5), run (4, 5), run (5, 5), run (0, 3)});
+  const Labels predicted = concat ({run (10, 9),
+                                    run (99, 1),
+                                    run (20, 4),
+                                    run (21, 4),
+                                    run (30, 10),
+                                    Labels{40, 41, 42, 0, 0},
+                                    run (99, 3)});
   const auto m = evaluate (predicted, truth);
   EXPECT_EQ (m.num_truth_segments, 5u);
   EXPECT_EQ (m.correct, 1u);
@@ -196,7 +202,8 @@ TEST (SegmentationMetrics, PointIndicesInput)
   const Labels truth = {7, 7, 7, 8, 8, 8};
   pcl_ext::SegmentationMetrics m;
   ASSERT_TRUE (pcl_ext::evaluateSegmentation (clusters, truth, m));
-  // Segment 8 is found by 2 of its 3 points: below T = 0.8, missed; above T = 0.6, correct.
+  // Segment 8 is found by 2 of its 3 points: below T = 0.8, missed; above T = 0.6,
+  // correct.
   EXPECT_EQ (m.correct, 1u);
   EXPECT_EQ (m.missed, 1u);
   EXPECT_EQ (m.noise, 1u);
@@ -226,10 +233,10 @@ TEST (SegmentationMetrics, MillionsOfPointsManySegments)
   const std::size_t segments = 30000, size = 100;
   Labels truth (segments * size), predicted (segments * size);
   for (std::size_t s = 0; s < segments; ++s)
-    for (std::size_t i = 0; i < size; ++i)
-    {
+    for (std::size_t i = 0; i < size; ++i) {
       truth[s * size + i] = static_cast<std::uint32_t> (s + 1);
-      predicted[s * size + i] = static_cast<std::uint32_t> (2 * s + 1 + (i >= size / 2));
+      predicted[s * size + i] =
+          static_cast<std::uint32_t> (2 * s + 1 + (i >= size / 2));
     }
   const auto m = evaluate (predicted, truth);
   EXPECT_EQ (m.over_segmented, segments);

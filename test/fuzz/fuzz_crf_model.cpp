@@ -1,7 +1,8 @@
 /*
  * Fuzz target: the multi-scale CRF model file (MultiscaleCrfModel::loadModel).
  *
- * A model that loads is written back with toText() and must load again to the same text.
+ * A model that loads is written back with toText() and must load again to the same
+ * text.
  */
 #include <pcl_ext/classification/crf_model.h>
 
@@ -16,20 +17,20 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
   static const bool quiet = [] {
     pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
     return true;
-  } ();
-  (void) quiet;
+  }();
+  (void)quiet;
   pcl_ext::MultiscaleCrfModel model;
-  if (!model.loadModel (file.write (data, size)))
-  {
-    pcl_ext_fuzz::check (!model.isTrained (), "a failed load leaves the model untrained");
+  if (!model.loadModel (file.write (data, size))) {
+    pcl_ext_fuzz::check (!model.isTrained(),
+                         "a failed load leaves the model untrained");
     return 0;
   }
   using pcl_ext_fuzz::check;
-  check (model.isTrained (), "a loaded model is trained");
-  check (model.getClassLabels ().size () >= 2, "a model has two classes or more");
-  const std::string text = model.toText ();
+  check (model.isTrained(), "a loaded model is trained");
+  check (model.getClassLabels().size() >= 2, "a model has two classes or more");
+  const std::string text = model.toText();
   pcl_ext::MultiscaleCrfModel again;
   check (again.parseModel (text, "round trip"), "a loaded model's text loads again");
-  check (again.toText () == text, "the round trip keeps the model");
+  check (again.toText() == text, "the round trip keeps the model");
   return 0;
 }

@@ -12,20 +12,17 @@
 #include <cstdlib>
 #include <string>
 
-namespace pcl_ext_fuzz
-{
-/** One anonymous in-memory file (memfd), rewritten for every input and read back through
-  * /proc/self/fd/N: no disk traffic, nothing left behind. */
-class InputFile
-{
+namespace pcl_ext_fuzz {
+/** One anonymous in-memory file (memfd), rewritten for every input and read back
+ * through /proc/self/fd/N: no disk traffic, nothing left behind. */
+class InputFile {
 public:
-  InputFile ()
+  InputFile()
   {
     fd_ = ::memfd_create ("pcl_ext_fuzz_input", 0);
-    if (fd_ < 0)
-    {
+    if (fd_ < 0) {
       std::perror ("memfd_create");
-      std::abort ();
+      std::abort();
     }
     path_ = "/proc/self/fd/" + std::to_string (fd_);
   }
@@ -35,13 +32,13 @@ public:
   write (const std::uint8_t* data, std::size_t size)
   {
     if (::ftruncate (fd_, 0) != 0)
-      std::abort ();
+      std::abort();
     std::size_t done = 0;
-    while (done < size)
-    {
-      const ssize_t n = ::pwrite (fd_, data + done, size - done, static_cast<off_t> (done));
+    while (done < size) {
+      const ssize_t n =
+          ::pwrite (fd_, data + done, size - done, static_cast<off_t> (done));
       if (n <= 0)
-        std::abort ();
+        std::abort();
       done += static_cast<std::size_t> (n);
     }
     return path_;
@@ -52,14 +49,14 @@ private:
   std::string path_;
 };
 
-/** Stops the fuzzer with a message when a documented guarantee of a reader does not hold. */
+/** Stops the fuzzer with a message when a documented guarantee of a reader does not
+ * hold. */
 inline void
 check (bool condition, const char* what)
 {
-  if (!condition)
-  {
+  if (!condition) {
     std::fprintf (stderr, "pcl_ext fuzz: guarantee violated: %s\n", what);
-    std::abort ();
+    std::abort();
   }
 }
-}  // namespace pcl_ext_fuzz
+} // namespace pcl_ext_fuzz

@@ -1,7 +1,7 @@
 /*
  * Fuzz target: pcl_ext::io::loadTextFootprints (id n x1 y1 ... xn yn per line), and
- * loadFootprints, which tells the format from the content when the name has no known extension
- * (the path here has none).
+ * loadFootprints, which tells the format from the content when the name has no known
+ * extension (the path here has none).
  */
 #include "fuzz_footprint_checks.h"
 

@@ -1,6 +1,6 @@
 /*
- * Fuzz target: pcl_ext::io::loadWktFootprints (one [id] POLYGON / MULTIPOLYGON per line) and
- * parseWkt.
+ * Fuzz target: pcl_ext::io::loadWktFootprints (one [id] POLYGON / MULTIPOLYGON per
+ * line) and parseWkt.
  */
 #include "fuzz_footprint_checks.h"
 

@@ -9,12 +9,12 @@ TEST (ClassMapping, LoadAndApply)
 {
   pcl_ext::io::ClassMapping m;
   m.load (fixture ("classes_sample.txt"));
-  EXPECT_EQ (m.size (), 3u);
+  EXPECT_EQ (m.size(), 3u);
   EXPECT_EQ (m.map (1203), 1u);
   EXPECT_EQ (m.map (1401), 2u);
-  EXPECT_EQ (m.map (1501), 0u);  // unlisted: ignored
+  EXPECT_EQ (m.map (1501), 0u); // unlisted: ignored
   EXPECT_EQ (m.name (2), "facade");
-  EXPECT_EQ (m.name (3), "wire");  // a class with a name but no sources
+  EXPECT_EQ (m.name (3), "wire"); // a class with a name but no sources
   EXPECT_EQ (m.name (9), "9");
   std::vector<std::uint32_t> labels{1200, 1400, 7, 1203};
   m.apply (labels);
@@ -32,10 +32,12 @@ TEST (ClassMapping, Errors)
   pcl_ext::io::ClassMapping m;
   m.load (fixture ("classes_sample.txt"));
   std::string p = fixture ("classes_duplicate.txt");
-  expectReadError ([&] { m.load (p); }, p, 2, "source label 1203 is already mapped to class 1");
-  EXPECT_EQ (m.size (), 3u);  // unchanged
+  expectReadError (
+      [&] { m.load (p); }, p, 2, "source label 1203 is already mapped to class 1");
+  EXPECT_EQ (m.size(), 3u); // unchanged
   p = fixture ("points_bad_number.txt");
-  expectReadError ([&] { m.load (p); }, p, 1, "expected '<class id> <name> : <source labels>'");
+  expectReadError (
+      [&] { m.load (p); }, p, 1, "expected '<class id> <name> : <source labels>'");
   p = fixture ("empty.txt");
   expectReadError ([&] { m.load (p); }, p, 0, "empty file");
   p = fixture ("missing_classes.txt");

@@ -13,8 +13,7 @@
 TEST (CloudFields, ReadsAnyType)
 {
   pcl::PointCloud<pcl::PointXYZL> typed;
-  for (std::uint32_t l : {0u, 3u, 4000000000u})
-  {
+  for (std::uint32_t l : {0u, 3u, 4000000000u}) {
     pcl::PointXYZL p;
     p.x = p.y = p.z = 1.f;
     p.label = l;
@@ -34,7 +33,7 @@ TEST (CloudFields, ReadsAnyType)
   std::string error;
   EXPECT_FALSE (pcl_ext::io::getLabelField (blob, "x", labels, &error));
   EXPECT_NE (error.find ("point 1"), std::string::npos) << error;
-  EXPECT_EQ (labels, (std::vector<std::uint32_t>{1, 1, 1}));  // unchanged
+  EXPECT_EQ (labels, (std::vector<std::uint32_t>{1, 1, 1})); // unchanged
   EXPECT_FALSE (pcl_ext::io::getLabelField (blob, "segment", labels, &error));
   EXPECT_NE (error.find ("no field 'segment'"), std::string::npos) << error;
 
@@ -49,8 +48,7 @@ TEST (CloudFields, ReadsAnyType)
 TEST (CloudFields, WritesLabel)
 {
   pcl::PointCloud<pcl::PointXYZI> typed;
-  for (int i = 0; i < 3; ++i)
-  {
+  for (int i = 0; i < 3; ++i) {
     pcl::PointXYZI p;
     p.x = static_cast<float> (i);
     p.y = 2.f;

@@ -1,5 +1,6 @@
 /*
- * Tests of atomic output: a failed write never leaves a file, a good one replaces the old.
+ * Tests of atomic output: a failed write never leaves a file, a good one replaces the
+ * old.
  */
 #include <pcl_ext/io/file_output.h>
 
@@ -12,14 +13,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace
-{
+namespace {
 std::string
 freshFolder (const std::string& name)
 {
-  const std::string dir = testing::TempDir () + "/pcl_ext_" + name + "_" +
-                          std::to_string (::getpid ());
-  ::mkdir (dir.c_str (), 0755);
+  const std::string dir =
+      testing::TempDir() + "/pcl_ext_" + name + "_" + std::to_string (::getpid());
+  ::mkdir (dir.c_str(), 0755);
   return dir;
 }
 
@@ -27,8 +27,7 @@ std::vector<std::string>
 listFolder (const std::string& dir)
 {
   std::vector<std::string> names;
-  if (DIR* d = ::opendir (dir.c_str ()))
-  {
+  if (DIR* d = ::opendir (dir.c_str())) {
     while (dirent* e = ::readdir (d))
       if (std::string (e->d_name) != "." && std::string (e->d_name) != "..")
         names.push_back (e->d_name);
@@ -42,42 +41,43 @@ readAll (const std::string& path)
 {
   std::ifstream in (path);
   std::stringstream s;
-  s << in.rdbuf ();
-  return s.str ();
+  s << in.rdbuf();
+  return s.str();
 }
-}  // namespace
+} // namespace
 
 TEST (FileOutput, FailedWriteLeavesNothingAndKeepsTheOldFile)
 {
   const std::string dir = freshFolder ("atomic");
   const std::string path = dir + "/result.txt";
   ASSERT_TRUE (pcl_ext::io::writeTextFile (path, "old"));
-  testing::internal::CaptureStderr ();
+  testing::internal::CaptureStderr();
   EXPECT_FALSE (pcl_ext::io::writeFileAtomically (path, [] (const std::string& tmp) {
     std::ofstream (tmp) << "half";
-    return false;  // the writer failed midway
+    return false; // the writer failed midway
   }));
-  EXPECT_FALSE (pcl_ext::io::writeFileAtomically (path, [] (const std::string& tmp) -> bool {
-    std::ofstream (tmp) << "half";
-    throw std::runtime_error ("disk on fire");
-  }));
-  testing::internal::GetCapturedStderr ();
+  EXPECT_FALSE (
+      pcl_ext::io::writeFileAtomically (path, [] (const std::string& tmp) -> bool {
+        std::ofstream (tmp) << "half";
+        throw std::runtime_error ("disk on fire");
+      }));
+  testing::internal::GetCapturedStderr();
   EXPECT_EQ (readAll (path), "old");
-  EXPECT_EQ (listFolder (dir), std::vector<std::string> {"result.txt"});
+  EXPECT_EQ (listFolder (dir), std::vector<std::string>{"result.txt"});
   ASSERT_TRUE (pcl_ext::io::writeTextFile (path, "new"));
   EXPECT_EQ (readAll (path), "new");
-  std::remove (path.c_str ());
-  ::rmdir (dir.c_str ());
+  std::remove (path.c_str());
+  ::rmdir (dir.c_str());
 }
 
 TEST (FileOutput, UnwritableTargetsAreRefusedUpFront)
 {
-  testing::internal::CaptureStderr ();
+  testing::internal::CaptureStderr();
   EXPECT_FALSE (pcl_ext::io::checkWritable ("/nonexistent-folder/out.pcd"));
   EXPECT_FALSE (pcl_ext::io::checkWritable (""));
-  EXPECT_FALSE (pcl_ext::io::checkWritable (testing::TempDir ()));  // a folder
+  EXPECT_FALSE (pcl_ext::io::checkWritable (testing::TempDir())); // a folder
   EXPECT_FALSE (pcl_ext::io::writeTextFile ("/nonexistent-folder/out.txt", "x"));
-  testing::internal::GetCapturedStderr ();
+  testing::internal::GetCapturedStderr();
   EXPECT_EQ (pcl_ext::io::fileExtension ("a/b.c/scan.PCD"), "pcd");
   EXPECT_EQ (pcl_ext::io::fileExtension ("a/b.c/scan"), "");
 }

@@ -1,6 +1,6 @@
 /*
- * Tests of PointTable: the local origin of georeferenced coordinates and the conversion to PCL
- * clouds (fields, offsets, attributes, precision).
+ * Tests of PointTable: the local origin of georeferenced coordinates and the conversion
+ * to PCL clouds (fields, offsets, attributes, precision).
  */
 #include <pcl_ext/io/point_table.h>
 
@@ -13,8 +13,7 @@
 
 using pcl_ext::io::PointTable;
 
-namespace
-{
+namespace {
 /** Two points with every attribute, the first at RD New / NAP coordinates. */
 PointTable
 georeferenced ()
@@ -27,37 +26,38 @@ georeferenced ()
   t.label = {6, 4000000000u};
   return t;
 }
-}  // namespace
+} // namespace
 
 TEST (PointTable, LocalOriginOnlyWhereFloatLosesTheMillimetre)
 {
-  PointTable t = georeferenced ();
-  EXPECT_EQ (t.size (), 2u);
-  EXPECT_FALSE (t.empty ());
+  PointTable t = georeferenced();
+  EXPECT_EQ (t.size(), 2u);
+  EXPECT_FALSE (t.empty());
   // x and y beyond 8192 m: their minimum rounded down to 100 m; z local: 0.
-  EXPECT_EQ (pcl_ext::io::computeLocalOrigin (t), Eigen::Vector3d (119300.0, 487100.0, 0.0));
+  EXPECT_EQ (pcl_ext::io::computeLocalOrigin (t),
+             Eigen::Vector3d (119300.0, 487100.0, 0.0));
   EXPECT_EQ (pcl_ext::io::computeLocalOrigin (t, 1000.0),
              Eigen::Vector3d (119000.0, 487000.0, 0.0));
   // Rounded down also below zero; one large coordinate moves its whole axis.
-  t.xyz[1].x () = -9000.5;
-  EXPECT_EQ (pcl_ext::io::computeLocalOrigin (t).x (), -9100.0);
+  t.xyz[1].x() = -9000.5;
+  EXPECT_EQ (pcl_ext::io::computeLocalOrigin (t).x(), -9100.0);
   PointTable local;
-  local.xyz = {Eigen::Vector3d (8191.0, -8000.0, 12.0), Eigen::Vector3d (10.0, 20.0, 30.0)};
-  EXPECT_EQ (pcl_ext::io::computeLocalOrigin (local), Eigen::Vector3d::Zero ());
-  EXPECT_EQ (pcl_ext::io::computeLocalOrigin (PointTable ()), Eigen::Vector3d::Zero ());
-  EXPECT_EQ (pcl_ext::io::computeLocalOrigin (t, 0.0), Eigen::Vector3d::Zero ());
+  local.xyz = {Eigen::Vector3d (8191.0, -8000.0, 12.0),
+               Eigen::Vector3d (10.0, 20.0, 30.0)};
+  EXPECT_EQ (pcl_ext::io::computeLocalOrigin (local), Eigen::Vector3d::Zero());
+  EXPECT_EQ (pcl_ext::io::computeLocalOrigin (PointTable()), Eigen::Vector3d::Zero());
+  EXPECT_EQ (pcl_ext::io::computeLocalOrigin (t, 0.0), Eigen::Vector3d::Zero());
 }
 
 TEST (PointTable, BlobHasXyzThenTheAttributesPresent)
 {
-  const PointTable t = georeferenced ();
+  const PointTable t = georeferenced();
   const Eigen::Vector3d origin (119300.0, 487100.0, 0.0);
   pcl::PCLPointCloud2 blob;
   pcl_ext::io::toPCLPointCloud2 (t, origin, blob);
-  ASSERT_EQ (blob.fields.size (), 6u);
+  ASSERT_EQ (blob.fields.size(), 6u);
   const char* names[] = {"x", "y", "z", "intensity", "rgb", "label"};
-  for (std::size_t f = 0; f < 6; ++f)
-  {
+  for (std::size_t f = 0; f < 6; ++f) {
     EXPECT_EQ (blob.fields[f].name, names[f]);
     EXPECT_EQ (blob.fields[f].offset, 4 * f);
     EXPECT_EQ (blob.fields[f].count, 1u);
@@ -68,21 +68,22 @@ TEST (PointTable, BlobHasXyzThenTheAttributesPresent)
   EXPECT_EQ (blob.width, 2u);
   EXPECT_EQ (blob.height, 1u);
   EXPECT_EQ (blob.row_step, 48u);
-  EXPECT_EQ (blob.data.size (), 48u);
+  EXPECT_EQ (blob.data.size(), 48u);
   EXPECT_TRUE (blob.is_dense);
   // Colour packed as pcl::PointXYZRGB packs it: 0x00RRGGBB.
   std::uint32_t packed;
-  std::memcpy (&packed, blob.data.data () + 16, 4);
+  std::memcpy (&packed, blob.data.data() + 16, 4);
   EXPECT_EQ (packed, 0xff8000u);
 
-  // Attributes without one value per point are left out; a non-finite point clears is_dense.
+  // Attributes without one value per point are left out; a non-finite point clears
+  // is_dense.
   PointTable partial;
   partial.xyz = {Eigen::Vector3d (1, 2, 3),
-                 Eigen::Vector3d (std::numeric_limits<double>::quiet_NaN (), 0, 0)};
+                 Eigen::Vector3d (std::numeric_limits<double>::quiet_NaN(), 0, 0)};
   partial.intensity = {1.f};
   partial.label = {1, 2};
-  pcl_ext::io::toPCLPointCloud2 (partial, Eigen::Vector3d::Zero (), blob);
-  ASSERT_EQ (blob.fields.size (), 4u);
+  pcl_ext::io::toPCLPointCloud2 (partial, Eigen::Vector3d::Zero(), blob);
+  ASSERT_EQ (blob.fields.size(), 4u);
   EXPECT_EQ (blob.fields[3].name, "label");
   EXPECT_EQ (blob.fields[3].offset, 12u);
   EXPECT_EQ (blob.point_step, 16u);
@@ -91,11 +92,11 @@ TEST (PointTable, BlobHasXyzThenTheAttributesPresent)
 
 TEST (PointTable, TypedCloudsKeepTheMillimetreAndTheirOwnFields)
 {
-  const PointTable t = georeferenced ();
+  const PointTable t = georeferenced();
   const Eigen::Vector3d origin = pcl_ext::io::computeLocalOrigin (t);
   pcl::PointCloud<pcl::PointXYZRGBL> coloured;
   pcl_ext::io::toPointCloud (t, origin, coloured);
-  ASSERT_EQ (coloured.size (), 2u);
+  ASSERT_EQ (coloured.size(), 2u);
   EXPECT_NEAR (coloured[0].x, 45.678, 1e-4);
   EXPECT_NEAR (coloured[0].y, 23.456, 1e-4);
   EXPECT_NEAR (coloured[1].x, 99.001, 1e-4);
@@ -107,16 +108,16 @@ TEST (PointTable, TypedCloudsKeepTheMillimetreAndTheirOwnFields)
   EXPECT_EQ (coloured[1].b, 3);
   EXPECT_EQ (coloured[0].label, 6u);
   EXPECT_EQ (coloured[1].label, 4000000000u);
-  // A type without the attributes takes the coordinates; one with a field the table lacks
-  // keeps its default.
+  // A type without the attributes takes the coordinates; one with a field the table
+  // lacks keeps its default.
   pcl::PointCloud<pcl::PointXYZ> xyz;
   pcl_ext::io::toPointCloud (t, origin, xyz);
-  ASSERT_EQ (xyz.size (), 2u);
+  ASSERT_EQ (xyz.size(), 2u);
   EXPECT_EQ (xyz[1].z, -1.25f);
   PointTable bare;
   bare.xyz = t.xyz;
   pcl::PointCloud<pcl::PointXYZI> intensity;
   pcl_ext::io::toPointCloud (bare, origin, intensity);
-  ASSERT_EQ (intensity.size (), 2u);
+  ASSERT_EQ (intensity.size(), 2u);
   EXPECT_EQ (intensity[0].intensity, 0.f);
 }

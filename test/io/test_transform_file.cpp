@@ -9,8 +9,8 @@ TEST (TransformFile, ReadsFourByFourAndThreeByFour)
 {
   Eigen::Matrix4d t;
   pcl_ext::io::loadTransform (fixture ("transform_translation.txt"), t);
-  Eigen::Matrix4d expected = Eigen::Matrix4d::Identity ();
-  expected.topRightCorner<3, 1> () = Eigen::Vector3d (10, 20, 0.5);
+  Eigen::Matrix4d expected = Eigen::Matrix4d::Identity();
+  expected.topRightCorner<3, 1>() = Eigen::Vector3d (10, 20, 0.5);
   EXPECT_EQ (t, expected);
 
   pcl_ext::io::loadTransform (fixture ("transform_3x4.txt"), t);
@@ -22,7 +22,8 @@ TEST (TransformFile, ReadsFourByFourAndThreeByFour)
   std::string p = fixture ("transform_short.txt");
   expectReadError ([&] { pcl_ext::io::loadTransform (p, t); }, p, 0, "found 11");
   p = fixture ("transform_bad.txt");
-  expectReadError ([&] { pcl_ext::io::loadTransform (p, t); }, p, 2, "'x' is not a finite number");
+  expectReadError (
+      [&] { pcl_ext::io::loadTransform (p, t); }, p, 2, "'x' is not a finite number");
   p = fixture ("empty.txt");
   expectReadError ([&] { pcl_ext::io::loadTransform (p, t); }, p, 0, "empty file");
   p = fixture ("no_transform.txt");

@@ -1,6 +1,7 @@
 /*
- * Tests of the scan plane extraction of Khoshelham & Gorte (2009), section 3.1: fitScanPlanes
- * (fit, robust extent, scanner-side normal) and SACPlaneExtraction (sequential RANSAC).
+ * Tests of the scan plane extraction of Khoshelham & Gorte (2009), section 3.1:
+ * fitScanPlanes (fit, robust extent, scanner-side normal) and SACPlaneExtraction
+ * (sequential RANSAC).
  */
 #include <pcl_ext/registration/plane_extraction.h>
 
@@ -14,8 +15,7 @@
 
 using namespace pcl_ext;
 
-namespace
-{
+namespace {
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 
 // Two faces of a box, z = 0 (10 x 8 m) and x = 0 (8 x 5 m), a point every 0.2 m, noise
@@ -26,58 +26,56 @@ twoFaces (double sigma, std::vector<pcl::PointIndices>& faces)
   std::mt19937 rng (3);
   std::normal_distribution<double> noise (0.0, sigma);
   Cloud::Ptr cloud (new Cloud);
-  faces.assign (2, pcl::PointIndices ());
+  faces.assign (2, pcl::PointIndices());
   for (double x = 0.1; x < 10.0; x += 0.2)
-    for (double y = 0.1; y < 8.0; y += 0.2)
-    {
-      faces[0].indices.push_back (static_cast<pcl::index_t> (cloud->size ()));
+    for (double y = 0.1; y < 8.0; y += 0.2) {
+      faces[0].indices.push_back (static_cast<pcl::index_t> (cloud->size()));
       cloud->emplace_back (float (x), float (y), float (noise (rng)));
     }
   for (double y = 0.1; y < 8.0; y += 0.2)
-    for (double z = 0.1; z < 5.0; z += 0.2)
-    {
-      faces[1].indices.push_back (static_cast<pcl::index_t> (cloud->size ()));
+    for (double z = 0.1; z < 5.0; z += 0.2) {
+      faces[1].indices.push_back (static_cast<pcl::index_t> (cloud->size()));
       cloud->emplace_back (float (noise (rng)), float (y), float (z));
     }
   return cloud;
 }
-}  // namespace
+} // namespace
 
 TEST (PlaneExtraction, FitScanPlanesFitsAndFacesTheScanner)
 {
   std::vector<pcl::PointIndices> faces;
   const Cloud::Ptr cloud = twoFaces (0.01, faces);
   ScanViewpoints viewpoints;
-  viewpoints.positions = {Eigen::Vector3d (5.0, 4.0, 1.5)};  // above the floor, before the wall
+  viewpoints.positions = {
+      Eigen::Vector3d (5.0, 4.0, 1.5)}; // above the floor, before the wall
   std::vector<ScanPlane> planes;
   ASSERT_TRUE (fitScanPlanes (*cloud, faces, viewpoints, planes));
-  ASSERT_EQ (planes.size (), 2u);
-  EXPECT_GT (planes[0].normal.z (), 0.9999);
+  ASSERT_EQ (planes.size(), 2u);
+  EXPECT_GT (planes[0].normal.z(), 0.9999);
   EXPECT_NEAR (planes[0].d, 0.0, 0.005);
-  EXPECT_GT (planes[1].normal.x (), 0.9999);
-  for (std::size_t i = 0; i < 2; ++i)
-  {
-    EXPECT_EQ (planes[i].support, faces[i].indices.size ());
+  EXPECT_GT (planes[1].normal.x(), 0.9999);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ (planes[i].support, faces[i].indices.size());
     EXPECT_EQ (planes[i].inliers.indices, faces[i].indices);
     EXPECT_NEAR (planes[i].rms, 0.01, 0.002);
-    EXPECT_NEAR (planes[i].normal.norm (), 1.0, 1e-12);
+    EXPECT_NEAR (planes[i].normal.norm(), 1.0, 1e-12);
     EXPECT_NEAR (planes[i].d, planes[i].normal.dot (planes[i].centroid), 1e-12);
   }
   // The extent spans the face (its 1st to 99th percentiles).
-  EXPECT_NEAR (planes[0].extent.min ().x (), 0.1, 0.25);
-  EXPECT_NEAR (planes[0].extent.max ().x (), 9.9, 0.25);
-  EXPECT_NEAR (planes[1].extent.max ().z (), 4.9, 0.25);
+  EXPECT_NEAR (planes[0].extent.min().x(), 0.1, 0.25);
+  EXPECT_NEAR (planes[0].extent.max().x(), 9.9, 0.25);
+  EXPECT_NEAR (planes[1].extent.max().z(), 4.9, 0.25);
 
   // Seen from below and behind, the normals turn round.
   viewpoints.positions = {Eigen::Vector3d (-5.0, 4.0, -3.0)};
   ASSERT_TRUE (fitScanPlanes (*cloud, faces, viewpoints, planes));
-  EXPECT_LT (planes[0].normal.z (), -0.9999);
-  EXPECT_LT (planes[1].normal.x (), -0.9999);
+  EXPECT_LT (planes[0].normal.z(), -0.9999);
+  EXPECT_LT (planes[1].normal.x(), -0.9999);
 
   // One scanner index per point, or none.
   viewpoints.scanner_of_point.assign (3, 0);
   EXPECT_FALSE (fitScanPlanes (*cloud, faces, viewpoints, planes));
-  EXPECT_TRUE (planes.empty ());
+  EXPECT_TRUE (planes.empty());
 }
 
 TEST (PlaneExtraction, SacPlaneExtractionFindsTheLargestPlaneFirst)
@@ -90,25 +88,26 @@ TEST (PlaneExtraction, SacPlaneExtractionFindsTheLargestPlaneFirst)
   extraction.setMinInliers (100);
   std::vector<pcl::PointIndices> planes;
   ASSERT_TRUE (extraction.extract (planes));
-  ASSERT_EQ (planes.size (), 2u);
-  // Largest (the floor) first; nearly all of each face, little of the other (the shared edge).
-  for (std::size_t i = 0; i < 2; ++i)
-  {
+  ASSERT_EQ (planes.size(), 2u);
+  // Largest (the floor) first; nearly all of each face, little of the other (the shared
+  // edge).
+  for (std::size_t i = 0; i < 2; ++i) {
     std::size_t own = 0;
     for (const auto index : planes[i].indices)
-      own += std::binary_search (faces[i].indices.begin (), faces[i].indices.end (), index);
-    EXPECT_GT (own, 0.95 * faces[i].indices.size ()) << "plane " << i;
-    EXPECT_GT (own, 0.95 * planes[i].indices.size ()) << "plane " << i;
+      own +=
+          std::binary_search (faces[i].indices.begin(), faces[i].indices.end(), index);
+    EXPECT_GT (own, 0.95 * faces[i].indices.size()) << "plane " << i;
+    EXPECT_GT (own, 0.95 * planes[i].indices.size()) << "plane " << i;
   }
   // The extractor hook gives the same planes.
   std::vector<pcl::PointIndices> hooked;
-  ASSERT_TRUE (extraction.asExtractor () (cloud, pcl::IndicesConstPtr (), hooked));
-  ASSERT_EQ (hooked.size (), planes.size ());
-  for (std::size_t i = 0; i < planes.size (); ++i)
+  ASSERT_TRUE (extraction.asExtractor() (cloud, pcl::IndicesConstPtr(), hooked));
+  ASSERT_EQ (hooked.size(), planes.size());
+  for (std::size_t i = 0; i < planes.size(); ++i)
     EXPECT_EQ (hooked[i].indices, planes[i].indices);
 
   // Bad parameters: a PCL_ERROR and no planes.
   extraction.setDistanceThreshold (0.0);
   EXPECT_FALSE (extraction.extract (planes));
-  EXPECT_TRUE (planes.empty ());
+  EXPECT_TRUE (planes.empty());
 }

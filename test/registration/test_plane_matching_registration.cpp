@@ -1,8 +1,9 @@
 /*
- * Tests of PlaneMatchingRegistration as a pcl::Registration (Khoshelham & Gorte 2009): used
- * through a pcl::Registration pointer, its bad input, and its fitness score, the mean distance
- * between the matched planes. The scan is the asymmetric H building sampled with known noise,
- * its planes handed over by a plane extractor that knows them.
+ * Tests of PlaneMatchingRegistration as a pcl::Registration (Khoshelham & Gorte 2009):
+ * used through a pcl::Registration pointer, its bad input, and its fitness score, the
+ * mean distance between the matched planes. The scan is the asymmetric H building
+ * sampled with known noise, its planes handed over by a plane extractor that knows
+ * them.
  */
 #include "plane_distances.h"
 #include "plane_fixtures.h"
@@ -21,16 +22,17 @@
 
 using namespace pcl_ext;
 
-namespace
-{
+namespace {
 using Point = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Point>;
 using Registration = PlaneMatchingRegistration<Point, Point>;
 using RegistrationBase = pcl::Registration<Point, Point, float>;
 
-const double kNoise = 0.05;  // standard deviation of the points along the plane normals (m)
+const double kNoise =
+    0.05; // standard deviation of the points along the plane normals (m)
 
-// Outside the footprint of the asymmetric H: its 40 x 30 m block minus the two courtyards.
+// Outside the footprint of the asymmetric H: its 40 x 30 m block minus the two
+// courtyards.
 bool
 outsideAsymmetricH (double x, double y)
 {
@@ -39,49 +41,50 @@ outsideAsymmetricH (double x, double y)
   return x > 12.0 && x < 28.0 && (y < 10.0 || y > 22.0);
 }
 
-// The asymmetric H as a scanner in a random pose would see it: each wall every 0.5 m up to
-// 8 m, the ground around the building every metre, Gaussian noise of kNoise along the
-// normals; one inlier set per wall and one for the ground.
-struct SampledScan
-{
+// The asymmetric H as a scanner in a random pose would see it: each wall every 0.5 m up
+// to 8 m, the ground around the building every metre, Gaussian noise of kNoise along
+// the normals; one inlier set per wall and one for the ground.
+struct SampledScan {
   std::vector<MapPlane> map;
-  Cloud::Ptr cloud {new Cloud};
+  Cloud::Ptr cloud{new Cloud};
   std::vector<pcl::PointIndices> planes;
-  Eigen::Matrix4d truth = Eigen::Matrix4d::Identity ();  // scan to map
+  Eigen::Matrix4d truth = Eigen::Matrix4d::Identity(); // scan to map
 };
 
 SampledScan
 sampleScan (unsigned int seed)
 {
   SampledScan s;
-  EXPECT_TRUE (computeMapPlanes (test::asymmetricH (), MapPlaneParameters (), s.map));
+  EXPECT_TRUE (computeMapPlanes (test::asymmetricH(), MapPlaneParameters(), s.map));
   std::mt19937 rng (seed);
   s.truth = test::randomPose (rng);
-  const Eigen::Matrix4d to_scan = s.truth.inverse ();
+  const Eigen::Matrix4d to_scan = s.truth.inverse();
   std::normal_distribution<double> noise (0.0, kNoise);
-  auto add = [&] (const Eigen::Vector3d& x, const Eigen::Vector3d& normal, pcl::PointIndices& set) {
-    const Eigen::Vector3d q = to_scan.topLeftCorner<3, 3> () * (x + noise (rng) * normal) +
-                              to_scan.topRightCorner<3, 1> ();
-    set.indices.push_back (static_cast<pcl::index_t> (s.cloud->size ()));
-    s.cloud->emplace_back (float (q.x ()), float (q.y ()), float (q.z ()));
+  auto add = [&] (const Eigen::Vector3d& x,
+                  const Eigen::Vector3d& normal,
+                  pcl::PointIndices& set) {
+    const Eigen::Vector3d q =
+        to_scan.topLeftCorner<3, 3>() * (x + noise (rng) * normal) +
+        to_scan.topRightCorner<3, 1>();
+    set.indices.push_back (static_cast<pcl::index_t> (s.cloud->size()));
+    s.cloud->emplace_back (float (q.x()), float (q.y()), float (q.z()));
   };
   pcl::PointIndices ground;
   for (double x = -6.0; x <= 46.0; x += 1.0)
     for (double y = -6.0; y <= 36.0; y += 1.0)
       if (outsideAsymmetricH (x, y))
-        add (Eigen::Vector3d (x, y, 0.0), Eigen::Vector3d::UnitZ (), ground);
+        add (Eigen::Vector3d (x, y, 0.0), Eigen::Vector3d::UnitZ(), ground);
   s.planes.push_back (ground);
-  for (const auto& plane : s.map)
-  {
-    if (plane.isFloor ())
+  for (const auto& plane : s.map) {
+    if (plane.isFloor())
       continue;
     pcl::PointIndices wall;
-    const double length = plane.length ();
+    const double length = plane.length();
     for (double u = 0.25; u < length; u += 0.5)
-      for (double z = 0.25; z < 8.0; z += 0.5)
-      {
-        const Eigen::Vector2d p = plane.start + (plane.end - plane.start) * (u / length);
-        add (Eigen::Vector3d (p.x (), p.y (), z), plane.normal, wall);
+      for (double z = 0.25; z < 8.0; z += 0.5) {
+        const Eigen::Vector2d p =
+            plane.start + (plane.end - plane.start) * (u / length);
+        add (Eigen::Vector3d (p.x(), p.y(), z), plane.normal, wall);
       }
     s.planes.push_back (wall);
   }
@@ -94,7 +97,8 @@ configure (Registration& reg, const SampledScan& s)
 {
   reg.setMapPlanes (s.map);
   const std::vector<pcl::PointIndices> planes = s.planes;
-  reg.setPlaneExtractor ([planes] (const Cloud::ConstPtr&, const pcl::IndicesConstPtr&,
+  reg.setPlaneExtractor ([planes] (const Cloud::ConstPtr&,
+                                   const pcl::IndicesConstPtr&,
                                    std::vector<pcl::PointIndices>& out) {
     out = planes;
     return true;
@@ -104,23 +108,23 @@ configure (Registration& reg, const SampledScan& s)
 Eigen::Vector3d
 centroidOf (const Cloud& cloud)
 {
-  Eigen::Vector3d c = Eigen::Vector3d::Zero ();
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (const auto& p : cloud)
-    c += p.getVector3fMap ().cast<double> ();
-  return c / static_cast<double> (cloud.size ());
+    c += p.getVector3fMap().cast<double>();
+  return c / static_cast<double> (cloud.size());
 }
 
 void
 expectSameClouds (const Cloud& a, const Cloud& b)
 {
-  ASSERT_EQ (a.size (), b.size ());
-  for (std::size_t i = 0; i < a.size (); ++i)
-    ASSERT_TRUE (a[i].getVector3fMap () == b[i].getVector3fMap ()) << "point " << i;
+  ASSERT_EQ (a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i)
+    ASSERT_TRUE (a[i].getVector3fMap() == b[i].getVector3fMap()) << "point " << i;
 }
-}  // namespace
+} // namespace
 
-// The class used through a pcl::Registration pointer gives what it gives used directly: the
-// same convergence, transform and registered cloud, without and with a guess.
+// The class used through a pcl::Registration pointer gives what it gives used directly:
+// the same convergence, transform and registered cloud, without and with a guess.
 TEST (PlaneMatchingRegistration, AlignThroughARegistrationPointerIsTheClassAlign)
 {
   const SampledScan s = sampleScan (1);
@@ -129,9 +133,9 @@ TEST (PlaneMatchingRegistration, AlignThroughARegistrationPointerIsTheClassAlign
   direct.setInputSource (s.cloud);
   Cloud direct_out;
   direct.align (direct_out);
-  ASSERT_TRUE (direct.hasConverged ());
+  ASSERT_TRUE (direct.hasConverged());
   const TransformationError error = computeTransformationError (
-      direct.getFinalTransformationDouble (), s.truth, centroidOf (*s.cloud));
+      direct.getFinalTransformationDouble(), s.truth, centroidOf (*s.cloud));
   EXPECT_LT (error.rotation_deg, 0.1);
   EXPECT_LT (error.translation, 0.05);
 
@@ -141,26 +145,26 @@ TEST (PlaneMatchingRegistration, AlignThroughARegistrationPointerIsTheClassAlign
   reg->setInputSource (s.cloud);
   Cloud out;
   reg->align (out);
-  EXPECT_EQ (reg->hasConverged (), direct.hasConverged ());
-  EXPECT_TRUE (reg->getFinalTransformation () == direct.getFinalTransformation ());
-  EXPECT_TRUE (concrete->getFinalTransformationDouble () == direct.getFinalTransformationDouble ());
-  EXPECT_EQ (concrete->getMatchingResult ().matches.size (),
-             direct.getMatchingResult ().matches.size ());
+  EXPECT_EQ (reg->hasConverged(), direct.hasConverged());
+  EXPECT_TRUE (reg->getFinalTransformation() == direct.getFinalTransformation());
+  EXPECT_TRUE (concrete->getFinalTransformationDouble() ==
+               direct.getFinalTransformationDouble());
+  EXPECT_EQ (concrete->getMatchingResult().matches.size(),
+             direct.getMatchingResult().matches.size());
   expectSameClouds (out, direct_out);
 
   // A guess with bounds around it: the bounds apply through the pointer too.
-  Eigen::Matrix4f guess = s.truth.cast<float> ();
+  Eigen::Matrix4f guess = s.truth.cast<float>();
   guess (0, 3) += 1.f;
-  for (Registration* r : {&direct, concrete.get ()})
-  {
+  for (Registration* r : {&direct, concrete.get()}) {
     r->setMaxRotationFromGuess (5.0);
     r->setMaxTranslationFromGuess (3.0);
   }
   direct.align (direct_out, guess);
   reg->align (out, guess);
-  ASSERT_TRUE (direct.hasConverged ());
-  EXPECT_TRUE (reg->hasConverged ());
-  EXPECT_TRUE (reg->getFinalTransformation () == direct.getFinalTransformation ());
+  ASSERT_TRUE (direct.hasConverged());
+  EXPECT_TRUE (reg->hasConverged());
+  EXPECT_TRUE (reg->getFinalTransformation() == direct.getFinalTransformation());
   expectSameClouds (out, direct_out);
 }
 
@@ -170,41 +174,43 @@ TEST (PlaneMatchingRegistration, BadInputThroughARegistrationPointerDoesNotConve
   const SampledScan s = sampleScan (2);
   const Cloud::Ptr empty (new Cloud);
   Cloud out;
-  auto expectRefused = [&] (const RegistrationBase::Ptr& reg, const std::string& log,
-                            const char* what) {
-    EXPECT_FALSE (reg->hasConverged ()) << what;
-    EXPECT_NE (log.find ("PlaneMatchingRegistration"), std::string::npos) << what << ": " << log;
-  };
+  auto expectRefused =
+      [&] (const RegistrationBase::Ptr& reg, const std::string& log, const char* what) {
+        EXPECT_FALSE (reg->hasConverged()) << what;
+        EXPECT_NE (log.find ("PlaneMatchingRegistration"), std::string::npos)
+            << what << ": " << log;
+      };
 
   {
     // No map and no target cloud: pcl::Registration refuses.
     const Registration::Ptr concrete (new Registration);
     const RegistrationBase::Ptr reg = concrete;
-    testing::internal::CaptureStderr ();
+    testing::internal::CaptureStderr();
     reg->setInputSource (s.cloud);
     reg->align (out);
-    expectRefused (reg, testing::internal::GetCapturedStderr (), "no map");
+    expectRefused (reg, testing::internal::GetCapturedStderr(), "no map");
   }
   {
     // An empty cloud, on a fresh registration and after a converged one.
     const Registration::Ptr concrete (new Registration);
     configure (*concrete, s);
     const RegistrationBase::Ptr reg = concrete;
-    testing::internal::CaptureStderr ();
+    testing::internal::CaptureStderr();
     reg->setInputSource (empty);
     reg->align (out);
-    expectRefused (reg, testing::internal::GetCapturedStderr (), "empty cloud");
-    EXPECT_TRUE (out.empty ());
+    expectRefused (reg, testing::internal::GetCapturedStderr(), "empty cloud");
+    EXPECT_TRUE (out.empty());
 
     reg->setInputSource (s.cloud);
     reg->align (out);
-    ASSERT_TRUE (reg->hasConverged ());
-    testing::internal::CaptureStderr ();
+    ASSERT_TRUE (reg->hasConverged());
+    testing::internal::CaptureStderr();
     reg->setInputSource (empty);
     reg->align (out);
-    expectRefused (reg, testing::internal::GetCapturedStderr (), "empty cloud after a run");
-    EXPECT_TRUE (out.empty ());
-    EXPECT_EQ (concrete->getFitnessScore (), std::numeric_limits<double>::max ());
+    expectRefused (
+        reg, testing::internal::GetCapturedStderr(), "empty cloud after a run");
+    EXPECT_TRUE (out.empty());
+    EXPECT_EQ (concrete->getFitnessScore(), std::numeric_limits<double>::max());
   }
   {
     // A map without planes.
@@ -212,37 +218,39 @@ TEST (PlaneMatchingRegistration, BadInputThroughARegistrationPointerDoesNotConve
     configure (*concrete, s);
     concrete->setMapPlanes ({});
     const RegistrationBase::Ptr reg = concrete;
-    testing::internal::CaptureStderr ();
+    testing::internal::CaptureStderr();
     reg->setInputSource (s.cloud);
     reg->align (out);
-    expectRefused (reg, testing::internal::GetCapturedStderr (), "no map planes");
-    EXPECT_EQ (concrete->getFitnessScore (), std::numeric_limits<double>::max ());
+    expectRefused (reg, testing::internal::GetCapturedStderr(), "no map planes");
+    EXPECT_EQ (concrete->getFitnessScore(), std::numeric_limits<double>::max());
   }
   {
-    // An index past the end of the cloud: refused before pcl::Registration reads the points.
+    // An index past the end of the cloud: refused before pcl::Registration reads the
+    // points.
     const Registration::Ptr concrete (new Registration);
     configure (*concrete, s);
     const RegistrationBase::Ptr reg = concrete;
     const pcl::IndicesPtr indices (
-        new pcl::Indices {0, 1, static_cast<pcl::index_t> (s.cloud->size ())});
-    testing::internal::CaptureStderr ();
+        new pcl::Indices{0, 1, static_cast<pcl::index_t> (s.cloud->size())});
+    testing::internal::CaptureStderr();
     reg->setInputSource (s.cloud);
     reg->setIndices (indices);
     reg->align (out);
-    expectRefused (reg, testing::internal::GetCapturedStderr (), "index out of range");
-    EXPECT_TRUE (out.empty ());
+    expectRefused (reg, testing::internal::GetCapturedStderr(), "index out of range");
+    EXPECT_TRUE (out.empty());
     // The same indices fit a larger cloud: they are taken again.
     Cloud::Ptr larger (new Cloud (*s.cloud));
     larger->push_back (Point (0.f, 0.f, 0.f));
     reg->setInputSource (larger);
-    ASSERT_TRUE (reg->getIndices ());
-    EXPECT_EQ (reg->getIndices ()->size (), indices->size ());
+    ASSERT_TRUE (reg->getIndices());
+    EXPECT_EQ (reg->getIndices()->size(), indices->size());
   }
 }
 
-// getFitnessScore is the mean over the matched planes of the RMS distance of the scan plane's
-// inliers to its map plane after the transform: about the noise for the right pose, the
-// misalignment for a wrong one; not pcl::Registration's nearest-neighbour score.
+// getFitnessScore is the mean over the matched planes of the RMS distance of the scan
+// plane's inliers to its map plane after the transform: about the noise for the right
+// pose, the misalignment for a wrong one; not pcl::Registration's nearest-neighbour
+// score.
 TEST (PlaneMatchingRegistration, FitnessIsTheMeanDistanceOfTheMatchedPlanes)
 {
   const SampledScan s = sampleScan (3);
@@ -251,44 +259,43 @@ TEST (PlaneMatchingRegistration, FitnessIsTheMeanDistanceOfTheMatchedPlanes)
   reg.setInputSource (s.cloud);
   Cloud out;
   reg.align (out);
-  ASSERT_TRUE (reg.hasConverged ());
-  const double fitness = reg.getFitnessScore ();
+  ASSERT_TRUE (reg.hasConverged());
+  const double fitness = reg.getFitnessScore();
   EXPECT_GT (fitness, 0.5 * kNoise);
   EXPECT_LT (fitness, 1.5 * kNoise);
   // The same figure as the evaluation module's per-plane RMS distances, averaged.
   const PlaneDistanceMetrics distances = test::planeDistances (reg, *s.cloud);
-  ASSERT_EQ (distances.pairs.size (), reg.getMatchingResult ().matches.size ());
+  ASSERT_EQ (distances.pairs.size(), reg.getMatchingResult().matches.size());
   double mean_rms = 0.0;
   for (const auto& pair : distances.pairs)
-    mean_rms += pair.rms / static_cast<double> (distances.pairs.size ());
+    mean_rms += pair.rms / static_cast<double> (distances.pairs.size());
   EXPECT_NEAR (fitness, mean_rms, 1e-9);
   // max_range leaves out the points farther from their plane: the tails of the noise.
   const double clipped = reg.getFitnessScore (2.0 * kNoise);
   EXPECT_GT (clipped, 0.0);
   EXPECT_LT (clipped, fitness);
-  // pcl::Registration's score is the mean squared distance to the nearest target point (the
-  // map's wall corners): metres squared, and nothing to do with the planes.
-  const double nearest_neighbour = reg.RegistrationBase::getFitnessScore ();
+  // pcl::Registration's score is the mean squared distance to the nearest target point
+  // (the map's wall corners): metres squared, and nothing to do with the planes.
+  const double nearest_neighbour = reg.RegistrationBase::getFitnessScore();
   EXPECT_GT (nearest_neighbour, 1.0);
 
   // A wrong pose: scan planes that describe the scan moved by (0.6, 0.45, 0.3) m give a
   // transform that misplaces its points by that much.
   Cloud::Ptr moved (new Cloud (*s.cloud));
-  for (auto& p : *moved)
-  {
+  for (auto& p : *moved) {
     p.x += 0.6f;
     p.y += 0.45f;
     p.z += 0.3f;
   }
   std::vector<ScanPlane> planes;
-  ASSERT_TRUE (fitScanPlanes (*moved, s.planes, ScanViewpoints (), planes));
+  ASSERT_TRUE (fitScanPlanes (*moved, s.planes, ScanViewpoints(), planes));
   Registration wrong;
   configure (wrong, s);
   wrong.setSourcePlanes (planes);
   wrong.setInputSource (s.cloud);
   wrong.align (out);
-  ASSERT_TRUE (wrong.hasConverged ());
-  const double wrong_fitness = wrong.getFitnessScore ();
+  ASSERT_TRUE (wrong.hasConverged());
+  const double wrong_fitness = wrong.getFitnessScore();
   EXPECT_GT (wrong_fitness, 0.25);
   EXPECT_GT (wrong_fitness, 4.0 * fitness);
 }

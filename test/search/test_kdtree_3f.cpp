@@ -12,44 +12,42 @@
 #include <utility>
 #include <vector>
 
-namespace
-{
-/** A scanned-like mix: a dense wavy patch, a lattice (many equal distances), every lattice
-  * point twice (zero distances) and a few sparse points far away, so that some leaves hold
-  * points much farther apart than their neighbourhoods. */
+namespace {
+/** A scanned-like mix: a dense wavy patch, a lattice (many equal distances), every
+ * lattice point twice (zero distances) and a few sparse points far away, so that some
+ * leaves hold points much farther apart than their neighbourhoods. */
 std::vector<float>
 mixedCloud ()
 {
   std::vector<float> xyz;
   std::mt19937 rng (3);
   std::uniform_real_distribution<float> u (-1.0f, 1.0f);
-  for (int i = 0; i < 3000; ++i)
-  {
+  for (int i = 0; i < 3000; ++i) {
     const float x = u (rng), y = u (rng);
-    xyz.insert (xyz.end (), {x, y, 0.1f * std::sin (3 * x) * std::cos (2 * y)});
+    xyz.insert (xyz.end(), {x, y, 0.1f * std::sin (3 * x) * std::cos (2 * y)});
   }
   for (int copy = 0; copy < 2; ++copy)
     for (int i = 0; i < 20; ++i)
       for (int j = 0; j < 20; ++j)
-        xyz.insert (xyz.end (), {3.0f + 0.05f * i, 0.05f * j, 0.0f});
+        xyz.insert (xyz.end(), {3.0f + 0.05f * i, 0.05f * j, 0.0f});
   for (int i = 0; i < 40; ++i)
-    xyz.insert (xyz.end (), {10.0f + 5.0f * u (rng), 10.0f * u (rng), 3.0f * u (rng)});
+    xyz.insert (xyz.end(), {10.0f + 5.0f * u (rng), 10.0f * u (rng), 3.0f * u (rng)});
   return xyz;
 }
 
-/** The k nearest of the point at tree position q by (squared distance, tree position). */
+/** The k nearest of the point at tree position q by (squared distance, tree position).
+ */
 std::vector<std::pair<float, std::size_t>>
 bruteForce (const pcl_ext::search::KdTree3f& tree, std::size_t q, std::size_t k)
 {
   std::vector<std::pair<float, std::size_t>> all;
   const float* a = tree.point (q);
-  for (std::size_t pos = 0; pos < tree.size (); ++pos)
-  {
+  for (std::size_t pos = 0; pos < tree.size(); ++pos) {
     const float* b = tree.point (pos);
     const float dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
     all.emplace_back (dx * dx + dy * dy + dz * dz, pos);
   }
-  std::partial_sort (all.begin (), all.begin () + k, all.end ());
+  std::partial_sort (all.begin(), all.begin() + k, all.end());
   all.resize (k);
   return all;
 }
@@ -58,82 +56,78 @@ pcl_ext::search::KdTree3f&
 mixedTree ()
 {
   static pcl_ext::search::KdTree3f tree;
-  if (tree.size () == 0)
-  {
-    auto xyz = mixedCloud ();
-    std::vector<pcl::index_t> ids (xyz.size () / 3);
-    for (std::size_t i = 0; i < ids.size (); ++i)
-      ids[i] = static_cast<pcl::index_t> (1000 + i);  // not the positions
+  if (tree.size() == 0) {
+    auto xyz = mixedCloud();
+    std::vector<pcl::index_t> ids (xyz.size() / 3);
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      ids[i] = static_cast<pcl::index_t> (1000 + i); // not the positions
     tree.build (std::move (xyz), std::move (ids), 24);
   }
   return tree;
 }
-}  // namespace
+} // namespace
 
 TEST (KdTree3f, LeavesCoverEveryPositionOnceInOrder)
 {
-  const auto& tree = mixedTree ();
-  const auto leaves = tree.leafRanges ();
-  ASSERT_FALSE (leaves.empty ());
+  const auto& tree = mixedTree();
+  const auto leaves = tree.leafRanges();
+  ASSERT_FALSE (leaves.empty());
   std::size_t next = 0;
-  for (const auto& leaf : leaves)
-  {
+  for (const auto& leaf : leaves) {
     EXPECT_EQ (leaf.first, next);
     EXPECT_GT (leaf.second, leaf.first);
     EXPECT_LE (leaf.second - leaf.first, 24u);
     next = leaf.second;
   }
-  EXPECT_EQ (next, tree.size ());
+  EXPECT_EQ (next, tree.size());
 }
 
 TEST (KdTree3f, SearchOfLeavesIsExactWithTiesInPositionOrder)
 {
-  const auto& tree = mixedTree ();
-  for (const std::size_t k : {1u, 2u, 16u, 50u})
-  {
+  const auto& tree = mixedTree();
+  for (const std::size_t k : {1u, 2u, 16u, 50u}) {
     std::vector<pcl::index_t> indices;
     std::vector<float> d2;
     std::size_t ties = 0;
-    for (const auto& leaf : tree.leafRanges ())
-    {
+    for (const auto& leaf : tree.leafRanges()) {
       const std::size_t n = leaf.second - leaf.first;
       indices.assign (n * k, -1);
       d2.assign (n * k, -1.0f);
-      ASSERT_EQ (tree.nearestKSearchOfPoints (leaf.first, leaf.second, k, indices.data (),
-                                              d2.data ()), k);
-      for (std::size_t i = 0; i < n; ++i)
-      {
+      ASSERT_EQ (tree.nearestKSearchOfPoints (
+                     leaf.first, leaf.second, k, indices.data(), d2.data()),
+                 k);
+      for (std::size_t i = 0; i < n; ++i) {
         const auto truth = bruteForce (tree, leaf.first + i, k);
-        for (std::size_t j = 0; j < k; ++j)
-        {
-          ASSERT_EQ (d2[i * k + j], truth[j].first) << "k " << k << " point " << leaf.first + i;
+        for (std::size_t j = 0; j < k; ++j) {
+          ASSERT_EQ (d2[i * k + j], truth[j].first)
+              << "k " << k << " point " << leaf.first + i;
           ASSERT_EQ (indices[i * k + j], tree.pointIndex (truth[j].second))
               << "k " << k << " point " << leaf.first + i << " rank " << j;
           ties += j > 0 && truth[j].first == truth[j - 1].first;
         }
       }
     }
-    if (k > 1)  // the duplicates and the lattice give equal distances within a row
+    if (k > 1) // the duplicates and the lattice give equal distances within a row
       EXPECT_GT (ties, 0u) << "k " << k;
   }
 }
 
 TEST (KdTree3f, SearchOfAPointDoesNotDependOnItsRange)
 {
-  const auto& tree = mixedTree ();
-  const std::size_t k = 20, n = tree.size ();
+  const auto& tree = mixedTree();
+  const std::size_t k = 20, n = tree.size();
   std::vector<pcl::index_t> by_leaf (n * k), alone (n * k), by_block (n * k);
   std::vector<float> d_leaf (n * k), d_alone (n * k), d_block (n * k);
-  for (const auto& leaf : tree.leafRanges ())
-    tree.nearestKSearchOfPoints (leaf.first, leaf.second, k, &by_leaf[leaf.first * k],
-                                 &d_leaf[leaf.first * k]);
+  for (const auto& leaf : tree.leafRanges())
+    tree.nearestKSearchOfPoints (
+        leaf.first, leaf.second, k, &by_leaf[leaf.first * k], &d_leaf[leaf.first * k]);
   for (std::size_t pos = 0; pos < n; ++pos)
     tree.nearestKSearchOfPoints (pos, pos + 1, k, &alone[pos * k], &d_alone[pos * k]);
   // Runs of 37 positions, across leaf borders and across the far sparse points.
-  for (std::size_t first = 0; first < n; first += 37)
-  {
+  for (std::size_t first = 0; first < n; first += 37) {
     const std::size_t last = std::min (n, first + 37);
-    tree.nearestKSearchOfPoints (first, last, k, &by_block[first * k], &d_block[first * k]);
+    tree.nearestKSearchOfPoints (
+        first, last, k, &by_block[first * k], &d_block[first * k]);
   }
   EXPECT_EQ (by_leaf, alone);
   EXPECT_EQ (by_leaf, by_block);
@@ -147,7 +141,7 @@ TEST (KdTree3f, SearchOfPointsHandlesEdgeCases)
   pcl::index_t index = -1;
   float d2 = -1.0f;
   EXPECT_EQ (empty.nearestKSearchOfPoints (0, 1, 1, &index, &d2), 0u);
-  EXPECT_TRUE (empty.leafRanges ().empty ());
+  EXPECT_TRUE (empty.leafRanges().empty());
 
   // k = 0 finds nothing; an empty range writes nothing.
   pcl_ext::search::KdTree3f one;
@@ -160,24 +154,23 @@ TEST (KdTree3f, SearchOfPointsHandlesEdgeCases)
   EXPECT_EQ (index, 4);
   EXPECT_EQ (d2, 0.0f);
 
-  // k larger than the tree: every point, k clamped; a range past the end is clamped too.
+  // k larger than the tree: every point, k clamped; a range past the end is clamped
+  // too.
   pcl_ext::search::KdTree3f three;
   three.build ({0, 0, 0, 1, 0, 0, 1, 0, 0}, {7, 8, 9});
   std::vector<pcl::index_t> indices (3 * 5, -1);
   std::vector<float> sqr (3 * 5, -1.0f);
-  ASSERT_EQ (three.nearestKSearchOfPoints (0, 10, 5, indices.data (), sqr.data ()), 3u);
-  for (std::size_t pos = 0; pos < 3; ++pos)
-  {
-    // The rows are k = 3 wide. The two points at (1, 0, 0) see each other at distance 0 and
-    // the origin at 1; the origin sees both at 1.
+  ASSERT_EQ (three.nearestKSearchOfPoints (0, 10, 5, indices.data(), sqr.data()), 3u);
+  for (std::size_t pos = 0; pos < 3; ++pos) {
+    // The rows are k = 3 wide. The two points at (1, 0, 0) see each other at distance 0
+    // and the origin at 1; the origin sees both at 1.
     const bool origin = three.pointIndex (pos) == 7;
     const float expected[3] = {0.0f, origin ? 1.0f : 0.0f, 1.0f};
     for (std::size_t j = 0; j < 3; ++j)
       EXPECT_EQ (sqr[pos * 3 + j], expected[j]) << "position " << pos << " rank " << j;
     if (origin)
       EXPECT_EQ (indices[pos * 3], 7);
-    else
-    {
+    else {
       EXPECT_EQ (indices[pos * 3] + indices[pos * 3 + 1], 8 + 9);
       EXPECT_EQ (indices[pos * 3 + 2], 7);
     }

@@ -1,5 +1,6 @@
 /*
- * Tests of the shared neighbourhoods: agreement with brute force, bad input, determinism.
+ * Tests of the shared neighbourhoods: agreement with brute force, bad input,
+ * determinism.
  */
 #include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/search/nanoflann_kdtree.h>
@@ -12,8 +13,7 @@
 #include <algorithm>
 #include <random>
 
-namespace
-{
+namespace {
 using Point = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Point>;
 
@@ -28,53 +28,55 @@ randomCloud (std::size_t n, unsigned seed, float offset = 0.0f)
   return cloud;
 }
 
-struct Neighbour
-{
+struct Neighbour {
   float d2;
   pcl::index_t index;
-  bool operator< (const Neighbour& o) const { return d2 < o.d2 || (d2 == o.d2 && index < o.index); }
+  bool
+  operator<(const Neighbour& o) const
+  {
+    return d2 < o.d2 || (d2 == o.d2 && index < o.index);
+  }
 };
 
 std::vector<Neighbour>
 bruteForce (const Cloud& cloud, const Point& q)
 {
   std::vector<Neighbour> all;
-  for (std::size_t i = 0; i < cloud.size (); ++i)
-  {
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!pcl::isFinite (cloud[i]))
       continue;
     const float dx = cloud[i].x - q.x, dy = cloud[i].y - q.y, dz = cloud[i].z - q.z;
     all.push_back ({dx * dx + dy * dy + dz * dz, static_cast<pcl::index_t> (i)});
   }
-  std::sort (all.begin (), all.end ());
+  std::sort (all.begin(), all.end());
   return all;
 }
 
 // Rows must hold the true k nearest (compared by distance, which is robust to ties).
 void
-expectKnnMatchesBruteForce (const Cloud& cloud, const pcl_ext::Neighbourhoods<Point>& nb, int k)
+expectKnnMatchesBruteForce (const Cloud& cloud,
+                            const pcl_ext::Neighbourhoods<Point>& nb,
+                            int k)
 {
-  ASSERT_EQ (nb.size (), cloud.size ());
-  for (std::size_t r = 0; r < cloud.size (); ++r)
-  {
+  ASSERT_EQ (nb.size(), cloud.size());
+  for (std::size_t r = 0; r < cloud.size(); ++r) {
     const auto row = nb[r];
-    if (!pcl::isFinite (cloud[r]))
-    {
-      EXPECT_TRUE (row.empty ());
+    if (!pcl::isFinite (cloud[r])) {
+      EXPECT_TRUE (row.empty());
       continue;
     }
     const auto truth = bruteForce (cloud, cloud[r]);
-    ASSERT_EQ (row.size (), static_cast<std::size_t> (k));
-    for (int i = 0; i < k; ++i)
-    {
-      EXPECT_NEAR (row.sqr_distances[i], truth[i].d2, 1e-6f) << "row " << r << " rank " << i;
+    ASSERT_EQ (row.size(), static_cast<std::size_t> (k));
+    for (int i = 0; i < k; ++i) {
+      EXPECT_NEAR (row.sqr_distances[i], truth[i].d2, 1e-6f)
+          << "row " << r << " rank " << i;
       const Point& p = cloud[row[i]];
       const float dx = p.x - cloud[r].x, dy = p.y - cloud[r].y, dz = p.z - cloud[r].z;
       EXPECT_NEAR (row.sqr_distances[i], dx * dx + dy * dy + dz * dz, 1e-6f);
     }
   }
 }
-}  // namespace
+} // namespace
 
 TEST (Neighbourhoods, KnnAgreesWithBruteForce)
 {
@@ -82,37 +84,35 @@ TEST (Neighbourhoods, KnnAgreesWithBruteForce)
   pcl_ext::Neighbourhoods<Point> nb;
   nb.setInputCloud (cloud);
   nb.setKSearch (12);
-  ASSERT_TRUE (nb.compute ());
+  ASSERT_TRUE (nb.compute());
   expectKnnMatchesBruteForce (*cloud, nb, 12);
   // The query point itself comes first, at distance 0.
-  for (std::size_t r = 0; r < cloud->size (); ++r)
+  for (std::size_t r = 0; r < cloud->size(); ++r)
     EXPECT_EQ (nb[r].sqr_distances[0], 0.0f);
 }
 
-// From 24 neighbours the whole-cloud pass searches leaf by leaf (a different code path).
+// From 24 neighbours the whole-cloud pass searches leaf by leaf (a different code
+// path).
 TEST (Neighbourhoods, KnnAgreesWithBruteForceLeafByLeaf)
 {
   auto cloud = randomCloud (1500, 2);
-  for (std::size_t i = 0; i < 100; ++i)
-  {
-    const Point twin = (*cloud)[i];  // some points twice: equal distances
+  for (std::size_t i = 0; i < 100; ++i) {
+    const Point twin = (*cloud)[i]; // some points twice: equal distances
     cloud->push_back (twin);
   }
-  for (const int k : {24, 40})
-  {
+  for (const int k : {24, 40}) {
     pcl_ext::Neighbourhoods<Point> one, two;
-    for (auto* nb : {&one, &two})
-    {
+    for (auto* nb : {&one, &two}) {
       nb->setInputCloud (cloud);
       nb->setKSearch (k);
     }
     one.setNumberOfThreads (1);
     two.setNumberOfThreads (2);
-    ASSERT_TRUE (one.compute ());
-    ASSERT_TRUE (two.compute ());
+    ASSERT_TRUE (one.compute());
+    ASSERT_TRUE (two.compute());
     expectKnnMatchesBruteForce (*cloud, one, k);
-    EXPECT_EQ (one.getNeighbourIndices (), two.getNeighbourIndices ());
-    EXPECT_EQ (one.getSquaredDistances (), two.getSquaredDistances ());
+    EXPECT_EQ (one.getNeighbourIndices(), two.getNeighbourIndices());
+    EXPECT_EQ (one.getSquaredDistances(), two.getSquaredDistances());
   }
 }
 
@@ -122,85 +122,83 @@ TEST (Neighbourhoods, RadiusAgreesWithBruteForce)
   pcl_ext::Neighbourhoods<Point> nb;
   nb.setInputCloud (cloud);
   nb.setRadiusSearch (0.08);
-  ASSERT_TRUE (nb.compute ());
-  ASSERT_EQ (nb.size (), cloud->size ());
-  for (std::size_t r = 0; r < cloud->size (); ++r)
-  {
+  ASSERT_TRUE (nb.compute());
+  ASSERT_EQ (nb.size(), cloud->size());
+  for (std::size_t r = 0; r < cloud->size(); ++r) {
     const auto truth = bruteForce (*cloud, (*cloud)[r]);
     std::size_t expected = 0;
-    while (expected < truth.size () && truth[expected].d2 <= 0.08f * 0.08f)
+    while (expected < truth.size() && truth[expected].d2 <= 0.08f * 0.08f)
       ++expected;
     const auto row = nb[r];
     // Points exactly on the sphere may fall either side in float arithmetic.
-    EXPECT_NEAR (static_cast<double> (row.size ()), static_cast<double> (expected), 1.0);
-    for (std::size_t i = 0; i < row.size (); ++i)
-    {
+    EXPECT_NEAR (static_cast<double> (row.size()), static_cast<double> (expected), 1.0);
+    for (std::size_t i = 0; i < row.size(); ++i) {
       EXPECT_LE (row.sqr_distances[i], 0.08f * 0.08f * (1.0f + 1e-5f));
       if (i > 0)
         EXPECT_LE (row.sqr_distances[i - 1], row.sqr_distances[i]);
     }
   }
   nb.setMaxNeighbours (5);
-  ASSERT_TRUE (nb.compute ());
-  for (std::size_t r = 0; r < cloud->size (); ++r)
-  {
-    EXPECT_LE (nb[r].size (), 5u);
+  ASSERT_TRUE (nb.compute());
+  for (std::size_t r = 0; r < cloud->size(); ++r) {
+    EXPECT_LE (nb[r].size(), 5u);
     const auto truth = bruteForce (*cloud, (*cloud)[r]);
-    for (std::size_t i = 0; i < nb[r].size (); ++i)
+    for (std::size_t i = 0; i < nb[r].size(); ++i)
       EXPECT_NEAR (nb[r].sqr_distances[i], truth[i].d2, 1e-6f);
   }
 }
 
 TEST (Neighbourhoods, MaxRadiusCutsTheKNearestRows)
 {
-  // k nearest within a radius: the rows of a radius search limited to k, from the k search.
+  // k nearest within a radius: the rows of a radius search limited to k, from the k
+  // search.
   const auto cloud = randomCloud (1500, 4);
   pcl_ext::Neighbourhoods<Point> capped, radius;
   capped.setInputCloud (cloud);
   capped.setKSearch (20);
   capped.setMaxRadius (0.08);
-  ASSERT_TRUE (capped.compute ());
+  ASSERT_TRUE (capped.compute());
   radius.setInputCloud (cloud);
   radius.setRadiusSearch (0.08);
   radius.setMaxNeighbours (20);
-  ASSERT_TRUE (radius.compute ());
-  ASSERT_EQ (capped.size (), cloud->size ());
+  ASSERT_TRUE (radius.compute());
+  ASSERT_EQ (capped.size(), cloud->size());
   std::size_t cut = 0;
-  for (std::size_t r = 0; r < cloud->size (); ++r)
-  {
+  for (std::size_t r = 0; r < cloud->size(); ++r) {
     const auto truth = bruteForce (*cloud, (*cloud)[r]);
     std::size_t expected = 0;
-    while (expected < 20 && expected < truth.size () && truth[expected].d2 <= 0.08f * 0.08f)
+    while (expected < 20 && expected < truth.size() &&
+           truth[expected].d2 <= 0.08f * 0.08f)
       ++expected;
     cut += expected < 20;
     // Points exactly on the sphere may fall either side in float arithmetic.
-    EXPECT_NEAR (static_cast<double> (capped[r].size ()), static_cast<double> (expected), 1.0);
-    EXPECT_NEAR (static_cast<double> (capped[r].size ()), static_cast<double> (radius[r].size ()),
+    EXPECT_NEAR (
+        static_cast<double> (capped[r].size()), static_cast<double> (expected), 1.0);
+    EXPECT_NEAR (static_cast<double> (capped[r].size()),
+                 static_cast<double> (radius[r].size()),
                  1.0);
-    for (std::size_t i = 0; i < capped[r].size (); ++i)
-    {
+    for (std::size_t i = 0; i < capped[r].size(); ++i) {
       EXPECT_NEAR (capped[r].sqr_distances[i], truth[i].d2, 1e-6f);
       EXPECT_LE (capped[r].sqr_distances[i], 0.08f * 0.08f);
     }
   }
-  EXPECT_GT (cut, 100u);  // the cap matters for this cloud
+  EXPECT_GT (cut, 100u); // the cap matters for this cloud
   capped.setMaxRadius (-1.0);
-  EXPECT_FALSE (capped.compute ());
-  EXPECT_TRUE (capped.empty ());
+  EXPECT_FALSE (capped.compute());
+  EXPECT_TRUE (capped.empty());
 }
 
 TEST (Neighbourhoods, IndicesSelectRowsButSearchTheWholeCloud)
 {
   const auto cloud = randomCloud (800, 3);
-  pcl::IndicesPtr indices (new pcl::Indices {5, 700, 42, 42});
+  pcl::IndicesPtr indices (new pcl::Indices{5, 700, 42, 42});
   pcl_ext::Neighbourhoods<Point> nb;
   nb.setInputCloud (cloud);
   nb.setIndices (indices);
   nb.setKSearch (6);
-  ASSERT_TRUE (nb.compute ());
-  ASSERT_EQ (nb.size (), 4u);
-  for (std::size_t r = 0; r < indices->size (); ++r)
-  {
+  ASSERT_TRUE (nb.compute());
+  ASSERT_EQ (nb.size(), 4u);
+  for (std::size_t r = 0; r < indices->size(); ++r) {
     const auto truth = bruteForce (*cloud, (*cloud)[(*indices)[r]]);
     for (int i = 0; i < 6; ++i)
       EXPECT_NEAR (nb[r].sqr_distances[i], truth[i].d2, 1e-6f);
@@ -214,20 +212,19 @@ TEST (Neighbourhoods, IndicesSelectRowsButSearchTheWholeCloud)
 
 TEST (Neighbourhoods, NonFinitePointsGetEmptyRowsWhateverIsDenseSays)
 {
-  for (const bool claimed_dense : {false, true})
-  {
+  for (const bool claimed_dense : {false, true}) {
     auto cloud = randomCloud (600, 4);
     (*cloud)[10].x = NAN;
-    (*cloud)[20].y = std::numeric_limits<float>::infinity ();
+    (*cloud)[20].y = std::numeric_limits<float>::infinity();
     (*cloud)[599].z = NAN;
     cloud->is_dense = claimed_dense;
     pcl_ext::Neighbourhoods<Point> nb;
     nb.setInputCloud (cloud);
     nb.setKSearch (8);
-    ASSERT_TRUE (nb.compute ());
-    EXPECT_EQ (nb.getNumberOfSearchablePoints (), 597u);
+    ASSERT_TRUE (nb.compute());
+    EXPECT_EQ (nb.getNumberOfSearchablePoints(), 597u);
     expectKnnMatchesBruteForce (*cloud, nb, 8);
-    for (const auto j : nb.getNeighbourIndices ())
+    for (const auto j : nb.getNeighbourIndices())
       EXPECT_TRUE (j != 10 && j != 20 && j != 599);
   }
 }
@@ -236,94 +233,93 @@ TEST (Neighbourhoods, DuplicatePointsAreOrdinaryNeighbours)
 {
   auto cloud = randomCloud (300, 5);
   const Cloud copy = *cloud;
-  *cloud += copy;  // every point twice
+  *cloud += copy; // every point twice
   pcl_ext::Neighbourhoods<Point> nb;
   nb.setInputCloud (cloud);
   nb.setKSearch (4);
-  ASSERT_TRUE (nb.compute ());
+  ASSERT_TRUE (nb.compute());
   expectKnnMatchesBruteForce (*cloud, nb, 4);
-  for (std::size_t r = 0; r < cloud->size (); ++r)
-    EXPECT_EQ (nb[r].sqr_distances[1], 0.0f);  // its twin
+  for (std::size_t r = 0; r < cloud->size(); ++r)
+    EXPECT_EQ (nb[r].sqr_distances[1], 0.0f); // its twin
 }
 
 TEST (Neighbourhoods, BadInputGivesAnErrorAndNothing)
 {
   pcl_ext::Neighbourhoods<Point> nb;
-  EXPECT_FALSE (nb.compute ());  // no input
+  EXPECT_FALSE (nb.compute()); // no input
 
   nb.setInputCloud (Cloud::Ptr (new Cloud));
   nb.setKSearch (5);
-  EXPECT_FALSE (nb.compute ());
-  EXPECT_TRUE (nb.empty ());
+  EXPECT_FALSE (nb.compute());
+  EXPECT_TRUE (nb.empty());
 
   const auto cloud = randomCloud (10, 6);
   nb.setInputCloud (cloud);
-  nb.setKSearch (11);  // k larger than the cloud
-  EXPECT_FALSE (nb.compute ());
-  EXPECT_TRUE (nb.empty ());
-  nb.setKSearch (10);  // exactly the cloud: fine
-  EXPECT_TRUE (nb.compute ());
-  EXPECT_EQ (nb.size (), 10u);
-  nb.setKSearch (0);   // neither k nor radius
-  EXPECT_FALSE (nb.compute ());
-  EXPECT_TRUE (nb.empty ());
+  nb.setKSearch (11); // k larger than the cloud
+  EXPECT_FALSE (nb.compute());
+  EXPECT_TRUE (nb.empty());
+  nb.setKSearch (10); // exactly the cloud: fine
+  EXPECT_TRUE (nb.compute());
+  EXPECT_EQ (nb.size(), 10u);
+  nb.setKSearch (0); // neither k nor radius
+  EXPECT_FALSE (nb.compute());
+  EXPECT_TRUE (nb.empty());
   nb.setKSearch (-3);
-  EXPECT_FALSE (nb.compute ());
+  EXPECT_FALSE (nb.compute());
   nb.setRadiusSearch (-1.0);
-  EXPECT_FALSE (nb.compute ());
-  nb.setRadiusSearch (std::numeric_limits<double>::quiet_NaN ());
-  EXPECT_FALSE (nb.compute ());
-  nb.setRadiusSearch (std::numeric_limits<double>::infinity ());
-  EXPECT_FALSE (nb.compute ());
+  EXPECT_FALSE (nb.compute());
+  nb.setRadiusSearch (std::numeric_limits<double>::quiet_NaN());
+  EXPECT_FALSE (nb.compute());
+  nb.setRadiusSearch (std::numeric_limits<double>::infinity());
+  EXPECT_FALSE (nb.compute());
 
   Cloud::Ptr all_nan (new Cloud);
   all_nan->resize (20, Point (NAN, NAN, NAN));
   all_nan->is_dense = false;
   nb.setInputCloud (all_nan);
   nb.setKSearch (1);
-  EXPECT_FALSE (nb.compute ());
-  EXPECT_TRUE (nb.empty ());
+  EXPECT_FALSE (nb.compute());
+  EXPECT_TRUE (nb.empty());
 
   nb.setInputCloud (cloud);
-  nb.setIndices (pcl::IndicesPtr (new pcl::Indices {0, 10}));  // 10 is out of range
-  EXPECT_FALSE (nb.compute ());
-  nb.setIndices (pcl::IndicesPtr (new pcl::Indices {0, -1}));
-  EXPECT_FALSE (nb.compute ());
-  EXPECT_TRUE (nb.empty ());
+  nb.setIndices (pcl::IndicesPtr (new pcl::Indices{0, 10})); // 10 is out of range
+  EXPECT_FALSE (nb.compute());
+  nb.setIndices (pcl::IndicesPtr (new pcl::Indices{0, -1}));
+  EXPECT_FALSE (nb.compute());
+  EXPECT_TRUE (nb.empty());
 }
 
 TEST (Neighbourhoods, DeterministicForAnyThreadCountAndSearchMethod)
 {
   const auto cloud = randomCloud (20000, 7, 6000.0f);
   pcl_ext::Neighbourhoods<Point> one, two, flann;
-  for (auto* nb : {&one, &two, &flann})
-  {
+  for (auto* nb : {&one, &two, &flann}) {
     nb->setInputCloud (cloud);
     nb->setKSearch (16);
   }
   one.setNumberOfThreads (1);
   two.setNumberOfThreads (2);
-  flann.setSearchMethod (pcl::search::KdTree<Point>::Ptr (new pcl::search::KdTree<Point>));
-  ASSERT_TRUE (one.compute ());
-  ASSERT_TRUE (two.compute ());
-  ASSERT_TRUE (flann.compute ());
-  EXPECT_EQ (one.getOffsets (), two.getOffsets ());
-  EXPECT_EQ (one.getNeighbourIndices (), two.getNeighbourIndices ());
-  EXPECT_EQ (one.getSquaredDistances (), two.getSquaredDistances ());
-  ASSERT_EQ (one.getSquaredDistances ().size (), flann.getSquaredDistances ().size ());
-  for (std::size_t i = 0; i < one.getSquaredDistances ().size (); ++i)
-    ASSERT_NEAR (one.getSquaredDistances ()[i], flann.getSquaredDistances ()[i], 1e-6f);
+  flann.setSearchMethod (
+      pcl::search::KdTree<Point>::Ptr (new pcl::search::KdTree<Point>));
+  ASSERT_TRUE (one.compute());
+  ASSERT_TRUE (two.compute());
+  ASSERT_TRUE (flann.compute());
+  EXPECT_EQ (one.getOffsets(), two.getOffsets());
+  EXPECT_EQ (one.getNeighbourIndices(), two.getNeighbourIndices());
+  EXPECT_EQ (one.getSquaredDistances(), two.getSquaredDistances());
+  ASSERT_EQ (one.getSquaredDistances().size(), flann.getSquaredDistances().size());
+  for (std::size_t i = 0; i < one.getSquaredDistances().size(); ++i)
+    ASSERT_NEAR (one.getSquaredDistances()[i], flann.getSquaredDistances()[i], 1e-6f);
 
   pcl_ext::Neighbourhoods<Point> r1, r2;
-  for (auto* nb : {&r1, &r2})
-  {
+  for (auto* nb : {&r1, &r2}) {
     nb->setInputCloud (cloud);
     nb->setRadiusSearch (0.02);
   }
   r1.setNumberOfThreads (1);
   r2.setNumberOfThreads (2);
-  ASSERT_TRUE (r1.compute ());
-  ASSERT_TRUE (r2.compute ());
-  EXPECT_EQ (r1.getOffsets (), r2.getOffsets ());
-  EXPECT_EQ (r1.getNeighbourIndices (), r2.getNeighbourIndices ());
+  ASSERT_TRUE (r1.compute());
+  ASSERT_TRUE (r2.compute());
+  EXPECT_EQ (r1.getOffsets(), r2.getOffsets());
+  EXPECT_EQ (r1.getNeighbourIndices(), r2.getNeighbourIndices());
 }

@@ -1,6 +1,6 @@
 /*
- * Tests of the adaptive radius of Lim & Suter's super-voxels (section 3.1, eq. 1-4): the
- * parameters, the noise constant, the estimator.
+ * Tests of the adaptive radius of Lim & Suter's super-voxels (section 3.1, eq. 1-4):
+ * the parameters, the noise constant, the estimator.
  */
 #include "../features/crf_test_clouds.h"
 
@@ -15,41 +15,50 @@
 using pcl_ext::AdaptiveRadiusEstimator;
 using pcl_ext::AdaptiveRadiusParameters;
 
-namespace
-{
+namespace {
 /** A flat 4 x 4 m grid at z = 0, spacing 0.1 m: 41 x 41 points, point i * 41 + j at
-  * (0.1 i, 0.1 j, 0). */
+ * (0.1 i, 0.1 j, 0). */
 pcl::PointCloud<pcl::PointXYZ>::Ptr
 flatGrid ()
 {
-  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   for (int i = 0; i <= 40; ++i)
     for (int j = 0; j <= 40; ++j)
       cloud->push_back (pcl::PointXYZ (0.1f * i, 0.1f * j, 0.f));
   return cloud;
 }
 
-constexpr pcl::index_t kCentre = 20 * 41 + 20;  // (2, 2, 0)
-}  // namespace
+constexpr pcl::index_t kCentre = 20 * 41 + 20; // (2, 2, 0)
+} // namespace
 
 TEST (AdaptiveRadius, ParametersAreChecked)
 {
   EXPECT_TRUE (pcl_ext::checkAdaptiveRadiusParameters ({}, "test"));
-  const double nan = std::numeric_limits<double>::quiet_NaN ();
-  for (int k = 0; k < 11; ++k)
-  {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int k = 0; k < 11; ++k) {
     AdaptiveRadiusParameters p;
-    if (k == 0) p.initial_k = 2;
-    if (k == 1) p.damping = 0.0;
-    if (k == 2) p.damping = 1.5;
-    if (k == 3) p.max_iterations = 0;
-    if (k == 4) p.max_k = p.initial_k;
-    if (k == 5) p.noise = -0.01;
-    if (k == 6) p.c1 = 0.0;
-    if (k == 7) p.epsilon = nan;
-    if (k == 8) p.colour_weight = -1.0;
-    if (k == 9) p.min_radius = 1.0, p.max_radius = 1.0;
-    if (k == 10) p.saturation = nan;
+    if (k == 0)
+      p.initial_k = 2;
+    if (k == 1)
+      p.damping = 0.0;
+    if (k == 2)
+      p.damping = 1.5;
+    if (k == 3)
+      p.max_iterations = 0;
+    if (k == 4)
+      p.max_k = p.initial_k;
+    if (k == 5)
+      p.noise = -0.01;
+    if (k == 6)
+      p.c1 = 0.0;
+    if (k == 7)
+      p.epsilon = nan;
+    if (k == 8)
+      p.colour_weight = -1.0;
+    if (k == 9)
+      p.min_radius = 1.0, p.max_radius = 1.0;
+    if (k == 10)
+      p.saturation = nan;
     EXPECT_FALSE (pcl_ext::checkAdaptiveRadiusParameters (p, "test")) << "case " << k;
   }
   AdaptiveRadiusParameters edge;
@@ -61,49 +70,49 @@ TEST (AdaptiveRadius, ParametersAreChecked)
 
 TEST (AdaptiveRadius, NoiseOfATwoLayerPatchIsItsHalfThickness)
 {
-  // A 10 x 10 checkerboard of points 1 cm above and below z = 0: the fitted plane is z = 0
-  // and every point lies 1 cm from it.
+  // A 10 x 10 checkerboard of points 1 cm above and below z = 0: the fitted plane is z
+  // = 0 and every point lies 1 cm from it.
   pcl::PointCloud<pcl::PointXYZ> cloud;
   std::vector<pcl::index_t> patch;
   for (int i = 0; i < 10; ++i)
-    for (int j = 0; j < 10; ++j)
-    {
-      patch.push_back (static_cast<pcl::index_t> (cloud.size ()));
-      cloud.push_back (pcl::PointXYZ (0.1f * i, 0.1f * j, (i + j) % 2 ? 0.01f : -0.01f));
+    for (int j = 0; j < 10; ++j) {
+      patch.push_back (static_cast<pcl::index_t> (cloud.size()));
+      cloud.push_back (
+          pcl::PointXYZ (0.1f * i, 0.1f * j, (i + j) % 2 ? 0.01f : -0.01f));
     }
   EXPECT_NEAR (pcl_ext::estimateNoiseFromPlanarPatch (cloud, patch), 0.01, 1e-7);
   // Non-finite points are left out; fewer than three finite ones give NaN.
-  const float nan = std::numeric_limits<float>::quiet_NaN ();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
   cloud.push_back (pcl::PointXYZ (nan, nan, nan));
-  patch.push_back (static_cast<pcl::index_t> (cloud.size () - 1));
+  patch.push_back (static_cast<pcl::index_t> (cloud.size() - 1));
   EXPECT_NEAR (pcl_ext::estimateNoiseFromPlanarPatch (cloud, patch), 0.01, 1e-7);
   EXPECT_TRUE (std::isnan (pcl_ext::estimateNoiseFromPlanarPatch (
-      cloud, {0, 1, static_cast<pcl::index_t> (cloud.size () - 1)})));
+      cloud, {0, 1, static_cast<pcl::index_t> (cloud.size() - 1)})));
 }
 
 TEST (AdaptiveRadius, FlatGridGrowsToTheKThreshold)
 {
-  // On a plane eq. 2 gives no curvature, so the first step already passes the k threshold and
-  // the radius is the one holding max_k points at the density of the first 15 neighbours:
-  // 15 points within sqrt(0.05) (the 15th nearest on a 0.1 grid), pi r^2 rho = 60 at
-  // r^2 = 60 / 15 * 0.05 = 0.2.
-  const auto cloud = flatGrid ();
+  // On a plane eq. 2 gives no curvature, so the first step already passes the k
+  // threshold and the radius is the one holding max_k points at the density of the
+  // first 15 neighbours: 15 points within sqrt(0.05) (the 15th nearest on a 0.1 grid),
+  // pi r^2 rho = 60 at r^2 = 60 / 15 * 0.05 = 0.2.
+  const auto cloud = flatGrid();
   AdaptiveRadiusParameters p;
   p.noise = 0.005;
   AdaptiveRadiusEstimator est;
   ASSERT_TRUE (est.initialize (cloud, {}, p));
-  EXPECT_EQ (est.getNoise (), 0.005);
-  EXPECT_EQ (est.cloud ().get (), cloud.get ());
+  EXPECT_EQ (est.getNoise(), 0.005);
+  EXPECT_EQ (est.cloud().get(), cloud.get());
   int steps = 0;
   EXPECT_NEAR (est.estimate (kCentre, &steps), std::sqrt (0.2), 1e-4);
   EXPECT_EQ (steps, 1);
-  // The bounds: a maximum below that radius holds it there (two steps: the second finds the
-  // count it predicted), a minimum above it raises it.
+  // The bounds: a maximum below that radius holds it there (two steps: the second finds
+  // the count it predicted), a minimum above it raises it.
   p.max_radius = 0.3;
   ASSERT_TRUE (est.initialize (cloud, {}, p));
   EXPECT_NEAR (est.estimate (kCentre, &steps), 0.3, 1e-6);
   EXPECT_EQ (steps, 2);
-  p.max_radius = std::numeric_limits<double>::infinity ();
+  p.max_radius = std::numeric_limits<double>::infinity();
   p.min_radius = 0.6;
   ASSERT_TRUE (est.initialize (cloud, {}, p));
   EXPECT_NEAR (est.estimate (kCentre), 0.6, 1e-6);
@@ -111,39 +120,39 @@ TEST (AdaptiveRadius, FlatGridGrowsToTheKThreshold)
 
 TEST (AdaptiveRadius, NeighboursAndNearest)
 {
-  const auto cloud = flatGrid ();
+  const auto cloud = flatGrid();
   AdaptiveRadiusParameters p;
   p.noise = 0.005;
   AdaptiveRadiusEstimator est;
   ASSERT_TRUE (est.initialize (cloud, {}, p));
   pcl::Indices nn;
   est.neighbours (kCentre, 0.1001f, nn);
-  ASSERT_EQ (nn.size (), 5u);  // the point and its four grid neighbours
+  ASSERT_EQ (nn.size(), 5u); // the point and its four grid neighbours
   EXPECT_EQ (nn[0], kCentre);
   est.nearest (Eigen::Vector3f (2.01f, 2.02f, 0.5f), 1, nn);
-  ASSERT_EQ (nn.size (), 1u);
+  ASSERT_EQ (nn.size(), 1u);
   EXPECT_EQ (nn[0], kCentre);
-  est.nearest (Eigen::Vector3f::Zero (), 100000, nn);
-  EXPECT_EQ (nn.size (), cloud->size ());
+  est.nearest (Eigen::Vector3f::Zero(), 100000, nn);
+  EXPECT_EQ (nn.size(), cloud->size());
   EXPECT_EQ (nn[0], 0);
 }
 
 TEST (AdaptiveRadius, InitializeRefusesTooFewPointsAndBadColours)
 {
   AdaptiveRadiusEstimator est;
-  const AdaptiveRadiusParameters p;  // initial_k 15
+  const AdaptiveRadiusParameters p; // initial_k 15
   EXPECT_FALSE (est.initialize (nullptr, {}, p));
-  auto few = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  auto few = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   for (int i = 0; i < 20; ++i)
     few->push_back (pcl::PointXYZ (0.1f * i, 0.f, 0.f));
-  const float nan = std::numeric_limits<float>::quiet_NaN ();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
   for (int i = 0; i < 6; ++i)
-    (*few)[i].x = nan;  // 14 finite points left
+    (*few)[i].x = nan; // 14 finite points left
   EXPECT_FALSE (est.initialize (few, {}, p));
-  EXPECT_FALSE (est.initialize (flatGrid (), {Eigen::Vector3f::Ones ()}, p));
+  EXPECT_FALSE (est.initialize (flatGrid(), {Eigen::Vector3f::Ones()}, p));
   AdaptiveRadiusParameters bad;
   bad.damping = 0.0;
-  EXPECT_FALSE (est.initialize (flatGrid (), {}, bad));
+  EXPECT_FALSE (est.initialize (flatGrid(), {}, bad));
 }
 
 TEST (AdaptiveSupervoxels, NoiseFromAPlanarPatch)
@@ -151,7 +160,7 @@ TEST (AdaptiveSupervoxels, NoiseFromAPlanarPatch)
   // The mean distance to the plane of Gaussian noise sigma is sigma sqrt(2 / pi).
   const auto cloud = crf_test::floorAndWall (0.02, 0.01);
   std::vector<pcl::index_t> floor;
-  for (std::size_t i = 0; i < cloud->size (); ++i)
+  for (std::size_t i = 0; i < cloud->size(); ++i)
     if ((*cloud)[i].x > 0.5f)
       floor.push_back (static_cast<pcl::index_t> (i));
   const double sigma = pcl_ext::estimateNoiseFromPlanarPatch (*cloud, floor);
@@ -159,7 +168,7 @@ TEST (AdaptiveSupervoxels, NoiseFromAPlanarPatch)
   EXPECT_TRUE (std::isnan (pcl_ext::estimateNoiseFromPlanarPatch (*cloud, {0, 1})));
   // The automatic estimate finds the same order of noise on the two planes.
   pcl_ext::AdaptiveRadiusEstimator est;
-  ASSERT_TRUE (est.initialize (cloud, {}, pcl_ext::AdaptiveRadiusParameters ()));
-  EXPECT_GT (est.getNoise (), 0.005);
-  EXPECT_LT (est.getNoise (), 0.015);
+  ASSERT_TRUE (est.initialize (cloud, {}, pcl_ext::AdaptiveRadiusParameters()));
+  EXPECT_GT (est.getNoise(), 0.005);
+  EXPECT_LT (est.getNoise(), 0.015);
 }

@@ -13,53 +13,58 @@
 using namespace pcl_ext::cylinder_join;
 using pcl_ext::cylinders::Cylinder;
 
-namespace
-{
+namespace {
 Cylinder
-cylinder (const Eigen::Vector3d& point, const Eigen::Vector3d& axis, double radius,
+cylinder (const Eigen::Vector3d& point,
+          const Eigen::Vector3d& axis,
+          double radius,
           double half_length)
 {
   Cylinder c;
   c.point = point;
-  c.axis = axis.normalized ();
+  c.axis = axis.normalized();
   c.radius = radius;
   c.half_length = half_length;
   return c;
 }
 
-/** Points of a pipe of radius 0.1 along x at z = 1 seen from below (half its circumference),
-  * from x = \a start for \a length, on a 2 cm grid with 3 mm of noise; appended to \a xyz,
-  * their positions to \a segment. */
+/** Points of a pipe of radius 0.1 along x at z = 1 seen from below (half its
+ * circumference), from x = \a start for \a length, on a 2 cm grid with 3 mm of noise;
+ * appended to \a xyz, their positions to \a segment. */
 void
-addPipe (double start, double length, std::mt19937& rng, std::vector<Eigen::Vector3d>& xyz,
+addPipe (double start,
+         double length,
+         std::mt19937& rng,
+         std::vector<Eigen::Vector3d>& xyz,
          std::vector<std::uint32_t>& segment)
 {
   std::normal_distribution<double> noise (0.0, 0.003);
   const int along = static_cast<int> (std::ceil (length / 0.02));
   const int across = static_cast<int> (std::ceil (M_PI * 0.1 / 0.02));
   for (int i = 0; i < along; ++i)
-    for (int j = 0; j < across; ++j)
-    {
+    for (int j = 0; j < across; ++j) {
       const double x = start + (i + 0.5) * length / along;
       const double theta = -0.5 * M_PI + (j + 0.5) * M_PI / across;
       const double r = 0.1 + noise (rng);
-      segment.push_back (static_cast<std::uint32_t> (xyz.size ()));
+      segment.push_back (static_cast<std::uint32_t> (xyz.size()));
       xyz.emplace_back (x, r * std::sin (theta), 1.0 - r * std::cos (theta));
     }
 }
-}  // namespace
+} // namespace
 
 TEST (CylinderJoin, ContinuesAlongOneAxisAndAroundAnElbow)
 {
-  const JoinParameters p;  // gap 2, 5 degrees for a run, 30 for an elbow, radii within 30 %
-  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ (), x = Eigen::Vector3d::UnitX ();
+  const JoinParameters
+      p; // gap 2, 5 degrees for a run, 30 for an elbow, radii within 30 %
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ(), x = Eigen::Vector3d::UnitX();
   // One run: a covers z in [-1, 1], b z in [2, 4], a gap of 1.
-  const Cylinder a = cylinder (Eigen::Vector3d::Zero (), z, 0.2, 1.0);
+  const Cylinder a = cylinder (Eigen::Vector3d::Zero(), z, 0.2, 1.0);
   EXPECT_TRUE (continues (a, cylinder (Eigen::Vector3d (0, 0, 3), z, 0.2, 1.0), p));
   EXPECT_TRUE (continues (cylinder (Eigen::Vector3d (0, 0, 3), z, 0.2, 1.0), a, p));
   JoinParameters short_gap;
   short_gap.max_gap = 0.5;
-  EXPECT_FALSE (continues (a, cylinder (Eigen::Vector3d (0, 0, 3), z, 0.2, 1.0), short_gap));
+  EXPECT_FALSE (
+      continues (a, cylinder (Eigen::Vector3d (0, 0, 3), z, 0.2, 1.0), short_gap));
   // Radii: 0.05 apart is within 30 % of 0.25, 0.1 apart is more than 30 % of 0.3.
   EXPECT_TRUE (continues (a, cylinder (Eigen::Vector3d (0, 0, 3), z, 0.25, 1.0), p));
   EXPECT_FALSE (continues (a, cylinder (Eigen::Vector3d (0, 0, 3), z, 0.3, 1.0), p));
@@ -67,55 +72,63 @@ TEST (CylinderJoin, ContinuesAlongOneAxisAndAroundAnElbow)
   EXPECT_FALSE (continues (a, cylinder (Eigen::Vector3d (0.2, 0, 3), z, 0.2, 1.0), p));
   // Turned by 15 degrees: neither one run nor an elbow.
   const Eigen::Vector3d turned (std::sin (M_PI / 12), 0, std::cos (M_PI / 12));
-  EXPECT_FALSE (continues (a, cylinder (Eigen::Vector3d (0, 0, 3), turned, 0.2, 1.0), p));
+  EXPECT_FALSE (
+      continues (a, cylinder (Eigen::Vector3d (0, 0, 3), turned, 0.2, 1.0), p));
   // An elbow: the axes meet at (0, 0, 1.5), half a metre beyond the end of each leg.
   EXPECT_TRUE (continues (a, cylinder (Eigen::Vector3d (1.5, 0, 1.5), x, 0.2, 1.0), p));
   // The second leg passes 0.5 m beside the first axis: two pipes crossing.
-  EXPECT_FALSE (continues (a, cylinder (Eigen::Vector3d (1.5, 0.5, 1.5), x, 0.2, 1.0), p));
+  EXPECT_FALSE (
+      continues (a, cylinder (Eigen::Vector3d (1.5, 0.5, 1.5), x, 0.2, 1.0), p));
   // The axes meet 2.5 m beyond the second leg's end, farther than the longest gap.
-  EXPECT_FALSE (continues (a, cylinder (Eigen::Vector3d (3.5, 0, 1.5), x, 0.2, 1.0), p));
+  EXPECT_FALSE (
+      continues (a, cylinder (Eigen::Vector3d (3.5, 0, 1.5), x, 0.2, 1.0), p));
 }
 
 TEST (CylinderJoin, ParametersAreChecked)
 {
-  EXPECT_TRUE (validParameters (JoinParameters ()));
-  for (int k = 0; k < 7; ++k)
-  {
+  EXPECT_TRUE (validParameters (JoinParameters()));
+  for (int k = 0; k < 7; ++k) {
     JoinParameters p;
-    if (k == 0) p.threads = 0;
-    if (k == 1) p.max_gap = -1.0;
-    if (k == 2) p.min_elbow_angle = p.max_axis_angle;
-    if (k == 3) p.max_radius_difference = 1.0;
-    if (k == 4) p.whole_segment_fraction = 1.5;
-    if (k == 5) p.absorb_fraction = -0.1;
-    if (k == 6) p.detection.distance_tolerance = 0.0;
+    if (k == 0)
+      p.threads = 0;
+    if (k == 1)
+      p.max_gap = -1.0;
+    if (k == 2)
+      p.min_elbow_angle = p.max_axis_angle;
+    if (k == 3)
+      p.max_radius_difference = 1.0;
+    if (k == 4)
+      p.whole_segment_fraction = 1.5;
+    if (k == 5)
+      p.absorb_fraction = -0.1;
+    if (k == 6)
+      p.detection.distance_tolerance = 0.0;
     EXPECT_FALSE (validParameters (p)) << "case " << k;
   }
 }
 
 TEST (CylinderJoin, PipeCutInTwoBecomesOneSegment)
 {
-  // Segment 0 and 1: a pipe from x = 0 to 1.5 and from 2.1 to 3.6; segment 2: a patch of
-  // ground under it; the last three points are in no segment.
+  // Segment 0 and 1: a pipe from x = 0 to 1.5 and from 2.1 to 3.6; segment 2: a patch
+  // of ground under it; the last three points are in no segment.
   std::mt19937 rng (1);
   std::vector<Eigen::Vector3d> xyz;
   std::vector<std::vector<std::uint32_t>> segments (3);
   addPipe (0.0, 1.5, rng, xyz, segments[0]);
   addPipe (2.1, 1.5, rng, xyz, segments[1]);
   for (int i = 0; i < 40; ++i)
-    for (int j = 0; j < 20; ++j)
-    {
-      segments[2].push_back (static_cast<std::uint32_t> (xyz.size ()));
+    for (int j = 0; j < 20; ++j) {
+      segments[2].push_back (static_cast<std::uint32_t> (xyz.size()));
       xyz.emplace_back (0.05 * i, -0.5 + 0.05 * j, 0.0);
     }
   const std::size_t free_points = 3;
   for (std::size_t k = 0; k < free_points; ++k)
     xyz.emplace_back (5.0 + k, 5.0, 5.0);
   JoinResult result;
-  ASSERT_TRUE (joinCylinderSegments (xyz, segments, JoinParameters (), result));
-  ASSERT_EQ (result.labels.size (), xyz.size ());
+  ASSERT_TRUE (joinCylinderSegments (xyz, segments, JoinParameters(), result));
+  ASSERT_EQ (result.labels.size(), xyz.size());
   // One cylinder per span, none on the ground; both joined into the first label.
-  ASSERT_EQ (result.pieces.size (), 2u);
+  ASSERT_EQ (result.pieces.size(), 2u);
   EXPECT_EQ (result.pieces[0].segment, 0u);
   EXPECT_EQ (result.pieces[1].segment, 1u);
   EXPECT_EQ (result.pieces[0].joined, 0u);
@@ -129,14 +142,14 @@ TEST (CylinderJoin, PipeCutInTwoBecomesOneSegment)
   for (const auto i : segments[2])
     EXPECT_EQ (result.labels[i], 1u) << "point " << i;
   for (std::size_t k = 1; k <= free_points; ++k)
-    EXPECT_EQ (result.labels[xyz.size () - k], kNoSegment);
+    EXPECT_EQ (result.labels[xyz.size() - k], kNoSegment);
   // A position out of range, or invalid parameters: false, nothing labelled.
-  segments[2].push_back (static_cast<std::uint32_t> (xyz.size ()));
-  EXPECT_FALSE (joinCylinderSegments (xyz, segments, JoinParameters (), result));
-  EXPECT_TRUE (result.labels.empty ());
-  segments[2].pop_back ();
+  segments[2].push_back (static_cast<std::uint32_t> (xyz.size()));
+  EXPECT_FALSE (joinCylinderSegments (xyz, segments, JoinParameters(), result));
+  EXPECT_TRUE (result.labels.empty());
+  segments[2].pop_back();
   JoinParameters bad;
   bad.threads = 0;
   EXPECT_FALSE (joinCylinderSegments (xyz, segments, bad, result));
-  EXPECT_TRUE (result.pieces.empty ());
+  EXPECT_TRUE (result.pieces.empty());
 }

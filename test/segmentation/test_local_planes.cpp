@@ -1,6 +1,6 @@
 /*
- * Plane fits (Belton & Lichti 2006, sections 3 and 4): the least-squares plane of a segment, the
- * local planes of neighbourhoods and the intersection of two of them.
+ * Plane fits (Belton & Lichti 2006, sections 3 and 4): the least-squares plane of a
+ * segment, the local planes of neighbourhoods and the intersection of two of them.
  */
 #include <pcl_ext/segmentation/local_planes.h>
 
@@ -9,43 +9,45 @@
 #include <cmath>
 #include <random>
 
-namespace
-{
+namespace {
 using Point = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Point>;
-}  // namespace
+} // namespace
 
 TEST (FitSegmentPlane, RecoversATiltedPlaneFarFromTheOrigin)
 {
   // z = 0.1 (x - x0) - 0.2 (y - y0) + 3 with 2 mm noise in z, over 40 m x 2.5 m at
-  // x0 = 6,000,000 m, y0 = 500,000 m. Floats there are 0.5 m (x) and 1/32 m (y) apart, so the
-  // grid is made of representable coordinates: the fit must lose nothing beyond the noise.
-  const Eigen::Vector3d n_true = Eigen::Vector3d (-0.1, 0.2, 1.0).normalized ();
+  // x0 = 6,000,000 m, y0 = 500,000 m. Floats there are 0.5 m (x) and 1/32 m (y) apart,
+  // so the grid is made of representable coordinates: the fit must lose nothing beyond
+  // the noise.
+  const Eigen::Vector3d n_true = Eigen::Vector3d (-0.1, 0.2, 1.0).normalized();
   std::mt19937 rng (3);
   std::normal_distribution<double> noise (0.0, 0.002);
   Cloud cloud;
   pcl::Indices indices;
   const double x0 = 6000000.0, y0 = 500000.0;
   for (int i = 0; i < 80; ++i)
-    for (int j = 0; j < 80; ++j)
-    {
+    for (int j = 0; j < 80; ++j) {
       const double x = x0 + 0.5 * i, y = y0 + 0.03125 * j;
       const double z = 0.1 * (x - x0) - 0.2 * (y - y0) + 3.0 + noise (rng);
-      cloud.push_back (Point (static_cast<float> (x), static_cast<float> (y),
-                              static_cast<float> (z)));
-      indices.push_back (static_cast<pcl::index_t> (cloud.size () - 1));
+      cloud.push_back (Point (
+          static_cast<float> (x), static_cast<float> (y), static_cast<float> (z)));
+      indices.push_back (static_cast<pcl::index_t> (cloud.size() - 1));
     }
-  const auto plane = pcl_ext::fitSegmentPlane (cloud, indices, Eigen::Vector3d (x0, y0, 100.0));
+  const auto plane =
+      pcl_ext::fitSegmentPlane (cloud, indices, Eigen::Vector3d (x0, y0, 100.0));
   ASSERT_TRUE (plane.valid);
-  EXPECT_EQ (plane.size, cloud.size ());
-  EXPECT_GT (plane.normal.dot (n_true), 1.0 - 1e-6);  // and turned up, towards the viewpoint
+  EXPECT_EQ (plane.size, cloud.size());
+  EXPECT_GT (plane.normal.dot (n_true),
+             1.0 - 1e-6); // and turned up, towards the viewpoint
   EXPECT_NEAR (plane.normal.dot (plane.centroid) + plane.d, 0.0, 1e-6);
   // A z offset dz is a distance dz * n_z from the plane.
-  EXPECT_NEAR (plane.rms_residual, 0.002 * n_true.z (), 0.0003);
+  EXPECT_NEAR (plane.rms_residual, 0.002 * n_true.z(), 0.0003);
   EXPECT_GT (plane.max_residual, 2.5 * plane.rms_residual);
   EXPECT_LT (plane.max_residual, 6.0 * plane.rms_residual);
   // The same fit seen from below is turned down.
-  const auto below = pcl_ext::fitSegmentPlane (cloud, indices, Eigen::Vector3d (x0, y0, -100.0));
+  const auto below =
+      pcl_ext::fitSegmentPlane (cloud, indices, Eigen::Vector3d (x0, y0, -100.0));
   EXPECT_LT (below.normal.dot (n_true), -1.0 + 1e-6);
   EXPECT_NEAR (below.d, -plane.d, 1e-6 * std::abs (plane.d));
 }
@@ -54,13 +56,15 @@ TEST (FitSegmentPlane, OneOrTwoPointsOrALineHaveNoPlane)
 {
   Cloud cloud;
   for (int i = 0; i < 5; ++i)
-    cloud.push_back (Point (0.1f * i, 0.2f * i, 0.f));  // collinear
+    cloud.push_back (Point (0.1f * i, 0.2f * i, 0.f)); // collinear
   const Eigen::Vector3d view (0, 0, 1);
-  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices {0}, view).valid);
-  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices {0, 1}, view).valid);
-  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices {0, 1, 2, 3, 4}, view).valid);
-  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices {}, view).valid);
-  EXPECT_TRUE (std::isnan (pcl_ext::fitSegmentPlane (cloud, pcl::Indices {0}, view).normal.x ()));
+  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0}, view).valid);
+  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0, 1}, view).valid);
+  EXPECT_FALSE (
+      pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0, 1, 2, 3, 4}, view).valid);
+  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{}, view).valid);
+  EXPECT_TRUE (
+      std::isnan (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0}, view).normal.x()));
 }
 
 TEST (FitLocalPlane, TotalLeastSquaresAndGivenNormal)
@@ -73,55 +77,62 @@ TEST (FitLocalPlane, TotalLeastSquaresAndGivenNormal)
       cloud.push_back (Point (static_cast<float> (x0 + 0.05 * i),
                               static_cast<float> (y0 + 0.05 * j),
                               static_cast<float> (0.5 * 0.05 * i)));
-  std::vector<pcl::index_t> indices (cloud.size ());
-  for (std::size_t i = 0; i < indices.size (); ++i)
+  std::vector<pcl::index_t> indices (cloud.size());
+  for (std::size_t i = 0; i < indices.size(); ++i)
     indices[i] = static_cast<pcl::index_t> (i);
-  const Eigen::Vector3d n_true = Eigen::Vector3d (-0.5, 0.0, 1.0).normalized ();
+  const Eigen::Vector3d n_true = Eigen::Vector3d (-0.5, 0.0, 1.0).normalized();
   pcl_ext::LocalPlane plane;
-  ASSERT_TRUE (pcl_ext::fitLocalPlane (cloud, indices.begin (), indices.end (), nullptr, plane));
-  EXPECT_EQ (plane.size, cloud.size ());
+  ASSERT_TRUE (
+      pcl_ext::fitLocalPlane (cloud, indices.begin(), indices.end(), nullptr, plane));
+  EXPECT_EQ (plane.size, cloud.size());
   EXPECT_GT (std::abs (plane.normal.dot (n_true)), 1.0 - 1e-5);
-  EXPECT_LT (plane.rms, 1e-3);  // the floats' rounding only
-  EXPECT_NEAR (std::abs (plane.distance (plane.centroid + 0.3 * plane.normal)), 0.3, 1e-9);
-  // Given a normal, the plane takes it (normalised) through the centroid; the residual is
-  // the spread along it.
+  EXPECT_LT (plane.rms, 1e-3); // the floats' rounding only
+  EXPECT_NEAR (
+      std::abs (plane.distance (plane.centroid + 0.3 * plane.normal)), 0.3, 1e-9);
+  // Given a normal, the plane takes it (normalised) through the centroid; the residual
+  // is the spread along it.
   const Eigen::Vector3d up (0.0, 0.0, 2.0);
-  ASSERT_TRUE (pcl_ext::fitLocalPlane (cloud, indices.begin (), indices.end (), &up, plane));
-  EXPECT_NEAR (plane.normal.z (), 1.0, 1e-12);
-  EXPECT_GT (plane.rms, 0.1);  // z spans 0.5 m
-  const Eigen::Vector3d zero = Eigen::Vector3d::Zero ();
-  EXPECT_FALSE (pcl_ext::fitLocalPlane (cloud, indices.begin (), indices.end (), &zero, plane));
+  ASSERT_TRUE (
+      pcl_ext::fitLocalPlane (cloud, indices.begin(), indices.end(), &up, plane));
+  EXPECT_NEAR (plane.normal.z(), 1.0, 1e-12);
+  EXPECT_GT (plane.rms, 0.1); // z spans 0.5 m
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  EXPECT_FALSE (
+      pcl_ext::fitLocalPlane (cloud, indices.begin(), indices.end(), &zero, plane));
   // Fewer than 3 points, or collinear ones, have no plane.
-  EXPECT_FALSE (pcl_ext::fitLocalPlane (cloud, indices.begin (), indices.begin () + 2, nullptr,
-                                        plane));
+  EXPECT_FALSE (pcl_ext::fitLocalPlane (
+      cloud, indices.begin(), indices.begin() + 2, nullptr, plane));
   Cloud line;
   for (int i = 0; i < 5; ++i)
-    line.push_back (Point (0.25f * i, 0.5f * i, 0.f));  // exactly collinear
-  const std::vector<pcl::index_t> all {0, 1, 2, 3, 4};
-  EXPECT_FALSE (pcl_ext::fitLocalPlane (line, all.begin (), all.end (), nullptr, plane));
+    line.push_back (Point (0.25f * i, 0.5f * i, 0.f)); // exactly collinear
+  const std::vector<pcl::index_t> all{0, 1, 2, 3, 4};
+  EXPECT_FALSE (pcl_ext::fitLocalPlane (line, all.begin(), all.end(), nullptr, plane));
 }
 
 TEST (IntersectLocalPlanes, TwoFacesOfABoxMeetOnTheirCrease)
 {
-  // The planes x = 1 and y = 2 meet on the vertical line (1, 2, z); the point returned is the
-  // one nearest the midpoint of the two given points.
+  // The planes x = 1 and y = 2 meet on the vertical line (1, 2, z); the point returned
+  // is the one nearest the midpoint of the two given points.
   pcl_ext::LocalPlane a, b;
   a.centroid = Eigen::Vector3d (1.0, 0.0, 0.0);
-  a.normal = Eigen::Vector3d::UnitX ();
+  a.normal = Eigen::Vector3d::UnitX();
   b.centroid = Eigen::Vector3d (0.0, 2.0, 0.0);
-  b.normal = -Eigen::Vector3d::UnitY ();
+  b.normal = -Eigen::Vector3d::UnitY();
   Eigen::Vector3d point, direction;
-  ASSERT_TRUE (pcl_ext::intersectLocalPlanes (a, b, Eigen::Vector3d (1.1, 1.5, 3.0),
-                                              Eigen::Vector3d (0.5, 2.1, 5.0), point,
+  ASSERT_TRUE (pcl_ext::intersectLocalPlanes (a,
+                                              b,
+                                              Eigen::Vector3d (1.1, 1.5, 3.0),
+                                              Eigen::Vector3d (0.5, 2.1, 5.0),
+                                              point,
                                               direction));
-  EXPECT_NEAR (point.x (), 1.0, 1e-12);
-  EXPECT_NEAR (point.y (), 2.0, 1e-12);
-  EXPECT_NEAR (point.z (), 4.0, 1e-12);
-  EXPECT_NEAR (std::abs (direction.z ()), 1.0, 1e-12);
+  EXPECT_NEAR (point.x(), 1.0, 1e-12);
+  EXPECT_NEAR (point.y(), 2.0, 1e-12);
+  EXPECT_NEAR (point.z(), 4.0, 1e-12);
+  EXPECT_NEAR (std::abs (direction.z()), 1.0, 1e-12);
   EXPECT_NEAR (pcl_ext::normalAngle (a.normal, b.normal), M_PI / 2, 1e-12);
   EXPECT_NEAR (pcl_ext::normalAngle (a.normal, -a.normal), 0.0, 1e-12);
   // Parallel planes have no line of intersection.
-  b.normal = -Eigen::Vector3d::UnitX ();
-  EXPECT_FALSE (pcl_ext::intersectLocalPlanes (a, b, Eigen::Vector3d::Zero (),
-                                               Eigen::Vector3d::Ones (), point, direction));
+  b.normal = -Eigen::Vector3d::UnitX();
+  EXPECT_FALSE (pcl_ext::intersectLocalPlanes (
+      a, b, Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), point, direction));
 }

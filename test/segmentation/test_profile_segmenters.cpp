@@ -1,6 +1,6 @@
 /*
- * Tests of the profile segmenters (Sithole & Mapurisa, section 4.1): proximity chaining, the
- * minimum spanning tree, local gaps and thresholds, AIC curve fits.
+ * Tests of the profile segmenters (Sithole & Mapurisa, section 4.1): proximity
+ * chaining, the minimum spanning tree, local gaps and thresholds, AIC curve fits.
  */
 #include <pcl_ext/segmentation/profile_segmenters.h>
 
@@ -20,24 +20,22 @@ TEST (ProfileSegmenters, ProximityAndSpanningTreeCutLongLinks)
     profile.uv.emplace_back (static_cast<float> (i), 0.f);
   for (int i = 0; i < 10; ++i)
     profile.uv.emplace_back (12.f + i, 0.f);
-  profile.uv.emplace_back (3.f, 0.f);  // a duplicate of point 3
-  profile.t.assign (profile.uv.size (), 0.f);
+  profile.uv.emplace_back (3.f, 0.f); // a duplicate of point 3
+  profile.t.assign (profile.uv.size(), 0.f);
   std::vector<LocalEdge> edges;
-  for (int method = 0; method < 2; ++method)
-  {
+  for (int method = 0; method < 2; ++method) {
     if (method == 0)
       proximityEdges (profile, 1.5, 2, edges);
     else
       spanningTreeEdges (profile, 1.5, edges);
-    std::vector<int> comp (profile.uv.size ());
-    for (std::size_t i = 0; i < comp.size (); ++i)
+    std::vector<int> comp (profile.uv.size());
+    for (std::size_t i = 0; i < comp.size(); ++i)
       comp[i] = static_cast<int> (i);
     // Tiny label propagation to find components.
     for (int pass = 0; pass < 30; ++pass)
-      for (const auto& e : edges)
-      {
+      for (const auto& e : edges) {
         EXPECT_LT (e.a, e.b);
-        EXPECT_LE ((profile.uv[e.a] - profile.uv[e.b]).norm (), 1.5f);
+        EXPECT_LE ((profile.uv[e.a] - profile.uv[e.b]).norm(), 1.5f);
         comp[e.a] = comp[e.b] = std::min (comp[e.a], comp[e.b]);
       }
     for (int i = 1; i < 10; ++i)
@@ -45,80 +43,79 @@ TEST (ProfileSegmenters, ProximityAndSpanningTreeCutLongLinks)
     for (int i = 11; i < 20; ++i)
       EXPECT_EQ (comp[i], comp[10]) << "method " << method;
     EXPECT_NE (comp[0], comp[10]);
-    EXPECT_EQ (comp[20], comp[0]);  // the duplicate joins its twin
+    EXPECT_EQ (comp[20], comp[0]); // the duplicate joins its twin
   }
   // A spanning forest: n - components edges.
   spanningTreeEdges (profile, 1.5, edges);
-  EXPECT_EQ (edges.size (), profile.uv.size () - 2);
+  EXPECT_EQ (edges.size(), profile.uv.size() - 2);
 }
 
 TEST (ProfileSegmenters, LocalGapsAndThresholds)
 {
-  // A dense chain (gap 0.01) and, 0.3 further on, a sparse one (gap 0.06) whose every fourth
-  // gap is 0.09; the global threshold 0.05 suits the dense chain only.
+  // A dense chain (gap 0.01) and, 0.3 further on, a sparse one (gap 0.06) whose every
+  // fourth gap is 0.09; the global threshold 0.05 suits the dense chain only.
   ProfilePoints profile;
   for (int i = 0; i < 40; ++i)
     profile.uv.emplace_back (0.01f * i, 0.f);
-  const std::size_t sparse_begin = profile.uv.size ();
+  const std::size_t sparse_begin = profile.uv.size();
   float x = 0.69f;
   for (int i = 0; i < 20; ++i, x += (i % 4 == 0 ? 0.09f : 0.06f))
     profile.uv.emplace_back (x, 0.f);
-  profile.uv.push_back (profile.uv[20]);  // a duplicate of point 20
-  profile.t.assign (profile.uv.size (), 0.f);
+  profile.uv.push_back (profile.uv[20]); // a duplicate of point 20
+  profile.t.assign (profile.uv.size(), 0.f);
   std::vector<float> gaps;
   localGaps (profile, 0.2, 8, gaps);
-  ASSERT_EQ (gaps.size (), profile.uv.size ());
+  ASSERT_EQ (gaps.size(), profile.uv.size());
   // The median over a point and its 8 nearest: the wider gaps (a quarter) do not count.
   for (std::size_t i = 0; i < sparse_begin; ++i)
     EXPECT_NEAR (gaps[i], 0.01f, 1e-5f) << i;
-  for (std::size_t i = sparse_begin; i + 1 < profile.uv.size (); ++i)
+  for (std::size_t i = sparse_begin; i + 1 < profile.uv.size(); ++i)
     EXPECT_NEAR (gaps[i], 0.06f, 1e-5f) << i;
-  EXPECT_EQ (gaps.back (), gaps[20]);  // duplicates share their twin's
+  EXPECT_EQ (gaps.back(), gaps[20]); // duplicates share their twin's
   // Nothing within reach: the maximum.
   localGaps (profile, 0.005, 8, gaps);
-  for (std::size_t i = 0; i + 1 < profile.uv.size (); ++i)
+  for (std::size_t i = 0; i + 1 < profile.uv.size(); ++i)
     EXPECT_FLOAT_EQ (gaps[i], 0.005f) << i;
 
-  // Thresholds proportional to the local gap (0.05 for the dense chain, 0.3 for the sparse
-  // one, capped at 0.15), as the pipeline makes them.
-  std::vector<float> thresholds (profile.uv.size ());
-  for (std::size_t i = 0; i < thresholds.size (); ++i)
-    thresholds[i] = i < sparse_begin || i + 1 == thresholds.size () ? 0.05f : 0.15f;
+  // Thresholds proportional to the local gap (0.05 for the dense chain, 0.3 for the
+  // sparse one, capped at 0.15), as the pipeline makes them.
+  std::vector<float> thresholds (profile.uv.size());
+  for (std::size_t i = 0; i < thresholds.size(); ++i)
+    thresholds[i] = i < sparse_begin || i + 1 == thresholds.size() ? 0.05f : 0.15f;
   const auto components = [&] (const std::vector<LocalEdge>& edges) {
-    std::vector<int> comp (profile.uv.size ());
-    for (std::size_t i = 0; i < comp.size (); ++i)
+    std::vector<int> comp (profile.uv.size());
+    for (std::size_t i = 0; i < comp.size(); ++i)
       comp[i] = static_cast<int> (i);
-    for (std::size_t pass = 0; pass < comp.size (); ++pass)
+    for (std::size_t pass = 0; pass < comp.size(); ++pass)
       for (const auto& e : edges)
         comp[e.a] = comp[e.b] = std::min (comp[e.a], comp[e.b]);
-    return std::set<int> (comp.begin (), comp.end ()).size ();
+    return std::set<int> (comp.begin(), comp.end()).size();
   };
   std::vector<LocalEdge> edges;
-  for (int method = 0; method < 2; ++method)
-  {
+  for (int method = 0; method < 2; ++method) {
     // The global threshold cuts the sparse chain into single points.
     if (method == 0)
       proximityEdges (profile, 0.05, 4, edges);
     else
       spanningTreeEdges (profile, 0.05, edges);
     EXPECT_EQ (components (edges), 21u) << "method " << method;
-    // Local thresholds keep it whole, and every link is within both its ends' thresholds.
+    // Local thresholds keep it whole, and every link is within both its ends'
+    // thresholds.
     if (method == 0)
       proximityEdges (profile, 0.15, 4, edges, &thresholds);
     else
       spanningTreeEdges (profile, 0.15, edges, &thresholds);
     EXPECT_EQ (components (edges), 2u) << "method " << method;
     for (const auto& e : edges)
-      EXPECT_LE ((profile.uv[e.a] - profile.uv[e.b]).norm (),
+      EXPECT_LE ((profile.uv[e.a] - profile.uv[e.b]).norm(),
                  std::min (thresholds[e.a], thresholds[e.b]) + 1e-6f);
   }
-  // A sparse point 0.08 from the dense chain's end: its threshold would reach the chain, the
-  // chain's does not, so the two stay apart.
+  // A sparse point 0.08 from the dense chain's end: its threshold would reach the
+  // chain, the chain's does not, so the two stay apart.
   profile.uv.emplace_back (0.47f, 0.f);
   profile.t.push_back (0.f);
   thresholds.push_back (0.15f);
-  for (int method = 0; method < 2; ++method)
-  {
+  for (int method = 0; method < 2; ++method) {
     if (method == 0)
       proximityEdges (profile, 0.15, 4, edges, &thresholds);
     else
@@ -132,8 +129,7 @@ TEST (CurveFit, AicSelectsTheModel)
   std::mt19937 rng (5);
   std::normal_distribution<double> noise (0.0, 0.001);
   std::vector<double> x, line, parabola, cubic, t;
-  for (int i = 0; i < 40; ++i)
-  {
+  for (int i = 0; i < 40; ++i) {
     const double xi = -1.0 + 2.0 * i / 39.0;
     x.push_back (xi);
     t.push_back (0.0);
@@ -150,10 +146,10 @@ TEST (CurveFit, AicSelectsTheModel)
   const PolynomialFit c = fitPolynomialAic (x, cubic, t, 1.0);
   EXPECT_EQ (c.degree, 3);
   EXPECT_NEAR (c.slope, 0.3, 0.01);
-  // The t term absorbs a slant across the profile: y = 0.5 x + 2 t leaves only the noise.
+  // The t term absorbs a slant across the profile: y = 0.5 x + 2 t leaves only the
+  // noise.
   std::vector<double> slanted;
-  for (std::size_t i = 0; i < x.size (); ++i)
-  {
+  for (std::size_t i = 0; i < x.size(); ++i) {
     t[i] = (i % 3) * 0.01;
     slanted.push_back (0.5 * x[i] + 2.0 * t[i] + noise (rng));
   }
@@ -169,19 +165,17 @@ TEST (CurveFit, AicSelectsTheModel)
 
 TEST (CurveFit, SlopeStandardErrorOfALine)
 {
-  // Least squares: var (a1) = sigma^2 / sum (x - mean)^2 for a line; x is symmetric, t = 0
-  // (its column is decoupled). The same in any conditioning scale, and in metres.
+  // Least squares: var (a1) = sigma^2 / sum (x - mean)^2 for a line; x is symmetric, t
+  // = 0 (its column is decoupled). The same in any conditioning scale, and in metres.
   std::vector<double> x, y, t;
   double sxx = 0.0;
-  for (int i = 0; i < 21; ++i)
-  {
+  for (int i = 0; i < 21; ++i) {
     x.push_back (-0.1 + 0.01 * i);
-    y.push_back (0.2 * x.back () + ((i * 7) % 5 - 2) * 1e-4);
+    y.push_back (0.2 * x.back() + ((i * 7) % 5 - 2) * 1e-4);
     t.push_back (0.0);
-    sxx += x.back () * x.back ();
+    sxx += x.back() * x.back();
   }
-  for (const double scale : {0.1, 1.0})
-  {
+  for (const double scale : {0.1, 1.0}) {
     const PolynomialFit fit = fitPolynomialAic (x, y, t, scale);
     ASSERT_EQ (fit.degree, 1);
     EXPECT_NEAR (fit.unit_covariance (0, 0) * sxx, 1.0, 1e-6) << scale;
@@ -197,7 +191,7 @@ TEST (CurveFit, CornerPointsTurnSharply)
     profile.uv.emplace_back (0.01f * i, 0.f);
   for (int i = 1; i <= 100; ++i)
     profile.uv.emplace_back (1.f, 0.01f * i);
-  profile.t.assign (profile.uv.size (), 0.f);
+  profile.t.assign (profile.uv.size(), 0.f);
   std::vector<LocalEdge> chain;
   spanningTreeEdges (profile, 0.02, chain);
   CurveFitParameters p;
@@ -207,13 +201,13 @@ TEST (CurveFit, CornerPointsTurnSharply)
   CurveScores scores;
   scoreCurveTurns (profile, chain, p, scores);
   // Far from the corner: evaluated, straight, tiny residual.
-  for (int i : {30, 50, 150, 170})
-  {
+  for (int i : {30, 50, 150, 170}) {
     EXPECT_TRUE (scores.evaluated[i]) << i;
     EXPECT_LT (scores.turn[i], 0.05f) << i;
     EXPECT_LT (scores.rms[i], 1e-3f) << i;
   }
-  // Near the corner (index 100) something flags: a sharp turn or a side that is not one curve.
+  // Near the corner (index 100) something flags: a sharp turn or a side that is not one
+  // curve.
   int flagged = 0;
   for (int i = 94; i <= 106; ++i)
     if (scores.evaluated[i] && (scores.turn[i] > M_PI / 6 || scores.rms[i] > 3e-3f))

@@ -1,8 +1,9 @@
 /*
- * Tests of pcl_ext::ProfileSegmentation on analytic shapes sampled finely: nested spheres with
- * every profile method, touching coaxial surfaces with curve fitting. Labelled `quality`: the
- * sanitized quick run leaves them out (curve fitting runs many times slower there), and
- * the determinism tests of test_profile_segmentation cover the same code on coarser pipes.
+ * Tests of pcl_ext::ProfileSegmentation on analytic shapes sampled finely: nested
+ * spheres with every profile method, touching coaxial surfaces with curve fitting.
+ * Labelled `quality`: the sanitized quick run leaves them out (curve fitting runs many
+ * times slower there), and the determinism tests of test_profile_segmentation cover the
+ * same code on coarser pipes.
  */
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
@@ -14,8 +15,7 @@
 using namespace profile_test;
 using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
 
-namespace
-{
+namespace {
 pcl_ext::SegmentationMetrics
 evaluate (const std::vector<pcl::PointIndices>& clusters, const LabelledCloud& scene)
 {
@@ -23,7 +23,7 @@ evaluate (const std::vector<pcl::PointIndices>& clusters, const LabelledCloud& s
   EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, scene.labels, metrics));
   return metrics;
 }
-}  // namespace
+} // namespace
 
 TEST (ProfileSegmentationShapes, NestedSpheresAreSeparate)
 {
@@ -33,8 +33,7 @@ TEST (ProfileSegmentationShapes, NestedSpheresAreSeparate)
   addSphere (scene, {0.1, 0.05, 0}, 0.25, 0.02, 3);
   for (const auto method : {Segmentation::ProfileMethod::Proximity,
                             Segmentation::ProfileMethod::MinimumSpanningTree,
-                            Segmentation::ProfileMethod::CurveFitting})
-  {
+                            Segmentation::ProfileMethod::CurveFitting}) {
     Segmentation seg;
     seg.setInputCloud (scene.cloud);
     seg.setProfileSegmentation (method);
@@ -48,14 +47,14 @@ TEST (ProfileSegmentationShapes, NestedSpheresAreSeparate)
 
 TEST (ProfileSegmentationShapes, CurveFittingSeparatesTouchingCoaxialSurfaces)
 {
-  const LabelledCloud scene = coaxialPipes ();
+  const LabelledCloud scene = coaxialPipes();
   Segmentation seg;
   seg.setInputCloud (scene.cloud);
   std::vector<pcl::PointIndices> clusters;
   // Proximity links across the creases: the three surfaces are one segment.
   seg.extract (clusters);
   const auto proximity = evaluate (clusters, scene);
-  EXPECT_EQ (clusters.size (), 1u);
+  EXPECT_EQ (clusters.size(), 1u);
   EXPECT_EQ (proximity.under_segmented, 3u);
   // Curve fitting ends the curves at the creases.
   seg.setProfileSegmentation (Segmentation::ProfileMethod::CurveFitting);
@@ -63,5 +62,5 @@ TEST (ProfileSegmentationShapes, CurveFittingSeparatesTouchingCoaxialSurfaces)
   const auto curve = evaluate (clusters, scene);
   EXPECT_GE (curve.mean_best_iou, 0.90);
   EXPECT_EQ (curve.correct, 3u);
-  EXPECT_FALSE (seg.getBreakpoints ().empty ());
+  EXPECT_FALSE (seg.getBreakpoints().empty());
 }

@@ -17,26 +17,26 @@ using pcl_ext::SupervoxelSet;
 
 TEST (SupervoxelSet, OverlapsAreCountedFromTheMembership)
 {
-  // Four points: point 0 in super-voxel 0, point 1 in 0 and 1, point 2 in none (not finite),
-  // point 3 in 1 and 2.
+  // Four points: point 0 in super-voxel 0, point 1 in 0 and 1, point 2 in none (not
+  // finite), point 3 in 1 and 2.
   SupervoxelSet set;
-  EXPECT_TRUE (set.empty ());
+  EXPECT_TRUE (set.empty());
   set.supervoxels.resize (3);
   set.membership_offsets = {0, 1, 3, 3, 5};
   set.membership = {0, 0, 1, 1, 2};
-  EXPECT_EQ (set.size (), 3u);
-  EXPECT_FALSE (set.empty ());
-  EXPECT_EQ (set.countOverlappingPoints (), 2u);
-  set.clear ();
-  EXPECT_TRUE (set.empty ());
-  EXPECT_TRUE (set.membership_offsets.empty ());
-  EXPECT_EQ (set.countOverlappingPoints (), 0u);
+  EXPECT_EQ (set.size(), 3u);
+  EXPECT_FALSE (set.empty());
+  EXPECT_EQ (set.countOverlappingPoints(), 2u);
+  set.clear();
+  EXPECT_TRUE (set.empty());
+  EXPECT_TRUE (set.membership_offsets.empty());
+  EXPECT_EQ (set.countOverlappingPoints(), 0u);
 }
 
 TEST (SupervoxelSet, SpheresCoverTheFinitePointsAndNeighboursAreTheClosestMidPoints)
 {
   auto cloud = crf_test::floorAndWall (0.1, 0.002);
-  const float nan = std::numeric_limits<float>::quiet_NaN ();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
   (*cloud)[7].y = nan;
   SupervoxelParameters p;
   p.adjacency = 2;
@@ -44,65 +44,64 @@ TEST (SupervoxelSet, SpheresCoverTheFinitePointsAndNeighboursAreTheClosestMidPoi
   SupervoxelSet set;
   pcl_ext::AdaptiveRadiusEstimator estimator;
   ASSERT_TRUE (pcl_ext::computeAdaptiveSupervoxels (cloud, {}, p, set, &estimator));
-  EXPECT_EQ (estimator.cloud ().get (), cloud.get ());
-  ASSERT_FALSE (set.empty ());
-  ASSERT_EQ (set.membership_offsets.size (), cloud->size () + 1);
-  EXPECT_EQ (set.membership.size (), set.membership_offsets.back ());
-  for (std::size_t i = 0; i < cloud->size (); ++i)
-  {
+  EXPECT_EQ (estimator.cloud().get(), cloud.get());
+  ASSERT_FALSE (set.empty());
+  ASSERT_EQ (set.membership_offsets.size(), cloud->size() + 1);
+  EXPECT_EQ (set.membership.size(), set.membership_offsets.back());
+  for (std::size_t i = 0; i < cloud->size(); ++i) {
     const std::size_t count = set.membership_offsets[i + 1] - set.membership_offsets[i];
     if (i == 7)
       EXPECT_EQ (count, 0u) << "a NaN point belongs to no super-voxel";
     else
       EXPECT_GE (count, 1u) << "point " << i;
   }
-  for (std::size_t v = 0; v < set.size (); ++v)
-  {
+  for (std::size_t v = 0; v < set.size(); ++v) {
     const auto& sv = set.supervoxels[v];
-    const Eigen::Vector3f c = (*cloud)[sv.seed].getVector3fMap ();
-    // The membership lists v under every member; the mid-point was in no earlier super-voxel.
-    for (const auto i : sv.members)
-    {
-      const auto first = set.membership.begin () + set.membership_offsets[i];
-      const auto last = set.membership.begin () + set.membership_offsets[i + 1];
+    const Eigen::Vector3f c = (*cloud)[sv.seed].getVector3fMap();
+    // The membership lists v under every member; the mid-point was in no earlier
+    // super-voxel.
+    for (const auto i : sv.members) {
+      const auto first = set.membership.begin() + set.membership_offsets[i];
+      const auto last = set.membership.begin() + set.membership_offsets[i + 1];
       EXPECT_NE (std::find (first, last, v), last);
-      EXPECT_LE (((*cloud)[i].getVector3fMap () - c).norm (), sv.radius * 1.0001f);
+      EXPECT_LE (((*cloud)[i].getVector3fMap() - c).norm(), sv.radius * 1.0001f);
     }
-    for (std::size_t u = 0; u < v; ++u)
-    {
+    for (std::size_t u = 0; u < v; ++u) {
       const auto& earlier = set.supervoxels[u].members;
-      EXPECT_EQ (std::find (earlier.begin (), earlier.end (), sv.seed), earlier.end ());
+      EXPECT_EQ (std::find (earlier.begin(), earlier.end(), sv.seed), earlier.end());
     }
     // Adjacency: the two nearest other mid-points, closest first.
-    ASSERT_EQ (set.adjacency[v].size (), 2u);
+    ASSERT_EQ (set.adjacency[v].size(), 2u);
     std::vector<float> d;
-    for (std::size_t u = 0; u < set.size (); ++u)
+    for (std::size_t u = 0; u < set.size(); ++u)
       if (u != v)
-        d.push_back (((*cloud)[set.supervoxels[u].seed].getVector3fMap () - c).norm ());
-    std::sort (d.begin (), d.end ());
-    for (std::size_t k = 0; k < 2; ++k)
-    {
+        d.push_back (((*cloud)[set.supervoxels[u].seed].getVector3fMap() - c).norm());
+    std::sort (d.begin(), d.end());
+    for (std::size_t k = 0; k < 2; ++k) {
       const auto u = set.adjacency[v][k];
       EXPECT_NE (u, v);
-      EXPECT_NEAR (((*cloud)[set.supervoxels[u].seed].getVector3fMap () - c).norm (), d[k], 1e-5f);
+      EXPECT_NEAR (
+          ((*cloud)[set.supervoxels[u].seed].getVector3fMap() - c).norm(), d[k], 1e-5f);
     }
   }
   // No regional neighbours asked for: none recorded.
   p.adjacency = 0;
   ASSERT_TRUE (pcl_ext::computeAdaptiveSupervoxels (cloud, {}, p, set));
   for (const auto& neighbours : set.adjacency)
-    EXPECT_TRUE (neighbours.empty ());
+    EXPECT_TRUE (neighbours.empty());
 }
 
 TEST (SupervoxelSet, BadInputClearsTheResult)
 {
   const auto cloud = crf_test::floorAndWall (0.1, 0.002);
   SupervoxelSet set;
-  ASSERT_TRUE (pcl_ext::computeAdaptiveSupervoxels (cloud, {}, SupervoxelParameters (), set));
-  ASSERT_FALSE (set.empty ());
-  EXPECT_FALSE (pcl_ext::computeAdaptiveSupervoxels (nullptr, {}, SupervoxelParameters (), set));
-  EXPECT_TRUE (set.empty ());
-  EXPECT_TRUE (set.membership_offsets.empty ());
+  ASSERT_TRUE (
+      pcl_ext::computeAdaptiveSupervoxels (cloud, {}, SupervoxelParameters(), set));
+  ASSERT_FALSE (set.empty());
+  EXPECT_FALSE (
+      pcl_ext::computeAdaptiveSupervoxels (nullptr, {}, SupervoxelParameters(), set));
+  EXPECT_TRUE (set.empty());
+  EXPECT_TRUE (set.membership_offsets.empty());
   SupervoxelParameters negative;
   negative.adjacency = -1;
   EXPECT_FALSE (pcl_ext::computeAdaptiveSupervoxels (cloud, {}, negative, set));
@@ -111,7 +110,9 @@ TEST (SupervoxelSet, BadInputClearsTheResult)
   EXPECT_FALSE (pcl_ext::computeAdaptiveSupervoxels (cloud, {}, bad_radius, set));
   // Colours must be one per point.
   EXPECT_FALSE (pcl_ext::computeAdaptiveSupervoxels (
-      cloud, std::vector<Eigen::Vector3f> (3, Eigen::Vector3f::Ones ()), SupervoxelParameters (),
+      cloud,
+      std::vector<Eigen::Vector3f> (3, Eigen::Vector3f::Ones()),
+      SupervoxelParameters(),
       set));
-  EXPECT_TRUE (set.empty ());
+  EXPECT_TRUE (set.empty());
 }

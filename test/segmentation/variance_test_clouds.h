@@ -1,6 +1,6 @@
 /*
- * Clouds and labels shared by the tests of the Belton & Lichti region growing: a cube's faces,
- * uniform classes, two patches side by side.
+ * Clouds and labels shared by the tests of the Belton & Lichti region growing: a cube's
+ * faces, uniform classes, two patches side by side.
  */
 #pragma once
 
@@ -11,27 +11,22 @@
 #include <cstdint>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace test
-{
-/** Which face of the cube [0, size]^3 a point lies on (1..6); points on an edge of the cube
-  * get the face of the coordinate closest to a face plane. */
+namespace pcl_ext {
+namespace test {
+/** Which face of the cube [0, size]^3 a point lies on (1..6); points on an edge of the
+ * cube get the face of the coordinate closest to a face plane. */
 inline std::vector<std::uint32_t>
 cubeFaces (const pcl::PointCloud<pcl::PointXYZ>& cloud, double size)
 {
   std::vector<std::uint32_t> faces;
-  for (const auto& p : cloud)
-  {
+  for (const auto& p : cloud) {
     const double c[3] = {p.x, p.y, p.z};
     int best = 0;
     double best_d = 1e30;
     for (int axis = 0; axis < 3; ++axis)
-      for (int side = 0; side < 2; ++side)
-      {
+      for (int side = 0; side < 2; ++side) {
         const double d = std::abs (c[axis] - side * size);
-        if (d < best_d)
-        {
+        if (d < best_d) {
           best_d = d;
           best = 2 * axis + side + 1;
         }
@@ -59,9 +54,11 @@ twoPatches (double gap)
   for (int patch = 0; patch < 2; ++patch)
     for (int i = 0; i <= 20; ++i)
       for (int j = 0; j <= 20; ++j)
-        cloud->push_back (pcl::PointXYZ (static_cast<float> (patch * (1.0 + gap) + 0.05 * i),
-                                 static_cast<float> (0.05 * j), 0.f));
+        cloud->push_back (
+            pcl::PointXYZ (static_cast<float> (patch * (1.0 + gap) + 0.05 * i),
+                           static_cast<float> (0.05 * j),
+                           0.f));
   return cloud;
 }
-}  // namespace test
-}  // namespace pcl_ext
+} // namespace test
+} // namespace pcl_ext

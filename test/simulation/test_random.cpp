@@ -1,6 +1,6 @@
 /*
- * Tests of the simulator's counter-based random numbers: known SplitMix64 values, seeded
- * streams, uniform and Gaussian deviates.
+ * Tests of the simulator's counter-based random numbers: known SplitMix64 values,
+ * seeded streams, uniform and Gaussian deviates.
  */
 #include <pcl_ext/simulation/random.h>
 
@@ -19,9 +19,8 @@ TEST (SimulationRandom, GaussianMoments)
   RandomStream rng (123);
   double sum = 0, sum2 = 0;
   const int n = 200000;
-  for (int i = 0; i < n; ++i)
-  {
-    const double g = rng.gaussian ();
+  for (int i = 0; i < n; ++i) {
+    const double g = rng.gaussian();
     sum += g;
     sum2 += g * g;
   }
@@ -40,7 +39,7 @@ TEST (SimulationRandom, SplitMixKnownValues)
   std::set<std::uint64_t> seen;
   for (std::uint64_t k = 0; k < 10000; ++k)
     seen.insert (splitMix64 (k));
-  EXPECT_EQ (seen.size (), 10000u);
+  EXPECT_EQ (seen.size(), 10000u);
   // Pairs are ordered.
   EXPECT_NE (hashCombine (1, 2), hashCombine (2, 1));
   EXPECT_EQ (hashCombine (1, 2), hashCombine (1, 2));
@@ -50,20 +49,19 @@ TEST (SimulationRandom, SeededStreamsRepeatAndDiffer)
 {
   RandomStream a (42), b (42), c (43);
   std::vector<std::uint64_t> first;
-  for (int i = 0; i < 100; ++i)
-  {
-    const std::uint64_t x = a.next ();
-    EXPECT_EQ (x, b.next ()) << i;
+  for (int i = 0; i < 100; ++i) {
+    const std::uint64_t x = a.next();
+    EXPECT_EQ (x, b.next()) << i;
     first.push_back (x);
   }
   int same = 0;
   for (int i = 0; i < 100; ++i)
-    same += c.next () == first[static_cast<std::size_t> (i)];
+    same += c.next() == first[static_cast<std::size_t> (i)];
   EXPECT_EQ (same, 0);
   // The stream of key k is SplitMix64 seeded with splitMix64 (k).
   RandomStream d (7);
   const std::uint64_t state = splitMix64 (7) + 0x9e3779b97f4a7c15ULL;
-  EXPECT_EQ (d.next (), splitMix64 (state));
+  EXPECT_EQ (d.next(), splitMix64 (state));
 }
 
 TEST (SimulationRandom, UniformsInTheUnitInterval)
@@ -72,9 +70,8 @@ TEST (SimulationRandom, UniformsInTheUnitInterval)
   const int n = 100000;
   double sum = 0.0, lo = 1.0, hi = 0.0;
   int below_tenth = 0;
-  for (int i = 0; i < n; ++i)
-  {
-    const double u = rng.uniform ();
+  for (int i = 0; i < n; ++i) {
+    const double u = rng.uniform();
     ASSERT_GE (u, 0.0);
     ASSERT_LT (u, 1.0);
     sum += u;
@@ -88,5 +85,5 @@ TEST (SimulationRandom, UniformsInTheUnitInterval)
   EXPECT_GT (hi, 1.0 - 1e-3);
   // Gaussians are finite (the log never sees 0).
   for (int i = 0; i < n; ++i)
-    ASSERT_TRUE (std::isfinite (rng.gaussian ()));
+    ASSERT_TRUE (std::isfinite (rng.gaussian()));
 }

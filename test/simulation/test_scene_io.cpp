@@ -14,33 +14,31 @@ using namespace pcl_ext;
 using namespace pcl_ext::simulation;
 namespace fs = std::filesystem;
 
-namespace
-{
+namespace {
 std::string
 readBytes (const std::string& path)
 {
   std::ifstream in (path, std::ios::binary);
   std::stringstream buffer;
-  buffer << in.rdbuf ();
-  return buffer.str ();
+  buffer << in.rdbuf();
+  return buffer.str();
 }
 
-struct TempDir
-{
+struct TempDir {
   fs::path path;
-  TempDir ()
+  TempDir()
   {
-    path = fs::temp_directory_path () / ("pcl_ext_sim_" + std::to_string (::getpid ()));
+    path = fs::temp_directory_path() / ("pcl_ext_sim_" + std::to_string (::getpid()));
     fs::create_directories (path);
   }
-  ~TempDir () { fs::remove_all (path); }
+  ~TempDir() { fs::remove_all (path); }
   std::string
   file (const std::string& name) const
   {
-    return (path / name).string ();
+    return (path / name).string();
   }
 };
-}  // namespace
+} // namespace
 
 TEST (SceneIo, DeterministicBytesForASeedAndAnyThreadCount)
 {
@@ -49,8 +47,7 @@ TEST (SceneIo, DeterministicBytesForASeedAndAnyThreadCount)
   parameters.seed = 7;
   parameters.points = 30000;
   parameters.threads = 1;
-  for (const std::string name : {"street", "tree", "pipes"})
-  {
+  for (const std::string name : {"street", "tree", "pipes"}) {
     SyntheticScene a, b, c;
     ASSERT_TRUE (generateScene (name, parameters, a));
     parameters.threads = 2;
@@ -63,7 +60,7 @@ TEST (SceneIo, DeterministicBytesForASeedAndAnyThreadCount)
     ASSERT_TRUE (saveScene (dir.file (name + "_b.pcd"), b));
     ASSERT_TRUE (saveScene (dir.file (name + "_c.pcd"), c));
     const std::string bytes = readBytes (dir.file (name + "_a.pcd"));
-    EXPECT_GT (bytes.size (), 100000u);
+    EXPECT_GT (bytes.size(), 100000u);
     EXPECT_EQ (bytes, readBytes (dir.file (name + "_b.pcd"))) << name;
     EXPECT_NE (bytes, readBytes (dir.file (name + "_c.pcd"))) << name;
   }
@@ -83,13 +80,14 @@ TEST (SceneIo, FieldsAndRoundTrip)
   std::vector<std::string> names;
   for (const auto& f : blob.fields)
     names.push_back (f.name);
-  EXPECT_EQ (names, (std::vector<std::string>{"x", "y", "z", "rgb", "intensity", "segment",
-                                              "object", "class", "label"}));
+  EXPECT_EQ (
+      names,
+      (std::vector<std::string>{
+          "x", "y", "z", "rgb", "intensity", "segment", "object", "class", "label"}));
   pcl::PointCloud<SimulatedPoint> loaded;
   ASSERT_TRUE (loadScene (path, loaded));
-  ASSERT_EQ (loaded.size (), scene.cloud.size ());
-  for (std::size_t i = 0; i < loaded.size (); i += 97)
-  {
+  ASSERT_EQ (loaded.size(), scene.cloud.size());
+  for (std::size_t i = 0; i < loaded.size(); i += 97) {
     EXPECT_EQ (loaded[i].x, scene.cloud[i].x);
     EXPECT_EQ (loaded[i].rgba, scene.cloud[i].rgba);
     EXPECT_EQ (loaded[i].segment, scene.cloud[i].segment);
@@ -102,10 +100,11 @@ TEST (SceneIo, FieldsAndRoundTrip)
   SyntheticScene cubes;
   ASSERT_TRUE (generateScene ("cubes", parameters, cubes));
   sceneToPointCloud2 (cubes, blob);
-  names.clear ();
+  names.clear();
   for (const auto& f : blob.fields)
     names.push_back (f.name);
-  EXPECT_EQ (names, (std::vector<std::string>{"x", "y", "z", "segment", "object", "class"}));
+  EXPECT_EQ (names,
+             (std::vector<std::string>{"x", "y", "z", "segment", "object", "class"}));
   EXPECT_FALSE (fs::exists (dir.file ("cubes.footprint.wkt")));
 }
 
@@ -120,8 +119,10 @@ TEST (SceneIo, BuildingSideFiles)
   const std::string path = dir.file ("b.pcd");
   ASSERT_TRUE (saveScene (path, scene));
   const std::string wkt = readBytes (dir.file ("b.footprint.wkt"));
-  EXPECT_EQ (wkt.rfind ("POLYGON((1000.000000 2000.000000, 1012.000000 2000.000000", 0), 0u) << wkt;
-  EXPECT_NE (wkt.find ("1000.000000 2000.000000))"), std::string::npos);  // closed ring
+  EXPECT_EQ (wkt.rfind ("POLYGON((1000.000000 2000.000000, 1012.000000 2000.000000", 0),
+             0u)
+      << wkt;
+  EXPECT_NE (wkt.find ("1000.000000 2000.000000))"), std::string::npos); // closed ring
   std::istringstream text (readBytes (dir.file ("b.transform.txt")));
   Eigen::Matrix4d T;
   for (int r = 0; r < 4; ++r)
@@ -139,5 +140,5 @@ TEST (SceneIo, UnwritableAndMissingFiles)
   EXPECT_FALSE (saveScene ("/nonexistent_folder/x.pcd", scene));
   pcl::PointCloud<SimulatedPoint> cloud;
   EXPECT_FALSE (loadScene ("/nonexistent_folder/x.pcd", cloud));
-  EXPECT_TRUE (cloud.empty ());
+  EXPECT_TRUE (cloud.empty());
 }

@@ -1,6 +1,6 @@
 /*
- * Tests of SimulatedPoint, the point type of synthetic scans: its registered fields and their
- * way through PCL's conversions.
+ * Tests of SimulatedPoint, the point type of synthetic scans: its registered fields and
+ * their way through PCL's conversions.
  */
 #include <pcl_ext/simulation/simulated_point.h>
 
@@ -19,16 +19,25 @@ TEST (SimulatedPoint, RegisteredFieldsAndDefaults)
 {
   std::vector<std::string> names;
   std::vector<std::uint8_t> types;
-  for (const auto& f : pcl::getFields<SimulatedPoint> ())
-  {
+  for (const auto& f : pcl::getFields<SimulatedPoint>()) {
     names.push_back (f.name);
     types.push_back (f.datatype);
   }
   // point_class is the registered name; scene_io saves it as "class".
-  EXPECT_EQ (names, (std::vector<std::string> {"x", "y", "z", "rgb", "intensity", "segment",
-                                               "object", "point_class", "label"}));
-  const std::uint8_t f32 = pcl::PCLPointField::FLOAT32, u32 = pcl::PCLPointField::UINT32;
-  EXPECT_EQ (types, (std::vector<std::uint8_t> {f32, f32, f32, f32, f32, u32, u32, u32, u32}));
+  EXPECT_EQ (names,
+             (std::vector<std::string>{"x",
+                                       "y",
+                                       "z",
+                                       "rgb",
+                                       "intensity",
+                                       "segment",
+                                       "object",
+                                       "point_class",
+                                       "label"}));
+  const std::uint8_t f32 = pcl::PCLPointField::FLOAT32,
+                     u32 = pcl::PCLPointField::UINT32;
+  EXPECT_EQ (types,
+             (std::vector<std::uint8_t>{f32, f32, f32, f32, f32, u32, u32, u32, u32}));
   const SimulatedPoint p;
   EXPECT_EQ (p.intensity, 0.f);
   EXPECT_EQ (p.segment, 0u);
@@ -41,8 +50,7 @@ TEST (SimulatedPoint, RegisteredFieldsAndDefaults)
 TEST (SimulatedPoint, ThroughABlobAndIntoPclTypes)
 {
   pcl::PointCloud<SimulatedPoint> cloud;
-  for (int i = 0; i < 3; ++i)
-  {
+  for (int i = 0; i < 3; ++i) {
     SimulatedPoint p;
     p.x = static_cast<float> (i);
     p.y = 2.f * i;
@@ -63,7 +71,7 @@ TEST (SimulatedPoint, ThroughABlobAndIntoPclTypes)
   ASSERT_GE (pcl::getFieldIndex (blob, "point_class"), 0);
   pcl::PointCloud<SimulatedPoint> back;
   pcl::fromPCLPointCloud2 (blob, back);
-  ASSERT_EQ (back.size (), 3u);
+  ASSERT_EQ (back.size(), 3u);
   EXPECT_EQ (back[2].y, 4.f);
   EXPECT_EQ (back[2].r, 20);
   EXPECT_EQ (back[2].g, 200);
@@ -75,7 +83,7 @@ TEST (SimulatedPoint, ThroughABlobAndIntoPclTypes)
   // Field by field into PCL's own types: colour, intensity and label come across.
   pcl::PointCloud<pcl::PointXYZRGBL> coloured;
   pcl::copyPointCloud (cloud, coloured);
-  ASSERT_EQ (coloured.size (), 3u);
+  ASSERT_EQ (coloured.size(), 3u);
   EXPECT_EQ (coloured[1].r, 10);
   EXPECT_EQ (coloured[1].g, 200);
   EXPECT_EQ (coloured[1].label, 4000000000u);

@@ -1,5 +1,6 @@
 /*
- * Tests of the colour maps: colours by label, by class and by scalar, and coloured clouds.
+ * Tests of the colour maps: colours by label, by class and by scalar, and coloured
+ * clouds.
  */
 #include <pcl_ext/common/segment_colours.h>
 #include <pcl_ext/point_types.h>
@@ -34,12 +35,11 @@ TEST (ColourMaps, LabelsTakeTheSegmentersColours)
   // Label L is segment L - 1 of getColoredCloud; 0 is grey.
   const std::vector<std::uint32_t> labels = {0, 1, 2, 17};
   const auto colours = colourByLabel (labels);
-  ASSERT_EQ (colours.size (), 4u);
+  ASSERT_EQ (colours.size(), 4u);
   EXPECT_EQ (colours[0].r, 170);
   EXPECT_EQ (colours[0].g, 170);
   EXPECT_EQ (colours[0].b, 170);
-  for (std::size_t i = 1; i < labels.size (); ++i)
-  {
+  for (std::size_t i = 1; i < labels.size(); ++i) {
     std::uint8_t rgb[3];
     pcl_ext::segmentColour (labels[i] - 1, rgb);
     EXPECT_EQ (colours[i].r, rgb[0]) << labels[i];
@@ -54,12 +54,13 @@ TEST (ColourMaps, ClassColoursAsInTheFigures)
   const auto c = colourByClass ({static_cast<std::uint32_t> (PointClass::Surface),
                                  static_cast<std::uint32_t> (PointClass::Edge),
                                  static_cast<std::uint32_t> (PointClass::Boundary),
-                                 static_cast<std::uint32_t> (PointClass::Unknown), 99});
-  ASSERT_EQ (c.size (), 5u);
-  EXPECT_GT (c[0].b, std::max (c[0].r, c[0].g));  // surface blue
-  EXPECT_GT (c[1].r, std::max (c[1].g, c[1].b));  // edge red
-  EXPECT_GT (c[2].g, std::max (c[2].r, c[2].b));  // boundary green
-  for (const std::size_t i : {3, 4})  // unknown, and anything else, grey
+                                 static_cast<std::uint32_t> (PointClass::Unknown),
+                                 99});
+  ASSERT_EQ (c.size(), 5u);
+  EXPECT_GT (c[0].b, std::max (c[0].r, c[0].g)); // surface blue
+  EXPECT_GT (c[1].r, std::max (c[1].g, c[1].b)); // edge red
+  EXPECT_GT (c[2].g, std::max (c[2].r, c[2].b)); // boundary green
+  for (const std::size_t i : {3, 4})             // unknown, and anything else, grey
   {
     EXPECT_EQ (c[i].r, c[i].g);
     EXPECT_EQ (c[i].g, c[i].b);
@@ -69,28 +70,32 @@ TEST (ColourMaps, ClassColoursAsInTheFigures)
 TEST (ColourMaps, ScalarMapsAndTheirEnds)
 {
   // Ends of each map, clamped outside [0, 1]; NaN dark grey.
-  const Colour black = mapColour (0.f, ColourMap::Grey), white = mapColour (1.f, ColourMap::Grey);
+  const Colour black = mapColour (0.f, ColourMap::Grey),
+               white = mapColour (1.f, ColourMap::Grey);
   EXPECT_EQ (black.r + black.g + black.b, 0);
   EXPECT_EQ (white.r + white.g + white.b, 3 * 255);
   EXPECT_EQ (mapColour (0.5f, ColourMap::Grey).g, 128);
   EXPECT_EQ (mapColour (-3.f, ColourMap::Grey).r, 0);
   EXPECT_EQ (mapColour (7.f, ColourMap::Grey).r, 255);
-  const Colour jet0 = mapColour (0.f, ColourMap::Jet), jet1 = mapColour (1.f, ColourMap::Jet);
+  const Colour jet0 = mapColour (0.f, ColourMap::Jet),
+               jet1 = mapColour (1.f, ColourMap::Jet);
   EXPECT_EQ (jet0.r, 0);
   EXPECT_EQ (jet0.g, 0);
-  EXPECT_EQ (jet0.b, 128);  // dark blue
-  EXPECT_EQ (jet1.r, 128);  // dark red
+  EXPECT_EQ (jet0.b, 128); // dark blue
+  EXPECT_EQ (jet1.r, 128); // dark red
   EXPECT_EQ (jet1.g, 0);
   EXPECT_EQ (jet1.b, 0);
   // Viridis from matplotlib's first (68, 1, 84) to its last colour (253, 231, 37).
-  const Colour v0 = mapColour (0.f, ColourMap::Viridis), v1 = mapColour (1.f, ColourMap::Viridis);
+  const Colour v0 = mapColour (0.f, ColourMap::Viridis),
+               v1 = mapColour (1.f, ColourMap::Viridis);
   EXPECT_EQ (v0.r, 68);
   EXPECT_EQ (v0.g, 1);
   EXPECT_EQ (v0.b, 84);
   EXPECT_EQ (v1.r, 253);
   EXPECT_EQ (v1.g, 231);
   EXPECT_EQ (v1.b, 37);
-  const Colour nan = mapColour (std::numeric_limits<float>::quiet_NaN (), ColourMap::Viridis);
+  const Colour nan =
+      mapColour (std::numeric_limits<float>::quiet_NaN(), ColourMap::Viridis);
   EXPECT_EQ (nan.r, 70);
   EXPECT_EQ (nan.g, 70);
   EXPECT_EQ (nan.b, 70);
@@ -98,20 +103,20 @@ TEST (ColourMaps, ScalarMapsAndTheirEnds)
 
 TEST (ColourMaps, ScalarRangeFromThePercentilesWhenNotGiven)
 {
-  // 0 .. 100: the 2nd percentile is 2, the 98th 98, so 50 sits mid-way and the outer values
-  // are clamped to the ends.
+  // 0 .. 100: the 2nd percentile is 2, the 98th 98, so 50 sits mid-way and the outer
+  // values are clamped to the ends.
   std::vector<float> values;
   for (int i = 0; i <= 100; ++i)
     values.push_back (static_cast<float> (i));
-  values.push_back (std::numeric_limits<float>::quiet_NaN ());
+  values.push_back (std::numeric_limits<float>::quiet_NaN());
   const auto c = colourByScalar (values, ColourMap::Grey);
-  ASSERT_EQ (c.size (), values.size ());
+  ASSERT_EQ (c.size(), values.size());
   EXPECT_EQ (c[0].r, 0);
   EXPECT_EQ (c[2].r, 0);
   EXPECT_EQ (c[50].r, 128);
   EXPECT_EQ (c[98].r, 255);
   EXPECT_EQ (c[100].r, 255);
-  EXPECT_EQ (c[101].r, 70);  // NaN
+  EXPECT_EQ (c[101].r, 70); // NaN
   // A given range is used as it is.
   const auto given = colourByScalar (values, ColourMap::Grey, 0.f, 200.f);
   EXPECT_EQ (given[100].r, 128);
@@ -120,8 +125,7 @@ TEST (ColourMaps, ScalarRangeFromThePercentilesWhenNotGiven)
 TEST (ColourMaps, ColouredCloudNeedsOneColourPerPoint)
 {
   pcl::PointCloud<pcl::PointXYZI> cloud;
-  for (int i = 0; i < 3; ++i)
-  {
+  for (int i = 0; i < 3; ++i) {
     pcl::PointXYZI p;
     p.x = static_cast<float> (i);
     p.y = 1.f;
@@ -131,11 +135,11 @@ TEST (ColourMaps, ColouredCloudNeedsOneColourPerPoint)
   cloud.is_dense = false;
   const std::vector<Colour> colours = {{1, 2, 3}, {4, 5, 6}, {7, 8, 9}};
   const auto coloured = makeColouredCloud (cloud, colours);
-  ASSERT_EQ (coloured->size (), 3u);
+  ASSERT_EQ (coloured->size(), 3u);
   EXPECT_FALSE (coloured->is_dense);
   EXPECT_EQ ((*coloured)[2].x, 2.f);
   EXPECT_EQ ((*coloured)[2].z, 2.f);
   EXPECT_EQ ((*coloured)[2].r, 7);
   EXPECT_EQ ((*coloured)[2].b, 9);
-  EXPECT_TRUE (makeColouredCloud (cloud, {{1, 2, 3}})->empty ());
+  EXPECT_TRUE (makeColouredCloud (cloud, {{1, 2, 3}})->empty());
 }

@@ -1,6 +1,7 @@
 /*
- * Tests of montages: one tile per labelling of a cloud, every tile its own size however many
- * there are. Renders, so it needs an X display (scripts/test.sh starts Xvfb when none is set).
+ * Tests of montages: one tile per labelling of a cloud, every tile its own size however
+ * many there are. Renders, so it needs an X display (scripts/test.sh starts Xvfb when
+ * none is set).
  */
 #include <pcl_ext/visualization/montage.h>
 
@@ -15,14 +16,12 @@
 #include <string>
 #include <unistd.h>
 
-namespace
-{
+namespace {
 pcl::PointCloud<pcl::PointXYZ>
 sphereCloud (int n)
 {
   pcl::PointCloud<pcl::PointXYZ> cloud;
-  for (int i = 0; i < n; ++i)
-  {
+  for (int i = 0; i < n; ++i) {
     // Fibonacci sphere: even coverage, no randomness.
     const double z = 1.0 - 2.0 * (i + 0.5) / n;
     const double r = std::sqrt (1.0 - z * z);
@@ -35,13 +34,13 @@ sphereCloud (int n)
 std::string
 temporaryPng (const std::string& stem)
 {
-  return testing::TempDir () + "/" + stem + "_" + std::to_string (::getpid ()) + ".png";
+  return testing::TempDir() + "/" + stem + "_" + std::to_string (::getpid()) + ".png";
 }
-}  // namespace
+} // namespace
 
 TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground)
 {
-  ASSERT_TRUE (pcl_ext::visualization::displayAvailable ())
+  ASSERT_TRUE (pcl_ext::visualization::displayAvailable())
       << "this test needs an X display; scripts/test.sh starts Xvfb when none is set";
   using namespace pcl_ext::visualization;
   const RenderOptions one = makeMontageOptions (1, 200, 150);
@@ -53,7 +52,8 @@ TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground
   EXPECT_EQ (nine.width, 800);
   EXPECT_EQ (nine.height, 450);
 
-  // Three tiles in rows of two: the fourth place must be background, not the window's black.
+  // Three tiles in rows of two: the fourth place must be background, not the window's
+  // black.
   const auto cloud = sphereCloud (5000);
   std::vector<std::uint32_t> labels;
   for (const auto& p : cloud)
@@ -61,14 +61,14 @@ TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground
   std::vector<View> views;
   for (const char* title : {"a", "b", "c"})
     views.push_back (makeLabelView (title, cloud, labels, 3.0));
-  const RenderOptions options = makeMontageOptions (views.size (), 160, 120, 2);
+  const RenderOptions options = makeMontageOptions (views.size(), 160, 120, 2);
   const std::string path = temporaryPng ("montage");
-  std::remove (path.c_str ());
+  std::remove (path.c_str());
   ASSERT_TRUE (renderToPng (views, path, options));
-  auto reader = vtkSmartPointer<vtkPNGReader>::New ();
-  reader->SetFileName (path.c_str ());
-  reader->Update ();
-  vtkImageData* image = reader->GetOutput ();
+  auto reader = vtkSmartPointer<vtkPNGReader>::New();
+  reader->SetFileName (path.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
   int dims[3];
   image->GetDimensions (dims);
   ASSERT_EQ (dims[0], 320);
@@ -76,8 +76,7 @@ TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground
   // PNG rows start at the bottom in VTK: the empty place is x >= 160, y < 120.
   std::size_t drawn_bottom_left = 0, not_background_bottom_right = 0;
   for (int y = 0; y < 120; ++y)
-    for (int x = 0; x < 320; ++x)
-    {
+    for (int x = 0; x < 320; ++x) {
       const auto* px = static_cast<unsigned char*> (image->GetScalarPointer (x, y, 0));
       const bool background = px[0] > 245 && px[1] > 245 && px[2] > 245;
       if (!background)
@@ -85,17 +84,17 @@ TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground
     }
   EXPECT_GT (drawn_bottom_left, 500u);
   EXPECT_EQ (not_background_bottom_right, 0u);
-  std::remove (path.c_str ());
+  std::remove (path.c_str());
 }
 
 TEST (Montage, TileSizesColumnsAndLimits)
 {
   using namespace pcl_ext::visualization;
-  const RenderOptions five = makeMontageOptions (5, 300, 200, 2);  // rows of 2: 3 rows
+  const RenderOptions five = makeMontageOptions (5, 300, 200, 2); // rows of 2: 3 rows
   EXPECT_EQ (five.columns, 2);
   EXPECT_EQ (five.width, 600);
   EXPECT_EQ (five.height, 600);
-  const RenderOptions none = makeMontageOptions (0, 300, 200);  // taken as one tile
+  const RenderOptions none = makeMontageOptions (0, 300, 200); // taken as one tile
   EXPECT_EQ (none.columns, 1);
   EXPECT_EQ (none.width, 300);
   EXPECT_EQ (none.height, 200);
@@ -119,12 +118,11 @@ TEST (Montage, LabelViewColoursTheCloudByLabel)
   labels[3] = 0;
   const View view = makeLabelView ("split", cloud, labels, 4.0);
   EXPECT_EQ (view.title, "split");
-  ASSERT_EQ (view.layers.size (), 1u);
+  ASSERT_EQ (view.layers.size(), 1u);
   EXPECT_EQ (view.layers[0].point_size, 4.0);
-  ASSERT_EQ (view.layers[0].cloud->size (), 10u);
+  ASSERT_EQ (view.layers[0].cloud->size(), 10u);
   const auto expected = colourByLabel (labels);
-  for (std::size_t i = 0; i < 10; ++i)
-  {
+  for (std::size_t i = 0; i < 10; ++i) {
     const auto& p = (*view.layers[0].cloud)[i];
     EXPECT_EQ (p.x, cloud[i].x);
     EXPECT_EQ (p.r, expected[i].r);
@@ -133,6 +131,6 @@ TEST (Montage, LabelViewColoursTheCloudByLabel)
   }
   // Labels that do not match the cloud: an empty tile.
   const View empty = makeLabelView ("bad", cloud, std::vector<std::uint32_t> (3, 1));
-  ASSERT_EQ (empty.layers.size (), 1u);
-  EXPECT_TRUE (empty.layers[0].cloud->empty ());
+  ASSERT_EQ (empty.layers.size(), 1u);
+  EXPECT_TRUE (empty.layers[0].cloud->empty());
 }

@@ -12,27 +12,27 @@
 #include <iostream>
 #include <sstream>
 
-namespace pcl_ext
-{
-namespace apps
-{
-namespace
-{
-template <typename T> std::string
+namespace pcl_ext {
+namespace apps {
+namespace {
+template <typename T>
+std::string
 toText (const T& value)
 {
   std::ostringstream s;
   s << value;
-  return s.str ();
+  return s.str();
 }
-}  // namespace
+} // namespace
 
 CommandLine::CommandLine (std::string program, std::string description)
-  : program_ (std::move (program)), description_ (std::move (description))
+: program_ (std::move (program)), description_ (std::move (description))
 {}
 
 void
-CommandLine::addPositional (const std::string& name, std::string& value, const std::string& help,
+CommandLine::addPositional (const std::string& name,
+                            std::string& value,
+                            const std::string& help,
                             bool required)
 {
   positionals_.push_back ({name, &value, help, required});
@@ -45,7 +45,9 @@ CommandLine::addOption (const std::string& name, int& value, const std::string& 
 }
 
 void
-CommandLine::addOption (const std::string& name, unsigned int& value, const std::string& help)
+CommandLine::addOption (const std::string& name,
+                        unsigned int& value,
+                        const std::string& help)
 {
   options_.push_back ({name, Kind::Unsigned, &value, help, toText (value)});
 }
@@ -57,9 +59,12 @@ CommandLine::addOption (const std::string& name, double& value, const std::strin
 }
 
 void
-CommandLine::addOption (const std::string& name, std::string& value, const std::string& help)
+CommandLine::addOption (const std::string& name,
+                        std::string& value,
+                        const std::string& help)
 {
-  options_.push_back ({name, Kind::String, &value, help, value.empty () ? "none" : value});
+  options_.push_back (
+      {name, Kind::String, &value, help, value.empty() ? "none" : value});
 }
 
 void
@@ -73,41 +78,38 @@ CommandLine::assign (Option& option, const std::string& text)
 {
   errno = 0;
   char* end = nullptr;
-  switch (option.kind)
-  {
-    case Kind::Int:
-    {
-      const long v = std::strtol (text.c_str (), &end, 10);
-      if (text.empty () || *end != '\0' || errno != 0 || v < INT32_MIN || v > INT32_MAX)
-        return false;
-      *static_cast<int*> (option.target) = static_cast<int> (v);
-      return true;
-    }
-    case Kind::Unsigned:
-    {
-      if (!text.empty () && text[0] == '-')
-        return false;
-      const unsigned long v = std::strtoul (text.c_str (), &end, 10);
-      if (text.empty () || *end != '\0' || errno != 0 || v > UINT32_MAX)
-        return false;
-      *static_cast<unsigned int*> (option.target) = static_cast<unsigned int> (v);
-      return true;
-    }
-    case Kind::Double:
-    {
-      const double v = std::strtod (text.c_str (), &end);
-      // NaN and Inf are never meaningful parameters: refuse them here, once for every tool.
-      if (text.empty () || *end != '\0' || errno == ERANGE || !std::isfinite (v))
-        return false;
-      *static_cast<double*> (option.target) = v;
-      return true;
-    }
-    case Kind::String:
-      *static_cast<std::string*> (option.target) = text;
-      return true;
-    case Kind::Switch:
-      *static_cast<bool*> (option.target) = true;
-      return true;
+  switch (option.kind) {
+  case Kind::Int: {
+    const long v = std::strtol (text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || errno != 0 || v < INT32_MIN || v > INT32_MAX)
+      return false;
+    *static_cast<int*> (option.target) = static_cast<int> (v);
+    return true;
+  }
+  case Kind::Unsigned: {
+    if (!text.empty() && text[0] == '-')
+      return false;
+    const unsigned long v = std::strtoul (text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || errno != 0 || v > UINT32_MAX)
+      return false;
+    *static_cast<unsigned int*> (option.target) = static_cast<unsigned int> (v);
+    return true;
+  }
+  case Kind::Double: {
+    const double v = std::strtod (text.c_str(), &end);
+    // NaN and Inf are never meaningful parameters: refuse them here, once for every
+    // tool.
+    if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite (v))
+      return false;
+    *static_cast<double*> (option.target) = v;
+    return true;
+  }
+  case Kind::String:
+    *static_cast<std::string*> (option.target) = text;
+    return true;
+  case Kind::Switch:
+    *static_cast<bool*> (option.target) = true;
+    return true;
   }
   return false;
 }
@@ -116,21 +118,18 @@ int
 CommandLine::parse (int argc, const char* const* argv)
 {
   std::size_t next_positional = 0;
-  for (int i = 1; i < argc; ++i)
-  {
+  for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "-h" || arg == "-help" || arg == "--help")
-    {
-      printHelp ();
+    if (arg == "-h" || arg == "-help" || arg == "--help") {
+      printHelp();
       return 0;
     }
     // A dash followed by a letter is an option; "-1.5" is a (negative) value.
-    const bool is_option = arg.size () > 1 && arg[0] == '-' &&
-                           (std::isalpha (static_cast<unsigned char> (arg[1])) || arg[1] == '-');
-    if (!is_option)
-    {
-      if (next_positional >= positionals_.size ())
-      {
+    const bool is_option =
+        arg.size() > 1 && arg[0] == '-' &&
+        (std::isalpha (static_cast<unsigned char> (arg[1])) || arg[1] == '-');
+    if (!is_option) {
+      if (next_positional >= positionals_.size()) {
         usageError ("unexpected argument '" + arg + "'");
         return 1;
       }
@@ -142,37 +141,31 @@ CommandLine::parse (int argc, const char* const* argv)
     for (auto& o : options_)
       if (o.name == name)
         option = &o;
-    if (!option)
-    {
+    if (!option) {
       usageError ("unknown option '" + arg + "'");
       return 1;
     }
-    if (option->given)
-    {
+    if (option->given) {
       usageError ("option '" + arg + "' given twice");
       return 1;
     }
     option->given = true;
-    if (option->kind == Kind::Switch)
-    {
+    if (option->kind == Kind::Switch) {
       assign (*option, "");
       continue;
     }
-    if (i + 1 >= argc)
-    {
+    if (i + 1 >= argc) {
       usageError ("option '" + arg + "' needs a value");
       return 1;
     }
     const std::string value = argv[++i];
-    if (!assign (*option, value))
-    {
+    if (!assign (*option, value)) {
       usageError ("invalid value '" + value + "' for option '" + arg + "'");
       return 1;
     }
   }
-  for (std::size_t p = next_positional; p < positionals_.size (); ++p)
-    if (positionals_[p].required)
-    {
+  for (std::size_t p = next_positional; p < positionals_.size(); ++p)
+    if (positionals_[p].required) {
       usageError ("missing argument " + positionals_[p].name);
       return 1;
     }
@@ -189,12 +182,12 @@ CommandLine::given (const std::string& name) const
 }
 
 std::string
-CommandLine::synopsis () const
+CommandLine::synopsis() const
 {
   std::string s = program_;
   for (const auto& p : positionals_)
     s += p.required ? " " + p.name : " [" + p.name + "]";
-  if (!options_.empty ())
+  if (!options_.empty())
     s += " <options>";
   return s;
 }
@@ -203,52 +196,54 @@ void
 CommandLine::usageError (const std::string& message) const
 {
   std::cerr << program_ << ": error: " << message << "\n"
-            << "Syntax is: " << synopsis () << "\n"
+            << "Syntax is: " << synopsis() << "\n"
             << "Run '" << program_ << " -h' for the options.\n";
 }
 
 void
-CommandLine::printHelp () const
+CommandLine::printHelp() const
 {
-  std::cout << description_ << "\n\nSyntax is: " << synopsis () << "\n";
-  if (!positionals_.empty ())
-  {
+  std::cout << description_ << "\n\nSyntax is: " << synopsis() << "\n";
+  if (!positionals_.empty()) {
     std::cout << "\nArguments:\n";
     for (const auto& p : positionals_)
-      std::cout << "  " << std::left << std::setw (25) << p.name << " " << p.help << "\n";
+      std::cout << "  " << std::left << std::setw (25) << p.name << " " << p.help
+                << "\n";
   }
   std::cout << "\nOptions:\n";
-  for (const auto& o : options_)
-  {
+  for (const auto& o : options_) {
     std::string lhs = "-" + o.name;
     if (o.kind != Kind::Switch)
       lhs += " X";
-    std::cout << "  " << std::left << std::setw (25) << lhs << " " << o.help << " (default: "
-              << o.default_text << ")\n";
+    std::cout << "  " << std::left << std::setw (25) << lhs << " " << o.help
+              << " (default: " << o.default_text << ")\n";
   }
-  std::cout << "  " << std::left << std::setw (26) << "-h" << "print this help and exit\n";
+  std::cout << "  " << std::left << std::setw (26) << "-h"
+            << "print this help and exit\n";
 }
 
-StageTimer::StageTimer (const std::string& what) : start_ (std::chrono::steady_clock::now ())
+StageTimer::StageTimer (const std::string& what)
+: start_ (std::chrono::steady_clock::now())
 {
   std::cout << what << " " << std::flush;
 }
 
 double
-StageTimer::elapsedMs () const
+StageTimer::elapsedMs() const
 {
-  return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - start_)
-      .count ();
+  return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now() -
+                                                    start_)
+      .count();
 }
 
 double
 StageTimer::done (std::size_t points)
 {
-  const double ms = elapsedMs ();
-  std::cout << "[done, " << std::fixed << std::setprecision (0) << ms << " ms : " << points
-            << " points]" << std::endl;
+  const double ms = elapsedMs();
+  std::cout << "[done, " << std::fixed << std::setprecision (0) << ms
+            << " ms : " << points << " points]" << std::endl;
   std::cout.unsetf (std::ios::floatfield);
   return ms;
 }
-}  // namespace apps
-}  // namespace pcl_ext
+} // namespace apps
+} // namespace pcl_ext

@@ -7,20 +7,19 @@
 
 #include <pcl/conversions.h>
 
-namespace pcl_ext
-{
-namespace apps
-{
+namespace pcl_ext {
+namespace apps {
 bool
-loadInput (const std::string& path, pcl::PCLPointCloud2& input,
+loadInput (const std::string& path,
+           pcl::PCLPointCloud2& input,
            pcl::PointCloud<pcl::PointXYZ>& xyz)
 {
   StageTimer timer ("Loading " + path);
   if (!io::loadCloud (path, input))
     return false;
   pcl::fromPCLPointCloud2 (input, xyz);
-  timer.done (xyz.size ());
+  timer.done (xyz.size());
   return true;
 }
-}  // namespace apps
-}  // namespace pcl_ext
+} // namespace apps
+} // namespace pcl_ext

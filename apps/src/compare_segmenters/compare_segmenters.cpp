@@ -1,6 +1,7 @@
 /*
- * pcl_ext_compare_segmenters: pcl_ext's segmenters and the stock PCL ones on the same cloud,
- * scored against its ground truth: one table, optionally a CSV file, the labels and a montage.
+ * pcl_ext_compare_segmenters: pcl_ext's segmenters and the stock PCL ones on the same
+ * cloud, scored against its ground truth: one table, optionally a CSV file, the labels
+ * and a montage.
  */
 #include "comparison.h"
 #include "comparison_report.h"
@@ -21,24 +22,23 @@
 #include <set>
 #include <sstream>
 
-namespace
-{
+namespace {
 using namespace pcl_ext::compare;
 
-/** The methods named in \a list (comma-separated, "all" for every one), in table order. */
+/** The methods named in \a list (comma-separated, "all" for every one), in table order.
+ */
 bool
-selectMethods (const std::string& list, const std::vector<SegmenterMethod>& all,
+selectMethods (const std::string& list,
+               const std::vector<SegmenterMethod>& all,
                std::vector<SegmenterMethod>& selected)
 {
   std::set<std::string> wanted;
   std::stringstream in (list);
   std::string name;
-  while (std::getline (in, name, ','))
-  {
-    if (name.empty ())
+  while (std::getline (in, name, ',')) {
+    if (name.empty())
       continue;
-    if (name == "all")
-    {
+    if (name == "all") {
       for (const auto& m : all)
         wanted.insert (m.name);
       continue;
@@ -46,8 +46,7 @@ selectMethods (const std::string& list, const std::vector<SegmenterMethod>& all,
     bool known = false;
     for (const auto& m : all)
       known = known || m.name == name;
-    if (!known)
-    {
+    if (!known) {
       std::cerr << "Error: unknown method '" << name << "' in -methods; known:";
       for (const auto& m : all)
         std::cerr << " " << m.name;
@@ -59,8 +58,7 @@ selectMethods (const std::string& list, const std::vector<SegmenterMethod>& all,
   for (const auto& m : all)
     if (wanted.count (m.name))
       selected.push_back (m);
-  if (selected.empty ())
-  {
+  if (selected.empty()) {
     std::cerr << "Error: -methods names no method.\n";
     return false;
   }
@@ -68,115 +66,147 @@ selectMethods (const std::string& list, const std::vector<SegmenterMethod>& all,
 }
 
 #ifdef PCL_EXT_HAVE_VISUALIZATION
-/** Every method's result from the same camera, the ground truth first. Organised clouds (depth
-  * cameras) are seen from the sensor, others from above and the side; points above \a max_z
-  * (a ceiling) are left out of the picture. */
+/** Every method's result from the same camera, the ground truth first. Organised clouds
+ * (depth cameras) are seen from the sensor, others from above and the side; points
+ * above \a max_z (a ceiling) are left out of the picture. */
 bool
-renderMontage (const std::string& path, const Comparison& c,
-               const std::vector<MethodResult>& results, int tile_width, int tile_height,
+renderMontage (const std::string& path,
+               const Comparison& c,
+               const std::vector<MethodResult>& results,
+               int tile_width,
+               int tile_height,
                double max_z)
 {
   namespace vis = pcl_ext::visualization;
   pcl_ext::apps::StageTimer timer ("Rendering " + path);
   std::vector<std::size_t> shown;
   pcl::PointCloud<pcl::PointXYZ> cloud;
-  for (std::size_t i = 0; i < c.input.cloud->size (); ++i)
-    if ((*c.input.cloud)[i].z <= max_z)
-    {
+  for (std::size_t i = 0; i < c.input.cloud->size(); ++i)
+    if ((*c.input.cloud)[i].z <= max_z) {
       shown.push_back (i);
       cloud.push_back ((*c.input.cloud)[i]);
     }
   const auto pick = [&shown] (const std::vector<std::uint32_t>& labels) {
-    std::vector<std::uint32_t> picked (shown.size ());
-    for (std::size_t j = 0; j < shown.size (); ++j)
+    std::vector<std::uint32_t> picked (shown.size());
+    for (std::size_t j = 0; j < shown.size(); ++j)
       picked[j] = labels[shown[j]];
     return picked;
   };
   std::vector<vis::View> views;
-  const bool with_truth = !c.truth.empty ();
-  if (with_truth)
-  {
-    std::set<std::uint32_t> distinct (c.truth.begin (), c.truth.end ());
+  const bool with_truth = !c.truth.empty();
+  if (with_truth) {
+    std::set<std::uint32_t> distinct (c.truth.begin(), c.truth.end());
     distinct.erase (0);
     views.push_back (vis::makeLabelView (
-        "ground truth: " + std::to_string (distinct.size ()) + " segments", cloud, pick (c.truth)));
+        "ground truth: " + std::to_string (distinct.size()) + " segments",
+        cloud,
+        pick (c.truth)));
   }
   for (const auto& r : results)
     if (r.ok)
-      views.push_back (vis::makeLabelView (tileTitle (r, with_truth), cloud, pick (r.labels)));
-  vis::RenderOptions options = vis::makeMontageOptions (views.size (), tile_width, tile_height);
-  if (c.organised)
-  {
-    options.view_direction = Eigen::Vector3d::UnitZ ();
-    options.up = -Eigen::Vector3d::UnitY ();
+      views.push_back (
+          vis::makeLabelView (tileTitle (r, with_truth), cloud, pick (r.labels)));
+  vis::RenderOptions options =
+      vis::makeMontageOptions (views.size(), tile_width, tile_height);
+  if (c.organised) {
+    options.view_direction = Eigen::Vector3d::UnitZ();
+    options.up = -Eigen::Vector3d::UnitY();
     options.zoom_out = 1.9;
   }
   if (!vis::renderToPng (views, path, options))
     return false;
-  timer.done (cloud.size ());
+  timer.done (cloud.size());
   return true;
 }
 #endif
-}  // namespace
+} // namespace
 
 int
 main (int argc, char** argv)
 {
-  const std::vector<SegmenterMethod> all = allMethods ();
-  std::string input_path, truth_field, methods_list = "all", csv_path, png_path, labels_path;
+  const std::vector<SegmenterMethod> all = allMethods();
+  std::string input_path, truth_field, methods_list = "all", csv_path, png_path,
+                                       labels_path;
   SegmenterSettings s;
   double spacing = 0.0, timeout = 0.0;
   int tile_width = 520, tile_height = 400;
-  double png_max_z = std::numeric_limits<double>::infinity ();
-  std::string description =
-      "Runs pcl_ext's segmenters and stock PCL segmenters on the same cloud (finite points) and "
-      "prints one table: segments, mean and point-weighted best IoU, Hoover correct / over / "
-      "under / missed (tolerance 0.8), unsegmented fraction, time, peak memory. Without "
-      "-truth_field only counts and times. Every length parameter is a multiple of the mean "
-      "point spacing s (estimated as sqrt(pi r6^2 / 6), r6 the 6th-neighbour distance, or "
-      "-spacing). Each method runs in its own child process: time is its wall time (plus the "
-      "normals' for those marked 'normals'), peak memory its resident set above the loaded "
-      "input at its peak.\n\nMethods:";
+  double png_max_z = std::numeric_limits<double>::infinity();
+  std::string description = "Runs pcl_ext's segmenters and stock PCL segmenters on the "
+                            "same cloud (finite points) and "
+                            "prints one table: segments, mean and point-weighted best "
+                            "IoU, Hoover correct / over / "
+                            "under / missed (tolerance 0.8), unsegmented fraction, "
+                            "time, peak memory. Without "
+                            "-truth_field only counts and times. Every length "
+                            "parameter is a multiple of the mean "
+                            "point spacing s (estimated as sqrt(pi r6^2 / 6), r6 the "
+                            "6th-neighbour distance, or "
+                            "-spacing). Each method runs in its own child process: "
+                            "time is its wall time (plus the "
+                            "normals' for those marked 'normals'), peak memory its "
+                            "resident set above the loaded "
+                            "input at its peak.\n\nMethods:";
   for (const auto& m : all)
-    description += "\n  " + m.name + std::string (m.name.size () < 15 ? 15 - m.name.size () : 1, ' ') +
+    description += "\n  " + m.name +
+                   std::string (m.name.size() < 15 ? 15 - m.name.size() : 1, ' ') +
                    m.description;
   pcl_ext::apps::CommandLine cl ("pcl_ext_compare_segmenters", description);
   cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
-  cl.addOption ("truth_field", truth_field,
-                "field holding the ground-truth segments (e.g. segment, object, label; 0 = "
-                "ignored); none: counts and times only");
+  cl.addOption (
+      "truth_field",
+      truth_field,
+      "field holding the ground-truth segments (e.g. segment, object, label; 0 = "
+      "ignored); none: counts and times only");
   cl.addOption ("methods", methods_list, "comma-separated methods, or 'all'");
   cl.addOption ("k", s.k, "neighbours of the normals and of region_growing");
-  cl.addOption ("threads", s.threads, "threads of the parallel methods and the normals (0: all cores)");
+  cl.addOption ("threads",
+                s.threads,
+                "threads of the parallel methods and the normals (0: all cores)");
   cl.addOption ("spacing", spacing, "mean point spacing s in m (0: estimated)");
-  cl.addOption ("min_size", s.min_size, "smallest segment kept (methods with a minimum size)");
-  cl.addOption ("tolerance", s.tolerance,
-                "connection distance / s: euclidean, cec, profile threshold, plane split");
-  cl.addOption ("angle", s.angle, "normal angle in degrees: region_growing smoothness, cec");
+  cl.addOption (
+      "min_size", s.min_size, "smallest segment kept (methods with a minimum size)");
+  cl.addOption (
+      "tolerance",
+      s.tolerance,
+      "connection distance / s: euclidean, cec, profile threshold, plane split");
+  cl.addOption (
+      "angle", s.angle, "normal angle in degrees: region_growing smoothness, cec");
   cl.addOption ("curvature", s.curvature, "region_growing curvature threshold");
   cl.addOption ("plane_distance", s.plane_distance, "sac_planes inlier distance / s");
   cl.addOption ("max_planes", s.max_planes, "sac_planes: most planes");
   cl.addOption ("voxel", s.voxel, "lccp supervoxel voxel resolution / s");
   cl.addOption ("seed", s.seed, "lccp supervoxel seed resolution / s");
   cl.addOption ("concavity", s.concavity, "lccp concavity tolerance in degrees");
-  cl.addSwitch ("aicc", s.profile_aicc,
-                "profile curve fitting: polynomials chosen by AICc, not the paper's AIC");
-  cl.addOption ("turn_significance", s.profile_turn_significance,
-                "profile curve fitting: a sharp turn must also exceed this many standard errors "
-                "(0: the paper's angle alone)");
-  cl.addSwitch ("side_frames", s.profile_side_frames,
-                "profile curve fitting: each side of a point fitted along its own axis");
-  cl.addSwitch ("local_threshold", s.profile_local_threshold,
+  cl.addSwitch (
+      "aicc",
+      s.profile_aicc,
+      "profile curve fitting: polynomials chosen by AICc, not the paper's AIC");
+  cl.addOption (
+      "turn_significance",
+      s.profile_turn_significance,
+      "profile curve fitting: a sharp turn must also exceed this many standard errors "
+      "(0: the paper's angle alone)");
+  cl.addSwitch (
+      "side_frames",
+      s.profile_side_frames,
+      "profile curve fitting: each side of a point fitted along its own axis");
+  cl.addSwitch ("local_threshold",
+                s.profile_local_threshold,
                 "profile segmenters: thresholds that follow the local point density");
-  cl.addOption ("timeout", timeout, "seconds after which a method is stopped (0: none)");
+  cl.addOption (
+      "timeout", timeout, "seconds after which a method is stopped (0: none)");
   cl.addOption ("csv", csv_path, "also write the table to this CSV file");
-  cl.addOption ("labels", labels_path,
+  cl.addOption ("labels",
+                labels_path,
                 "also write the input with one label field per method (0: no segment)");
-  cl.addOption ("png", png_path, "also render a montage of every result; needs an X display");
+  cl.addOption (
+      "png", png_path, "also render a montage of every result; needs an X display");
   cl.addOption ("tile_width", tile_width, "montage tile width in pixels");
   cl.addOption ("tile_height", tile_height, "montage tile height in pixels");
-  cl.addOption ("png_max_z", png_max_z,
-                "montage only: leave out points above this z (e.g. a ceiling hiding a room)");
+  cl.addOption (
+      "png_max_z",
+      png_max_z,
+      "montage only: leave out points above this z (e.g. a ceiling hiding a room)");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
 
@@ -191,15 +221,16 @@ main (int argc, char** argv)
     bad = "-min_size must be at least 1";
   else if (!(std::isfinite (spacing) && spacing >= 0.0))
     bad = "-spacing must be 0 or positive";
-  else if (!positive (s.tolerance) || !positive (s.plane_distance) || !positive (s.voxel) ||
-           !positive (s.seed))
+  else if (!positive (s.tolerance) || !positive (s.plane_distance) ||
+           !positive (s.voxel) || !positive (s.seed))
     bad = "-tolerance, -plane_distance, -voxel and -seed must be positive";
   else if (!positive (s.angle) || !(s.angle < 90.0) || !positive (s.concavity) ||
            !(s.concavity < 180.0))
     bad = "-angle must be in (0, 90) and -concavity in (0, 180) degrees";
   else if (!positive (s.curvature))
     bad = "-curvature must be positive";
-  else if (!(std::isfinite (s.profile_turn_significance) && s.profile_turn_significance >= 0.0))
+  else if (!(std::isfinite (s.profile_turn_significance) &&
+             s.profile_turn_significance >= 0.0))
     bad = "-turn_significance must be 0 or positive";
   else if (s.max_planes < 1)
     bad = "-max_planes must be at least 1";
@@ -207,22 +238,21 @@ main (int argc, char** argv)
     bad = "-timeout must be 0 or positive";
   else if (std::isnan (png_max_z))
     bad = "-png_max_z must be a number";
-  else if (tile_width < 64 || tile_height < 64 || tile_width > 4096 || tile_height > 4096)
+  else if (tile_width < 64 || tile_height < 64 || tile_width > 4096 ||
+           tile_height > 4096)
     bad = "-tile_width and -tile_height must be in [64, 4096]";
-  if (!bad.empty ())
-  {
+  if (!bad.empty()) {
     std::cerr << "Error: " << bad << ".\n";
     return 1;
   }
 #ifndef PCL_EXT_HAVE_VISUALIZATION
-  if (!png_path.empty ())
-  {
+  if (!png_path.empty()) {
     std::cerr << "Error: built without the renderer; -png is not available.\n";
     return 1;
   }
 #endif
   for (const auto* path : {&csv_path, &labels_path, &png_path})
-    if (!path->empty () && !pcl_ext::io::checkWritable (*path))
+    if (!path->empty() && !pcl_ext::io::checkWritable (*path))
       return 1;
 
   pcl::PCLPointCloud2 blob;
@@ -231,17 +261,16 @@ main (int argc, char** argv)
     return 1;
   if (spacing > 0.0)
     s.spacing = spacing;
-  else
-  {
+  else {
     std::vector<Eigen::Vector3f> xyz;
-    xyz.reserve (c.input.cloud->size ());
+    xyz.reserve (c.input.cloud->size());
     for (const auto& p : *c.input.cloud)
-      xyz.push_back (p.getVector3fMap ());
+      xyz.push_back (p.getVector3fMap());
     s.spacing = pcl_ext::profiles::estimatePointSpacing (xyz);
-    if (!(s.spacing > 0.0))
-    {
-      std::cerr << "Error: cannot estimate the point spacing (too few distinct points); give "
-                   "-spacing.\n";
+    if (!(s.spacing > 0.0)) {
+      std::cerr
+          << "Error: cannot estimate the point spacing (too few distinct points); give "
+             "-spacing.\n";
       return 1;
     }
   }
@@ -254,7 +283,8 @@ main (int argc, char** argv)
     std::cout << "Point spacing s = " << length (s.spacing) << ": tolerance "
               << length (s.tolerance * s.spacing) << ", plane distance "
               << length (s.plane_distance * s.spacing) << ", voxel "
-              << length (s.voxel * s.spacing) << ", seed " << length (s.seed * s.spacing) << "\n";
+              << length (s.voxel * s.spacing) << ", seed "
+              << length (s.seed * s.spacing) << "\n";
   }
 
   MethodResult normals_cost;
@@ -267,30 +297,28 @@ main (int argc, char** argv)
   std::vector<MethodResult> results;
   for (const auto& m : methods)
     results.push_back (runMethod (m, c, s, normals_cost, timeout));
-  const bool with_truth = !c.truth.empty ();
+  const bool with_truth = !c.truth.empty();
   if (with_truth)
-    std::cout << "\nScores against '" << truth_field << "' over " << c.truth.size ()
+    std::cout << "\nScores against '" << truth_field << "' over " << c.truth.size()
               << " points (label 0 ignored), Hoover tolerance 0.8:";
   printTable (results, with_truth);
 
   bool ok = true;
   for (const auto& r : results)
     ok = ok && r.ok;
-  if (!csv_path.empty ())
-  {
+  if (!csv_path.empty()) {
     if (!pcl_ext::io::writeTextFile (csv_path, makeCsv (results, with_truth)))
       return 1;
     std::cout << "Wrote " << csv_path << "\n";
   }
-  if (!labels_path.empty () && !writeLabels (labels_path, blob, c, results))
+  if (!labels_path.empty() && !writeLabels (labels_path, blob, c, results))
     return 1;
 #ifdef PCL_EXT_HAVE_VISUALIZATION
-  if (!png_path.empty () &&
+  if (!png_path.empty() &&
       !renderMontage (png_path, c, results, tile_width, tile_height, png_max_z))
     return 1;
 #endif
-  if (!ok)
-  {
+  if (!ok) {
     std::cerr << "Error: some methods failed (see the table).\n";
     return 1;
   }

@@ -1,6 +1,6 @@
 /*
- * pcl_ext_compare_segmenters: pcl_ext's segmenters. To add one, write its runner and add a
- * line to the table at the end.
+ * pcl_ext_compare_segmenters: pcl_ext's segmenters. To add one, write its runner and
+ * add a line to the table at the end.
  */
 #include "segmenter_methods.h"
 
@@ -11,16 +11,15 @@
 #include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 
-namespace pcl_ext
-{
-namespace compare
-{
-namespace
-{
-/** Belton & Lichti region growing over the local variance classes, with the class defaults
-  * (the paper's k = 50 neighbours, curvature threshold 3x the median curvature). */
+namespace pcl_ext {
+namespace compare {
+namespace {
+/** Belton & Lichti region growing over the local variance classes, with the class
+ * defaults (the paper's k = 50 neighbours, curvature threshold 3x the median
+ * curvature). */
 bool
-runVarianceRegionGrowing (const SegmenterInput& in, const SegmenterSettings& s,
+runVarianceRegionGrowing (const SegmenterInput& in,
+                          const SegmenterSettings& s,
                           std::vector<pcl::PointIndices>& clusters)
 {
   VarianceRegionGrowing<pcl::PointXYZ> rg;
@@ -34,17 +33,19 @@ runVarianceRegionGrowing (const SegmenterInput& in, const SegmenterSettings& s,
 }
 
 /** The whole of Belton & Lichti: region growing (section 3), then the edge and boundary
-  * points it leaves out re-integrated into the surfaces they fit by local surface
-  * intersection (section 4), both with the class defaults on one shared k = 50 search. */
+ * points it leaves out re-integrated into the surfaces they fit by local surface
+ * intersection (section 4), both with the class defaults on one shared k = 50 search.
+ */
 bool
-runVarianceWithIntersection (const SegmenterInput& in, const SegmenterSettings& s,
+runVarianceWithIntersection (const SegmenterInput& in,
+                             const SegmenterSettings& s,
                              std::vector<pcl::PointIndices>& clusters)
 {
-  auto nb = pcl::make_shared<Neighbourhoods<pcl::PointXYZ>> ();
+  auto nb = pcl::make_shared<Neighbourhoods<pcl::PointXYZ>>();
   nb->setInputCloud (in.cloud);
   nb->setKSearch (50);
   nb->setNumberOfThreads (s.threads);
-  if (!nb->compute ())
+  if (!nb->compute())
     return false;
   VarianceRegionGrowing<pcl::PointXYZ> rg;
   rg.setInputCloud (in.cloud);
@@ -55,11 +56,11 @@ runVarianceWithIntersection (const SegmenterInput& in, const SegmenterSettings& 
   classifier.setNumberOfThreads (s.threads);
   std::vector<pcl::PointIndices> segments;
   segmentByLocalVariance (classifier, rg, segments);
-  if (segments.empty ())
+  if (segments.empty())
     return true;
-  auto labels = pcl::make_shared<pcl::PointCloud<pcl::Label>> ();
+  auto labels = pcl::make_shared<pcl::PointCloud<pcl::Label>>();
   rg.getSegmentLabels (*labels);
-  const auto classes = rg.getInputClasses ();
+  const auto classes = rg.getInputClasses();
   LocalSurfaceIntersection<pcl::PointXYZ> lsi;
   lsi.setInputCloud (in.cloud);
   lsi.setNeighbourhoods (nb);
@@ -69,22 +70,24 @@ runVarianceWithIntersection (const SegmenterInput& in, const SegmenterSettings& 
   pcl::PointCloud<SurfaceIntersectionPoint> intersections;
   pcl::PointCloud<pcl::Label> merged;
   lsi.compute (intersections, merged);
-  if (merged.size () != in.cloud->size ())
+  if (merged.size() != in.cloud->size())
     return false;
   // Segment i + 1 of the labels is segments[i], re-integrated points added.
-  clusters.assign (segments.size (), pcl::PointIndices ());
-  for (std::size_t i = 0; i < merged.size (); ++i)
-    if (merged[i].label != 0 && merged[i].label <= clusters.size ())
+  clusters.assign (segments.size(), pcl::PointIndices());
+  for (std::size_t i = 0; i < merged.size(); ++i)
+    if (merged[i].label != 0 && merged[i].label <= clusters.size())
       clusters[merged[i].label - 1].indices.push_back (static_cast<pcl::index_t> (i));
   return true;
 }
 
-/** Sithole & Mapurisa with one profile segmenter; the spacing is given (not estimated again),
-  * so the proximity threshold is tolerance * s like every other method's distance. */
+/** Sithole & Mapurisa with one profile segmenter; the spacing is given (not estimated
+ * again), so the proximity threshold is tolerance * s like every other method's
+ * distance. */
 SegmenterMethod::Runner
 profileRunner (profiles::ProfileMethod method)
 {
-  return [method] (const SegmenterInput& in, const SegmenterSettings& s,
+  return [method] (const SegmenterInput& in,
+                   const SegmenterSettings& s,
                    std::vector<pcl::PointIndices>& clusters) {
     ProfileSegmentation<pcl::PointXYZ> seg;
     seg.setInputCloud (in.cloud);
@@ -102,9 +105,11 @@ profileRunner (profiles::ProfileMethod method)
   };
 }
 
-template <typename PointT> void
+template <typename PointT>
+void
 extractSupervoxels (const typename pcl::PointCloud<PointT>::ConstPtr& cloud,
-                    const SegmenterSettings& s, std::vector<pcl::PointIndices>& clusters)
+                    const SegmenterSettings& s,
+                    std::vector<pcl::PointIndices>& clusters)
 {
   AdaptiveSupervoxelSegmentation<PointT> seg;
   seg.setInputCloud (cloud);
@@ -112,12 +117,14 @@ extractSupervoxels (const typename pcl::PointCloud<PointT>::ConstPtr& cloud,
   seg.extract (clusters);
 }
 
-/** Lim & Suter's adaptive super-voxels with the class defaults, colour included when the
-  * cloud has it. Each super-voxel is a segment; super-voxels overlap, and a point held by
-  * several belongs to the first one drawn (pcl_ext::labelsFromIndices). They are an
-  * over-segmentation by design (the CRF's nodes), listed to show what it gives as segments. */
+/** Lim & Suter's adaptive super-voxels with the class defaults, colour included when
+ * the cloud has it. Each super-voxel is a segment; super-voxels overlap, and a point
+ * held by several belongs to the first one drawn (pcl_ext::labelsFromIndices). They are
+ * an over-segmentation by design (the CRF's nodes), listed to show what it gives as
+ * segments. */
 bool
-runAdaptiveSupervoxels (const SegmenterInput& in, const SegmenterSettings& s,
+runAdaptiveSupervoxels (const SegmenterInput& in,
+                        const SegmenterSettings& s,
                         std::vector<pcl::PointIndices>& clusters)
 {
   if (in.coloured)
@@ -126,37 +133,54 @@ runAdaptiveSupervoxels (const SegmenterInput& in, const SegmenterSettings& s,
     extractSupervoxels<pcl::PointXYZ> (in.cloud, s, clusters);
   return true;
 }
-}  // namespace
+} // namespace
 
 std::vector<SegmenterMethod>
 pclExtMethods ()
 {
   using profiles::ProfileMethod;
   return {
-      {"variance", "pcl_ext", false,
-       "pcl_ext::VarianceRegionGrowing (Belton & Lichti), class defaults (k = 50, the paper's); "
+      {"variance",
+       "pcl_ext",
+       false,
+       "pcl_ext::VarianceRegionGrowing (Belton & Lichti), class defaults (k = 50, the "
+       "paper's); "
        "min_size",
        runVarianceRegionGrowing},
-      {"variance_lsi", "pcl_ext", false,
+      {"variance_lsi",
+       "pcl_ext",
+       false,
        "variance, then pcl_ext::LocalSurfaceIntersection (Belton & Lichti section 4) "
        "re-integrating the edge and boundary points; class defaults, one k = 50 search",
        runVarianceWithIntersection},
-      {"proximity", "pcl_ext", false,
-       "pcl_ext::ProfileSegmentation (Sithole & Mapurisa), proximity chaining; 4 stacks, width "
+      {"proximity",
+       "pcl_ext",
+       false,
+       "pcl_ext::ProfileSegmentation (Sithole & Mapurisa), proximity chaining; 4 "
+       "stacks, width "
        "1.5 s, threshold tolerance * s, min_size",
        profileRunner (ProfileMethod::Proximity)},
-      {"mst", "pcl_ext", false,
-       "pcl_ext::ProfileSegmentation, minimum spanning trees cut at tolerance * s; min_size",
+      {"mst",
+       "pcl_ext",
+       false,
+       "pcl_ext::ProfileSegmentation, minimum spanning trees cut at tolerance * s; "
+       "min_size",
        profileRunner (ProfileMethod::MinimumSpanningTree)},
-      {"curve", "pcl_ext", false,
-       "pcl_ext::ProfileSegmentation, curve fitting (AIC, 30 deg turns); threshold tolerance * "
+      {"curve",
+       "pcl_ext",
+       false,
+       "pcl_ext::ProfileSegmentation, curve fitting (AIC, 30 deg turns); threshold "
+       "tolerance * "
        "s, min_size",
        profileRunner (ProfileMethod::CurveFitting)},
-      {"adaptive_sv", "pcl_ext", false,
-       "pcl_ext::AdaptiveSupervoxelSegmentation (Lim & Suter), class defaults; each super-voxel "
+      {"adaptive_sv",
+       "pcl_ext",
+       false,
+       "pcl_ext::AdaptiveSupervoxelSegmentation (Lim & Suter), class defaults; each "
+       "super-voxel "
        "a segment (an over-segmentation)",
        runAdaptiveSupervoxels},
   };
 }
-}  // namespace compare
-}  // namespace pcl_ext
+} // namespace compare
+} // namespace pcl_ext

@@ -7,33 +7,30 @@
 
 #include <iostream>
 
-namespace pcl_ext
-{
-namespace demo
-{
+namespace pcl_ext {
+namespace demo {
 const simulation::SyntheticScene*
 DemoContext::scene (const std::string& name)
 {
   auto& slot = scenes_[name];
   if (slot)
-    return slot.get ();
+    return slot.get();
   simulation::SceneParameters parameters;
   parameters.seed = seed;
   parameters.points = points;
   parameters.threads = threads;
-  auto scene = std::make_unique<simulation::SyntheticScene> ();
+  auto scene = std::make_unique<simulation::SyntheticScene>();
   apps::StageTimer timer ("Generating scene '" + name + "'");
-  if (!simulation::generateScene (name, parameters, *scene))
-  {
+  if (!simulation::generateScene (name, parameters, *scene)) {
     std::cerr << "Error: could not generate scene '" << name << "'.\n";
     scenes_.erase (name);
     return nullptr;
   }
-  const double ms = timer.done (scene->cloud.size ());
-  summary << "  generated " << name << ": " << scene->cloud.size () << " points in " << ms
-          << " ms\n";
+  const double ms = timer.done (scene->cloud.size());
+  summary << "  generated " << name << ": " << scene->cloud.size() << " points in "
+          << ms << " ms\n";
   slot = std::move (scene);
-  return slot.get ();
+  return slot.get();
 }
 
 std::string
@@ -43,7 +40,8 @@ DemoContext::path (const std::string& file) const
 }
 
 bool
-DemoContext::render (const std::vector<visualization::View>& views, const std::string& file,
+DemoContext::render (const std::vector<visualization::View>& views,
+                     const std::string& file,
                      const visualization::RenderOptions& options)
 {
   apps::StageTimer timer ("Rendering " + file);
@@ -54,5 +52,5 @@ DemoContext::render (const std::vector<visualization::View>& views, const std::s
   ++images;
   return true;
 }
-}  // namespace demo
-}  // namespace pcl_ext
+} // namespace demo
+} // namespace pcl_ext

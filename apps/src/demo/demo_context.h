@@ -11,21 +11,19 @@
 #include <sstream>
 #include <string>
 
-namespace pcl_ext
-{
-namespace demo
-{
+namespace pcl_ext {
+namespace demo {
 /** \brief Options, the scenes generated so far, and the summary being written. */
-struct DemoContext
-{
+struct DemoContext {
   std::string out_dir = "out";
-  std::size_t points = 0;       ///< target points per scene; 0: each scene's default
+  std::size_t points = 0; ///< target points per scene; 0: each scene's default
   std::uint64_t seed = 1;
   int k = 50;
   unsigned int threads = 0;
-  std::string shared_data_dir;  ///< real scans, when present (optional steps)
+  std::string shared_data_dir; ///< real scans, when present (optional steps)
 
-  std::ostringstream summary;   ///< the text summary, written to out/summary.txt at the end
+  std::ostringstream
+      summary; ///< the text summary, written to out/summary.txt at the end
   std::size_t images = 0;
 
   /** \brief The scene \a name, generated on first use with the demo's seed and size. */
@@ -34,8 +32,9 @@ struct DemoContext
 
   /** \brief Render views to out/<file>.png; notes the image in the summary. */
   bool
-  render (const std::vector<visualization::View>& views, const std::string& file,
-          const visualization::RenderOptions& options = visualization::RenderOptions ());
+  render (const std::vector<visualization::View>& views,
+          const std::string& file,
+          const visualization::RenderOptions& options = visualization::RenderOptions());
 
   /** \brief Path of \a file inside the output folder. */
   std::string
@@ -59,10 +58,11 @@ bool
 runVarianceSegmentationStep (DemoContext& context);
 bool
 runRegistrationStep (DemoContext& context);
-/** \brief Lim & Suter's multi-scale CRF: train on one street scene, classify another. */
+/** \brief Lim & Suter's multi-scale CRF: train on one street scene, classify another.
+ */
 bool
 runCrfStep (DemoContext& context);
 
 /** \} */
-}  // namespace demo
-}  // namespace pcl_ext
+} // namespace demo
+} // namespace pcl_ext

@@ -1,7 +1,7 @@
 /*
- * pcl_ext_demo step: Belton & Lichti surface / edge / boundary classification on `indoor`
- * (scored against the scene's ground-truth classes) and, when the real-data folder is given,
- * on PCL's room_scan1.pcd.
+ * pcl_ext_demo step: Belton & Lichti surface / edge / boundary classification on
+ * `indoor` (scored against the scene's ground-truth classes) and, when the real-data
+ * folder is given, on PCL's room_scan1.pcd.
  */
 #include "demo_context.h"
 
@@ -16,15 +16,14 @@
 
 #include <fstream>
 
-namespace pcl_ext
-{
-namespace demo
-{
-namespace
-{
+namespace pcl_ext {
+namespace demo {
+namespace {
 bool
-classify (DemoContext& context, const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
-          const std::string& name, std::vector<std::uint32_t>& classes)
+classify (DemoContext& context,
+          const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
+          const std::string& name,
+          std::vector<std::uint32_t>& classes)
 {
   LocalVarianceClassification<pcl::PointXYZ> classifier;
   classifier.setInputCloud (cloud);
@@ -33,22 +32,22 @@ classify (DemoContext& context, const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud
   pcl::PointCloud<pcl::Label> labels;
   apps::StageTimer timer ("Classifying '" + name + "' (surface / edge / boundary)");
   classifier.classify (labels);
-  const double ms = timer.done (labels.size ());
-  if (labels.size () != cloud->size ())
+  const double ms = timer.done (labels.size());
+  if (labels.size() != cloud->size())
     return false;
-  classes.resize (labels.size ());
+  classes.resize (labels.size());
   std::size_t count[kNumPointClasses] = {0};
-  for (std::size_t i = 0; i < labels.size (); ++i)
-  {
+  for (std::size_t i = 0; i < labels.size(); ++i) {
     classes[i] = labels[i].label;
     ++count[std::min<std::size_t> (classes[i], kNumPointClasses - 1)];
   }
-  context.summary << "  " << name << ": " << cloud->size () << " points classified in " << ms
-                  << " ms (k = " << context.k << "): surface " << count[1] << ", edge "
-                  << count[2] << ", boundary " << count[3] << ", unknown " << count[0] << "\n";
+  context.summary << "  " << name << ": " << cloud->size() << " points classified in "
+                  << ms << " ms (k = " << context.k << "): surface " << count[1]
+                  << ", edge " << count[2] << ", boundary " << count[3] << ", unknown "
+                  << count[0] << "\n";
   return true;
 }
-}  // namespace
+} // namespace
 
 bool
 runClassificationStep (DemoContext& context)
@@ -67,8 +66,9 @@ runClassificationStep (DemoContext& context)
   const std::map<std::uint32_t, std::string> names = {
       {1, "surface"}, {2, "edge"}, {3, "boundary"}};
   evaluateClassification (predicted, truth, metrics, names);
-  context.summary << "  indoor against the scene's classes (band = scan spacing): accuracy "
-                  << metrics.overall_accuracy;
+  context.summary
+      << "  indoor against the scene's classes (band = scan spacing): accuracy "
+      << metrics.overall_accuracy;
   for (const auto& c : metrics.classes)
     context.summary << ", " << c.name << " F1 " << c.f1;
   context.summary << "\n";
@@ -78,31 +78,36 @@ runClassificationStep (DemoContext& context)
   options.width = 1600;
   options.height = 700;
   bool ok = context.render (
-      {{"indoor: ground-truth classes", {{makeColouredCloud (*cloud, colourByClass (truth)), 1.5}}},
+      {{"indoor: ground-truth classes",
+        {{makeColouredCloud (*cloud, colourByClass (truth)), 1.5}}},
        {"indoor: Belton & Lichti (surface, edge, boundary)",
         {{makeColouredCloud (*cloud, colourByClass (predicted)), 1.5}}}},
-      "classification_indoor.png", options);
+      "classification_indoor.png",
+      options);
 
   // A real indoor scan, when available.
-  if (context.shared_data_dir.empty ())
+  if (context.shared_data_dir.empty())
     return ok;
-  const std::string room = context.shared_data_dir + "/pcl_data_tutorials/room_scan1.pcd";
-  if (!std::ifstream (room).good ())
-  {
+  const std::string room =
+      context.shared_data_dir + "/pcl_data_tutorials/room_scan1.pcd";
+  if (!std::ifstream (room).good()) {
     context.summary << "  room_scan1.pcd: not found under " << context.shared_data_dir
                     << ", skipped\n";
     return ok;
   }
   pcl::PointCloud<pcl::PointXYZ>::Ptr real (new pcl::PointCloud<pcl::PointXYZ>);
-  if (!io::loadCloud (room, *real) || !classify (context, real, "room_scan1", predicted))
+  if (!io::loadCloud (room, *real) ||
+      !classify (context, real, "room_scan1", predicted))
     return false;
   RenderOptions room_options;
   room_options.width = 1200;
   room_options.height = 800;
-  return context.render ({{"room_scan1.pcd: Belton & Lichti classification",
-                           {{makeColouredCloud (*real, colourByClass (predicted)), 1.0}}}},
-                         "classification_room_scan1.png", room_options) &&
+  return context.render (
+             {{"room_scan1.pcd: Belton & Lichti classification",
+               {{makeColouredCloud (*real, colourByClass (predicted)), 1.0}}}},
+             "classification_room_scan1.png",
+             room_options) &&
          ok;
 }
-}  // namespace demo
-}  // namespace pcl_ext
+} // namespace demo
+} // namespace pcl_ext

@@ -1,6 +1,6 @@
 /*
- * pcl_ext_demo step: Lim & Suter's multi-scale CRF, trained on one `street` scene and applied
- * to another.
+ * pcl_ext_demo step: Lim & Suter's multi-scale CRF, trained on one `street` scene and
+ * applied to another.
  */
 #include "demo_context.h"
 
@@ -12,15 +12,13 @@
 
 #include <cstdio>
 
-namespace pcl_ext
-{
-namespace demo
-{
+namespace pcl_ext {
+namespace demo {
 bool
 runCrfStep (DemoContext& context)
 {
-  // The paper's data set 2 size unless the demo asks for another: the default street scene
-  // (about 880,000 points) would take minutes to train on.
+  // The paper's data set 2 size unless the demo asks for another: the default street
+  // scene (about 880,000 points) would take minutes to train on.
   simulation::SceneParameters p;
   p.points = context.points > 0 ? context.points : 160000;
   p.seed = context.seed;
@@ -34,35 +32,44 @@ runCrfStep (DemoContext& context)
   const CrfInput train = apps::makeCrfInput (train_scene, train_labels);
   const CrfInput test = apps::makeCrfInput (test_scene, truth);
   MultiscaleCrfModel model;
-  CrfSettings settings = model.getSettings ();
+  CrfSettings settings = model.getSettings();
   settings.threads = context.threads;
   model.setSettings (settings);
   apps::StageTimer t_train ("Training the multi-scale CRF on street (seed " +
-                             std::to_string (context.seed) + ")");
+                            std::to_string (context.seed) + ")");
   if (!model.train ({train}, {train_labels}))
     return false;
-  t_train.done (train.xyz->size ());
-  apps::StageTimer t_classify ("Classifying street (seed " + std::to_string (p.seed) + ")");
+  t_train.done (train.xyz->size());
+  apps::StageTimer t_classify ("Classifying street (seed " + std::to_string (p.seed) +
+                               ")");
   std::vector<std::uint32_t> labels;
   Eigen::MatrixXf probabilities;
   if (!model.classify (test, labels, probabilities))
     return false;
-  t_classify.done (labels.size ());
+  t_classify.done (labels.size());
   ClassificationMetrics metrics;
   evaluateClassification (labels, truth, metrics);
-  const auto& s = model.getStatistics ();
+  const auto& s = model.getStatistics();
   char line[256];
-  std::snprintf (line, sizeof (line),
-                 "  street: %zu points, %zu super-voxels; super-voxels %.0f ms, features %.0f ms, "
-                 "inference %.0f ms; overall accuracy %.4f, macro F1 %.4f\n",
-                 labels.size (), s.supervoxels, s.supervoxels_ms, s.features_ms, s.inference_ms,
-                 metrics.overall_accuracy, metrics.macro_f1);
+  std::snprintf (
+      line,
+      sizeof (line),
+      "  street: %zu points, %zu super-voxels; super-voxels %.0f ms, features %.0f ms, "
+      "inference %.0f ms; overall accuracy %.4f, macro F1 %.4f\n",
+      labels.size(),
+      s.supervoxels,
+      s.supervoxels_ms,
+      s.features_ms,
+      s.inference_ms,
+      metrics.overall_accuracy,
+      metrics.macro_f1);
   context.summary << line;
   using namespace visualization;
   return context.render (
       {{"ground truth", {{makeColouredCloud (*test.xyz, colourByLabel (truth)), 2.0}}},
-       {"multi-scale CRF", {{makeColouredCloud (*test.xyz, colourByLabel (labels)), 2.0}}}},
+       {"multi-scale CRF",
+        {{makeColouredCloud (*test.xyz, colourByLabel (labels)), 2.0}}}},
       "crf_street.png");
 }
-}  // namespace demo
-}  // namespace pcl_ext
+} // namespace demo
+} // namespace pcl_ext

@@ -1,5 +1,6 @@
 /*
- * pcl_ext_demo step: the shared neighbourhood pass and the covariance kernel on `indoor`.
+ * pcl_ext_demo step: the shared neighbourhood pass and the covariance kernel on
+ * `indoor`.
  */
 #include "demo_context.h"
 
@@ -11,10 +12,8 @@
 
 #include <pcl/common/io.h>
 
-namespace pcl_ext
-{
-namespace demo
-{
+namespace pcl_ext {
+namespace demo {
 bool
 runNeighbourhoodsStep (DemoContext& context)
 {
@@ -28,30 +27,31 @@ runNeighbourhoodsStep (DemoContext& context)
   nb.setInputCloud (cloud);
   nb.setKSearch (context.k);
   nb.setNumberOfThreads (context.threads);
-  apps::StageTimer search ("Searching neighbourhoods, k = " + std::to_string (context.k));
-  if (!nb.compute ())
+  apps::StageTimer search ("Searching neighbourhoods, k = " +
+                           std::to_string (context.k));
+  if (!nb.compute())
     return false;
-  const double search_ms = search.done (cloud->size ());
+  const double search_ms = search.done (cloud->size());
 
   apps::StageTimer features ("Covariance and surface variance (eq. 4)");
-  std::vector<float> variance (cloud->size ());
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (cloud->size ());
+  std::vector<float> variance (cloud->size());
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (cloud->size());
   const unsigned int threads = resolveThreadCount (context.threads);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1024)
-  for (std::ptrdiff_t i = 0; i < n; ++i)
-  {
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
     Eigen::Matrix3d cov;
     Eigen::Vector3d centroid;
     EigenDecomposition eig;
     const auto row = nb[i];
-    variance[i] = computeLocalCovariance (*cloud, row.begin (), row.end (), cov, centroid) > 2 &&
-                          computeEigenDecomposition (cov, eig)
-                      ? static_cast<float> (surfaceVariance (eig.values))
-                      : std::numeric_limits<float>::quiet_NaN ();
+    variance[i] =
+        computeLocalCovariance (*cloud, row.begin(), row.end(), cov, centroid) > 2 &&
+                computeEigenDecomposition (cov, eig)
+            ? static_cast<float> (surfaceVariance (eig.values))
+            : std::numeric_limits<float>::quiet_NaN();
   }
-  const double features_ms = features.done (cloud->size ());
+  const double features_ms = features.done (cloud->size());
 
-  context.summary << "  indoor: " << cloud->size () << " points, k = " << context.k
+  context.summary << "  indoor: " << cloud->size() << " points, k = " << context.k
                   << ": neighbourhoods " << search_ms << " ms, covariance + eigen "
                   << features_ms << " ms\n";
   using namespace visualization;
@@ -59,9 +59,11 @@ runNeighbourhoodsStep (DemoContext& context)
   options.width = 1200;
   options.height = 800;
   return context.render (
-      {{"indoor: surface variance l0 / (l0 + l1 + l2), k = " + std::to_string (context.k),
+      {{"indoor: surface variance l0 / (l0 + l1 + l2), k = " +
+            std::to_string (context.k),
         {{makeColouredCloud (*cloud, colourByScalar (variance)), 1.5}}}},
-      "indoor_surface_variance.png", options);
+      "indoor_surface_variance.png",
+      options);
 }
-}  // namespace demo
-}  // namespace pcl_ext
+} // namespace demo
+} // namespace pcl_ext

@@ -1,7 +1,8 @@
 /*
- * pcl_ext_demo step: profile-intersection segmentation (Sithole & Mapurisa) on the scenes of the
- * paper's section 5 (`cubes`, `spheres`, `coaxial`, `pipes`, `tree`), scored against their
- * ground truth; on `pipes` and `tree` the segments lying on one cylinder are joined afterwards.
+ * pcl_ext_demo step: profile-intersection segmentation (Sithole & Mapurisa) on the
+ * scenes of the paper's section 5 (`cubes`, `spheres`, `coaxial`, `pipes`, `tree`),
+ * scored against their ground truth; on `pipes` and `tree` the segments lying on one
+ * cylinder are joined afterwards.
  */
 #include "demo_context.h"
 
@@ -19,23 +20,19 @@
 #include <string>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace demo
-{
-namespace
-{
-/** One run of the step: a scene, its truth, the segmenter's settings and whether the segments
-  * lying on one cylinder are joined afterwards. */
-struct ProfileRun
-{
+namespace pcl_ext {
+namespace demo {
+namespace {
+/** One run of the step: a scene, its truth, the segmenter's settings and whether the
+ * segments lying on one cylinder are joined afterwards. */
+struct ProfileRun {
   std::string scene;
-  bool surfaces;  ///< truth at the surface level (connected pieces) instead of objects
+  bool surfaces; ///< truth at the surface level (connected pieces) instead of objects
   std::string settings;
   std::function<void (ProfileSegmentation<pcl::PointXYZ>&)> configure;
   bool join_cylinders;
   /** \brief Also scored: the truth segments of this scene label (0: none), or with
-    * \a below_z > 0 only the one holding most of its points below that height. */
+   * \a below_z > 0 only the one holding most of its points below that height. */
   std::uint32_t focus_label = 0;
   float below_z = 0.0f;
   std::string focus_name;
@@ -43,21 +40,25 @@ struct ProfileRun
 
 /** Mean best IoU over the truth segments the run focuses on (see ProfileRun). */
 double
-focusIoU (const ProfileRun& run, const simulation::SyntheticScene& scene,
-          const std::vector<std::uint32_t>& truth, const SegmentationMetrics& metrics)
+focusIoU (const ProfileRun& run,
+          const simulation::SyntheticScene& scene,
+          const std::vector<std::uint32_t>& truth,
+          const SegmentationMetrics& metrics)
 {
   std::map<std::uint32_t, std::size_t> of_label, total;
-  for (std::size_t i = 0; i < truth.size (); ++i)
-  {
+  for (std::size_t i = 0; i < truth.size(); ++i) {
     ++total[truth[i]];
     if (scene.cloud[i].label == run.focus_label &&
         (run.below_z <= 0.0f || scene.cloud[i].z < run.below_z))
       ++of_label[truth[i]];
   }
   std::vector<std::uint32_t> chosen;
-  if (run.below_z > 0.0f && !of_label.empty ())
-    chosen.push_back (std::max_element (of_label.begin (), of_label.end (),
-                                        [] (const auto& a, const auto& b) { return a.second < b.second; })
+  if (run.below_z > 0.0f && !of_label.empty())
+    chosen.push_back (std::max_element (of_label.begin(),
+                                        of_label.end(),
+                                        [] (const auto& a, const auto& b) {
+                                          return a.second < b.second;
+                                        })
                           ->first);
   else
     for (const auto& [segment, count] : of_label)
@@ -65,9 +66,9 @@ focusIoU (const ProfileRun& run, const simulation::SyntheticScene& scene,
         chosen.push_back (segment);
   double sum = 0.0;
   for (const auto& match : metrics.segments)
-    if (std::find (chosen.begin (), chosen.end (), match.truth_label) != chosen.end ())
+    if (std::find (chosen.begin(), chosen.end(), match.truth_label) != chosen.end())
       sum += match.iou;
-  return chosen.empty () ? 0.0 : sum / static_cast<double> (chosen.size ());
+  return chosen.empty() ? 0.0 : sum / static_cast<double> (chosen.size());
 }
 
 /** Curve fitting for noisy scans (see ProfileSegmentation::setTurnSignificance). */
@@ -79,32 +80,53 @@ curvesForNoise (ProfileSegmentation<pcl::PointXYZ>& seg)
   seg.setCorrectedAic (true);
   seg.setTurnSignificance (3.0);
 }
-}  // namespace
+} // namespace
 
 bool
 runProfilesStep (DemoContext& context)
 {
   const std::vector<ProfileRun> runs = {
-      {"cubes", false, "proximity, 4 stacks", [] (ProfileSegmentation<pcl::PointXYZ>&) {}, false,
-       0, 0.0f, ""},
-      {"spheres", false, "proximity, 4 stacks", [] (ProfileSegmentation<pcl::PointXYZ>&) {},
-       false, 0, 0.0f, ""},
+      {"cubes",
+       false,
+       "proximity, 4 stacks",
+       [] (ProfileSegmentation<pcl::PointXYZ>&) {},
+       false,
+       0,
+       0.0f,
+       ""},
+      {"spheres",
+       false,
+       "proximity, 4 stacks",
+       [] (ProfileSegmentation<pcl::PointXYZ>&) {},
+       false,
+       0,
+       0.0f,
+       ""},
       {"coaxial", true, "curve fitting for noise", curvesForNoise, false, 0, 0.0f, ""},
-      {"pipes", false, "curve fitting for noise, local thresholds, cylinders joined",
+      {"pipes",
+       false,
+       "curve fitting for noise, local thresholds, cylinders joined",
        [] (ProfileSegmentation<pcl::PointXYZ>& seg) {
          curvesForNoise (seg);
          seg.setLocalThreshold (true);
        },
-       true, 3, 0.0f, "the pipes"},  // the scene's label 3: pipe
-      {"tree", true, "curve fitting for noise, side frames, cylinders joined",
+       true,
+       3,
+       0.0f,
+       "the pipes"}, // the scene's label 3: pipe
+      {"tree",
+       true,
+       "curve fitting for noise, side frames, cylinders joined",
        [] (ProfileSegmentation<pcl::PointXYZ>& seg) {
          curvesForNoise (seg);
          seg.setSideFrames (true);
        },
-       true, static_cast<std::uint32_t> (simulation::OutdoorLabel::Trunk), 3.0f, "the trunk"}};
+       true,
+       static_cast<std::uint32_t> (simulation::OutdoorLabel::Trunk),
+       3.0f,
+       "the trunk"}};
   bool ok = true;
-  for (const auto& run : runs)
-  {
+  for (const auto& run : runs) {
     const std::string& name = run.scene;
     const auto* scene = context.scene (name);
     if (!scene)
@@ -120,41 +142,40 @@ runProfilesStep (DemoContext& context)
     seg.setNumberOfThreads (context.threads);
     run.configure (seg);
     std::vector<pcl::PointIndices> segments;
-    apps::StageTimer timer ("Profile segmentation of '" + name + "' (" + run.settings + ")");
+    apps::StageTimer timer ("Profile segmentation of '" + name + "' (" + run.settings +
+                            ")");
     seg.extract (segments);
-    if (run.join_cylinders && !segments.empty ())
-    {
+    if (run.join_cylinders && !segments.empty()) {
       CylinderSegmentJoin<pcl::PointXYZ> join;
       join.setInputCloud (cloud);
       join.setInputSegments (segments);
       join.setNumberOfThreads (context.threads);
       join.join (segments);
     }
-    const double ms = timer.done (cloud->size ());
-    if (segments.empty ())
-    {
+    const double ms = timer.done (cloud->size());
+    if (segments.empty()) {
       ok = false;
       continue;
     }
     SegmentationMetrics metrics;
     evaluateSegmentation (segments, truth, metrics);
-    context.summary << "  " << name << " (" << run.settings << "): " << segments.size ()
+    context.summary << "  " << name << " (" << run.settings << "): " << segments.size()
                     << " segments in " << ms << " ms; "
                     << (run.surfaces ? "surfaces" : "objects") << ": mean best IoU "
-                    << metrics.mean_best_iou << ", weighted " << metrics.weighted_mean_best_iou
-                    << ", correct " << metrics.correct << "/" << metrics.num_truth_segments;
+                    << metrics.mean_best_iou << ", weighted "
+                    << metrics.weighted_mean_best_iou << ", correct " << metrics.correct
+                    << "/" << metrics.num_truth_segments;
     std::string title_metric = "mean best IoU";
     double shown = metrics.mean_best_iou;
-    if (run.focus_label != 0)
-    {
+    if (run.focus_label != 0) {
       shown = focusIoU (run, *scene, truth, metrics);
       title_metric = run.focus_name + ": mean best IoU";
       context.summary << "; " << run.focus_name << ": mean best IoU " << shown;
     }
     context.summary << "\n";
 
-    std::vector<std::uint32_t> labels (cloud->size (), 0);
-    for (std::size_t s = 0; s < segments.size (); ++s)
+    std::vector<std::uint32_t> labels (cloud->size(), 0);
+    for (std::size_t s = 0; s < segments.size(); ++s)
       for (const auto i : segments[s].indices)
         labels[i] = static_cast<std::uint32_t> (s + 1);
     using namespace visualization;
@@ -163,15 +184,17 @@ runProfilesStep (DemoContext& context)
     options.height = 700;
     char iou[32];
     std::snprintf (iou, sizeof (iou), "%.3f", shown);
-    ok = context.render (
-             {{name + ": ground truth (" + (run.surfaces ? "surfaces" : "objects") + ")",
-               {{makeColouredCloud (*cloud, colourByLabel (truth)), 1.5}}},
-              {name + ": " + run.settings + ", " + title_metric + " " + iou,
-               {{makeColouredCloud (*cloud, colourByLabel (labels)), 1.5}}}},
-             "profiles_" + name + ".png", options) &&
-         ok;
+    ok =
+        context.render (
+            {{name + ": ground truth (" + (run.surfaces ? "surfaces" : "objects") + ")",
+              {{makeColouredCloud (*cloud, colourByLabel (truth)), 1.5}}},
+             {name + ": " + run.settings + ", " + title_metric + " " + iou,
+              {{makeColouredCloud (*cloud, colourByLabel (labels)), 1.5}}}},
+            "profiles_" + name + ".png",
+            options) &&
+        ok;
   }
   return ok;
 }
-}  // namespace demo
-}  // namespace pcl_ext
+} // namespace demo
+} // namespace pcl_ext

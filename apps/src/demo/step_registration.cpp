@@ -13,49 +13,52 @@
 #include <pcl/common/io.h>
 #include <pcl/common/transforms.h>
 
-namespace pcl_ext
-{
-namespace demo
-{
-namespace
-{
+namespace pcl_ext {
+namespace demo {
+namespace {
 // Tables 1-2: the distances of the matched scan planes' inliers to their map planes.
 PlaneDistanceMetrics
 planeDistances (const PlaneMatchingRegistration<pcl::PointXYZ, pcl::PointXYZ>& reg,
                 const pcl::PointCloud<pcl::PointXYZ>& scan)
 {
   std::vector<pcl::PointIndices> inliers;
-  for (const auto& plane : reg.getSourcePlanes ())
+  for (const auto& plane : reg.getSourcePlanes())
     inliers.push_back (plane.inliers);
   std::vector<Eigen::Vector4d> coefficients;
-  for (const auto& plane : reg.getTargetPlanes ())
-    coefficients.push_back (plane.coefficients ());
+  for (const auto& plane : reg.getTargetPlanes())
+    coefficients.push_back (plane.coefficients());
   pcl::Correspondences matches;
-  for (const auto& pair : reg.getMatchingResult ().matches)
+  for (const auto& pair : reg.getMatchingResult().matches)
     matches.emplace_back (pair.scan, pair.map, 0.f);
   PlaneDistanceMetrics metrics;
-  computePlaneDistances (scan, inliers, coefficients, matches, reg.getFinalTransformationDouble (),
+  computePlaneDistances (scan,
+                         inliers,
+                         coefficients,
+                         matches,
+                         reg.getFinalTransformationDouble(),
                          metrics);
   return metrics;
 }
-}  // namespace
+} // namespace
 
 bool
 runRegistrationStep (DemoContext& context)
 {
   // A levelled scanner (as TLS are) in an unknown heading and position: the scene's own
-  // random pose also tilts the scan, which plane matching with the vertical constraint refuses.
+  // random pose also tilts the scan, which plane matching with the vertical constraint
+  // refuses.
   simulation::SceneParameters parameters;
   parameters.seed = context.seed;
   parameters.threads = context.threads;
   parameters.random_pose = false;
   parameters.has_pose = true;
   parameters.pose = Eigen::Translation3d (14.0, -9.0, 0.0) *
-                    Eigen::AngleAxisd (0.65, Eigen::Vector3d::UnitZ ());
-  auto owned = std::make_unique<simulation::SyntheticScene> ();
-  if (!simulation::generateScene ("building", parameters, *owned) || owned->footprint.size () < 3)
+                    Eigen::AngleAxisd (0.65, Eigen::Vector3d::UnitZ());
+  auto owned = std::make_unique<simulation::SyntheticScene>();
+  if (!simulation::generateScene ("building", parameters, *owned) ||
+      owned->footprint.size() < 3)
     return false;
-  const auto* scene = owned.get ();
+  const auto* scene = owned.get();
   pcl::PointCloud<pcl::PointXYZ>::Ptr scan (new pcl::PointCloud<pcl::PointXYZ>);
   pcl::copyPointCloud (scene->cloud, *scan);
 
@@ -65,10 +68,10 @@ runRegistrationStep (DemoContext& context)
   footprint.polygons[0].outer = scene->footprint;
 
   PlaneMatchingRegistration<pcl::PointXYZ, pcl::PointXYZ> reg;
-  if (!reg.setFootprints ({footprint}, MapPlaneParameters ()))
+  if (!reg.setFootprints ({footprint}, MapPlaneParameters()))
     return false;
   SACPlaneExtraction<pcl::PointXYZ> extraction;
-  reg.setPlaneExtractor (extraction.asExtractor ());
+  reg.setPlaneExtractor (extraction.asExtractor());
   reg.setNumberOfThreads (context.threads);
   reg.setInputSource (scan);
   // The scanner positions are known, so plane normals can be turned towards them.
@@ -81,40 +84,39 @@ runRegistrationStep (DemoContext& context)
   pcl::PointCloud<pcl::PointXYZ> registered;
   apps::StageTimer timer ("Registering 'building' to its footprint (plane matching)");
   reg.align (registered);
-  const double ms = timer.done (reg.getMatchingResult ().matches.size ());
-  if (!reg.hasConverged ())
-  {
+  const double ms = timer.done (reg.getMatchingResult().matches.size());
+  if (!reg.hasConverged()) {
     context.summary << "  building: registration did not converge\n";
     return false;
   }
   // The class works in map coordinates minus a local origin; put it back to compare.
-  Eigen::Matrix4d scan_to_map = reg.getFinalTransformationDouble ();
-  scan_to_map.block<3, 1> (0, 3) += reg.getLocalOrigin ();
+  Eigen::Matrix4d scan_to_map = reg.getFinalTransformationDouble();
+  scan_to_map.block<3, 1> (0, 3) += reg.getLocalOrigin();
   Eigen::Vector4f centroid;
   pcl::compute3DCentroid (*scan, centroid);
-  const auto error = computeTransformationError (scan_to_map, scene->scan_to_map,
-                                                 centroid.head<3> ().cast<double> ());
+  const auto error = computeTransformationError (
+      scan_to_map, scene->scan_to_map, centroid.head<3>().cast<double>());
   const PlaneDistanceMetrics d = planeDistances (reg, *scan);
-  context.summary << "  building: " << scan->size () << " points, " << reg.getSourcePlanes ().size ()
-                  << " scan planes, " << reg.getMapPlanes ().size () << " map planes, "
-                  << reg.getMatchingResult ().matches.size () << " matched in " << ms
-                  << " ms; rotation error " << error.rotation_deg << " deg, translation error "
-                  << error.translation << " m; plane distances mean " << d.mean << " m, max "
-                  << d.max << " m\n";
+  context.summary << "  building: " << scan->size() << " points, "
+                  << reg.getSourcePlanes().size() << " scan planes, "
+                  << reg.getMapPlanes().size() << " map planes, "
+                  << reg.getMatchingResult().matches.size() << " matched in " << ms
+                  << " ms; rotation error " << error.rotation_deg
+                  << " deg, translation error " << error.translation
+                  << " m; plane distances mean " << d.mean << " m, max " << d.max
+                  << " m\n";
 
   // Top view: the registered scan over the footprint outline.
   pcl::PointCloud<pcl::PointXYZ> in_map;
   pcl::transformPointCloud (*scan, in_map, scan_to_map);
   pcl::PointCloud<pcl::PointXYZ> outline;
   const auto& ring = scene->footprint;
-  for (std::size_t i = 0; i < ring.size (); ++i)
-  {
-    const Eigen::Vector2d a = ring[i], b = ring[(i + 1) % ring.size ()];
-    const int steps = std::max (2, static_cast<int> ((b - a).norm () / 0.05));
-    for (int s = 0; s <= steps; ++s)
-    {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Eigen::Vector2d a = ring[i], b = ring[(i + 1) % ring.size()];
+    const int steps = std::max (2, static_cast<int> ((b - a).norm() / 0.05));
+    for (int s = 0; s <= steps; ++s) {
       const Eigen::Vector2d p = a + (b - a) * (double (s) / steps);
-      outline.push_back (pcl::PointXYZ (p.x (), p.y (), parameters.building_height));
+      outline.push_back (pcl::PointXYZ (p.x(), p.y(), parameters.building_height));
     }
   }
   std::vector<float> height;
@@ -125,14 +127,16 @@ runRegistrationStep (DemoContext& context)
   options.width = 1000;
   options.height = 1000;
   options.view_direction = Eigen::Vector3d (0, 0, -1);
-  options.up = Eigen::Vector3d::UnitY ();
+  options.up = Eigen::Vector3d::UnitY();
   options.zoom_out = 1.6;
   return context.render (
       {{"building registered to its footprint (black, drawn at roof height)",
         {{makeColouredCloud (in_map, colourByScalar (height)), 1.0},
-         {makeColouredCloud (outline, std::vector<Colour> (outline.size (), Colour {0, 0, 0})),
+         {makeColouredCloud (outline,
+                             std::vector<Colour> (outline.size(), Colour{0, 0, 0})),
           3.0}}}},
-      "registration_building.png", options);
+      "registration_building.png",
+      options);
 }
-}  // namespace demo
-}  // namespace pcl_ext
+} // namespace demo
+} // namespace pcl_ext

@@ -5,33 +5,29 @@
 
 #include <pcl_ext/visualization/colour_maps.h>
 
-namespace pcl_ext
-{
-namespace demo
-{
+namespace pcl_ext {
+namespace demo {
 bool
 runScenesStep (DemoContext& context)
 {
   bool ok = true;
-  for (const auto& name : simulation::sceneNames ())
-  {
+  for (const auto& name : simulation::sceneNames()) {
     const auto* scene = context.scene (name);
-    if (!scene)
-    {
+    if (!scene) {
       ok = false;
       continue;
     }
     std::vector<std::uint32_t> segments, classes;
-    segments.reserve (scene->cloud.size ());
-    classes.reserve (scene->cloud.size ());
-    for (const auto& p : scene->cloud)
-    {
+    segments.reserve (scene->cloud.size());
+    classes.reserve (scene->cloud.size());
+    for (const auto& p : scene->cloud) {
       segments.push_back (p.segment);
       classes.push_back (p.point_class);
     }
     using namespace visualization;
     std::vector<View> views = {
-        {name + ": segments", {{makeColouredCloud (scene->cloud, colourByLabel (segments)), 1.5}}},
+        {name + ": segments",
+         {{makeColouredCloud (scene->cloud, colourByLabel (segments)), 1.5}}},
         {name + ": classes (surface, edge, boundary)",
          {{makeColouredCloud (scene->cloud, colourByClass (classes)), 1.5}}}};
     RenderOptions options;
@@ -41,5 +37,5 @@ runScenesStep (DemoContext& context)
   }
   return ok;
 }
-}  // namespace demo
-}  // namespace pcl_ext
+} // namespace demo
+} // namespace pcl_ext

@@ -1,8 +1,8 @@
 /*
  * pcl_ext_demo step: Belton & Lichti region growing over the local variance classes on
- * `indoor` (scored against the scene's true surfaces) and, when the real-data folder is given,
- * on PCL's room_scan1.pcd; then the local intersection of the segments (section 4), drawn on
- * top and, on `indoor`, measured against the true creases.
+ * `indoor` (scored against the scene's true surfaces) and, when the real-data folder is
+ * given, on PCL's room_scan1.pcd; then the local intersection of the segments (section
+ * 4), drawn on top and, on `indoor`, measured against the true creases.
  */
 #include "demo_context.h"
 
@@ -21,27 +21,27 @@
 #include <fstream>
 #include <limits>
 
-namespace pcl_ext
-{
-namespace demo
-{
-namespace
-{
+namespace pcl_ext {
+namespace demo {
+namespace {
 using Intersections = pcl::PointCloud<SurfaceIntersectionPoint>;
 
 /** Segment \a cloud and intersect the segments; one label per point (0: none), the
-  * intersection points, and lines in the summary. */
+ * intersection points, and lines in the summary. */
 bool
-segment (DemoContext& context, const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
-         const std::string& name, std::vector<std::uint32_t>& ids, Intersections& intersections)
+segment (DemoContext& context,
+         const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
+         const std::string& name,
+         std::vector<std::uint32_t>& ids,
+         Intersections& intersections)
 {
   apps::StageTimer timer ("Classifying and growing segments of '" + name + "'");
   // One neighbourhood search for the segmentation and the intersections.
-  auto nb = pcl::make_shared<Neighbourhoods<pcl::PointXYZ>> ();
+  auto nb = pcl::make_shared<Neighbourhoods<pcl::PointXYZ>>();
   nb->setInputCloud (cloud);
   nb->setKSearch (context.k);
   nb->setNumberOfThreads (context.threads);
-  if (!nb->compute ())
+  if (!nb->compute())
     return false;
   VarianceRegionGrowing<pcl::PointXYZ> rg;
   rg.setInputCloud (cloud);
@@ -52,37 +52,38 @@ segment (DemoContext& context, const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
   classifier.setNumberOfThreads (context.threads);
   std::vector<pcl::PointIndices> clusters;
   segmentByLocalVariance (classifier, rg, clusters);
-  const double ms = timer.done (cloud->size ());
-  if (clusters.empty ())
+  const double ms = timer.done (cloud->size());
+  if (clusters.empty())
     return false;
   pcl::PointCloud<pcl::Label> labels;
   rg.getSegmentLabels (labels);
-  ids.resize (labels.size ());
+  ids.resize (labels.size());
   std::size_t segmented = 0;
-  for (std::size_t i = 0; i < labels.size (); ++i)
-  {
+  for (std::size_t i = 0; i < labels.size(); ++i) {
     ids[i] = labels[i].label;
     segmented += ids[i] != 0;
   }
-  context.summary << "  " << name << ": " << clusters.size () << " segments of at least 50 "
-                  << "points in " << ms << " ms (k = " << context.k << ", classification "
-                  << "included); " << segmented << " of " << cloud->size ()
-                  << " points segmented, the rest edges, boundaries and small segments\n";
+  context.summary
+      << "  " << name << ": " << clusters.size() << " segments of at least 50 "
+      << "points in " << ms << " ms (k = " << context.k << ", classification "
+      << "included); " << segmented << " of " << cloud->size()
+      << " points segmented, the rest edges, boundaries and small segments\n";
 
   LocalSurfaceIntersection<pcl::PointXYZ> lsi;
   lsi.setInputCloud (cloud);
   lsi.setNeighbourhoods (nb);
   lsi.setSegmentLabels (pcl::make_shared<pcl::PointCloud<pcl::Label>> (labels));
   lsi.setPointClasses (
-      pcl::make_shared<pcl::PointCloud<pcl::Label>> (*rg.getInputClasses ()));
+      pcl::make_shared<pcl::PointCloud<pcl::Label>> (*rg.getInputClasses()));
   lsi.setNumberOfThreads (context.threads);
   pcl::PointCloud<pcl::Label> reintegrated;
   apps::StageTimer lsi_timer ("Intersecting the segments of '" + name + "'");
   if (!lsi.compute (intersections, reintegrated))
     return false;
-  const double lsi_ms = lsi_timer.done (intersections.size ());
-  const auto& r = lsi.getReport ();
-  context.summary << "  " << name << ", local surface intersection: " << intersections.size ()
+  const double lsi_ms = lsi_timer.done (intersections.size());
+  const auto& r = lsi.getReport();
+  context.summary << "  " << name
+                  << ", local surface intersection: " << intersections.size()
                   << " intersection points in " << lsi_ms << " ms (" << r.parallel
                   << " pairs parallel, " << r.beyond_tolerance << " too far); of "
                   << r.examined << " edge and boundary points " << r.reintegrated
@@ -93,24 +94,24 @@ segment (DemoContext& context, const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
 
 /** Median distance of \a points to the nearest true crease of \a scene. */
 double
-medianCreaseDistance (const simulation::SyntheticScene& scene, const Intersections& points)
+medianCreaseDistance (const simulation::SyntheticScene& scene,
+                      const Intersections& points)
 {
-  const auto& curves = scene.description->geometry.curves ();
-  const Eigen::Isometry3d scene_from_cloud = scene.cloud_from_scene.inverse ();
+  const auto& curves = scene.description->geometry.curves();
+  const Eigen::Isometry3d scene_from_cloud = scene.cloud_from_scene.inverse();
   std::vector<double> d;
-  for (const auto& p : points)
-  {
+  for (const auto& p : points) {
     const Eigen::Vector3d x = scene_from_cloud * Eigen::Vector3d (p.x, p.y, p.z);
-    double best = std::numeric_limits<double>::infinity ();
+    double best = std::numeric_limits<double>::infinity();
     for (const auto& c : curves)
       if (c.kind == simulation::GroundTruthCurve::Kind::Crease)
         best = std::min (best, c.distance (x));
     d.push_back (best);
   }
-  if (d.empty ())
-    return std::numeric_limits<double>::quiet_NaN ();
-  std::nth_element (d.begin (), d.begin () + d.size () / 2, d.end ());
-  return d[d.size () / 2];
+  if (d.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  std::nth_element (d.begin(), d.begin() + d.size() / 2, d.end());
+  return d[d.size() / 2];
 }
 
 /** The intersection points in black, drawn over the segments. */
@@ -118,10 +119,10 @@ visualization::Layer
 intersectionLayer (const Intersections& points)
 {
   return {visualization::makeColouredCloud (
-              points, std::vector<visualization::Colour> (points.size (), {0, 0, 0})),
+              points, std::vector<visualization::Colour> (points.size(), {0, 0, 0})),
           3.0};
 }
-}  // namespace
+} // namespace
 
 bool
 runVarianceSegmentationStep (DemoContext& context)
@@ -139,14 +140,14 @@ runVarianceSegmentationStep (DemoContext& context)
     truth.push_back (p.segment);
   SegmentationMetrics metrics;
   evaluateSegmentation (predicted, truth, metrics);
-  context.summary << "  indoor against the true surfaces: mean best IoU "
-                  << metrics.mean_best_iou << " (weighted by size "
-                  << metrics.weighted_mean_best_iou << "), correct " << metrics.correct << "/"
-                  << metrics.num_truth_segments << ", unsegmented "
-                  << metrics.unsegmented_fraction << "\n"
-                  << "  indoor intersection points: median distance to the nearest true "
-                  << "crease " << medianCreaseDistance (*scene, intersections) << " m (range "
-                  << "noise sigma " << scene->noise << " m)\n";
+  context.summary
+      << "  indoor against the true surfaces: mean best IoU " << metrics.mean_best_iou
+      << " (weighted by size " << metrics.weighted_mean_best_iou << "), correct "
+      << metrics.correct << "/" << metrics.num_truth_segments << ", unsegmented "
+      << metrics.unsegmented_fraction << "\n"
+      << "  indoor intersection points: median distance to the nearest true "
+      << "crease " << medianCreaseDistance (*scene, intersections) << " m (range "
+      << "noise sigma " << scene->noise << " m)\n";
 
   using namespace visualization;
   RenderOptions options;
@@ -155,19 +156,21 @@ runVarianceSegmentationStep (DemoContext& context)
   char iou[32];
   std::snprintf (iou, sizeof (iou), "%.3f", metrics.mean_best_iou);
   bool ok = context.render (
-      {{"indoor: true surfaces", {{makeColouredCloud (*cloud, colourByLabel (truth)), 1.5}}},
+      {{"indoor: true surfaces",
+        {{makeColouredCloud (*cloud, colourByLabel (truth)), 1.5}}},
        {std::string ("indoor: Belton & Lichti region growing, mean best IoU ") + iou +
             ", local intersections in black",
         {{makeColouredCloud (*cloud, colourByLabel (predicted)), 1.5},
          intersectionLayer (intersections)}}},
-      "variance_segmentation_indoor.png", options);
+      "variance_segmentation_indoor.png",
+      options);
 
   // A real indoor scan, when available.
-  if (context.shared_data_dir.empty ())
+  if (context.shared_data_dir.empty())
     return ok;
-  const std::string room = context.shared_data_dir + "/pcl_data_tutorials/room_scan1.pcd";
-  if (!std::ifstream (room).good ())
-  {
+  const std::string room =
+      context.shared_data_dir + "/pcl_data_tutorials/room_scan1.pcd";
+  if (!std::ifstream (room).good()) {
     context.summary << "  room_scan1.pcd: not found under " << context.shared_data_dir
                     << ", skipped\n";
     return ok;
@@ -183,8 +186,9 @@ runVarianceSegmentationStep (DemoContext& context)
                            "intersections in black",
                            {{makeColouredCloud (*real, colourByLabel (predicted)), 1.0},
                             intersectionLayer (intersections)}}},
-                         "variance_segmentation_room_scan1.png", room_options) &&
+                         "variance_segmentation_room_scan1.png",
+                         room_options) &&
          ok;
 }
-}  // namespace demo
-}  // namespace pcl_ext
+} // namespace demo
+} // namespace pcl_ext

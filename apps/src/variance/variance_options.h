@@ -1,6 +1,7 @@
 /*
- * pcl_ext: the Belton & Lichti classification options that pcl_ext_classify_variance and
- * pcl_ext_segment_variance share: their switches, checks and hand-over, written once.
+ * pcl_ext: the Belton & Lichti classification options that pcl_ext_classify_variance
+ * and pcl_ext_segment_variance share: their switches, checks and hand-over, written
+ * once.
  */
 #pragma once
 
@@ -9,55 +10,62 @@
 #include <cmath>
 #include <iostream>
 
-namespace pcl_ext
-{
-namespace apps
-{
-/** \brief Options of the local variance classification (eqs. 4-6 and pcl_ext's additions),
-  * with the defaults of LocalVarianceClassification. */
-struct VarianceClassificationOptions
-{
+namespace pcl_ext {
+namespace apps {
+/** \brief Options of the local variance classification (eqs. 4-6 and pcl_ext's
+ * additions), with the defaults of LocalVarianceClassification. */
+struct VarianceClassificationOptions {
   double curvature_threshold = 0.0;
   double curvature_factor = 3.0;
   double variance_threshold = 1e-4;
   double confidence = 0.95;
   double noise_sigma = 0.0;
-  double crease_angle = 0.0;  ///< degrees
+  double crease_angle = 0.0; ///< degrees
   bool boundary_band = false;
   double boundary_band_fraction = 1.0;
 
   void
   addTo (apps::CommandLine& cl)
   {
-    cl.addOption ("curvature_threshold", curvature_threshold,
+    cl.addOption ("curvature_threshold",
+                  curvature_threshold,
                   "curvature (eq. 4) threshold; 0: factor * median curvature");
-    cl.addOption ("curvature_factor", curvature_factor,
+    cl.addOption ("curvature_factor",
+                  curvature_factor,
                   "multiple of the median curvature when the threshold is 0");
-    cl.addOption ("variance_threshold", variance_threshold,
+    cl.addOption ("variance_threshold",
+                  variance_threshold,
                   "variance of curvature tolerance (eq. 5)");
-    cl.addOption ("confidence", confidence, "confidence of the chi-squared boundary test (eq. 6)");
-    cl.addOption ("noise_sigma", noise_sigma,
-                  "the scanner's range noise sigma, removed from eq. 4-6 (0: the paper's)");
-    cl.addSwitch ("boundary_band", boundary_band,
+    cl.addOption ("confidence",
+                  confidence,
+                  "confidence of the chi-squared boundary test (eq. 6)");
+    cl.addOption (
+        "noise_sigma",
+        noise_sigma,
+        "the scanner's range noise sigma, removed from eq. 4-6 (0: the paper's)");
+    cl.addSwitch ("boundary_band",
+                  boundary_band,
                   "also label boundary the surface points next to one eq. 6 finds");
-    cl.addOption ("boundary_band_fraction", boundary_band_fraction,
-                  "share of each neighbourhood, nearest first, the band reaches through (0-1]");
-    cl.addOption ("crease_angle", crease_angle,
-                  "an edge of eq. 5 must bend the normals by more than this (degrees; 0: off)");
+    cl.addOption (
+        "boundary_band_fraction",
+        boundary_band_fraction,
+        "share of each neighbourhood, nearest first, the band reaches through (0-1]");
+    cl.addOption (
+        "crease_angle",
+        crease_angle,
+        "an edge of eq. 5 must bend the normals by more than this (degrees; 0: off)");
   }
 
   /** \brief The checks the classes cannot make for the app (units of the command line);
-    * prints the error. The classes check the rest. */
+   * prints the error. The classes check the rest. */
   bool
   valid () const
   {
-    if (!(crease_angle >= 0.0 && crease_angle <= 90.0))
-    {
+    if (!(crease_angle >= 0.0 && crease_angle <= 90.0)) {
       std::cerr << "Error: -crease_angle must lie between 0 and 90 degrees.\n";
       return false;
     }
-    if (!(noise_sigma >= 0.0) || !std::isfinite (noise_sigma))
-    {
+    if (!(noise_sigma >= 0.0) || !std::isfinite (noise_sigma)) {
       std::cerr << "Error: -noise_sigma must be finite and >= 0.\n";
       return false;
     }
@@ -79,5 +87,5 @@ struct VarianceClassificationOptions
     classifier.setCreaseAngle (crease_angle * M_PI / 180.0);
   }
 };
-}  // namespace apps
-}  // namespace pcl_ext
+} // namespace apps
+} // namespace pcl_ext

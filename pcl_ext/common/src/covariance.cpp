@@ -9,27 +9,29 @@
 #include <limits>
 
 bool
-pcl_ext::computeEigenDecomposition (const Eigen::Matrix3d& covariance, EigenDecomposition& result)
+pcl_ext::computeEigenDecomposition (const Eigen::Matrix3d& covariance,
+                                    EigenDecomposition& result)
 {
-  if (!covariance.allFinite ())
+  if (!covariance.allFinite())
     return false;
-  // The closed-form solver is exact enough in double for 3x3 covariances, and several times
-  // faster than the iterative one; Eigen scales the matrix internally before solving.
+  // The closed-form solver is exact enough in double for 3x3 covariances, and several
+  // times faster than the iterative one; Eigen scales the matrix internally before
+  // solving.
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect (covariance);
-  if (solver.info () != Eigen::Success)
+  if (solver.info() != Eigen::Success)
     return false;
-  result.values = solver.eigenvalues ().cwiseMax (0.0);
-  result.vectors = solver.eigenvectors ();
-  return result.values.allFinite () && result.vectors.allFinite ();
+  result.values = solver.eigenvalues().cwiseMax (0.0);
+  result.vectors = solver.eigenvectors();
+  return result.values.allFinite() && result.vectors.allFinite();
 }
 
 double
 pcl_ext::surfaceVariance (const Eigen::Vector3d& ascending_values)
 {
-  const double sum = ascending_values.sum ();
+  const double sum = ascending_values.sum();
   if (!(sum > 0.0) || !std::isfinite (sum))
-    return std::numeric_limits<double>::quiet_NaN ();
+    return std::numeric_limits<double>::quiet_NaN();
   return ascending_values[0] / sum;
 }
 
@@ -37,11 +39,12 @@ pcl_ext::EigenFeatures
 pcl_ext::computeEigenFeatures (const Eigen::Vector3d& ascending_values,
                                const Eigen::Vector3d& normal)
 {
-  const double nan = std::numeric_limits<double>::quiet_NaN ();
-  EigenFeatures f {nan, nan, nan, nan, nan, nan, nan, nan};
-  const double l0 = ascending_values[0], l1 = ascending_values[1], l2 = ascending_values[2];
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EigenFeatures f{nan, nan, nan, nan, nan, nan, nan, nan};
+  const double l0 = ascending_values[0], l1 = ascending_values[1],
+               l2 = ascending_values[2];
   const double sum = l0 + l1 + l2;
-  if (!(sum > 0.0) || !std::isfinite (sum) || !(l2 > 0.0) || !normal.allFinite ())
+  if (!(sum > 0.0) || !std::isfinite (sum) || !(l2 > 0.0) || !normal.allFinite())
     return f;
   const double e0 = l0 / sum, e1 = l1 / sum, e2 = l2 / sum;
   const auto plogp = [] (double e) { return e > 0.0 ? e * std::log (e) : 0.0; };
@@ -52,7 +55,7 @@ pcl_ext::computeEigenFeatures (const Eigen::Vector3d& ascending_values,
   f.omnivariance = std::cbrt (e0 * e1 * e2);
   f.anisotropy = (l2 - l0) / l2;
   f.eigenentropy = -(plogp (e0) + plogp (e1) + plogp (e2));
-  f.verticality = 1.0 - std::abs (normal.z () / normal.norm ());
+  f.verticality = 1.0 - std::abs (normal.z() / normal.norm());
   return f;
 }
 

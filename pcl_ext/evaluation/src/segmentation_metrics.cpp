@@ -9,23 +9,20 @@
 #include <unordered_map>
 #include <utility>
 
-namespace pcl_ext
-{
-namespace
-{
+namespace pcl_ext {
+namespace {
 /** Dense ids for the labels of one labelling, in order of first appearance. */
-class LabelIndex
-{
+class LabelIndex {
 public:
   std::size_t
   idOf (std::uint32_t label)
   {
-    // Segments are usually stored in runs: remembering the last label skips most lookups.
+    // Segments are usually stored in runs: remembering the last label skips most
+    // lookups.
     if (label == last_label_ && have_last_)
       return last_id_;
-    const auto [it, inserted] = ids_.try_emplace (label, labels_.size ());
-    if (inserted)
-    {
+    const auto [it, inserted] = ids_.try_emplace (label, labels_.size());
+    if (inserted) {
       labels_.push_back (label);
       sizes_.push_back (0);
     }
@@ -45,41 +42,46 @@ private:
   bool have_last_ = false;
 };
 
-struct Overlap
-{
-  std::size_t other;  // dense id of the segment in the other labelling
+struct Overlap {
+  std::size_t other; // dense id of the segment in the other labelling
   std::size_t count;
 };
-}  // namespace
+} // namespace
 
 const char*
 segmentOutcomeName (SegmentOutcome outcome)
 {
-  switch (outcome)
-  {
-    case SegmentOutcome::Correct: return "correct";
-    case SegmentOutcome::OverSegmented: return "over";
-    case SegmentOutcome::UnderSegmented: return "under";
-    default: return "missed";
+  switch (outcome) {
+  case SegmentOutcome::Correct:
+    return "correct";
+  case SegmentOutcome::OverSegmented:
+    return "over";
+  case SegmentOutcome::UnderSegmented:
+    return "under";
+  default:
+    return "missed";
   }
 }
 
 bool
 evaluateSegmentation (const std::vector<std::uint32_t>& predicted,
-                      const std::vector<std::uint32_t>& truth, SegmentationMetrics& metrics,
+                      const std::vector<std::uint32_t>& truth,
+                      SegmentationMetrics& metrics,
                       double tolerance)
 {
-  metrics = SegmentationMetrics ();
+  metrics = SegmentationMetrics();
   metrics.tolerance = tolerance;
-  if (predicted.size () != truth.size ())
-  {
-    PCL_ERROR ("[pcl_ext::evaluateSegmentation] %zu predicted labels for %zu ground-truth "
-               "labels: the sizes must be equal.\n", predicted.size (), truth.size ());
+  if (predicted.size() != truth.size()) {
+    PCL_ERROR (
+        "[pcl_ext::evaluateSegmentation] %zu predicted labels for %zu ground-truth "
+        "labels: the sizes must be equal.\n",
+        predicted.size(),
+        truth.size());
     return false;
   }
-  if (!(tolerance > 0.5 && tolerance <= 1.0))
-  {
-    PCL_ERROR ("[pcl_ext::evaluateSegmentation] tolerance %g is outside (0.5, 1].\n", tolerance);
+  if (!(tolerance > 0.5 && tolerance <= 1.0)) {
+    PCL_ERROR ("[pcl_ext::evaluateSegmentation] tolerance %g is outside (0.5, 1].\n",
+               tolerance);
     return false;
   }
 
@@ -88,33 +90,29 @@ evaluateSegmentation (const std::vector<std::uint32_t>& predicted,
   std::unordered_map<std::uint64_t, std::size_t> pair_counts;
   std::uint64_t last_key = ~std::uint64_t (0);
   std::size_t* last_count = nullptr;
-  for (std::size_t i = 0; i < truth.size (); ++i)
-  {
-    if (truth[i] == 0)
-    {
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    if (truth[i] == 0) {
       ++metrics.ignored_points;
       continue;
     }
     ++metrics.evaluated_points;
     const std::size_t t = truth_ids.idOf (truth[i]);
     ++truth_ids.sizes_[t];
-    if (predicted[i] == 0)
-    {
+    if (predicted[i] == 0) {
       ++metrics.unsegmented_points;
       continue;
     }
     const std::size_t p = predicted_ids.idOf (predicted[i]);
     ++predicted_ids.sizes_[p];
     const std::uint64_t key = (static_cast<std::uint64_t> (t) << 32) | p;
-    if (key != last_key)
-    {
-      last_count = &pair_counts[key];  // references into unordered_map survive rehashing
+    if (key != last_key) {
+      last_count = &pair_counts[key]; // references into unordered_map survive rehashing
       last_key = key;
     }
     ++*last_count;
   }
-  const std::size_t num_truth = truth_ids.labels_.size ();
-  const std::size_t num_predicted = predicted_ids.labels_.size ();
+  const std::size_t num_truth = truth_ids.labels_.size();
+  const std::size_t num_predicted = predicted_ids.labels_.size();
   metrics.num_truth_segments = num_truth;
   metrics.num_predicted_segments = num_predicted;
   if (metrics.evaluated_points > 0)
@@ -122,8 +120,7 @@ evaluateSegmentation (const std::vector<std::uint32_t>& predicted,
         static_cast<double> (metrics.unsegmented_points) / metrics.evaluated_points;
 
   std::vector<std::vector<Overlap>> by_truth (num_truth), by_predicted (num_predicted);
-  for (const auto& [key, count] : pair_counts)
-  {
+  for (const auto& [key, count] : pair_counts) {
     const std::size_t t = key >> 32, p = key & 0xffffffffu;
     by_truth[t].push_back ({p, count});
     by_predicted[p].push_back ({t, count});
@@ -133,18 +130,16 @@ evaluateSegmentation (const std::vector<std::uint32_t>& predicted,
 
   // Best IoU per ground-truth segment.
   std::vector<SegmentMatch> matches (num_truth);
-  for (std::size_t t = 0; t < num_truth; ++t)
-  {
+  for (std::size_t t = 0; t < num_truth; ++t) {
     SegmentMatch& m = matches[t];
     m.truth_label = truth_ids.labels_[t];
     m.truth_size = tsize[t];
-    for (const Overlap& o : by_truth[t])
-    {
+    for (const Overlap& o : by_truth[t]) {
       const double iou = static_cast<double> (o.count) /
                          static_cast<double> (tsize[t] + psize[o.other] - o.count);
       const std::uint32_t label = predicted_ids.labels_[o.other];
-      if (iou > m.iou || (iou == m.iou && m.best_predicted != 0 && label < m.best_predicted))
-      {
+      if (iou > m.iou ||
+          (iou == m.iou && m.best_predicted != 0 && label < m.best_predicted)) {
         m.iou = iou;
         m.best_predicted = label;
         m.predicted_size = psize[o.other];
@@ -153,29 +148,28 @@ evaluateSegmentation (const std::vector<std::uint32_t>& predicted,
     }
   }
 
-  // Hoover et al. (1996): correct, then over-, then under-segmentation; each segment once.
-  // Integer comparisons O >= T |s| are done in double: sizes are far below 2^53.
+  // Hoover et al. (1996): correct, then over-, then under-segmentation; each segment
+  // once. Integer comparisons O >= T |s| are done in double: sizes are far below 2^53.
   const auto covers = [tolerance] (std::size_t overlap, std::size_t size) {
     return static_cast<double> (overlap) >= tolerance * static_cast<double> (size);
   };
-  std::vector<bool> truth_used (num_truth, false), predicted_used (num_predicted, false);
+  std::vector<bool> truth_used (num_truth, false),
+      predicted_used (num_predicted, false);
   for (std::size_t t = 0; t < num_truth; ++t)
     for (const Overlap& o : by_truth[t])
-      if (!predicted_used[o.other] && covers (o.count, tsize[t]) && covers (o.count, psize[o.other]))
-      {
+      if (!predicted_used[o.other] && covers (o.count, tsize[t]) &&
+          covers (o.count, psize[o.other])) {
         matches[t].outcome = SegmentOutcome::Correct;
         truth_used[t] = predicted_used[o.other] = true;
         ++metrics.correct;
         break;
       }
-  for (std::size_t t = 0; t < num_truth; ++t)
-  {
+  for (std::size_t t = 0; t < num_truth; ++t) {
     if (truth_used[t])
       continue;
     std::size_t parts = 0, covered = 0;
     for (const Overlap& o : by_truth[t])
-      if (!predicted_used[o.other] && covers (o.count, psize[o.other]))
-      {
+      if (!predicted_used[o.other] && covers (o.count, psize[o.other])) {
         ++parts;
         covered += o.count;
       }
@@ -185,20 +179,17 @@ evaluateSegmentation (const std::vector<std::uint32_t>& predicted,
     truth_used[t] = true;
     ++metrics.over_segmented;
     for (const Overlap& o : by_truth[t])
-      if (!predicted_used[o.other] && covers (o.count, psize[o.other]))
-      {
+      if (!predicted_used[o.other] && covers (o.count, psize[o.other])) {
         predicted_used[o.other] = true;
         ++metrics.over_segmenting;
       }
   }
-  for (std::size_t p = 0; p < num_predicted; ++p)
-  {
+  for (std::size_t p = 0; p < num_predicted; ++p) {
     if (predicted_used[p])
       continue;
     std::size_t parts = 0, covered = 0;
     for (const Overlap& o : by_predicted[p])
-      if (!truth_used[o.other] && covers (o.count, tsize[o.other]))
-      {
+      if (!truth_used[o.other] && covers (o.count, tsize[o.other])) {
         ++parts;
         covered += o.count;
       }
@@ -207,45 +198,47 @@ evaluateSegmentation (const std::vector<std::uint32_t>& predicted,
     predicted_used[p] = true;
     ++metrics.under_segmenting;
     for (const Overlap& o : by_predicted[p])
-      if (!truth_used[o.other] && covers (o.count, tsize[o.other]))
-      {
+      if (!truth_used[o.other] && covers (o.count, tsize[o.other])) {
         truth_used[o.other] = true;
         matches[o.other].outcome = SegmentOutcome::UnderSegmented;
         ++metrics.under_segmented;
       }
   }
-  metrics.missed = static_cast<std::size_t> (std::count (truth_used.begin (), truth_used.end (), false));
+  metrics.missed = static_cast<std::size_t> (
+      std::count (truth_used.begin(), truth_used.end(), false));
   metrics.noise = static_cast<std::size_t> (
-      std::count (predicted_used.begin (), predicted_used.end (), false));
+      std::count (predicted_used.begin(), predicted_used.end(), false));
 
   double iou_sum = 0.0, weighted_sum = 0.0;
-  for (const SegmentMatch& m : matches)
-  {
+  for (const SegmentMatch& m : matches) {
     iou_sum += m.iou;
     weighted_sum += m.iou * static_cast<double> (m.truth_size);
   }
-  if (num_truth > 0)
-  {
+  if (num_truth > 0) {
     metrics.mean_best_iou = iou_sum / static_cast<double> (num_truth);
-    metrics.weighted_mean_best_iou = weighted_sum / static_cast<double> (metrics.evaluated_points);
+    metrics.weighted_mean_best_iou =
+        weighted_sum / static_cast<double> (metrics.evaluated_points);
   }
-  std::sort (matches.begin (), matches.end (),
-             [] (const SegmentMatch& a, const SegmentMatch& b) { return a.truth_label < b.truth_label; });
+  std::sort (matches.begin(),
+             matches.end(),
+             [] (const SegmentMatch& a, const SegmentMatch& b) {
+               return a.truth_label < b.truth_label;
+             });
   metrics.segments = std::move (matches);
   return true;
 }
 
 std::size_t
-labelsFromIndices (const std::vector<pcl::PointIndices>& clusters, std::size_t num_points,
+labelsFromIndices (const std::vector<pcl::PointIndices>& clusters,
+                   std::size_t num_points,
                    std::vector<std::uint32_t>& labels)
 {
   labels.assign (num_points, 0);
   std::size_t rejected = 0;
-  for (std::size_t c = 0; c < clusters.size (); ++c)
-    for (const auto index : clusters[c].indices)
-    {
-      if (index < 0 || static_cast<std::size_t> (index) >= num_points || labels[index] != 0)
-      {
+  for (std::size_t c = 0; c < clusters.size(); ++c)
+    for (const auto index : clusters[c].indices) {
+      if (index < 0 || static_cast<std::size_t> (index) >= num_points ||
+          labels[index] != 0) {
         ++rejected;
         continue;
       }
@@ -256,25 +249,32 @@ labelsFromIndices (const std::vector<pcl::PointIndices>& clusters, std::size_t n
 
 bool
 evaluateSegmentation (const std::vector<pcl::PointIndices>& predicted,
-                      const std::vector<std::uint32_t>& truth, SegmentationMetrics& metrics,
+                      const std::vector<std::uint32_t>& truth,
+                      SegmentationMetrics& metrics,
                       double tolerance)
 {
   std::vector<std::uint32_t> labels;
-  if (const std::size_t rejected = labelsFromIndices (predicted, truth.size (), labels))
-    PCL_WARN ("[pcl_ext::evaluateSegmentation] %zu predicted indices are out of range or in "
-              "several clusters; they were skipped.\n", rejected);
+  if (const std::size_t rejected = labelsFromIndices (predicted, truth.size(), labels))
+    PCL_WARN (
+        "[pcl_ext::evaluateSegmentation] %zu predicted indices are out of range or in "
+        "several clusters; they were skipped.\n",
+        rejected);
   return evaluateSegmentation (labels, truth, metrics, tolerance);
 }
 
 bool
 evaluateSegmentation (const std::vector<pcl::PointIndices>& predicted,
-                      const std::vector<pcl::PointIndices>& truth, std::size_t num_points,
-                      SegmentationMetrics& metrics, double tolerance)
+                      const std::vector<pcl::PointIndices>& truth,
+                      std::size_t num_points,
+                      SegmentationMetrics& metrics,
+                      double tolerance)
 {
   std::vector<std::uint32_t> truth_labels;
   if (const std::size_t rejected = labelsFromIndices (truth, num_points, truth_labels))
-    PCL_WARN ("[pcl_ext::evaluateSegmentation] %zu ground-truth indices are out of range or in "
-              "several clusters; they were skipped.\n", rejected);
+    PCL_WARN ("[pcl_ext::evaluateSegmentation] %zu ground-truth indices are out of "
+              "range or in "
+              "several clusters; they were skipped.\n",
+              rejected);
   return evaluateSegmentation (predicted, truth_labels, metrics, tolerance);
 }
-}  // namespace pcl_ext
+} // namespace pcl_ext

@@ -10,26 +10,31 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace pcl_ext
-{
-namespace io
-{
-namespace
-{
+namespace pcl_ext {
+namespace io {
+namespace {
 const char*
 columnName (AsciiColumn c)
 {
-  switch (c)
-  {
-    case AsciiColumn::X: return "x";
-    case AsciiColumn::Y: return "y";
-    case AsciiColumn::Z: return "z";
-    case AsciiColumn::Intensity: return "intensity";
-    case AsciiColumn::Red: return "red";
-    case AsciiColumn::Green: return "green";
-    case AsciiColumn::Blue: return "blue";
-    case AsciiColumn::Label: return "label";
-    default: return "skipped";
+  switch (c) {
+  case AsciiColumn::X:
+    return "x";
+  case AsciiColumn::Y:
+    return "y";
+  case AsciiColumn::Z:
+    return "z";
+  case AsciiColumn::Intensity:
+    return "intensity";
+  case AsciiColumn::Red:
+    return "red";
+  case AsciiColumn::Green:
+    return "green";
+  case AsciiColumn::Blue:
+    return "blue";
+  case AsciiColumn::Label:
+    return "label";
+  default:
+    return "skipped";
   }
 }
 
@@ -38,78 +43,94 @@ describeColumns (std::size_t count)
 {
   return std::to_string (count) + (count == 1 ? " value" : " values");
 }
-}  // namespace
+} // namespace
 
 std::vector<AsciiColumn>
 parseColumnSpec (const std::string& spec)
 {
   std::string normalised = spec;
-  std::replace (normalised.begin (), normalised.end (), ',', ' ');
+  std::replace (normalised.begin(), normalised.end(), ',', ' ');
   std::vector<std::string_view> names;
   detail::splitBlanks (normalised, names);
   std::vector<AsciiColumn> columns;
-  for (const auto& view : names)
-  {
+  for (const auto& view : names) {
     std::string name (view);
-    std::transform (name.begin (), name.end (), name.begin (),
-                    [] (unsigned char c) { return static_cast<char> (std::tolower (c)); });
+    std::transform (name.begin(), name.end(), name.begin(), [] (unsigned char c) {
+      return static_cast<char> (std::tolower (c));
+    });
     AsciiColumn c;
-    if (name == "x") c = AsciiColumn::X;
-    else if (name == "y") c = AsciiColumn::Y;
-    else if (name == "z") c = AsciiColumn::Z;
-    else if (name == "i" || name == "intensity") c = AsciiColumn::Intensity;
-    else if (name == "r" || name == "red") c = AsciiColumn::Red;
-    else if (name == "g" || name == "green") c = AsciiColumn::Green;
-    else if (name == "b" || name == "blue") c = AsciiColumn::Blue;
-    else if (name == "label" || name == "l" || name == "class") c = AsciiColumn::Label;
-    else if (name == "skip" || name == "_" || name == "-") c = AsciiColumn::Skip;
+    if (name == "x")
+      c = AsciiColumn::X;
+    else if (name == "y")
+      c = AsciiColumn::Y;
+    else if (name == "z")
+      c = AsciiColumn::Z;
+    else if (name == "i" || name == "intensity")
+      c = AsciiColumn::Intensity;
+    else if (name == "r" || name == "red")
+      c = AsciiColumn::Red;
+    else if (name == "g" || name == "green")
+      c = AsciiColumn::Green;
+    else if (name == "b" || name == "blue")
+      c = AsciiColumn::Blue;
+    else if (name == "label" || name == "l" || name == "class")
+      c = AsciiColumn::Label;
+    else if (name == "skip" || name == "_" || name == "-")
+      c = AsciiColumn::Skip;
     else
-      throw std::invalid_argument ("unknown column '" + name + "' in column spec '" + spec +
-                                   "' (known: x y z i r g b label skip)");
-    if (c != AsciiColumn::Skip && std::find (columns.begin (), columns.end (), c) != columns.end ())
-      throw std::invalid_argument ("column '" + name + "' given twice in column spec '" + spec + "'");
+      throw std::invalid_argument ("unknown column '" + name + "' in column spec '" +
+                                   spec + "' (known: x y z i r g b label skip)");
+    if (c != AsciiColumn::Skip &&
+        std::find (columns.begin(), columns.end(), c) != columns.end())
+      throw std::invalid_argument ("column '" + name +
+                                   "' given twice in column spec '" + spec + "'");
     columns.push_back (c);
   }
   for (const AsciiColumn required : {AsciiColumn::X, AsciiColumn::Y, AsciiColumn::Z})
-    if (std::find (columns.begin (), columns.end (), required) == columns.end ())
-      throw std::invalid_argument ("column spec '" + spec + "' has no '" + columnName (required) +
-                                   "' column");
+    if (std::find (columns.begin(), columns.end(), required) == columns.end())
+      throw std::invalid_argument ("column spec '" + spec + "' has no '" +
+                                   columnName (required) + "' column");
   const auto has = [&columns] (AsciiColumn c) {
-    return std::find (columns.begin (), columns.end (), c) != columns.end ();
+    return std::find (columns.begin(), columns.end(), c) != columns.end();
   };
   if ((has (AsciiColumn::Red) || has (AsciiColumn::Green) || has (AsciiColumn::Blue)) &&
       !(has (AsciiColumn::Red) && has (AsciiColumn::Green) && has (AsciiColumn::Blue)))
-    throw std::invalid_argument ("column spec '" + spec + "' needs all of r, g, b or none");
+    throw std::invalid_argument ("column spec '" + spec +
+                                 "' needs all of r, g, b or none");
   return columns;
 }
 
 std::vector<AsciiColumn>
 defaultColumns (std::size_t count)
 {
-  switch (count)
-  {
-    case 3: return parseColumnSpec ("x,y,z");
-    case 4: return parseColumnSpec ("x,y,z,i");
-    case 6: return parseColumnSpec ("x,y,z,r,g,b");
-    case 7: return parseColumnSpec ("x,y,z,i,r,g,b");
-    case 8: return parseColumnSpec ("x,y,z,i,r,g,b,label");
-    default: return {};
+  switch (count) {
+  case 3:
+    return parseColumnSpec ("x,y,z");
+  case 4:
+    return parseColumnSpec ("x,y,z,i");
+  case 6:
+    return parseColumnSpec ("x,y,z,r,g,b");
+  case 7:
+    return parseColumnSpec ("x,y,z,i,r,g,b");
+  case 8:
+    return parseColumnSpec ("x,y,z,i,r,g,b,label");
+  default:
+    return {};
   }
 }
 
 void
-loadAsciiPoints (const std::string& path, PointTable& table, const std::string& columns_spec)
+loadAsciiPoints (const std::string& path,
+                 PointTable& table,
+                 const std::string& columns_spec)
 {
   std::vector<AsciiColumn> columns;
-  if (!columns_spec.empty ())
-  {
-    try
-    {
+  if (!columns_spec.empty()) {
+    try {
       columns = parseColumnSpec (columns_spec);
     }
-    catch (const std::invalid_argument& e)
-    {
-      throw ReadError (path, 0, e.what ());
+    catch (const std::invalid_argument& e) {
+      throw ReadError (path, 0, e.what());
     }
   }
   detail::TextLines lines (path);
@@ -118,45 +139,40 @@ loadAsciiPoints (const std::string& path, PointTable& table, const std::string& 
   std::string_view line;
   bool first = true;
   bool has_intensity = false, has_rgb = false, has_label = false;
-  while (lines.nextData (line))
-  {
+  while (lines.nextData (line)) {
     detail::splitValues (line, values);
-    if (first)
-    {
-      if (columns.empty ())
-      {
-        columns = defaultColumns (values.size ());
-        if (columns.empty ())
-          lines.fail ("cannot tell what " + describeColumns (values.size ()) +
+    if (first) {
+      if (columns.empty()) {
+        columns = defaultColumns (values.size());
+        if (columns.empty())
+          lines.fail ("cannot tell what " + describeColumns (values.size()) +
                       " a line mean: give a column spec such as x,y,z,i,label");
       }
       const auto has = [&columns] (AsciiColumn c) {
-        return std::find (columns.begin (), columns.end (), c) != columns.end ();
+        return std::find (columns.begin(), columns.end(), c) != columns.end();
       };
       has_intensity = has (AsciiColumn::Intensity);
       has_rgb = has (AsciiColumn::Red);
       has_label = has (AsciiColumn::Label);
       first = false;
     }
-    if (values.size () != columns.size ())
-      lines.fail ("expected " + describeColumns (columns.size ()) + ", found " +
-                  std::to_string (values.size ()) +
-                  (values.size () < columns.size () ? " (truncated line?)" : ""));
+    if (values.size() != columns.size())
+      lines.fail ("expected " + describeColumns (columns.size()) + ", found " +
+                  std::to_string (values.size()) +
+                  (values.size() < columns.size() ? " (truncated line?)" : ""));
     Eigen::Vector3d p;
     float intensity = 0.f;
     std::array<std::uint8_t, 3> rgb{0, 0, 0};
     std::uint32_t label = 0;
-    for (std::size_t c = 0; c < columns.size (); ++c)
-    {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
       const AsciiColumn column = columns[c];
       if (column == AsciiColumn::Skip)
         continue;
       const auto bad = [&] (const std::string& what) {
-        lines.fail ("column " + std::to_string (c + 1) + " (" + columnName (column) + "): " +
-                    detail::quote (values[c]) + " " + what);
+        lines.fail ("column " + std::to_string (c + 1) + " (" + columnName (column) +
+                    "): " + detail::quote (values[c]) + " " + what);
       };
-      if (column == AsciiColumn::Label)
-      {
+      if (column == AsciiColumn::Label) {
         if (!detail::parseLabel (values[c], label))
           bad ("is not a non-negative integer label");
         continue;
@@ -164,24 +180,23 @@ loadAsciiPoints (const std::string& path, PointTable& table, const std::string& 
       double v = 0.0;
       if (!detail::parseDouble (values[c], v))
         bad ("is not a number");
-      switch (column)
-      {
-        case AsciiColumn::X:
-        case AsciiColumn::Y:
-        case AsciiColumn::Z:
-          if (!std::isfinite (v))
-            bad ("is not a finite coordinate");
-          p[static_cast<int> (column) - static_cast<int> (AsciiColumn::X)] = v;
-          break;
-        case AsciiColumn::Intensity:
-          intensity = static_cast<float> (v);
-          break;
-        default:  // colour
-          if (!(v >= 0.0 && v <= 255.0))
-            bad ("is not a colour value in [0, 255]");
-          rgb[static_cast<int> (column) - static_cast<int> (AsciiColumn::Red)] =
-              static_cast<std::uint8_t> (std::lround (v));
-          break;
+      switch (column) {
+      case AsciiColumn::X:
+      case AsciiColumn::Y:
+      case AsciiColumn::Z:
+        if (!std::isfinite (v))
+          bad ("is not a finite coordinate");
+        p[static_cast<int> (column) - static_cast<int> (AsciiColumn::X)] = v;
+        break;
+      case AsciiColumn::Intensity:
+        intensity = static_cast<float> (v);
+        break;
+      default: // colour
+        if (!(v >= 0.0 && v <= 255.0))
+          bad ("is not a colour value in [0, 255]");
+        rgb[static_cast<int> (column) - static_cast<int> (AsciiColumn::Red)] =
+            static_cast<std::uint8_t> (std::lround (v));
+        break;
       }
     }
     result.xyz.push_back (p);
@@ -192,9 +207,12 @@ loadAsciiPoints (const std::string& path, PointTable& table, const std::string& 
     if (has_label)
       result.label.push_back (label);
   }
-  if (result.empty ())
-    throw ReadError (path, 0, lines.lineNumber () == 0 ? "empty file, no points"
-                                                      : "no points (only comments or blank lines)");
+  if (result.empty())
+    throw ReadError (path,
+                     0,
+                     lines.lineNumber() == 0
+                         ? "empty file, no points"
+                         : "no points (only comments or blank lines)");
   table = std::move (result);
 }
 
@@ -203,5 +221,5 @@ loadOaklandFile (const std::string& path, PointTable& table)
 {
   loadAsciiPoints (path, table, "x,y,z,label,skip");
 }
-}  // namespace io
-}  // namespace pcl_ext
+} // namespace io
+} // namespace pcl_ext

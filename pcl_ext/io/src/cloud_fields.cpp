@@ -10,13 +10,11 @@
 #include <cstring>
 #include <limits>
 
-namespace pcl_ext
-{
-namespace io
-{
-namespace
-{
-template <typename T> T
+namespace pcl_ext {
+namespace io {
+namespace {
+template <typename T>
+T
 load (const std::uint8_t* p)
 {
   T v;
@@ -28,38 +26,51 @@ load (const std::uint8_t* p)
 double
 valueAt (const std::uint8_t* p, std::uint8_t type)
 {
-  switch (type)
-  {
-    case pcl::PCLPointField::INT8: return load<std::int8_t> (p);
-    case pcl::PCLPointField::UINT8: return load<std::uint8_t> (p);
-    case pcl::PCLPointField::INT16: return load<std::int16_t> (p);
-    case pcl::PCLPointField::UINT16: return load<std::uint16_t> (p);
-    case pcl::PCLPointField::INT32: return load<std::int32_t> (p);
-    case pcl::PCLPointField::UINT32: return load<std::uint32_t> (p);
-    case pcl::PCLPointField::FLOAT32: return load<float> (p);
-    case pcl::PCLPointField::FLOAT64: return load<double> (p);
-    default: return std::numeric_limits<double>::quiet_NaN ();
+  switch (type) {
+  case pcl::PCLPointField::INT8:
+    return load<std::int8_t> (p);
+  case pcl::PCLPointField::UINT8:
+    return load<std::uint8_t> (p);
+  case pcl::PCLPointField::INT16:
+    return load<std::int16_t> (p);
+  case pcl::PCLPointField::UINT16:
+    return load<std::uint16_t> (p);
+  case pcl::PCLPointField::INT32:
+    return load<std::int32_t> (p);
+  case pcl::PCLPointField::UINT32:
+    return load<std::uint32_t> (p);
+  case pcl::PCLPointField::FLOAT32:
+    return load<float> (p);
+  case pcl::PCLPointField::FLOAT64:
+    return load<double> (p);
+  default:
+    return std::numeric_limits<double>::quiet_NaN();
   }
 }
 
 std::size_t
 typeSize (std::uint8_t type)
 {
-  switch (type)
-  {
-    case pcl::PCLPointField::INT8:
-    case pcl::PCLPointField::UINT8: return 1;
-    case pcl::PCLPointField::INT16:
-    case pcl::PCLPointField::UINT16: return 2;
-    case pcl::PCLPointField::FLOAT64: return 8;
-    default: return 4;
+  switch (type) {
+  case pcl::PCLPointField::INT8:
+  case pcl::PCLPointField::UINT8:
+    return 1;
+  case pcl::PCLPointField::INT16:
+  case pcl::PCLPointField::UINT16:
+    return 2;
+  case pcl::PCLPointField::FLOAT64:
+    return 8;
+  default:
+    return 4;
   }
 }
-}  // namespace
+} // namespace
 
 bool
-getLabelField (const pcl::PCLPointCloud2& cloud, const std::string& name,
-               std::vector<std::uint32_t>& labels, std::string* error)
+getLabelField (const pcl::PCLPointCloud2& cloud,
+               const std::string& name,
+               std::vector<std::uint32_t>& labels,
+               std::string* error)
 {
   const auto fail = [error] (const std::string& message) {
     if (error)
@@ -67,29 +78,31 @@ getLabelField (const pcl::PCLPointCloud2& cloud, const std::string& name,
     return false;
   };
   const int f = pcl::getFieldIndex (cloud, name);
-  if (f < 0)
-  {
+  if (f < 0) {
     std::string names;
     for (const auto& field : cloud.fields)
-      names += (names.empty () ? "" : " ") + field.name;
+      names += (names.empty() ? "" : " ") + field.name;
     return fail ("no field '" + name + "' (fields: " + names + ")");
   }
   const pcl::PCLPointField& field = cloud.fields[f];
-  if (field.datatype < pcl::PCLPointField::INT8 || field.datatype > pcl::PCLPointField::FLOAT64)
+  if (field.datatype < pcl::PCLPointField::INT8 ||
+      field.datatype > pcl::PCLPointField::FLOAT64)
     return fail ("field '" + name + "' has an unsupported type");
   const std::size_t n = static_cast<std::size_t> (cloud.width) * cloud.height;
   if (n > 0 && (cloud.point_step < field.offset + typeSize (field.datatype) ||
-                cloud.data.size () < n * cloud.point_step))
-    return fail ("the cloud's data is shorter than its " + std::to_string (n) + " points");
+                cloud.data.size() < n * cloud.point_step))
+    return fail ("the cloud's data is shorter than its " + std::to_string (n) +
+                 " points");
   std::vector<std::uint32_t> result (n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const double v = valueAt (cloud.data.data () + i * cloud.point_step + field.offset, field.datatype);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double v = valueAt (cloud.data.data() + i * cloud.point_step + field.offset,
+                              field.datatype);
     if (std::isnan (v) || v < 0.0)
       result[i] = 0;
-    else if (v != std::floor (v) || v > std::numeric_limits<std::uint32_t>::max ())
+    else if (v != std::floor (v) || v > std::numeric_limits<std::uint32_t>::max())
       return fail ("field '" + name + "' of point " + std::to_string (i) + " holds " +
-                   std::to_string (v) + ", which is not a label (a whole number below 2^32)");
+                   std::to_string (v) +
+                   ", which is not a label (a whole number below 2^32)");
     else
       result[i] = static_cast<std::uint32_t> (v);
   }
@@ -98,31 +111,34 @@ getLabelField (const pcl::PCLPointCloud2& cloud, const std::string& name,
 }
 
 bool
-setLabelField (pcl::PCLPointCloud2& cloud, const std::string& name,
+setLabelField (pcl::PCLPointCloud2& cloud,
+               const std::string& name,
                const std::vector<std::uint32_t>& labels)
 {
   const std::size_t n = static_cast<std::size_t> (cloud.width) * cloud.height;
-  if (labels.size () != n)
+  if (labels.size() != n)
     return false;
   const int f = pcl::getFieldIndex (cloud, name);
-  if (f >= 0 && cloud.fields[f].datatype == pcl::PCLPointField::UINT32 && cloud.fields[f].count == 1)
-  {
+  if (f >= 0 && cloud.fields[f].datatype == pcl::PCLPointField::UINT32 &&
+      cloud.fields[f].count == 1) {
     for (std::size_t i = 0; i < n; ++i)
-      std::memcpy (cloud.data.data () + i * cloud.point_step + cloud.fields[f].offset, &labels[i], 4);
+      std::memcpy (cloud.data.data() + i * cloud.point_step + cloud.fields[f].offset,
+                   &labels[i],
+                   4);
     return true;
   }
   // Repack: every other field keeps its bytes, the label goes last as one uint32.
   std::vector<pcl::PCLPointField> fields;
   std::vector<std::uint32_t> old_offsets;
   std::uint32_t step = 0;
-  for (std::size_t i = 0; i < cloud.fields.size (); ++i)
-  {
+  for (std::size_t i = 0; i < cloud.fields.size(); ++i) {
     if (static_cast<int> (i) == f)
       continue;
     pcl::PCLPointField field = cloud.fields[i];
     old_offsets.push_back (field.offset);
     field.offset = step;
-    step += static_cast<std::uint32_t> (typeSize (field.datatype) * std::max<std::uint32_t> (field.count, 1));
+    step += static_cast<std::uint32_t> (typeSize (field.datatype) *
+                                        std::max<std::uint32_t> (field.count, 1));
     fields.push_back (field);
   }
   pcl::PCLPointField label;
@@ -132,13 +148,14 @@ setLabelField (pcl::PCLPointCloud2& cloud, const std::string& name,
   label.count = 1;
   step += 4;
   std::vector<std::uint8_t> data (n * step);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const std::uint8_t* src = cloud.data.data () + i * cloud.point_step;
-    std::uint8_t* dst = data.data () + i * step;
-    for (std::size_t k = 0; k < fields.size (); ++k)
-      std::memcpy (dst + fields[k].offset, src + old_offsets[k],
-                   typeSize (fields[k].datatype) * std::max<std::uint32_t> (fields[k].count, 1));
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* src = cloud.data.data() + i * cloud.point_step;
+    std::uint8_t* dst = data.data() + i * step;
+    for (std::size_t k = 0; k < fields.size(); ++k)
+      std::memcpy (dst + fields[k].offset,
+                   src + old_offsets[k],
+                   typeSize (fields[k].datatype) *
+                       std::max<std::uint32_t> (fields[k].count, 1));
     std::memcpy (dst + label.offset, &labels[i], 4);
   }
   fields.push_back (label);
@@ -148,5 +165,5 @@ setLabelField (pcl::PCLPointCloud2& cloud, const std::string& name,
   cloud.data = std::move (data);
   return true;
 }
-}  // namespace io
-}  // namespace pcl_ext
+} // namespace io
+} // namespace pcl_ext

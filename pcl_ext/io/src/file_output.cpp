@@ -13,12 +13,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace pcl_ext
-{
-namespace io
-{
-namespace
-{
+namespace pcl_ext {
+namespace io {
+namespace {
 std::string
 folderOf (const std::string& path)
 {
@@ -31,24 +28,27 @@ folderOf (const std::string& path)
 std::string
 temporaryPathFor (const std::string& path)
 {
-  // Same folder (rename must not cross file systems), hidden, unique per process and call.
-  static std::mt19937_64 rng (static_cast<std::uint64_t> (::getpid ()) * 0x9E3779B97F4A7C15ull);
+  // Same folder (rename must not cross file systems), hidden, unique per process and
+  // call.
+  static std::mt19937_64 rng (static_cast<std::uint64_t> (::getpid()) *
+                              0x9E3779B97F4A7C15ull);
   const auto slash = path.find_last_of ('/');
   const std::string name = slash == std::string::npos ? path : path.substr (slash + 1);
   const std::string ext = fileExtension (path);
   char tag[17];
-  std::snprintf (tag, sizeof (tag), "%016llx", static_cast<unsigned long long> (rng ()));
+  std::snprintf (tag, sizeof (tag), "%016llx", static_cast<unsigned long long> (rng()));
   // Keep the extension last: writers such as PCL's choose the format by it.
-  return folderOf (path) + "/." + name + "." + tag + ".tmp" + (ext.empty () ? "" : "." + ext);
+  return folderOf (path) + "/." + name + "." + tag + ".tmp" +
+         (ext.empty() ? "" : "." + ext);
 }
 
 bool
 fileExists (const std::string& path)
 {
   struct stat st;
-  return ::stat (path.c_str (), &st) == 0 && S_ISREG (st.st_mode);
+  return ::stat (path.c_str(), &st) == 0 && S_ISREG (st.st_mode);
 }
-}  // namespace
+} // namespace
 
 std::string
 fileExtension (const std::string& path)
@@ -56,45 +56,48 @@ fileExtension (const std::string& path)
   const auto slash = path.find_last_of ('/');
   const auto dot = path.find_last_of ('.');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash) ||
-      dot + 1 == path.size ())
+      dot + 1 == path.size())
     return "";
   std::string ext = path.substr (dot + 1);
-  std::transform (ext.begin (), ext.end (), ext.begin (),
-                  [] (unsigned char c) { return static_cast<char> (std::tolower (c)); });
+  std::transform (ext.begin(), ext.end(), ext.begin(), [] (unsigned char c) {
+    return static_cast<char> (std::tolower (c));
+  });
   return ext;
 }
 
 bool
 checkWritable (const std::string& path)
 {
-  if (path.empty ())
-  {
+  if (path.empty()) {
     PCL_ERROR ("[pcl_ext::io::checkWritable] empty output path.\n");
     return false;
   }
   struct stat st;
-  if (::stat (path.c_str (), &st) == 0 && S_ISDIR (st.st_mode))
-  {
-    PCL_ERROR ("[pcl_ext::io::checkWritable] cannot write %s: it is a folder.\n", path.c_str ());
+  if (::stat (path.c_str(), &st) == 0 && S_ISDIR (st.st_mode)) {
+    PCL_ERROR ("[pcl_ext::io::checkWritable] cannot write %s: it is a folder.\n",
+               path.c_str());
     return false;
   }
   const std::string folder = folderOf (path);
-  if (::access (folder.c_str (), W_OK | X_OK) != 0)
-  {
-    PCL_ERROR ("[pcl_ext::io::checkWritable] cannot write %s: folder %s does not exist or is "
-               "not writable.\n", path.c_str (), folder.c_str ());
+  if (::access (folder.c_str(), W_OK | X_OK) != 0) {
+    PCL_ERROR (
+        "[pcl_ext::io::checkWritable] cannot write %s: folder %s does not exist or is "
+        "not writable.\n",
+        path.c_str(),
+        folder.c_str());
     return false;
   }
   return true;
 }
 
 bool
-checkOutputsWritable (const std::string& output, std::initializer_list<std::string> optional)
+checkOutputsWritable (const std::string& output,
+                      std::initializer_list<std::string> optional)
 {
   if (!checkWritable (output))
     return false;
   for (const auto& path : optional)
-    if (!path.empty () && !checkWritable (path))
+    if (!path.empty() && !checkWritable (path))
       return false;
   return true;
 }
@@ -107,20 +110,21 @@ writeFileAtomically (const std::string& path,
     return false;
   const std::string temporary = temporaryPathFor (path);
   bool ok = false;
-  try
-  {
+  try {
     ok = writer (temporary) && fileExists (temporary);
   }
-  catch (const std::exception& e)
-  {
-    PCL_ERROR ("[pcl_ext::io::writeFileAtomically] writing %s failed: %s\n", path.c_str (), e.what ());
+  catch (const std::exception& e) {
+    PCL_ERROR ("[pcl_ext::io::writeFileAtomically] writing %s failed: %s\n",
+               path.c_str(),
+               e.what());
     ok = false;
   }
-  if (ok && std::rename (temporary.c_str (), path.c_str ()) == 0)
+  if (ok && std::rename (temporary.c_str(), path.c_str()) == 0)
     return true;
-  std::remove (temporary.c_str ());
-  PCL_ERROR ("[pcl_ext::io::writeFileAtomically] could not write %s; nothing was written.\n",
-             path.c_str ());
+  std::remove (temporary.c_str());
+  PCL_ERROR (
+      "[pcl_ext::io::writeFileAtomically] could not write %s; nothing was written.\n",
+      path.c_str());
   return false;
 }
 
@@ -130,9 +134,9 @@ writeTextFile (const std::string& path, const std::string& text)
   return writeFileAtomically (path, [&text] (const std::string& temporary) {
     std::ofstream out (temporary, std::ios::binary);
     out << text;
-    out.close ();
+    out.close();
     return static_cast<bool> (out);
   });
 }
-}  // namespace io
-}  // namespace pcl_ext
+} // namespace io
+} // namespace pcl_ext

@@ -20,14 +20,12 @@
 
 namespace bg = boost::geometry;
 
-namespace pcl_ext
-{
-namespace io
-{
-namespace
-{
+namespace pcl_ext {
+namespace io {
+namespace {
 using BoostPoint = bg::model::d2::point_xy<double>;
-// Clockwise, closed: Boost.Geometry's defaults, which its algorithms are best tested with.
+// Clockwise, closed: Boost.Geometry's defaults, which its algorithms are best tested
+// with.
 using BoostPolygon = bg::model::polygon<BoostPoint>;
 using BoostMultiPolygon = bg::model::multi_polygon<BoostPolygon>;
 using BoostPoint3 = bg::model::point<double, 3, bg::cs::cartesian>;
@@ -35,11 +33,10 @@ using BoostPolygon3 = bg::model::polygon<BoostPoint3>;
 using BoostMultiPolygon3 = bg::model::multi_polygon<BoostPolygon3>;
 
 /** Reports errors of one geometry at one place. */
-struct Where
-{
+struct Where {
   const std::string& source;
   std::size_t line;
-  std::string context;  // e.g. "feature 3: ", prefixed to messages
+  std::string context; // e.g. "feature 3: ", prefixed to messages
 
   [[noreturn]] void
   fail (const std::string& message) const
@@ -53,88 +50,91 @@ pointText (const Eigen::Vector2d& p)
 {
   std::ostringstream s;
   s.precision (12);
-  s << "(" << p.x () << ", " << p.y () << ")";
-  return s.str ();
+  s << "(" << p.x() << ", " << p.y() << ")";
+  return s.str();
 }
 
 /** Checks a closed ring as read and returns it open, without consecutive duplicates. */
 Ring2d
-openRing (const std::vector<Eigen::Vector2d>& closed, const std::string& name, const Where& where)
+openRing (const std::vector<Eigen::Vector2d>& closed,
+          const std::string& name,
+          const Where& where)
 {
-  for (const auto& p : closed)
-  {
-    if (!p.allFinite ())
+  for (const auto& p : closed) {
+    if (!p.allFinite())
       where.fail (name + " has a coordinate that is not finite");
-    if (p.cwiseAbs ().maxCoeff () > kMaxFootprintCoordinate)
+    if (p.cwiseAbs().maxCoeff() > kMaxFootprintCoordinate)
       where.fail (name + " has a coordinate beyond 1e9 m: " + pointText (p));
   }
-  if (closed.size () < 2 || closed.front () != closed.back ())
-  {
-    if (closed.empty ())
+  if (closed.size() < 2 || closed.front() != closed.back()) {
+    if (closed.empty())
       where.fail (name + " is empty");
-    where.fail (name + " is not closed: its first vertex " + pointText (closed.front ()) +
-                " differs from its last " + pointText (closed.back ()));
+    where.fail (name + " is not closed: its first vertex " +
+                pointText (closed.front()) + " differs from its last " +
+                pointText (closed.back()));
   }
   Ring2d ring;
-  for (std::size_t i = 0; i + 1 < closed.size (); ++i)
-    if (ring.empty () || closed[i] != ring.back ())
+  for (std::size_t i = 0; i + 1 < closed.size(); ++i)
+    if (ring.empty() || closed[i] != ring.back())
       ring.push_back (closed[i]);
-  if (ring.size () > 1 && ring.back () == ring.front ())
-    ring.pop_back ();
-  if (ring.size () < 3)
+  if (ring.size() > 1 && ring.back() == ring.front())
+    ring.pop_back();
+  if (ring.size() < 3)
     where.fail (name + " has fewer than 3 distinct vertices");
   return ring;
 }
 
 /** Builds a checked, normalised polygon from closed rings as read. */
 FootprintPolygon
-makePolygon (const std::vector<std::vector<Eigen::Vector2d>>& rings, const std::string& name,
+makePolygon (const std::vector<std::vector<Eigen::Vector2d>>& rings,
+             const std::string& name,
              const Where& where)
 {
-  if (rings.empty ())
+  if (rings.empty())
     where.fail (name + " has no ring (empty polygon)");
   FootprintPolygon polygon;
   polygon.outer = openRing (rings[0], name + " outer ring", where);
-  for (std::size_t h = 1; h < rings.size (); ++h)
-    polygon.holes.push_back (openRing (rings[h], name + " hole " + std::to_string (h), where));
+  for (std::size_t h = 1; h < rings.size(); ++h)
+    polygon.holes.push_back (
+        openRing (rings[h], name + " hole " + std::to_string (h), where));
 
   // Validity through Boost.Geometry: self-intersections, holes outside, spikes.
   BoostPolygon b;
   const auto fill = [] (const Ring2d& ring, auto& out) {
     for (const auto& p : ring)
-      out.push_back (BoostPoint (p.x (), p.y ()));
-    out.push_back (BoostPoint (ring.front ().x (), ring.front ().y ()));
+      out.push_back (BoostPoint (p.x(), p.y()));
+    out.push_back (BoostPoint (ring.front().x(), ring.front().y()));
   };
-  fill (polygon.outer, b.outer ());
-  for (const auto& hole : polygon.holes)
-  {
-    b.inners ().emplace_back ();
-    fill (hole, b.inners ().back ());
+  fill (polygon.outer, b.outer());
+  for (const auto& hole : polygon.holes) {
+    b.inners().emplace_back();
+    fill (hole, b.inners().back());
   }
   std::string reason;
   bool valid = false;
-  try
-  {
+  try {
     bg::correct (b);
     valid = bg::is_valid (b, reason);
   }
-  catch (const std::exception& e)  // e.g. boost::numeric::bad_numeric_cast in its rescaling
+  catch (
+      const std::exception& e) // e.g. boost::numeric::bad_numeric_cast in its rescaling
   {
-    reason = std::string ("the validity check failed (") + e.what () + ")";
+    reason = std::string ("the validity check failed (") + e.what() + ")";
   }
   if (!valid)
     where.fail (name + " is not a valid polygon: " + reason);
 
   // Outer counter-clockwise, holes clockwise (interior on the left of every edge).
   if (signedArea (polygon.outer) < 0.0)
-    std::reverse (polygon.outer.begin (), polygon.outer.end ());
+    std::reverse (polygon.outer.begin(), polygon.outer.end());
   for (auto& hole : polygon.holes)
     if (signedArea (hole) > 0.0)
-      std::reverse (hole.begin (), hole.end ());
+      std::reverse (hole.begin(), hole.end());
   return polygon;
 }
 
-template <typename BoostRing> std::vector<Eigen::Vector2d>
+template <typename BoostRing>
+std::vector<Eigen::Vector2d>
 ringFromBoost (const BoostRing& ring)
 {
   std::vector<Eigen::Vector2d> out;
@@ -143,11 +143,12 @@ ringFromBoost (const BoostRing& ring)
   return out;
 }
 
-template <typename BoostPolygonT> std::vector<std::vector<Eigen::Vector2d>>
+template <typename BoostPolygonT>
+std::vector<std::vector<Eigen::Vector2d>>
 ringsFromBoost (const BoostPolygonT& polygon)
 {
-  std::vector<std::vector<Eigen::Vector2d>> rings{ringFromBoost (polygon.outer ())};
-  for (const auto& inner : polygon.inners ())
+  std::vector<std::vector<Eigen::Vector2d>> rings{ringFromBoost (polygon.outer())};
+  for (const auto& inner : polygon.inners())
     rings.push_back (ringFromBoost (inner));
   return rings;
 }
@@ -156,8 +157,9 @@ std::string
 upper (std::string_view text)
 {
   std::string s (text);
-  std::transform (s.begin (), s.end (), s.begin (),
-                  [] (unsigned char c) { return static_cast<char> (std::toupper (c)); });
+  std::transform (s.begin(), s.end(), s.begin(), [] (unsigned char c) {
+    return static_cast<char> (std::toupper (c));
+  });
   return s;
 }
 
@@ -175,34 +177,36 @@ findWktKeyword (std::string_view line)
 std::string
 readAll (const std::string& path)
 {
-  detail::TextLines probe (path);  // the same clear errors for missing files and folders
+  detail::TextLines probe (path); // the same clear errors for missing files and folders
   std::ifstream in (path, std::ios::binary);
   std::ostringstream s;
-  s << in.rdbuf ();
-  if (in.bad ())
+  s << in.rdbuf();
+  if (in.bad())
     throw ReadError (path, 0, "read error");
-  return s.str ();
+  return s.str();
 }
-}  // namespace
+} // namespace
 
 double
 signedArea (const Ring2d& ring)
 {
-  if (ring.size () < 3)
+  if (ring.size() < 3)
     return 0.0;
   // Relative to the first vertex, so large georeferenced coordinates keep their digits.
   double twice = 0.0;
-  const Eigen::Vector2d o = ring.front ();
-  for (std::size_t i = 1; i + 1 < ring.size (); ++i)
-  {
+  const Eigen::Vector2d o = ring.front();
+  for (std::size_t i = 1; i + 1 < ring.size(); ++i) {
     const Eigen::Vector2d a = ring[i] - o, b = ring[i + 1] - o;
-    twice += a.x () * b.y () - a.y () * b.x ();
+    twice += a.x() * b.y() - a.y() * b.x();
   }
   return 0.5 * twice;
 }
 
 void
-parseWkt (const std::string& wkt, Footprint& footprint, const std::string& source, std::size_t line)
+parseWkt (const std::string& wkt,
+          Footprint& footprint,
+          const std::string& source,
+          std::size_t line)
 {
   const Where where{source, line, ""};
   const std::string u = upper (wkt);
@@ -213,54 +217,49 @@ parseWkt (const std::string& wkt, Footprint& footprint, const std::string& sourc
   std::string keyword_rest = u.substr (u.find ("POLYGON") + 7);
   const bool has_z = detail::trim (keyword_rest).substr (0, 1) == "Z";
   std::vector<std::vector<std::vector<Eigen::Vector2d>>> parts;
-  try
-  {
+  try {
     std::string text = wkt;
-    if (has_z)
-    {
+    if (has_z) {
       // Boost 1.74 wants "POLYGON((x y z ...))" for 3-D points, without the Z tag.
       const auto z = u.find ('Z', u.find ("POLYGON") + 7);
       text.erase (z, 1);
-      if (multi)
-      {
+      if (multi) {
         BoostMultiPolygon3 mp;
         bg::read_wkt (text, mp);
         for (const auto& p : mp)
           parts.push_back (ringsFromBoost (p));
       }
-      else
-      {
+      else {
         BoostPolygon3 p;
         bg::read_wkt (text, p);
         parts.push_back (ringsFromBoost (p));
       }
     }
-    else if (multi)
-    {
+    else if (multi) {
       BoostMultiPolygon mp;
       bg::read_wkt (wkt, mp);
       for (const auto& p : mp)
         parts.push_back (ringsFromBoost (p));
     }
-    else
-    {
+    else {
       BoostPolygon p;
       bg::read_wkt (wkt, p);
       parts.push_back (ringsFromBoost (p));
     }
   }
-  catch (const std::exception& e)  // bg::read_wkt_exception, boost::bad_lexical_cast
+  catch (const std::exception& e) // bg::read_wkt_exception, boost::bad_lexical_cast
   {
-    where.fail (std::string ("WKT syntax error: ") + e.what ());
+    where.fail (std::string ("WKT syntax error: ") + e.what());
   }
-  if (parts.empty ())
+  if (parts.empty())
     where.fail ("empty MULTIPOLYGON");
   std::vector<FootprintPolygon> polygons;
-  for (std::size_t i = 0; i < parts.size (); ++i)
-  {
-    if (parts[i].front ().empty ())
-      where.fail (std::string (multi ? "part " + std::to_string (i + 1) : "polygon") + " is empty");
-    polygons.push_back (makePolygon (parts[i], multi ? "part " + std::to_string (i + 1) : "polygon", where));
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (parts[i].front().empty())
+      where.fail (std::string (multi ? "part " + std::to_string (i + 1) : "polygon") +
+                  " is empty");
+    polygons.push_back (makePolygon (
+        parts[i], multi ? "part " + std::to_string (i + 1) : "polygon", where));
   }
   footprint.polygons = std::move (polygons);
 }
@@ -271,46 +270,46 @@ loadWktFootprints (const std::string& path, std::vector<Footprint>& footprints)
   detail::TextLines lines (path);
   std::vector<Footprint> result;
   std::string_view line;
-  while (lines.nextData (line, false))
-  {
+  while (lines.nextData (line, false)) {
     const auto keyword = findWktKeyword (line);
     if (keyword == std::string::npos)
-      lines.fail ("expected a WKT POLYGON or MULTIPOLYGON, found " + detail::quote (line));
+      lines.fail ("expected a WKT POLYGON or MULTIPOLYGON, found " +
+                  detail::quote (line));
     Footprint f;
-    f.line = lines.lineNumber ();
+    f.line = lines.lineNumber();
     std::string_view id = line.substr (0, keyword);
-    while (!id.empty () && std::string_view (" \t,;|").find (id.back ()) != std::string_view::npos)
+    while (!id.empty() &&
+           std::string_view (" \t,;|").find (id.back()) != std::string_view::npos)
       id.remove_suffix (1);
-    f.id = id.empty () ? std::to_string (f.line) : std::string (detail::trim (id));
+    f.id = id.empty() ? std::to_string (f.line) : std::string (detail::trim (id));
     parseWkt (std::string (line.substr (keyword)), f, path, f.line);
     result.push_back (std::move (f));
   }
-  if (result.empty ())
-    throw ReadError (path, 0, lines.lineNumber () == 0 ? "empty file, no polygons" : "no polygons");
+  if (result.empty())
+    throw ReadError (
+        path, 0, lines.lineNumber() == 0 ? "empty file, no polygons" : "no polygons");
   footprints = std::move (result);
 }
 
-namespace
-{
+namespace {
 using nlohmann::json;
 
 std::vector<std::vector<Eigen::Vector2d>>
 ringsFromJson (const json& rings, const Where& where)
 {
-  if (!rings.is_array ())
+  if (!rings.is_array())
     where.fail ("polygon coordinates are not an array of rings");
   std::vector<std::vector<Eigen::Vector2d>> out;
-  for (const auto& ring : rings)
-  {
-    if (!ring.is_array ())
+  for (const auto& ring : rings) {
+    if (!ring.is_array())
       where.fail ("a ring is not an array of positions");
-    out.emplace_back ();
-    for (const auto& position : ring)
-    {
-      if (!position.is_array () || position.size () < 2 || !position[0].is_number () ||
-          !position[1].is_number ())
-        where.fail ("a position is not [x, y] numbers: " + detail::quote (position.dump ()));
-      out.back ().emplace_back (position[0].get<double> (), position[1].get<double> ());
+    out.emplace_back();
+    for (const auto& position : ring) {
+      if (!position.is_array() || position.size() < 2 || !position[0].is_number() ||
+          !position[1].is_number())
+        where.fail ("a position is not [x, y] numbers: " +
+                    detail::quote (position.dump()));
+      out.back().emplace_back (position[0].get<double>(), position[1].get<double>());
     }
   }
   return out;
@@ -319,21 +318,23 @@ ringsFromJson (const json& rings, const Where& where)
 void
 geometryFromJson (const json& geometry, Footprint& f, const Where& where)
 {
-  if (!geometry.is_object () || !geometry.contains ("type") || !geometry["type"].is_string ())
+  if (!geometry.is_object() || !geometry.contains ("type") ||
+      !geometry["type"].is_string())
     where.fail ("geometry has no \"type\"");
-  const std::string type = geometry["type"].get<std::string> ();
+  const std::string type = geometry["type"].get<std::string>();
   if (!geometry.contains ("coordinates"))
     where.fail ("geometry has no \"coordinates\"");
   const json& coordinates = geometry["coordinates"];
   if (type == "Polygon")
-    f.polygons.push_back (makePolygon (ringsFromJson (coordinates, where), "polygon", where));
-  else if (type == "MultiPolygon")
-  {
-    if (!coordinates.is_array () || coordinates.empty ())
+    f.polygons.push_back (
+        makePolygon (ringsFromJson (coordinates, where), "polygon", where));
+  else if (type == "MultiPolygon") {
+    if (!coordinates.is_array() || coordinates.empty())
       where.fail ("MultiPolygon coordinates are not a non-empty array of polygons");
-    for (std::size_t i = 0; i < coordinates.size (); ++i)
+    for (std::size_t i = 0; i < coordinates.size(); ++i)
       f.polygons.push_back (makePolygon (ringsFromJson (coordinates[i], where),
-                                         "part " + std::to_string (i + 1), where));
+                                         "part " + std::to_string (i + 1),
+                                         where));
   }
   else
     where.fail ("geometry type \"" + type + "\" is not Polygon or MultiPolygon");
@@ -342,94 +343,90 @@ geometryFromJson (const json& geometry, Footprint& f, const Where& where)
 std::string
 idText (const json& value)
 {
-  return value.is_string () ? value.get<std::string> () : value.dump ();
+  return value.is_string() ? value.get<std::string>() : value.dump();
 }
 
 /** 1-based line of byte offset \a byte in \a text. */
 std::size_t
 lineOfByte (const std::string& text, std::size_t byte)
 {
-  const std::size_t end = std::min (byte, text.size ());
-  return 1 + static_cast<std::size_t> (std::count (text.begin (), text.begin () + end, '\n'));
+  const std::size_t end = std::min (byte, text.size());
+  return 1 +
+         static_cast<std::size_t> (std::count (text.begin(), text.begin() + end, '\n'));
 }
 
-/** Line where the index-th feature's object starts, found by scanning for '"type"' keys of
-  * Feature objects; 0 when it cannot be told. Only used to make messages easier to follow. */
+/** Line where the index-th feature's object starts, found by scanning for '"type"' keys
+ * of Feature objects; 0 when it cannot be told. Only used to make messages easier to
+ * follow. */
 std::size_t
 lineOfFeature (const std::string& text, std::size_t index)
 {
   std::size_t found = 0, pos = 0;
-  while ((pos = text.find ("\"Feature\"", pos)) != std::string::npos)
-  {
+  while ((pos = text.find ("\"Feature\"", pos)) != std::string::npos) {
     if (found++ == index)
       return lineOfByte (text, pos);
     pos += 9;
   }
   return 0;
 }
-}  // namespace
+} // namespace
 
 void
 loadGeoJsonFootprints (const std::string& path, std::vector<Footprint>& footprints)
 {
   const std::string text = readAll (path);
-  if (detail::trim (text).empty ())
+  if (detail::trim (text).empty())
     throw ReadError (path, 0, "empty file, no polygons");
   json root;
-  try
-  {
+  try {
     root = json::parse (text);
   }
-  catch (const json::parse_error& e)
-  {
+  catch (const json::parse_error& e) {
     // e.byte is 1-based, pointing just past the offending character.
-    throw ReadError (path, lineOfByte (text, e.byte > 0 ? e.byte - 1 : 0),
-                     std::string ("JSON syntax error: ") + e.what ());
+    throw ReadError (path,
+                     lineOfByte (text, e.byte > 0 ? e.byte - 1 : 0),
+                     std::string ("JSON syntax error: ") + e.what());
   }
-  catch (const json::exception& e)  // e.g. out_of_range: a number too large for a double
+  catch (const json::exception& e) // e.g. out_of_range: a number too large for a double
   {
-    throw ReadError (path, 0, std::string ("JSON error: ") + e.what ());
+    throw ReadError (path, 0, std::string ("JSON error: ") + e.what());
   }
   std::vector<Footprint> result;
-  try
-  {
-    if (!root.is_object () || !root.contains ("type") || !root["type"].is_string ())
+  try {
+    if (!root.is_object() || !root.contains ("type") || !root["type"].is_string())
       throw ReadError (path, 0, "not GeoJSON: no top-level \"type\"");
-    const std::string type = root["type"].get<std::string> ();
+    const std::string type = root["type"].get<std::string>();
     std::vector<const json*> features;
-    if (type == "FeatureCollection")
-    {
-      if (!root.contains ("features") || !root["features"].is_array ())
+    if (type == "FeatureCollection") {
+      if (!root.contains ("features") || !root["features"].is_array())
         throw ReadError (path, 0, "FeatureCollection without a \"features\" array");
       for (const auto& feature : root["features"])
         features.push_back (&feature);
     }
     else if (type == "Feature")
       features.push_back (&root);
-    else
-    {
+    else {
       Footprint f;
       f.id = "0";
       f.line = 1;
       geometryFromJson (root, f, Where{path, 0, ""});
       result.push_back (std::move (f));
     }
-    for (std::size_t i = 0; i < features.size (); ++i)
-    {
+    for (std::size_t i = 0; i < features.size(); ++i) {
       const json& feature = *features[i];
       const std::size_t line = lineOfFeature (text, i);
       const Where where{path, line, "feature " + std::to_string (i) + ": "};
-      if (!feature.is_object () || feature.value ("type", json ()) != "Feature")
+      if (!feature.is_object() || feature.value ("type", json()) != "Feature")
         where.fail ("not a GeoJSON Feature object");
-      if (!feature.contains ("geometry") || feature["geometry"].is_null ())
+      if (!feature.contains ("geometry") || feature["geometry"].is_null())
         continue;
       Footprint f;
       f.line = line;
-      if (feature.contains ("id") && !feature["id"].is_null ())
+      if (feature.contains ("id") && !feature["id"].is_null())
         f.id = idText (feature["id"]);
-      else if (feature.contains ("properties") && feature["properties"].is_object () &&
-               (feature["properties"].contains ("id") || feature["properties"].contains ("identificatie")))
-      {
+      else if (feature.contains ("properties") && feature["properties"].is_object() &&
+               (feature["properties"].contains ("id") ||
+                feature["properties"].contains ("identificatie"))) {
         const json& p = feature["properties"];
         f.id = idText (p.contains ("id") ? p["id"] : p["identificatie"]);
       }
@@ -439,11 +436,12 @@ loadGeoJsonFootprints (const std::string& path, std::vector<Footprint>& footprin
       result.push_back (std::move (f));
     }
   }
-  catch (const json::exception& e)  // type errors in unexpected structures
+  catch (const json::exception& e) // type errors in unexpected structures
   {
-    throw ReadError (path, 0, std::string ("unexpected GeoJSON structure: ") + e.what ());
+    throw ReadError (
+        path, 0, std::string ("unexpected GeoJSON structure: ") + e.what());
   }
-  if (result.empty ())
+  if (result.empty())
     throw ReadError (path, 0, "no polygons");
   footprints = std::move (result);
 }
@@ -455,36 +453,36 @@ loadTextFootprints (const std::string& path, std::vector<Footprint>& footprints)
   std::vector<Footprint> result;
   std::string_view line;
   std::vector<std::string_view> tokens;
-  while (lines.nextData (line, false))
-  {
+  while (lines.nextData (line, false)) {
     detail::splitBlanks (line, tokens);
-    const Where where{path, lines.lineNumber (), ""};
-    if (tokens.size () < 2)
+    const Where where{path, lines.lineNumber(), ""};
+    if (tokens.size() < 2)
       where.fail ("expected 'id n x1 y1 ... xn yn', found " + detail::quote (line));
     std::uint32_t n = 0;
     if (!detail::parseLabel (tokens[1], n))
-      where.fail ("vertex count " + detail::quote (tokens[1]) + " is not a non-negative integer");
-    if (tokens.size () != 2 + 2 * static_cast<std::size_t> (n))
+      where.fail ("vertex count " + detail::quote (tokens[1]) +
+                  " is not a non-negative integer");
+    if (tokens.size() != 2 + 2 * static_cast<std::size_t> (n))
       where.fail ("expected " + std::to_string (2 * static_cast<std::size_t> (n)) +
                   " coordinates for " + std::to_string (n) + " vertices, found " +
-                  std::to_string (tokens.size () - 2) + " (truncated line?)");
+                  std::to_string (tokens.size() - 2) + " (truncated line?)");
     std::vector<Eigen::Vector2d> ring (n);
     for (std::size_t v = 0; v < n; ++v)
-      for (int c = 0; c < 2; ++c)
-      {
+      for (int c = 0; c < 2; ++c) {
         const auto& t = tokens[2 + 2 * v + c];
         if (!detail::parseDouble (t, ring[v][c]))
-          where.fail ("vertex " + std::to_string (v + 1) + (c ? " y " : " x ") + detail::quote (t) +
-                      " is not a number");
+          where.fail ("vertex " + std::to_string (v + 1) + (c ? " y " : " x ") +
+                      detail::quote (t) + " is not a number");
       }
     Footprint f;
     f.id = std::string (tokens[0]);
-    f.line = lines.lineNumber ();
+    f.line = lines.lineNumber();
     f.polygons.push_back (makePolygon ({ring}, "polygon", where));
     result.push_back (std::move (f));
   }
-  if (result.empty ())
-    throw ReadError (path, 0, lines.lineNumber () == 0 ? "empty file, no polygons" : "no polygons");
+  if (result.empty())
+    throw ReadError (
+        path, 0, lines.lineNumber() == 0 ? "empty file, no polygons" : "no polygons");
   footprints = std::move (result);
 }
 
@@ -506,7 +504,7 @@ loadFootprints (const std::string& path, std::vector<Footprint>& footprints)
   std::string_view first;
   if (!lines.nextData (first, false))
     throw ReadError (path, 0, "empty file, no polygons");
-  if (first.front () == '{')
+  if (first.front() == '{')
     return loadGeoJsonFootprints (path, footprints);
   if (findWktKeyword (first) != std::string::npos)
     return loadWktFootprints (path, footprints);
@@ -517,8 +515,7 @@ void
 translateFootprints (std::vector<Footprint>& footprints, const Eigen::Vector2d& offset)
 {
   for (auto& f : footprints)
-    for (auto& polygon : f.polygons)
-    {
+    for (auto& polygon : f.polygons) {
       for (auto& p : polygon.outer)
         p += offset;
       for (auto& hole : polygon.holes)
@@ -526,5 +523,5 @@ translateFootprints (std::vector<Footprint>& footprints, const Eigen::Vector2d& 
           p += offset;
     }
 }
-}  // namespace io
-}  // namespace pcl_ext
+} // namespace io
+} // namespace pcl_ext

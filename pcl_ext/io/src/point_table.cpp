@@ -8,21 +8,18 @@
 #include <cmath>
 #include <cstring>
 
-namespace pcl_ext
-{
-namespace io
-{
+namespace pcl_ext {
+namespace io {
 Eigen::Vector3d
 computeLocalOrigin (const PointTable& table, double grid)
 {
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero ();
-  if (table.empty () || !(grid > 0.0))
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  if (table.empty() || !(grid > 0.0))
     return origin;
-  Eigen::Vector3d min = table.xyz.front (), max_abs = table.xyz.front ().cwiseAbs ();
-  for (const auto& p : table.xyz)
-  {
+  Eigen::Vector3d min = table.xyz.front(), max_abs = table.xyz.front().cwiseAbs();
+  for (const auto& p : table.xyz) {
     min = min.cwiseMin (p);
-    max_abs = max_abs.cwiseMax (p.cwiseAbs ());
+    max_abs = max_abs.cwiseMax (p.cwiseAbs());
   }
   for (int axis = 0; axis < 3; ++axis)
     if (max_abs[axis] > kFloatSafeCoordinate)
@@ -31,13 +28,15 @@ computeLocalOrigin (const PointTable& table, double grid)
 }
 
 void
-toPCLPointCloud2 (const PointTable& table, const Eigen::Vector3d& origin, pcl::PCLPointCloud2& cloud)
+toPCLPointCloud2 (const PointTable& table,
+                  const Eigen::Vector3d& origin,
+                  pcl::PCLPointCloud2& cloud)
 {
-  cloud = pcl::PCLPointCloud2 ();
-  const std::size_t n = table.size ();
-  const bool has_intensity = table.intensity.size () == n && n > 0;
-  const bool has_rgb = table.rgb.size () == n && n > 0;
-  const bool has_label = table.label.size () == n && n > 0;
+  cloud = pcl::PCLPointCloud2();
+  const std::size_t n = table.size();
+  const bool has_intensity = table.intensity.size() == n && n > 0;
+  const bool has_rgb = table.rgb.size() == n && n > 0;
+  const bool has_label = table.label.size() == n && n > 0;
   std::uint32_t offset = 0;
   const auto add = [&cloud, &offset] (const std::string& name, std::uint8_t type) {
     pcl::PCLPointField f;
@@ -52,10 +51,13 @@ toPCLPointCloud2 (const PointTable& table, const Eigen::Vector3d& origin, pcl::P
   add ("x", pcl::PCLPointField::FLOAT32);
   add ("y", pcl::PCLPointField::FLOAT32);
   add ("z", pcl::PCLPointField::FLOAT32);
-  const std::uint32_t intensity_offset = has_intensity ? add ("intensity", pcl::PCLPointField::FLOAT32) : 0;
+  const std::uint32_t intensity_offset =
+      has_intensity ? add ("intensity", pcl::PCLPointField::FLOAT32) : 0;
   // PCL stores packed colour in a float32 field named rgb (as pcl::PointXYZRGB does).
-  const std::uint32_t rgb_offset = has_rgb ? add ("rgb", pcl::PCLPointField::FLOAT32) : 0;
-  const std::uint32_t label_offset = has_label ? add ("label", pcl::PCLPointField::UINT32) : 0;
+  const std::uint32_t rgb_offset =
+      has_rgb ? add ("rgb", pcl::PCLPointField::FLOAT32) : 0;
+  const std::uint32_t label_offset =
+      has_label ? add ("label", pcl::PCLPointField::UINT32) : 0;
   cloud.point_step = offset;
   cloud.width = static_cast<std::uint32_t> (n);
   cloud.height = 1;
@@ -63,17 +65,15 @@ toPCLPointCloud2 (const PointTable& table, const Eigen::Vector3d& origin, pcl::P
   cloud.is_dense = true;
   cloud.is_bigendian = false;
   cloud.data.resize (static_cast<std::size_t> (cloud.point_step) * n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    std::uint8_t* point = cloud.data.data () + i * cloud.point_step;
-    const Eigen::Vector3f p = (table.xyz[i] - origin).cast<float> ();
-    std::memcpy (point, p.data (), 3 * sizeof (float));
-    if (!std::isfinite (p.x ()) || !std::isfinite (p.y ()) || !std::isfinite (p.z ()))
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint8_t* point = cloud.data.data() + i * cloud.point_step;
+    const Eigen::Vector3f p = (table.xyz[i] - origin).cast<float>();
+    std::memcpy (point, p.data(), 3 * sizeof (float));
+    if (!std::isfinite (p.x()) || !std::isfinite (p.y()) || !std::isfinite (p.z()))
       cloud.is_dense = false;
     if (has_intensity)
       std::memcpy (point + intensity_offset, &table.intensity[i], 4);
-    if (has_rgb)
-    {
+    if (has_rgb) {
       const auto& c = table.rgb[i];
       const std::uint32_t packed = (static_cast<std::uint32_t> (c[0]) << 16) |
                                    (static_cast<std::uint32_t> (c[1]) << 8) | c[2];
@@ -83,5 +83,5 @@ toPCLPointCloud2 (const PointTable& table, const Eigen::Vector3d& origin, pcl::P
       std::memcpy (point + label_offset, &table.label[i], 4);
   }
 }
-}  // namespace io
-}  // namespace pcl_ext
+} // namespace io
+} // namespace pcl_ext

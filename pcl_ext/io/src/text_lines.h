@@ -11,15 +11,11 @@
 #include <string_view>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace io
-{
-namespace detail
-{
+namespace pcl_ext {
+namespace io {
+namespace detail {
 /** Reads a text file line by line, counting lines, so errors can name them. */
-class TextLines
-{
+class TextLines {
 public:
   /** Opens \a path; throws ReadError when it is missing, a folder or unreadable. */
   explicit TextLines (const std::string& path);
@@ -34,10 +30,16 @@ public:
 
   /** 1-based number of the last line returned. */
   std::size_t
-  lineNumber () const { return line_number_; }
+  lineNumber () const
+  {
+    return line_number_;
+  }
 
   const std::string&
-  path () const { return path_; }
+  path () const
+  {
+    return path_;
+  }
 
   /** Throws ReadError at the current line. */
   [[noreturn]] void
@@ -55,7 +57,7 @@ std::string_view
 trim (std::string_view text);
 
 /** Values of a data line: split at commas when it has one, else at blanks. Empty values
-  * (",,") are kept as empty views so the caller can report them. */
+ * (",,") are kept as empty views so the caller can report them. */
 void
 splitValues (std::string_view line, std::vector<std::string_view>& values);
 
@@ -74,6 +76,6 @@ parseLabel (std::string_view text, std::uint32_t& value);
 /** Quote a token for an error message, shortened when long. */
 std::string
 quote (std::string_view text);
-}  // namespace detail
-}  // namespace io
-}  // namespace pcl_ext
+} // namespace detail
+} // namespace io
+} // namespace pcl_ext

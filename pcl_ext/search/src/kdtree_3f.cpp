@@ -1,19 +1,18 @@
 /*
- * pcl_ext: KdTree3f, a k-d tree over float coordinates stored in leaf order: its build and
- * its layout. The searches are in kdtree_3f_search.cpp and kdtree_3f_batch_search.cpp.
+ * pcl_ext: KdTree3f, a k-d tree over float coordinates stored in leaf order: its build
+ * and its layout. The searches are in kdtree_3f_search.cpp and
+ * kdtree_3f_batch_search.cpp.
  */
 #include "kdtree_3f_impl.h"
 
 #include <algorithm>
 #include <atomic>
 
-namespace pcl_ext
-{
-namespace search
-{
-namespace
-{
-/** Spreads the low 10 bits of x so that two zero bits separate each (3D Morton interleave). */
+namespace pcl_ext {
+namespace search {
+namespace {
+/** Spreads the low 10 bits of x so that two zero bits separate each (3D Morton
+ * interleave). */
 std::uint32_t
 spreadBits (std::uint32_t x)
 {
@@ -25,22 +24,21 @@ spreadBits (std::uint32_t x)
   return x;
 }
 
-/** Reorders points (and their indices) along a Z-order curve over a 1024^3 grid of their
-  * bounding box. nanoflann's build then reads nearby memory when it partitions a subtree,
-  * which makes it much faster on clouds stored in arbitrary order (docs/shared_machinery.md).
-  * LSD radix sort: linear, stable, deterministic. */
+/** Reorders points (and their indices) along a Z-order curve over a 1024^3 grid of
+ * their bounding box. nanoflann's build then reads nearby memory when it partitions a
+ * subtree, which makes it much faster on clouds stored in arbitrary order
+ * (docs/shared_machinery.md). LSD radix sort: linear, stable, deterministic. */
 void
 sortAlongZOrder (std::vector<float>& xyz, std::vector<pcl::index_t>& ids)
 {
-  const std::size_t n = ids.size ();
+  const std::size_t n = ids.size();
   if (n < 2)
     return;
   float lo[3], hi[3];
   for (int d = 0; d < 3; ++d)
     lo[d] = hi[d] = xyz[d];
   for (std::size_t i = 1; i < n; ++i)
-    for (int d = 0; d < 3; ++d)
-    {
+    for (int d = 0; d < 3; ++d) {
       lo[d] = std::min (lo[d], xyz[3 * i + d]);
       hi[d] = std::max (hi[d], xyz[3 * i + d]);
     }
@@ -48,23 +46,21 @@ sortAlongZOrder (std::vector<float>& xyz, std::vector<pcl::index_t>& ids)
   for (int d = 0; d < 3; ++d)
     scale[d] = hi[d] > lo[d] ? 1023.0 / (static_cast<double> (hi[d]) - lo[d]) : 0.0;
   std::vector<std::uint32_t> code (n), order (n), code_tmp (n), order_tmp (n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
+  for (std::size_t i = 0; i < n; ++i) {
     std::uint32_t c = 0;
     for (int d = 0; d < 3; ++d)
-      c |= spreadBits (static_cast<std::uint32_t> ((xyz[3 * i + d] - lo[d]) * scale[d])) << d;
+      c |= spreadBits (static_cast<std::uint32_t> ((xyz[3 * i + d] - lo[d]) * scale[d]))
+           << d;
     code[i] = c;
     order[i] = static_cast<std::uint32_t> (i);
   }
-  for (int shift = 0; shift < 32; shift += 8)
-  {
+  for (int shift = 0; shift < 32; shift += 8) {
     std::size_t count[257] = {0};
     for (std::size_t i = 0; i < n; ++i)
       ++count[((code[i] >> shift) & 0xff) + 1];
     for (int b = 0; b < 256; ++b)
       count[b + 1] += count[b];
-    for (std::size_t i = 0; i < n; ++i)
-    {
+    for (std::size_t i = 0; i < n; ++i) {
       const std::size_t dst = count[(code[i] >> shift) & 0xff]++;
       code_tmp[dst] = code[i];
       order_tmp[dst] = order[i];
@@ -74,44 +70,46 @@ sortAlongZOrder (std::vector<float>& xyz, std::vector<pcl::index_t>& ids)
   }
   std::vector<float> sorted_xyz (3 * n);
   std::vector<pcl::index_t> sorted_ids (n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
+  for (std::size_t i = 0; i < n; ++i) {
     std::copy_n (&xyz[3 * order[i]], 3, &sorted_xyz[3 * i]);
     sorted_ids[i] = ids[order[i]];
   }
   xyz.swap (sorted_xyz);
   ids.swap (sorted_ids);
 }
-}  // namespace
+} // namespace
 
-KdTree3f::KdTree3f () : impl_ (new Impl) {}
+KdTree3f::KdTree3f() : impl_ (new Impl) {}
 
-KdTree3f::~KdTree3f () = default;
+KdTree3f::~KdTree3f() = default;
 
 void
-KdTree3f::build (std::vector<float> xyz, std::vector<pcl::index_t> point_indices,
+KdTree3f::build (std::vector<float> xyz,
+                 std::vector<pcl::index_t> point_indices,
                  unsigned int leaf_size)
 {
   static std::atomic<std::uint64_t> builds{0};
   impl_->generation = ++builds;
-  impl_->tree.reset ();
+  impl_->tree.reset();
   sortAlongZOrder (xyz, point_indices);
   impl_->data.xyz = std::move (xyz);
   impl_->point_indices = std::move (point_indices);
-  const std::size_t n = impl_->data.kdtree_get_point_count ();
+  const std::size_t n = impl_->data.kdtree_get_point_count();
   if (n == 0)
     return;
   impl_->tree.reset (new detail::Tree (
-      3, impl_->data, nanoflann::KDTreeSingleIndexAdaptorParams (std::max (1u, leaf_size))));
+      3,
+      impl_->data,
+      nanoflann::KDTreeSingleIndexAdaptorParams (std::max (1u, leaf_size))));
 
-  // Reorder the coordinates into the tree's leaf order and make the tree's permutation the
-  // identity: a leaf's points then sit next to each other in memory, and so do the points of
-  // nearby leaves, which is what makes a whole-cloud neighbourhood pass cache friendly.
+  // Reorder the coordinates into the tree's leaf order and make the tree's permutation
+  // the identity: a leaf's points then sit next to each other in memory, and so do the
+  // points of nearby leaves, which is what makes a whole-cloud neighbourhood pass cache
+  // friendly.
   auto& order = impl_->tree->vAcc;
   std::vector<float> sorted_xyz (3 * n);
   std::vector<pcl::index_t> sorted_indices (n);
-  for (std::size_t pos = 0; pos < n; ++pos)
-  {
+  for (std::size_t pos = 0; pos < n; ++pos) {
     const std::size_t old = order[pos];
     std::copy_n (&impl_->data.xyz[3 * old], 3, &sorted_xyz[3 * pos]);
     sorted_indices[pos] = impl_->point_indices[old];
@@ -122,25 +120,23 @@ KdTree3f::build (std::vector<float> xyz, std::vector<pcl::index_t> point_indices
 }
 
 std::size_t
-KdTree3f::size () const
+KdTree3f::size() const
 {
-  return impl_->tree ? impl_->point_indices.size () : 0;
+  return impl_->tree ? impl_->point_indices.size() : 0;
 }
 
 std::vector<std::pair<std::size_t, std::size_t>>
-KdTree3f::leafRanges () const
+KdTree3f::leafRanges() const
 {
   std::vector<std::pair<std::size_t, std::size_t>> ranges;
   if (!impl_->tree)
     return ranges;
   // Depth first, first child first: leaves come out in position order.
   std::vector<const detail::Tree::Node*> stack{impl_->tree->root_node};
-  while (!stack.empty ())
-  {
-    const detail::Tree::Node* node = stack.back ();
-    stack.pop_back ();
-    if (!node->child1 && !node->child2)
-    {
+  while (!stack.empty()) {
+    const detail::Tree::Node* node = stack.back();
+    stack.pop_back();
+    if (!node->child1 && !node->child2) {
       ranges.emplace_back (node->node_type.lr.left, node->node_type.lr.right);
       continue;
     }
@@ -163,5 +159,5 @@ KdTree3f::pointIndex (std::size_t pos) const
 {
   return impl_->point_indices[pos];
 }
-}  // namespace search
-}  // namespace pcl_ext
+} // namespace search
+} // namespace pcl_ext

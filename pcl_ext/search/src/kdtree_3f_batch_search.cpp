@@ -1,6 +1,6 @@
 /*
- * pcl_ext: KdTree3f::nearestKSearchOfPoints, the k nearest neighbours of a run of tree points
- * found together.
+ * pcl_ext: KdTree3f::nearestKSearchOfPoints, the k nearest neighbours of a run of tree
+ * points found together.
  */
 #include "kdtree_3f_impl.h"
 
@@ -10,25 +10,34 @@
 #include <cstring>
 #include <limits>
 
-namespace pcl_ext
-{
-namespace search
-{
-namespace
-{
-/** nanoflann result set that keeps every point within a fixed squared radius, unsorted. */
-class CollectingResultSet
-{
+namespace pcl_ext {
+namespace search {
+namespace {
+/** nanoflann result set that keeps every point within a fixed squared radius, unsorted.
+ */
+class CollectingResultSet {
 public:
   CollectingResultSet (std::vector<std::uint32_t>& positions, float sqr_radius)
-    : positions_ (positions), sqr_radius_ (sqr_radius)
+  : positions_ (positions), sqr_radius_ (sqr_radius)
   {
-    positions_.clear ();
+    positions_.clear();
   }
 
-  std::size_t size () const { return positions_.size (); }
-  bool full () const { return true; }
-  float worstDist () const { return sqr_radius_; }
+  std::size_t
+  size () const
+  {
+    return positions_.size();
+  }
+  bool
+  full () const
+  {
+    return true;
+  }
+  float
+  worstDist () const
+  {
+    return sqr_radius_;
+  }
 
   bool
   addPoint (float, std::uint32_t pos)
@@ -45,10 +54,9 @@ private:
 /** Buckets of the counting sorts on squared distance. */
 constexpr std::size_t num_buckets = 64;
 
-/** Scratch space of nearestKSearchOfPoints, one per thread so that calls need no allocation
-  * once warm. */
-struct BatchScratch
-{
+/** Scratch space of nearestKSearchOfPoints, one per thread so that calls need no
+ * allocation once warm. */
+struct BatchScratch {
   std::vector<std::uint32_t> candidates;
   std::vector<float> x, y, z, sqr_dist;
   std::vector<std::uint64_t> keys, sorted;
@@ -60,8 +68,8 @@ struct BatchScratch
   std::vector<float> first_sqr_dist;
   std::vector<std::size_t> done_pos;
   std::vector<float> done_kth;
-  // The last anchor, to bound the next one's search: its tree (pointer and build), k, k-th
-  // distance and coordinates.
+  // The last anchor, to bound the next one's search: its tree (pointer and build), k,
+  // k-th distance and coordinates.
   const void* tree = nullptr;
   std::uint64_t generation = 0;
   std::size_t anchor_k = 0;
@@ -69,8 +77,8 @@ struct BatchScratch
   float anchor[3] = {0.0f, 0.0f, 0.0f};
 };
 
-/** Squared distance (non-negative, so its bits order like the value) above, position below:
-  * sorting the keys orders by distance, then by position. */
+/** Squared distance (non-negative, so its bits order like the value) above, position
+ * below: sorting the keys orders by distance, then by position. */
 inline std::uint64_t
 rankKey (float sqr_dist, std::uint32_t pos)
 {
@@ -88,17 +96,16 @@ keyDistance (std::uint64_t key)
   return d;
 }
 
-/** Copies the candidates' coordinates into one array per axis, so that ranking them against
-  * a query is a loop the compiler vectorises. */
+/** Copies the candidates' coordinates into one array per axis, so that ranking them
+ * against a query is a loop the compiler vectorises. */
 void
 gatherCoordinates (const std::vector<float>& xyz, BatchScratch& s)
 {
-  const std::size_t m = s.candidates.size ();
+  const std::size_t m = s.candidates.size();
   s.x.resize (m);
   s.y.resize (m);
   s.z.resize (m);
-  for (std::size_t i = 0; i < m; ++i)
-  {
+  for (std::size_t i = 0; i < m; ++i) {
     const float* p = &xyz[3 * static_cast<std::size_t> (s.candidates[i])];
     s.x[i] = p[0];
     s.y[i] = p[1];
@@ -106,8 +113,8 @@ gatherCoordinates (const std::vector<float>& xyz, BatchScratch& s)
   }
 }
 
-/** Bucket of a squared distance among num_buckets equal-width buckets of [0, limit], given
-  * scale = num_buckets / limit; anything beyond the limit goes to the last. */
+/** Bucket of a squared distance among num_buckets equal-width buckets of [0, limit],
+ * given scale = num_buckets / limit; anything beyond the limit goes to the last. */
 inline std::size_t
 bucketOf (float sqr_dist, float scale)
 {
@@ -117,18 +124,20 @@ bucketOf (float sqr_dist, float scale)
 }
 
 /** Orders the candidates by shells of squared distance from the anchor \a a (a counting
-  * sort over equal-width buckets of [0, sqr_radius]) and records where each shell ends, so
-  * that a query needing only the candidates within some distance of the anchor ranks a
-  * prefix of them. */
+ * sort over equal-width buckets of [0, sqr_radius]) and records where each shell ends,
+ * so that a query needing only the candidates within some distance of the anchor ranks
+ * a prefix of them. */
 void
-orderByShells (const std::vector<float>& xyz, const float* a, float sqr_radius, BatchScratch& s)
+orderByShells (const std::vector<float>& xyz,
+               const float* a,
+               float sqr_radius,
+               BatchScratch& s)
 {
-  const std::size_t m = s.candidates.size ();
+  const std::size_t m = s.candidates.size();
   const float scale = static_cast<float> (num_buckets) / sqr_radius;
   s.buckets.resize (m);
   std::size_t start[num_buckets + 1] = {0};
-  for (std::size_t i = 0; i < m; ++i)
-  {
+  for (std::size_t i = 0; i < m; ++i) {
     const float* p = &xyz[3 * static_cast<std::size_t> (s.candidates[i])];
     const float dx = p[0] - a[0], dy = p[1] - a[1], dz = p[2] - a[2];
     const std::size_t b = bucketOf (dx * dx + dy * dy + dz * dz, scale);
@@ -147,38 +156,36 @@ orderByShells (const std::vector<float>& xyz, const float* a, float sqr_radius, 
   gatherCoordinates (xyz, s);
 }
 
-/** The k candidates of \a s nearest to \a q by (squared distance, position), among those
-  * within \a sqr_limit, as keys in s.sorted[0 .. k). Returns false if fewer than k lie within
-  * the limit. */
+/** The k candidates of \a s nearest to \a q by (squared distance, position), among
+ * those within \a sqr_limit, as keys in s.sorted[0 .. k). Returns false if fewer than k
+ * lie within the limit. */
 bool
-rankCandidates (const float* q, std::size_t m, std::size_t k, float sqr_limit,
-                BatchScratch& s)
+rankCandidates (
+    const float* q, std::size_t m, std::size_t k, float sqr_limit, BatchScratch& s)
 {
   s.sqr_dist.resize (m);
   const float qx = q[0], qy = q[1], qz = q[2];
-  const float* x = s.x.data ();
-  const float* y = s.y.data ();
-  const float* z = s.z.data ();
-  float* d = s.sqr_dist.data ();
-  for (std::size_t i = 0; i < m; ++i)
-  {
+  const float* x = s.x.data();
+  const float* y = s.y.data();
+  const float* z = s.z.data();
+  float* d = s.sqr_dist.data();
+  for (std::size_t i = 0; i < m; ++i) {
     const float dx = x[i] - qx, dy = y[i] - qy, dz = z[i] - qz;
     d[i] = dx * dx + dy * dy + dz * dz;
   }
   // Branch-free compaction of those within the limit, each with its bucket of squared
   // distance. On a surface the squared distances of a neighbourhood spread evenly over
   // [0, limit] (area grows with r^2), so equal-width buckets hold one or two each and a
-  // counting sort followed by insertion sort orders them in linear time, where a comparison
-  // sort of the same keys costs several times more.
+  // counting sort followed by insertion sort orders them in linear time, where a
+  // comparison sort of the same keys costs several times more.
   s.keys.resize (m);
   s.buckets.resize (m);
-  std::uint64_t* keys = s.keys.data ();
-  std::uint8_t* buckets = s.buckets.data ();
-  const std::uint32_t* positions = s.candidates.data ();
+  std::uint64_t* keys = s.keys.data();
+  std::uint8_t* buckets = s.buckets.data();
+  const std::uint32_t* positions = s.candidates.data();
   const float scale = static_cast<float> (num_buckets) / sqr_limit;
   std::size_t kept = 0;
-  for (std::size_t i = 0; i < m; ++i)
-  {
+  for (std::size_t i = 0; i < m; ++i) {
     keys[kept] = rankKey (d[i], positions[i]);
     buckets[kept] = static_cast<std::uint8_t> (bucketOf (d[i], scale));
     kept += d[i] <= sqr_limit;
@@ -190,24 +197,22 @@ rankCandidates (const float* q, std::size_t m, std::size_t k, float sqr_limit,
   for (std::size_t i = 0; i < kept; ++i)
     ++start[buckets[i] + 1];
   std::size_t largest = 0;
-  for (std::size_t b = 0; b < num_buckets; ++b)
-  {
+  for (std::size_t b = 0; b < num_buckets; ++b) {
     largest = std::max (largest, start[b + 1]);
     start[b + 1] += start[b];
   }
   s.sorted.resize (kept);
-  std::uint64_t* sorted = s.sorted.data ();
+  std::uint64_t* sorted = s.sorted.data();
   for (std::size_t i = 0; i < kept; ++i)
     sorted[start[buckets[i]]++] = keys[i];
-  if (largest > 32)
-  {
-    // Crowded buckets (duplicate points, a limit far above the k-th distance): sort instead.
+  if (largest > 32) {
+    // Crowded buckets (duplicate points, a limit far above the k-th distance): sort
+    // instead.
     std::nth_element (sorted, sorted + (k - 1), sorted + kept);
     std::sort (sorted, sorted + k);
   }
   else
-    for (std::size_t i = 1; i < kept; ++i)
-    {
+    for (std::size_t i = 1; i < kept; ++i) {
       const std::uint64_t key = sorted[i];
       std::size_t j = i;
       for (; j > 0 && sorted[j - 1] > key; --j)
@@ -216,20 +221,23 @@ rankCandidates (const float* q, std::size_t m, std::size_t k, float sqr_limit,
     }
   return true;
 }
-}  // namespace
+} // namespace
 
 std::size_t
-KdTree3f::nearestKSearchOfPoints (std::size_t first, std::size_t last, std::size_t k,
-                                  pcl::index_t* indices, float* sqr_distances) const
+KdTree3f::nearestKSearchOfPoints (std::size_t first,
+                                  std::size_t last,
+                                  std::size_t k,
+                                  pcl::index_t* indices,
+                                  float* sqr_distances) const
 {
   if (!impl_->tree || k == 0)
     return 0;
-  k = std::min (k, size ());
-  last = std::min (last, size ());
+  k = std::min (k, size());
+  last = std::min (last, size());
   if (first >= last)
     return k;
   thread_local BatchScratch scratch;
-  BatchScratch& s = scratch;  // one thread-local lookup, not one per use
+  BatchScratch& s = scratch; // one thread-local lookup, not one per use
   const std::vector<float>& xyz = impl_->data.xyz;
   const auto distance = [] (const float* a, const float* b) {
     const float dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
@@ -241,20 +249,17 @@ KdTree3f::nearestKSearchOfPoints (std::size_t first, std::size_t last, std::size
   std::copy_n (&xyz[3 * first], 3, lo);
   std::copy_n (&xyz[3 * first], 3, hi);
   for (std::size_t pos = first + 1; pos < last; ++pos)
-    for (int d = 0; d < 3; ++d)
-    {
+    for (int d = 0; d < 3; ++d) {
       lo[d] = std::min (lo[d], xyz[3 * pos + d]);
       hi[d] = std::max (hi[d], xyz[3 * pos + d]);
     }
-  const float middle[3] = {0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]),
-                           0.5f * (lo[2] + hi[2])};
+  const float middle[3] = {
+      0.5f * (lo[0] + hi[0]), 0.5f * (lo[1] + hi[1]), 0.5f * (lo[2] + hi[2])};
   std::size_t anchor = first;
-  float spread = std::numeric_limits<float>::max ();
-  for (std::size_t pos = first; pos < last; ++pos)
-  {
+  float spread = std::numeric_limits<float>::max();
+  for (std::size_t pos = first; pos < last; ++pos) {
     const float d = distance (&xyz[3 * pos], middle);
-    if (d < spread)
-    {
+    if (d < spread) {
       spread = d;
       anchor = pos;
     }
@@ -264,60 +269,57 @@ KdTree3f::nearestKSearchOfPoints (std::size_t first, std::size_t last, std::size
   for (std::size_t pos = first; pos < last; ++pos)
     spread = std::max (spread, distance (&xyz[3 * pos], a));
 
-  // The anchor's exact k-th distance r. The previous anchor this thread searched in this tree
-  // bounds it (any bound only prunes; r does not depend on it).
-  float hint = std::numeric_limits<float>::max ();
-  if (s.tree == impl_.get () && s.generation == impl_->generation && s.anchor_k == k)
-  {
+  // The anchor's exact k-th distance r. The previous anchor this thread searched in
+  // this tree bounds it (any bound only prunes; r does not depend on it).
+  float hint = std::numeric_limits<float>::max();
+  if (s.tree == impl_.get() && s.generation == impl_->generation && s.anchor_k == k) {
     const float reach = (s.anchor_kth + distance (a, s.anchor)) * (1.0f + 1e-4f);
     hint = reach * reach + 1e-30f;
   }
   s.first_indices.resize (k);
   s.first_sqr_dist.resize (k);
-  nearestKSearch (a, k, s.first_indices.data (), s.first_sqr_dist.data (), hint);
+  nearestKSearch (a, k, s.first_indices.data(), s.first_sqr_dist.data(), hint);
   const float r = std::sqrt (s.first_sqr_dist[k - 1]);
-  s.tree = impl_.get ();
+  s.tree = impl_.get();
   s.generation = impl_->generation;
   s.anchor_k = k;
   s.anchor_kth = r;
   std::copy_n (a, 3, s.anchor);
   // r bounds the k-th distance of every point q of the run by r + |q - anchor|, and all
-  // points within that bound of q lie within r + 2 * spread of the anchor: the candidates.
-  // Relative margins keep float rounding on the safe side.
+  // points within that bound of q lie within r + 2 * spread of the anchor: the
+  // candidates. Relative margins keep float rounding on the safe side.
   constexpr float margin = 1.0f + 1e-4f;
   const float gather = ((r + spread) * margin + spread) * margin;
   const float sqr_gather = gather * gather + 1e-30f;
-  // A run spread wide compared with its neighbourhoods (a leaf straddling sparse points)
-  // would share too many candidates: each of its points then finds its own k-th distance
-  // and ranks only the points within it.
+  // A run spread wide compared with its neighbourhoods (a leaf straddling sparse
+  // points) would share too many candidates: each of its points then finds its own k-th
+  // distance and ranks only the points within it.
   bool shared = spread <= 1.5f * r;
-  if (shared)
-  {
+  if (shared) {
     CollectingResultSet collect (s.candidates, sqr_gather);
-    impl_->tree->findNeighbors (collect, a, nanoflann::SearchParams ());
-    shared = s.candidates.size () <= 32 * k + 1024;
+    impl_->tree->findNeighbors (collect, a, nanoflann::SearchParams());
+    shared = s.candidates.size() <= 32 * k + 1024;
   }
   if (shared)
     orderByShells (xyz, a, sqr_gather, s);
 
   // Points are ranked anchor first. Each ranked point p bounds the k-th distance of the
-  // next ones by r_p + |q - p| too; the nearest of them gives the tightest limit, and the
-  // fewer candidates pass it, the less there is to sort.
-  s.done_pos.clear ();
-  s.done_kth.clear ();
-  for (std::size_t step = 0; step < last - first; ++step)
-  {
-    const std::size_t pos = step == 0 ? anchor : first + step - (first + step <= anchor ? 1 : 0);
+  // next ones by r_p + |q - p| too; the nearest of them gives the tightest limit, and
+  // the fewer candidates pass it, the less there is to sort.
+  s.done_pos.clear();
+  s.done_kth.clear();
+  for (std::size_t step = 0; step < last - first; ++step) {
+    const std::size_t pos =
+        step == 0 ? anchor : first + step - (first + step <= anchor ? 1 : 0);
     const float* q = &xyz[3 * pos];
-    float bound = std::numeric_limits<float>::max ();
-    for (std::size_t i = 0; i < s.done_pos.size (); ++i)
+    float bound = std::numeric_limits<float>::max();
+    for (std::size_t i = 0; i < s.done_pos.size(); ++i)
       bound = std::min (bound, s.done_kth[i] + distance (q, &xyz[3 * s.done_pos[i]]));
     pcl::index_t* out_indices = indices + (pos - first) * k;
     float* out_sqr = sqr_distances + (pos - first) * k;
     if (step == 0)
       bound = r;
-    else if (!shared)
-    {
+    else if (!shared) {
       // The exact k-th distance, by a search that the bound prunes from the start.
       const float reach = bound * margin;
       nearestKSearch (q, k, out_indices, out_sqr, reach * reach + 1e-30f);
@@ -326,31 +328,29 @@ KdTree3f::nearestKSearchOfPoints (std::size_t first, std::size_t last, std::size
     bound *= margin;
     const float sqr_limit = bound * bound + 1e-30f;
     std::size_t m;
-    if (shared)
-    {
+    if (shared) {
       // Only candidates within bound + |q - a| of the anchor can be within bound of q.
       const float reach = (bound + distance (q, a)) * margin;
       m = s.shell_end[bucketOf (reach * reach, s.shell_scale)];
     }
-    else
-    {
+    else {
       CollectingResultSet collect (s.candidates, sqr_limit * margin);
-      impl_->tree->findNeighbors (collect, q, nanoflann::SearchParams ());
+      impl_->tree->findNeighbors (collect, q, nanoflann::SearchParams());
       gatherCoordinates (xyz, s);
-      m = s.candidates.size ();
+      m = s.candidates.size();
     }
     if (rankCandidates (q, m, k, sqr_limit, s))
-      for (std::size_t j = 0; j < k; ++j)
-      {
+      for (std::size_t j = 0; j < k; ++j) {
         out_indices[j] = impl_->point_indices[static_cast<std::uint32_t> (s.sorted[j])];
         out_sqr[j] = keyDistance (s.sorted[j]);
       }
-    else  // cannot happen with exact arithmetic; stay exact if rounding defeats the margins
+    else // cannot happen with exact arithmetic; stay exact if rounding defeats the
+         // margins
       nearestKSearch (q, k, out_indices, out_sqr);
     s.done_pos.push_back (pos);
     s.done_kth.push_back (std::sqrt (out_sqr[k - 1]));
   }
   return k;
 }
-}  // namespace search
-}  // namespace pcl_ext
+} // namespace search
+} // namespace pcl_ext

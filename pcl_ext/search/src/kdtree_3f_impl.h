@@ -11,38 +11,45 @@
 #include <memory>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace search
-{
-namespace detail
-{
+namespace pcl_ext {
+namespace search {
+namespace detail {
 /** nanoflann dataset adaptor over a flat xyz array. */
-struct FlatCloud
-{
+struct FlatCloud {
   std::vector<float> xyz;
 
   std::size_t
-  kdtree_get_point_count () const { return xyz.size () / 3; }
+  kdtree_get_point_count () const
+  {
+    return xyz.size() / 3;
+  }
 
   float
-  kdtree_get_pt (std::size_t i, std::size_t dim) const { return xyz[3 * i + dim]; }
+  kdtree_get_pt (std::size_t i, std::size_t dim) const
+  {
+    return xyz[3 * i + dim];
+  }
 
   template <class BoundingBox>
   bool
-  kdtree_get_bbox (BoundingBox&) const { return false; }
+  kdtree_get_bbox (BoundingBox&) const
+  {
+    return false;
+  }
 };
 
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<float, FlatCloud>, FlatCloud, 3, std::uint32_t>;
-}  // namespace detail
+using Tree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, FlatCloud>,
+                                        FlatCloud,
+                                        3,
+                                        std::uint32_t>;
+} // namespace detail
 
-struct KdTree3f::Impl
-{
+struct KdTree3f::Impl {
   detail::FlatCloud data;
-  std::vector<pcl::index_t> point_indices;  // tree position -> caller's point index
+  std::vector<pcl::index_t> point_indices; // tree position -> caller's point index
   std::unique_ptr<detail::Tree> tree;
-  std::uint64_t generation = 0;  // a build number unique in the process
+  std::uint64_t generation = 0; // a build number unique in the process
 };
-}  // namespace search
-}  // namespace pcl_ext
+} // namespace search
+} // namespace pcl_ext

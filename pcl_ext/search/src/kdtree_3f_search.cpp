@@ -7,28 +7,37 @@
 #include <cstdint>
 #include <limits>
 
-namespace pcl_ext
-{
-namespace search
-{
-namespace
-{
-/** nanoflann's sorted k-nearest result set, with an optional starting bound on the distance.
-  *
-  * nanoflann cannot prune until k candidates are found, so every query first walks whole
-  * sibling subtrees. A caller that knows at least k points lie within some distance (for
-  * instance from the previous, nearby query) passes it as \a bound, and pruning starts at
-  * once. The result is the same: points beyond the bound cannot be among the k nearest.
-  */
-class BoundedKnnResultSet
-{
+namespace pcl_ext {
+namespace search {
+namespace {
+/** nanoflann's sorted k-nearest result set, with an optional starting bound on the
+ * distance.
+ *
+ * nanoflann cannot prune until k candidates are found, so every query first walks whole
+ * sibling subtrees. A caller that knows at least k points lie within some distance (for
+ * instance from the previous, nearby query) passes it as \a bound, and pruning starts
+ * at once. The result is the same: points beyond the bound cannot be among the k
+ * nearest.
+ */
+class BoundedKnnResultSet {
 public:
-  BoundedKnnResultSet (std::uint32_t* positions, float* dists, std::size_t capacity, float bound)
-    : positions_ (positions), dists_ (dists), capacity_ (capacity), bound_ (bound)
+  BoundedKnnResultSet (std::uint32_t* positions,
+                       float* dists,
+                       std::size_t capacity,
+                       float bound)
+  : positions_ (positions), dists_ (dists), capacity_ (capacity), bound_ (bound)
   {}
 
-  std::size_t size () const { return count_; }
-  bool full () const { return count_ == capacity_; }
+  std::size_t
+  size () const
+  {
+    return count_;
+  }
+  bool
+  full () const
+  {
+    return count_ == capacity_;
+  }
 
   float
   worstDist () const
@@ -42,13 +51,11 @@ public:
     // Sorted insertion; equal distances keep the first found first.
     std::size_t i = count_;
     for (; i > 0 && dists_[i - 1] > dist; --i)
-      if (i < capacity_)
-      {
+      if (i < capacity_) {
         dists_[i] = dists_[i - 1];
         positions_[i] = positions_[i - 1];
       }
-    if (i < capacity_)
-    {
+    if (i < capacity_) {
       dists_[i] = dist;
       positions_[i] = pos;
     }
@@ -64,28 +71,31 @@ private:
   float bound_;
   std::size_t count_ = 0;
 };
-}  // namespace
+} // namespace
 
 std::size_t
-KdTree3f::nearestKSearch (const float* query, std::size_t k, pcl::index_t* indices,
-                          float* sqr_distances, float bound) const
+KdTree3f::nearestKSearch (const float* query,
+                          std::size_t k,
+                          pcl::index_t* indices,
+                          float* sqr_distances,
+                          float bound) const
 {
   if (!impl_->tree || k == 0)
     return 0;
-  k = std::min (k, size ());
+  k = std::min (k, size());
   // nanoflann writes tree positions; map them to point indices in place.
   static_assert (sizeof (pcl::index_t) == sizeof (std::uint32_t), "index width");
   auto* positions = reinterpret_cast<std::uint32_t*> (indices);
   BoundedKnnResultSet result (positions, sqr_distances, k, bound);
-  impl_->tree->findNeighbors (result, query, nanoflann::SearchParams ());
-  std::size_t found = result.size ();
-  if (found < k && bound < std::numeric_limits<float>::max ())
-  {
-    // The caller's bound was wrong (fewer than k points inside it): search again without it.
-    BoundedKnnResultSet unbounded (positions, sqr_distances, k,
-                                   std::numeric_limits<float>::max ());
-    impl_->tree->findNeighbors (unbounded, query, nanoflann::SearchParams ());
-    found = unbounded.size ();
+  impl_->tree->findNeighbors (result, query, nanoflann::SearchParams());
+  std::size_t found = result.size();
+  if (found < k && bound < std::numeric_limits<float>::max()) {
+    // The caller's bound was wrong (fewer than k points inside it): search again
+    // without it.
+    BoundedKnnResultSet unbounded (
+        positions, sqr_distances, k, std::numeric_limits<float>::max());
+    impl_->tree->findNeighbors (unbounded, query, nanoflann::SearchParams());
+    found = unbounded.size();
   }
   for (std::size_t i = 0; i < found; ++i)
     indices[i] = impl_->point_indices[positions[i]];
@@ -93,28 +103,31 @@ KdTree3f::nearestKSearch (const float* query, std::size_t k, pcl::index_t* indic
 }
 
 std::size_t
-KdTree3f::radiusSearch (const float* query, double radius, pcl::Indices& indices,
-                        std::vector<float>& sqr_distances, std::size_t max_nn,
+KdTree3f::radiusSearch (const float* query,
+                        double radius,
+                        pcl::Indices& indices,
+                        std::vector<float>& sqr_distances,
+                        std::size_t max_nn,
                         bool sorted) const
 {
-  indices.clear ();
-  sqr_distances.clear ();
+  indices.clear();
+  sqr_distances.clear();
   if (!impl_->tree || !(radius > 0.0))
     return 0;
   std::vector<std::pair<std::uint32_t, float>> matches;
   nanoflann::SearchParams params;
   params.sorted = sorted || max_nn > 0;
-  impl_->tree->radiusSearch (query, static_cast<float> (radius * radius), matches, params);
-  if (max_nn > 0 && matches.size () > max_nn)
+  impl_->tree->radiusSearch (
+      query, static_cast<float> (radius * radius), matches, params);
+  if (max_nn > 0 && matches.size() > max_nn)
     matches.resize (max_nn);
-  indices.resize (matches.size ());
-  sqr_distances.resize (matches.size ());
-  for (std::size_t i = 0; i < matches.size (); ++i)
-  {
+  indices.resize (matches.size());
+  sqr_distances.resize (matches.size());
+  for (std::size_t i = 0; i < matches.size(); ++i) {
     indices[i] = impl_->point_indices[matches[i].first];
     sqr_distances[i] = matches[i].second;
   }
-  return matches.size ();
+  return matches.size();
 }
-}  // namespace search
-}  // namespace pcl_ext
+} // namespace search
+} // namespace pcl_ext

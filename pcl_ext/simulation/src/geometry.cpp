@@ -6,48 +6,43 @@
 #include <algorithm>
 #include <cmath>
 
-namespace pcl_ext
-{
-namespace simulation
-{
+namespace pcl_ext {
+namespace simulation {
 double
 GroundTruthCurve::distance (const Vec3& p) const
 {
-  if (shape == Shape::Circle)
-  {
+  if (shape == Shape::Circle) {
     const Vec3 q = p - a;
     const double h = q.dot (b);
-    const double rho = (q - h * b).norm ();
+    const double rho = (q - h * b).norm();
     return std::hypot (rho - radius, h);
   }
   const Vec3 d = b - a;
-  const double len2 = d.squaredNorm ();
+  const double len2 = d.squaredNorm();
   double s = len2 > 0.0 ? (p - a).dot (d) / len2 : 0.0;
   s = std::clamp (s, 0.0, 1.0);
-  return (p - (a + s * d)).norm ();
+  return (p - (a + s * d)).norm();
 }
 
 Aabb
-GroundTruthCurve::bounds () const
+GroundTruthCurve::bounds() const
 {
   Aabb box;
-  if (shape == Shape::Circle)
-  {
+  if (shape == Shape::Circle) {
     // Extent of a circle along axis k: radius * sqrt(1 - n_k^2).
-    const Vec3 ext = (Vec3::Ones () - b.cwiseProduct (b)).cwiseMax (0.0).cwiseSqrt () * radius;
+    const Vec3 ext =
+        (Vec3::Ones() - b.cwiseProduct (b)).cwiseMax (0.0).cwiseSqrt() * radius;
     box.extend (a - ext);
     box.extend (a + ext);
   }
-  else
-  {
+  else {
     box.extend (a);
     box.extend (b);
   }
   return box;
 }
 
-namespace
-{
+namespace {
 double
 evaluate (const double* c, int degree, double t)
 {
@@ -61,16 +56,14 @@ evaluate (const double* c, int degree, double t)
 double
 bisect (const double* c, int degree, double lo, double hi, double flo)
 {
-  for (int it = 0; it < 200; ++it)
-  {
+  for (int it = 0; it < 200; ++it) {
     const double mid = 0.5 * (lo + hi);
     if (mid <= lo || mid >= hi)
       break;
     const double fm = evaluate (c, degree, mid);
     if (fm == 0.0)
       return mid;
-    if ((fm < 0.0) == (flo < 0.0))
-    {
+    if ((fm < 0.0) == (flo < 0.0)) {
       lo = mid;
       flo = fm;
     }
@@ -79,7 +72,7 @@ bisect (const double* c, int degree, double lo, double hi, double flo)
   }
   return 0.5 * (lo + hi);
 }
-}  // namespace
+} // namespace
 
 int
 solvePolynomial (const double* c, int degree, double lo, double hi, double* roots)
@@ -88,17 +81,16 @@ solvePolynomial (const double* c, int degree, double lo, double hi, double* root
     --degree;
   if (degree <= 0)
     return 0;
-  if (degree == 1)
-  {
+  if (degree == 1) {
     const double t = -c[0] / c[1];
-    if (t >= lo && t <= hi)
-    {
+    if (t >= lo && t <= hi) {
       roots[0] = t;
       return 1;
     }
     return 0;
   }
-  // Split [lo, hi] at the roots of the derivative: the polynomial is monotone between them.
+  // Split [lo, hi] at the roots of the derivative: the polynomial is monotone between
+  // them.
   double derivative[4];
   for (int i = 1; i <= degree; ++i)
     derivative[i - 1] = i * c[i];
@@ -112,12 +104,10 @@ solvePolynomial (const double* c, int degree, double lo, double hi, double* root
   knots[num_knots++] = hi;
   int count = 0;
   double fa = evaluate (c, degree, knots[0]);
-  for (int i = 0; i + 1 < num_knots; ++i)
-  {
+  for (int i = 0; i + 1 < num_knots; ++i) {
     const double a = knots[i], b = knots[i + 1];
     const double fb = evaluate (c, degree, b);
-    if (fa == 0.0)
-    {
+    if (fa == 0.0) {
       if (count == 0 || roots[count - 1] != a)
         roots[count++] = a;
     }
@@ -133,9 +123,9 @@ solvePolynomial (const double* c, int degree, double lo, double hi, double* root
 void
 orthonormalFrame (const Vec3& n, Vec3& u, Vec3& v)
 {
-  const Vec3 helper = std::abs (n.z ()) < 0.9 ? Vec3::UnitZ () : Vec3::UnitX ();
-  u = helper.cross (n).normalized ();
+  const Vec3 helper = std::abs (n.z()) < 0.9 ? Vec3::UnitZ() : Vec3::UnitX();
+  u = helper.cross (n).normalized();
   v = n.cross (u);
 }
-}  // namespace simulation
-}  // namespace pcl_ext
+} // namespace simulation
+} // namespace pcl_ext

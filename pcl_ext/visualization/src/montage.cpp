@@ -5,10 +5,8 @@
 
 #include <algorithm>
 
-namespace pcl_ext
-{
-namespace visualization
-{
+namespace pcl_ext {
+namespace visualization {
 RenderOptions
 makeMontageOptions (std::size_t tiles, int tile_width, int tile_height, int max_columns)
 {
@@ -17,10 +15,10 @@ makeMontageOptions (std::size_t tiles, int tile_width, int tile_height, int max_
   const int rows = (n + columns - 1) / columns;
   RenderOptions options;
   options.columns = columns;
-  options.zoom_out = 2.8;  // tiles are small: keep the whole scene inside each
+  options.zoom_out = 2.8; // tiles are small: keep the whole scene inside each
   options.width = std::clamp (tile_width, 16, 16384 / columns) * columns;
   options.height = std::clamp (tile_height, 16, 16384 / rows) * rows;
   return options;
 }
-}  // namespace visualization
-}  // namespace pcl_ext
+} // namespace visualization
+} // namespace pcl_ext

@@ -7,10 +7,8 @@
 
 #include <vector>
 
-namespace
-{
-struct Args
-{
+namespace {
+struct Args {
   int k = 50;
   unsigned int threads = 0;
   double radius = 0.1;
@@ -21,7 +19,7 @@ struct Args
   int
   parse (std::vector<const char*> argv)
   {
-    argv.insert (argv.begin (), "pcl_ext_test");
+    argv.insert (argv.begin(), "pcl_ext_test");
     pcl_ext::apps::CommandLine cl ("pcl_ext_test", "A test tool.");
     cl.addPositional ("input.pcd", input, "input");
     cl.addPositional ("output.pcd", output, "output");
@@ -31,22 +29,31 @@ struct Args
     cl.addOption ("radius", radius, "radius");
     cl.addOption ("method", method, "method");
     cl.addSwitch ("verbose", verbose, "talk");
-    return cl.parse (static_cast<int> (argv.size ()), argv.data ());
+    return cl.parse (static_cast<int> (argv.size()), argv.data());
   }
 };
-}  // namespace
+} // namespace
 
 TEST (CommandLine, ParsesPositionalsOptionsAndSwitches)
 {
   Args a;
-  EXPECT_EQ (a.parse ({"in.pcd", "-k", "30", "out.pcd", "-radius", "-0.5", "-verbose",
-                       "-method", "curve", "-threads", "2"}),
+  EXPECT_EQ (a.parse ({"in.pcd",
+                       "-k",
+                       "30",
+                       "out.pcd",
+                       "-radius",
+                       "-0.5",
+                       "-verbose",
+                       "-method",
+                       "curve",
+                       "-threads",
+                       "2"}),
              -1);
   EXPECT_EQ (a.input, "in.pcd");
   EXPECT_EQ (a.output, "out.pcd");
   EXPECT_EQ (a.extra, "");
   EXPECT_EQ (a.k, 30);
-  EXPECT_DOUBLE_EQ (a.radius, -0.5);  // range checks belong to each tool
+  EXPECT_DOUBLE_EQ (a.radius, -0.5); // range checks belong to each tool
   EXPECT_TRUE (a.verbose);
   EXPECT_EQ (a.method, "curve");
   EXPECT_EQ (a.threads, 2u);
@@ -64,9 +71,9 @@ TEST (CommandLine, DefaultsStayWhenNotGiven)
 TEST (CommandLine, HelpExitsZero)
 {
   Args a;
-  testing::internal::CaptureStdout ();
+  testing::internal::CaptureStdout();
   EXPECT_EQ (a.parse ({"-h"}), 0);
-  const std::string help = testing::internal::GetCapturedStdout ();
+  const std::string help = testing::internal::GetCapturedStdout();
   EXPECT_NE (help.find ("-k X"), std::string::npos);
   EXPECT_NE (help.find ("(default: 50)"), std::string::npos);
   EXPECT_NE (help.find ("(default: mst)"), std::string::npos);
@@ -76,13 +83,13 @@ TEST (CommandLine, HelpExitsZero)
 TEST (CommandLine, UsageErrorsExitOne)
 {
   const std::vector<std::vector<const char*>> bad = {
-      {},                                      // missing positionals
-      {"in.pcd"},                              // missing output
-      {"in.pcd", "out.pcd", "x", "y"},         // too many
-      {"in.pcd", "out.pcd", "-unknown", "1"},  // unknown option
-      {"in.pcd", "out.pcd", "-k"},             // missing value
-      {"in.pcd", "out.pcd", "-k", "ten"},      // not a number
-      {"in.pcd", "out.pcd", "-k", "1.5"},      // not an integer
+      {},                                     // missing positionals
+      {"in.pcd"},                             // missing output
+      {"in.pcd", "out.pcd", "x", "y"},        // too many
+      {"in.pcd", "out.pcd", "-unknown", "1"}, // unknown option
+      {"in.pcd", "out.pcd", "-k"},            // missing value
+      {"in.pcd", "out.pcd", "-k", "ten"},     // not a number
+      {"in.pcd", "out.pcd", "-k", "1.5"},     // not an integer
       {"in.pcd", "out.pcd", "-k", "99999999999"},
       {"in.pcd", "out.pcd", "-threads", "-1"},
       {"in.pcd", "out.pcd", "-radius", "nan"},
@@ -90,11 +97,11 @@ TEST (CommandLine, UsageErrorsExitOne)
       {"in.pcd", "out.pcd", "-radius", "0.1x"},
       {"in.pcd", "out.pcd", "-k", "3", "-k", "4"},
   };
-  for (const auto& argv : bad)
-  {
+  for (const auto& argv : bad) {
     Args a;
-    testing::internal::CaptureStderr ();
-    EXPECT_EQ (a.parse (argv), 1) << (argv.empty () ? "" : argv.back ());
-    EXPECT_NE (testing::internal::GetCapturedStderr ().find ("error"), std::string::npos);
+    testing::internal::CaptureStderr();
+    EXPECT_EQ (a.parse (argv), 1) << (argv.empty() ? "" : argv.back());
+    EXPECT_NE (testing::internal::GetCapturedStderr().find ("error"),
+               std::string::npos);
   }
 }

@@ -16,16 +16,17 @@ main ()
   pcl_ext::Neighbourhoods<pcl::PointXYZ> nb;
   nb.setInputCloud (cloud);
   nb.setKSearch (9);
-  if (!nb.compute () || nb.size () != cloud->size ())
+  if (!nb.compute() || nb.size() != cloud->size())
     return 1;
   Eigen::Matrix3d cov;
   Eigen::Vector3d centroid;
-  const auto row = nb[cloud->size () / 2];
-  pcl_ext::computeLocalCovariance (*cloud, row.begin (), row.end (), cov, centroid);
+  const auto row = nb[cloud->size() / 2];
+  pcl_ext::computeLocalCovariance (*cloud, row.begin(), row.end(), cov, centroid);
   pcl_ext::EigenDecomposition eig;
-  if (!pcl_ext::computeEigenDecomposition (cov, eig) || std::abs (eig.normal ().z ()) < 0.999)
+  if (!pcl_ext::computeEigenDecomposition (cov, eig) ||
+      std::abs (eig.normal().z()) < 0.999)
     return 2;
-  std::cout << "precompiled consumer: " << nb.size () << " neighbourhoods, normal z = "
-            << eig.normal ().z () << "\n";
+  std::cout << "precompiled consumer: " << nb.size()
+            << " neighbourhoods, normal z = " << eig.normal().z() << "\n";
   return 0;
 }

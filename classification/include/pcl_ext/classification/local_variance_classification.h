@@ -1,6 +1,6 @@
 /*
- * pcl_ext: surface / edge / boundary classification by local variance (Belton & Lichti 2006,
- * section 2).
+ * pcl_ext: surface / edge / boundary classification by local variance (Belton & Lichti
+ * 2006, section 2).
  */
 #pragma once
 
@@ -15,58 +15,58 @@
 
 #include <vector>
 
-namespace pcl_ext
-{
+namespace pcl_ext {
 /** \brief Labels every point surface, edge or boundary from the covariance of its
-  * neighbourhood (Belton & Lichti 2006, section 2, eq. 1-8).
-  *
-  * The paper's workflow, in one pass over one neighbourhood search:
-  * 1. curvature kappa = l0 / (l0 + l1 + l2) of each neighbourhood (eq. 4); points with
-  *    kappa <= the curvature threshold are surface (the cheap test of section 2.2);
-  * 2. points above it are re-checked by the variance of kappa over their neighbourhood
-  *    (eq. 5): var(kappa) > the variance threshold makes an edge, otherwise they are surface
-  *    (curved but smooth, e.g. a pipe, section 2.2 and figure 1);
-  * 3. surface points whose position is far from their neighbourhood's centroid are boundary
-  *    points (section 2.3, eq. 6-8; see pcl_ext::centroidOffsetStatistic).
-  * Each test can run alone or in any combination (setTests): the curvature test alone calls
-  * every point above the threshold an edge; the variance test alone checks every point; the
-  * boundary test alone splits all points into boundary and surface.
-  *
-  * The covariance of each neighbourhood is computed once and used for kappa, the boundary
-  * test and (through kappa) the variance test; the loops are OpenMP-parallel
-  * (setNumberOfThreads) and the labels do not depend on the thread count.
-  *
-  * Output: classify() gives one pcl::Label per index with a pcl_ext::PointClass value
-  * (1 surface, 2 edge, 3 boundary); extract() gives the indices of each class. Points without a
-  * valid neighbourhood (non-finite, fewer than 3 neighbours, coincident or collinear
-  * neighbours, fewer than 3 valid curvatures for eq. 5) are 0, "unknown".
-  *
-  * Options beyond the paper, off by default: the scanner's range noise removed from eq. 4-6
-  * (setNoiseStandardDeviation), boundary labels over a band of the neighbourhood
-  * (setBoundaryBand, setBoundaryBandFraction), edges required to bend the normals
-  * (setCreaseAngle) and the k neighbours capped at a radius (setMaxRadius). Together (noise
-  * removed, band fraction 0.6, crease angle 70 degrees) they meet the surface, edge and
-  * boundary goals on the generated scenes (docs/belton_lichti.md has the figures).
-  *
-  * Departures from the text: eq. 6 is scaled by the neighbourhood size (see
-  * pcl_ext::ChiSquaredBoundaryEstimation, setScaleByNeighbourhoodSize); with indices, eq. 5
-  * averages over the neighbours that are among the indices (only their kappa is computed); the
-  * curvature threshold, which the paper leaves to the user, is derived from the data by
-  * default (setCurvatureThreshold); optionally the scanner's range noise is removed from the
-  * smallest eigenvalue before eq. 4-5 (setNoiseStandardDeviation, off by default).
-  *
-  * \code
-  * pcl_ext::LocalVarianceClassification<pcl::PointXYZ> lvc;
-  * lvc.setInputCloud (cloud);
-  * lvc.setKSearch (50);
-  * pcl::PointCloud<pcl::Label> labels;
-  * lvc.classify (labels);
-  * \endcode
-  */
+ * neighbourhood (Belton & Lichti 2006, section 2, eq. 1-8).
+ *
+ * The paper's workflow, in one pass over one neighbourhood search:
+ * 1. curvature kappa = l0 / (l0 + l1 + l2) of each neighbourhood (eq. 4); points with
+ *    kappa <= the curvature threshold are surface (the cheap test of section 2.2);
+ * 2. points above it are re-checked by the variance of kappa over their neighbourhood
+ *    (eq. 5): var(kappa) > the variance threshold makes an edge, otherwise they are
+ * surface (curved but smooth, e.g. a pipe, section 2.2 and figure 1);
+ * 3. surface points whose position is far from their neighbourhood's centroid are
+ * boundary points (section 2.3, eq. 6-8; see pcl_ext::centroidOffsetStatistic). Each
+ * test can run alone or in any combination (setTests): the curvature test alone calls
+ * every point above the threshold an edge; the variance test alone checks every point;
+ * the boundary test alone splits all points into boundary and surface.
+ *
+ * The covariance of each neighbourhood is computed once and used for kappa, the
+ * boundary test and (through kappa) the variance test; the loops are OpenMP-parallel
+ * (setNumberOfThreads) and the labels do not depend on the thread count.
+ *
+ * Output: classify() gives one pcl::Label per index with a pcl_ext::PointClass value
+ * (1 surface, 2 edge, 3 boundary); extract() gives the indices of each class. Points
+ * without a valid neighbourhood (non-finite, fewer than 3 neighbours, coincident or
+ * collinear neighbours, fewer than 3 valid curvatures for eq. 5) are 0, "unknown".
+ *
+ * Options beyond the paper, off by default: the scanner's range noise removed from eq.
+ * 4-6 (setNoiseStandardDeviation), boundary labels over a band of the neighbourhood
+ * (setBoundaryBand, setBoundaryBandFraction), edges required to bend the normals
+ * (setCreaseAngle) and the k neighbours capped at a radius (setMaxRadius). Together
+ * (noise removed, band fraction 0.6, crease angle 70 degrees) they meet the surface,
+ * edge and boundary goals on the generated scenes (docs/belton_lichti.md has the
+ * figures).
+ *
+ * Departures from the text: eq. 6 is scaled by the neighbourhood size (see
+ * pcl_ext::ChiSquaredBoundaryEstimation, setScaleByNeighbourhoodSize); with indices,
+ * eq. 5 averages over the neighbours that are among the indices (only their kappa is
+ * computed); the curvature threshold, which the paper leaves to the user, is derived
+ * from the data by default (setCurvatureThreshold); optionally the scanner's range
+ * noise is removed from the smallest eigenvalue before eq. 4-5
+ * (setNoiseStandardDeviation, off by default).
+ *
+ * \code
+ * pcl_ext::LocalVarianceClassification<pcl::PointXYZ> lvc;
+ * lvc.setInputCloud (cloud);
+ * lvc.setKSearch (50);
+ * pcl::PointCloud<pcl::Label> labels;
+ * lvc.classify (labels);
+ * \endcode
+ */
 template <typename PointT>
 class LocalVarianceClassification : public pcl::PCLBase<PointT>,
-                                    public NeighbourhoodOptions<PointT>
-{
+                                    public NeighbourhoodOptions<PointT> {
 public:
   using Ptr = pcl::shared_ptr<LocalVarianceClassification<PointT>>;
   using ConstPtr = pcl::shared_ptr<const LocalVarianceClassification<PointT>>;
@@ -75,167 +75,234 @@ public:
   using SearchPtr = typename Neighbourhoods<PointT>::SearchPtr;
 
   /** \brief The tests of the workflow, combined with |. */
-  enum Test : unsigned int
-  {
-    CURVATURE_TEST = 1,  ///< kappa > curvature threshold (eq. 4)
-    VARIANCE_TEST = 2,   ///< var(kappa) > variance threshold (eq. 5)
-    BOUNDARY_TEST = 4,   ///< chi-squared centroid test (eq. 6-8)
+  enum Test : unsigned int {
+    CURVATURE_TEST = 1, ///< kappa > curvature threshold (eq. 4)
+    VARIANCE_TEST = 2,  ///< var(kappa) > variance threshold (eq. 5)
+    BOUNDARY_TEST = 4,  ///< chi-squared centroid test (eq. 6-8)
     ALL_TESTS = 7
   };
 
-  LocalVarianceClassification () = default;
+  LocalVarianceClassification() = default;
 
   /** \brief Curvature threshold (the cheap test of section 2.2, on kappa of eq. 4).
-    * Valid: >= 0. Default 0: derived from the data as factor * median(kappa)
-    * (setCurvatureThresholdFactor). Most points of a TLS scene lie on smooth surfaces, so the
-    * median kappa is the noise level of a smooth surface at the scene's typical spacing: for a
-    * plane with range noise sigma and neighbourhood radius r (k = pi r^2 / s^2 at spacing s),
-    * kappa ~= 2 sigma^2 / r^2, which is also a way to set it by hand. r varies with range, so
-    * one threshold cannot fit a whole TLS scene: setNoiseStandardDeviation removes that part
-    * of kappa per neighbourhood. Points below it are never
-    * re-checked, so a low value costs time, not accuracy. getCurvatureThresholdUsed() gives
-    * the value of the last classify(). */
+   * Valid: >= 0. Default 0: derived from the data as factor * median(kappa)
+   * (setCurvatureThresholdFactor). Most points of a TLS scene lie on smooth surfaces,
+   * so the median kappa is the noise level of a smooth surface at the scene's typical
+   * spacing: for a plane with range noise sigma and neighbourhood radius r (k = pi r^2
+   * / s^2 at spacing s), kappa ~= 2 sigma^2 / r^2, which is also a way to set it by
+   * hand. r varies with range, so one threshold cannot fit a whole TLS scene:
+   * setNoiseStandardDeviation removes that part of kappa per neighbourhood. Points
+   * below it are never re-checked, so a low value costs time, not accuracy.
+   * getCurvatureThresholdUsed() gives the value of the last classify(). */
   void
-  setCurvatureThreshold (double threshold) { curvature_threshold_ = threshold; }
+  setCurvatureThreshold (double threshold)
+  {
+    curvature_threshold_ = threshold;
+  }
 
   double
-  getCurvatureThreshold () const { return curvature_threshold_; }
+  getCurvatureThreshold () const
+  {
+    return curvature_threshold_;
+  }
 
-  /** \brief Multiple of the median kappa used when the curvature threshold is 0. Default 3;
-    * valid: > 0. */
+  /** \brief Multiple of the median kappa used when the curvature threshold is 0.
+   * Default 3; valid: > 0. */
   void
-  setCurvatureThresholdFactor (double factor) { curvature_factor_ = factor; }
+  setCurvatureThresholdFactor (double factor)
+  {
+    curvature_factor_ = factor;
+  }
 
   double
-  getCurvatureThresholdFactor () const { return curvature_factor_; }
+  getCurvatureThresholdFactor () const
+  {
+    return curvature_factor_;
+  }
 
   /** \brief The curvature threshold the last classify() used (derived or set). */
   double
-  getCurvatureThresholdUsed () const { return curvature_threshold_used_; }
+  getCurvatureThresholdUsed () const
+  {
+    return curvature_threshold_used_;
+  }
 
-  /** \brief Variance-of-curvature tolerance (eq. 5): above it a point is an edge. Default 1e-4
-    * (the paper's, from user trials); valid: >= 0. */
+  /** \brief Variance-of-curvature tolerance (eq. 5): above it a point is an edge.
+   * Default 1e-4 (the paper's, from user trials); valid: >= 0. */
   void
-  setVarianceThreshold (double threshold) { variance_threshold_ = threshold; }
+  setVarianceThreshold (double threshold)
+  {
+    variance_threshold_ = threshold;
+  }
 
   double
-  getVarianceThreshold () const { return variance_threshold_; }
+  getVarianceThreshold () const
+  {
+    return variance_threshold_;
+  }
 
-  /** \brief Range noise standard deviation sigma of the scanner, in the cloud's units, removed
-    * from the smallest eigenvalue before eq. 4-5: kappa = l0' / (l0' + l1 + l2) with
-    * l0' = max(l0 - sigma^2, 0). Default 0: the paper's eq. 4 exactly. Valid: finite, >= 0.
-    *
-    * Why: range noise adds up to sigma^2 (its component along the normal) to l0 of every
-    * neighbourhood, so a plane has kappa ~= sigma^2 / (l1 + l2), which depends on the
-    * neighbourhood's extent, not on the surface. Near a scanner k neighbours span a few
-    * centimetres, the noise dominates l0, and kappa and its variance (eq. 5) exceed the paper's
-    * tolerance on flat walls (section 2.1 notes that the threshold depends on range, incidence
-    * and the scanner's error, after Bae et al. 2005). A crease inside the neighbourhood raises
-    * l0 by a fraction of the neighbourhood's squared extent, far above sigma^2 wherever the
-    * neighbourhood is wider than a few sigma, so it still reaches the tests. Give the scanner's
-    * range noise (for several scanners the largest); overestimating it by half costs little.
-    * With it set, most surface points get kappa = 0, so the derived curvature threshold is
-    * usually 0 and every point with kappa above the noise floor is re-checked by eq. 5. Where
-    * all neighbourhoods have the same extent (uniform density) the derived threshold already
-    * absorbs the noise and this option can add false edges far from the creases (every crease
-    * point is an edge either way). It pays on TLS scans, where the extent varies with range
-    * (docs/belton_lichti.md has the figures of both cases).
-    *
-    * The boundary test (eq. 6) uses it too: the index point's own noise displaces it from the
-    * centroid, so u^2 and v^2 are compared with l1 / n + sigma^2 and l2 / n + sigma^2 instead
-    * of l1 / n and l2 / n (see pcl_ext::centroidOffsetStatistic). Where k neighbours span a few
-    * centimetres this removes the false boundaries the noise alone makes. */
+  /** \brief Range noise standard deviation sigma of the scanner, in the cloud's units,
+   * removed from the smallest eigenvalue before eq. 4-5: kappa = l0' / (l0' + l1 + l2)
+   * with l0' = max(l0 - sigma^2, 0). Default 0: the paper's eq. 4 exactly. Valid:
+   * finite, >= 0.
+   *
+   * Why: range noise adds up to sigma^2 (its component along the normal) to l0 of every
+   * neighbourhood, so a plane has kappa ~= sigma^2 / (l1 + l2), which depends on the
+   * neighbourhood's extent, not on the surface. Near a scanner k neighbours span a few
+   * centimetres, the noise dominates l0, and kappa and its variance (eq. 5) exceed the
+   * paper's tolerance on flat walls (section 2.1 notes that the threshold depends on
+   * range, incidence and the scanner's error, after Bae et al. 2005). A crease inside
+   * the neighbourhood raises l0 by a fraction of the neighbourhood's squared extent,
+   * far above sigma^2 wherever the neighbourhood is wider than a few sigma, so it still
+   * reaches the tests. Give the scanner's range noise (for several scanners the
+   * largest); overestimating it by half costs little. With it set, most surface points
+   * get kappa = 0, so the derived curvature threshold is usually 0 and every point with
+   * kappa above the noise floor is re-checked by eq. 5. Where all neighbourhoods have
+   * the same extent (uniform density) the derived threshold already absorbs the noise
+   * and this option can add false edges far from the creases (every crease point is an
+   * edge either way). It pays on TLS scans, where the extent varies with range
+   * (docs/belton_lichti.md has the figures of both cases).
+   *
+   * The boundary test (eq. 6) uses it too: the index point's own noise displaces it
+   * from the centroid, so u^2 and v^2 are compared with l1 / n + sigma^2 and l2 / n +
+   * sigma^2 instead of l1 / n and l2 / n (see pcl_ext::centroidOffsetStatistic). Where
+   * k neighbours span a few centimetres this removes the false boundaries the noise
+   * alone makes. */
   void
-  setNoiseStandardDeviation (double sigma) { noise_sigma_ = sigma; }
+  setNoiseStandardDeviation (double sigma)
+  {
+    noise_sigma_ = sigma;
+  }
 
   double
-  getNoiseStandardDeviation () const { return noise_sigma_; }
+  getNoiseStandardDeviation () const
+  {
+    return noise_sigma_;
+  }
 
-  /** \brief Smallest crease an edge must show, as the angle between normals, in radians: a
-    * point the variance test (eq. 5) calls an edge stays one only when some neighbour's
-    * normal differs from its own by more than this angle; otherwise it goes on through the
-    * workflow as a surface point (the boundary test). Default 0: off, the paper's workflow;
-    * valid: 0 .. pi/2 (normals are unoriented, so angles above pi/2 are folded).
-    *
-    * Why: eq. 5 measures how much kappa (eq. 4) varies, and on a curved surface kappa also
-    * varies with the shape of the neighbourhood, not only with a crease: next to a shadow or
-    * the end of a pipe the neighbourhood becomes one-sided and kappa changes, though every
-    * normal in it lies on one smooth cylinder. The paper's own principal-direction analysis
-    * (section 5) and its closing remark (interrogating index points "with regards to the
-    * principle curvature directions, not just the normal directions") point to the normals
-    * for this. The angle is the widest between two normals of the neighbourhood (each the
-    * eigenvector of l0 of its own neighbourhood, already computed), found in two passes over
-    * the neighbours of each edge candidate: from the point's own normal to the farthest, then
-    * from that to the farthest from it (on a crease the point's own normal is a blend of the
-    * two faces'). Near a crease those normals are blends too, so a right angle shows as less:
-    * pi/4 keeps nearly every right-angled crease of walls, boxes and beams, and larger angles
-    * trade crease points for fewer false edges on curved surfaces (docs/belton_lichti.md has
-    * the edge F1 for several angles). */
+  /** \brief Smallest crease an edge must show, as the angle between normals, in
+   * radians: a point the variance test (eq. 5) calls an edge stays one only when some
+   * neighbour's normal differs from its own by more than this angle; otherwise it goes
+   * on through the workflow as a surface point (the boundary test). Default 0: off, the
+   * paper's workflow; valid: 0 .. pi/2 (normals are unoriented, so angles above pi/2
+   * are folded).
+   *
+   * Why: eq. 5 measures how much kappa (eq. 4) varies, and on a curved surface kappa
+   * also varies with the shape of the neighbourhood, not only with a crease: next to a
+   * shadow or the end of a pipe the neighbourhood becomes one-sided and kappa changes,
+   * though every normal in it lies on one smooth cylinder. The paper's own
+   * principal-direction analysis (section 5) and its closing remark (interrogating
+   * index points "with regards to the principle curvature directions, not just the
+   * normal directions") point to the normals for this. The angle is the widest between
+   * two normals of the neighbourhood (each the eigenvector of l0 of its own
+   * neighbourhood, already computed), found in two passes over the neighbours of each
+   * edge candidate: from the point's own normal to the farthest, then from that to the
+   * farthest from it (on a crease the point's own normal is a blend of the two faces').
+   * Near a crease those normals are blends too, so a right angle shows as less: pi/4
+   * keeps nearly every right-angled crease of walls, boxes and beams, and larger angles
+   * trade crease points for fewer false edges on curved surfaces (docs/belton_lichti.md
+   * has the edge F1 for several angles). */
   void
-  setCreaseAngle (double radians) { crease_angle_ = radians; }
+  setCreaseAngle (double radians)
+  {
+    crease_angle_ = radians;
+  }
 
   double
-  getCreaseAngle () const { return crease_angle_; }
+  getCreaseAngle () const
+  {
+    return crease_angle_;
+  }
 
-  /** \brief Confidence level of the boundary test (alpha of chi2_2(alpha), eq. 6). Default
-    * 0.95; valid: 0 < confidence < 1. */
+  /** \brief Confidence level of the boundary test (alpha of chi2_2(alpha), eq. 6).
+   * Default 0.95; valid: 0 < confidence < 1. */
   void
-  setConfidence (double confidence) { confidence_ = confidence; }
+  setConfidence (double confidence)
+  {
+    confidence_ = confidence;
+  }
 
   double
-  getConfidence () const { return confidence_; }
+  getConfidence () const
+  {
+    return confidence_;
+  }
 
-  /** \brief Scale eq. 6 by the neighbourhood size (default true; false: the printed form, see
-    * pcl_ext::centroidOffsetStatistic). */
+  /** \brief Scale eq. 6 by the neighbourhood size (default true; false: the printed
+   * form, see pcl_ext::centroidOffsetStatistic). */
   void
-  setScaleByNeighbourhoodSize (bool scale) { scale_by_size_ = scale; }
+  setScaleByNeighbourhoodSize (bool scale)
+  {
+    scale_by_size_ = scale;
+  }
 
   bool
-  getScaleByNeighbourhoodSize () const { return scale_by_size_; }
+  getScaleByNeighbourhoodSize () const
+  {
+    return scale_by_size_;
+  }
 
-  /** \brief Give the boundary class the reach of the edge class. Default false (the paper):
-    * a point is boundary when it fails eq. 6 itself, which happens within about half a
-    * neighbourhood radius of a border (farther in, the missing side moves the centroid too
-    * little). true: surface points with such a point among their neighbours are boundary too,
-    * so that, like an edge point (whose neighbourhood reaches across a crease), a boundary
-    * point is one whose neighbourhood reaches the border. */
+  /** \brief Give the boundary class the reach of the edge class. Default false (the
+   * paper): a point is boundary when it fails eq. 6 itself, which happens within about
+   * half a neighbourhood radius of a border (farther in, the missing side moves the
+   * centroid too little). true: surface points with such a point among their neighbours
+   * are boundary too, so that, like an edge point (whose neighbourhood reaches across a
+   * crease), a boundary point is one whose neighbourhood reaches the border. */
   void
-  setBoundaryBand (bool band) { boundary_band_ = band; }
+  setBoundaryBand (bool band)
+  {
+    boundary_band_ = band;
+  }
 
   bool
-  getBoundaryBand () const { return boundary_band_; }
+  getBoundaryBand () const
+  {
+    return boundary_band_;
+  }
 
-  /** \brief The share of each neighbourhood, nearest neighbours first, that the boundary band
-    * reaches through (setBoundaryBand): a surface point becomes boundary when one of its
-    * nearest ceil(fraction * size) neighbours fails eq. 6. Default 1: the whole neighbourhood;
-    * valid: 0 < fraction <= 1.
-    *
-    * Eq. 6 fires within about half a neighbourhood radius of a border, so the whole
-    * neighbourhood carries the band to about 1.5 radii, past the points whose neighbourhood
-    * reaches the border; a fraction below 1 stops it nearer (docs/belton_lichti.md has the
-    * boundary F1 for several fractions). */
+  /** \brief The share of each neighbourhood, nearest neighbours first, that the
+   * boundary band reaches through (setBoundaryBand): a surface point becomes boundary
+   * when one of its nearest ceil(fraction * size) neighbours fails eq. 6. Default 1:
+   * the whole neighbourhood; valid: 0 < fraction <= 1.
+   *
+   * Eq. 6 fires within about half a neighbourhood radius of a border, so the whole
+   * neighbourhood carries the band to about 1.5 radii, past the points whose
+   * neighbourhood reaches the border; a fraction below 1 stops it nearer
+   * (docs/belton_lichti.md has the boundary F1 for several fractions). */
   void
-  setBoundaryBandFraction (double fraction) { boundary_band_fraction_ = fraction; }
+  setBoundaryBandFraction (double fraction)
+  {
+    boundary_band_fraction_ = fraction;
+  }
 
   double
-  getBoundaryBandFraction () const { return boundary_band_fraction_; }
+  getBoundaryBandFraction () const
+  {
+    return boundary_band_fraction_;
+  }
 
-  /** \brief Which tests run, a combination of Test flags. Default ALL_TESTS (the paper's
-    * workflow); valid: any non-empty combination. */
+  /** \brief Which tests run, a combination of Test flags. Default ALL_TESTS (the
+   * paper's workflow); valid: any non-empty combination. */
   void
-  setTests (unsigned int tests) { tests_ = tests; }
+  setTests (unsigned int tests)
+  {
+    tests_ = tests;
+  }
 
   unsigned int
-  getTests () const { return tests_; }
+  getTests () const
+  {
+    return tests_;
+  }
 
-  /** \brief One label per index: a pcl_ext::PointClass value (0 unknown, 1 surface, 2 edge,
-    * 3 boundary). Empty after a PCL_ERROR on bad input or parameters. */
+  /** \brief One label per index: a pcl_ext::PointClass value (0 unknown, 1 surface, 2
+   * edge, 3 boundary). Empty after a PCL_ERROR on bad input or parameters. */
   void
   classify (pcl::PointCloud<pcl::Label>& labels);
 
-  /** \brief The indices of each class: \a clusters[c] lists the points of PointClass c, so
-    * there are always kNumPointClasses lists (unknown first), some maybe empty. Empty after a
-    * PCL_ERROR. */
+  /** \brief The indices of each class: \a clusters[c] lists the points of PointClass c,
+   * so there are always kNumPointClasses lists (unknown first), some maybe empty. Empty
+   * after a PCL_ERROR. */
   void
   extract (std::vector<pcl::PointIndices>& clusters);
 
@@ -251,25 +318,28 @@ protected:
   bool
   checkParameters () const;
 
-  /** \brief Pass 1: kappa per point (NaN without a tangent plane) and the eq. 6 statistic per
-    * row. */
-  template <bool dense> void
+  /** \brief Pass 1: kappa per point (NaN without a tangent plane) and the eq. 6
+   * statistic per row. */
+  template <bool dense>
+  void
   computeCovariances (const Neighbourhoods<PointT>& nb);
 
   /** \brief Pass 2: the label of each row from kappa, var(kappa) and the statistic. */
   void
   label (const Neighbourhoods<PointT>& nb, pcl::PointCloud<pcl::Label>& labels) const;
 
-  /** \brief Pass 3 (setBoundaryBand): surface rows with a boundary neighbour among their
-    * nearest (setBoundaryBandFraction) become boundary. */
+  /** \brief Pass 3 (setBoundaryBand): surface rows with a boundary neighbour among
+   * their nearest (setBoundaryBandFraction) become boundary. */
   void
-  widenBoundaries (const Neighbourhoods<PointT>& nb, pcl::PointCloud<pcl::Label>& labels) const;
+  widenBoundaries (const Neighbourhoods<PointT>& nb,
+                   pcl::PointCloud<pcl::Label>& labels) const;
 
   double
   deriveCurvatureThreshold () const;
 
   /** \brief setCreaseAngle: cosine of the widest angle between two normals of a row. */
-  template <typename Row> float
+  template <typename Row>
+  float
   widestNormalCosine (const Row& nn, const Eigen::Vector3f& own) const;
 
   double curvature_threshold_ = 0.0;
@@ -284,11 +354,12 @@ protected:
   bool scale_by_size_ = true;
   unsigned int tests_ = ALL_TESTS;
 
-  std::vector<float> kappa_;      ///< per point of the cloud; NaN when not computed
-  std::vector<float> statistic_;  ///< eq. 6 per row
-  std::vector<Eigen::Vector3f> normals_;  ///< per point of the cloud, with setCreaseAngle
+  std::vector<float> kappa_;     ///< per point of the cloud; NaN when not computed
+  std::vector<float> statistic_; ///< eq. 6 per row
+  std::vector<Eigen::Vector3f>
+      normals_; ///< per point of the cloud, with setCreaseAngle
 };
-}  // namespace pcl_ext
+} // namespace pcl_ext
 
 #ifdef PCL_NO_PRECOMPILE
 #include <pcl_ext/classification/impl/local_variance_classification.hpp>

@@ -11,12 +11,11 @@
 
 #include <type_traits>
 
-namespace pcl_ext
-{
-namespace detail
-{
-/** \brief The curvature kappa of a normal-like point: its \c curvature field (pcl::Normal,
-  * pcl::PointNormal, ...), else its \c surface_variance (pcl_ext::CovarianceFeatures). */
+namespace pcl_ext {
+namespace detail {
+/** \brief The curvature kappa of a normal-like point: its \c curvature field
+ * (pcl::Normal, pcl::PointNormal, ...), else its \c surface_variance
+ * (pcl_ext::CovarianceFeatures). */
 template <typename PointNT>
 inline float
 curvatureOf (const PointNT& n)
@@ -26,45 +25,50 @@ curvatureOf (const PointNT& n)
   else
     return n.surface_variance;
 }
-}  // namespace detail
+} // namespace detail
 
 /** \brief Variance of curvature over each point's neighbourhood (Belton & Lichti 2006,
-  * section 2.2, eq. 5): var(kappa) = (1/k) sum (kappa_i - mean kappa)^2 over the k neighbours
-  * (the index point included), where kappa is the surface variance of eq. 4.
-  *
-  * The curvatures come from the normals cloud given with setInputNormals(), one per input
-  * point, as in pcl::FeatureFromNormals: its \c curvature field (pcl::NormalEstimation's
-  * curvature is eq. 4) or, for pcl_ext::CovarianceFeatures, its \c surface_variance. Only
-  * finite curvatures count; a point with fewer than 3 of them, or that is not finite itself,
-  * gets NaN and the output is not dense.
-  *
-  * Near zero on smooth surfaces, plane or curved (a pipe's curvature is high but constant);
-  * large near creases, where the neighbourhood mixes low and high curvature. The paper
-  * thresholds it at 1e-4 (pcl_ext::LocalVarianceClassification does).
-  *
-  * Neighbourhoods: setKSearch (paper: the same k as for the curvature, 50), setRadiusSearch,
-  * or shared ones (setNeighbourhoods). Output: pcl_ext::CurvatureVariance.
-  */
-template <typename PointInT, typename PointNT, typename PointOutT = pcl_ext::CurvatureVariance>
+ * section 2.2, eq. 5): var(kappa) = (1/k) sum (kappa_i - mean kappa)^2 over the k
+ * neighbours (the index point included), where kappa is the surface variance of eq. 4.
+ *
+ * The curvatures come from the normals cloud given with setInputNormals(), one per
+ * input point, as in pcl::FeatureFromNormals: its \c curvature field
+ * (pcl::NormalEstimation's curvature is eq. 4) or, for pcl_ext::CovarianceFeatures, its
+ * \c surface_variance. Only finite curvatures count; a point with fewer than 3 of them,
+ * or that is not finite itself, gets NaN and the output is not dense.
+ *
+ * Near zero on smooth surfaces, plane or curved (a pipe's curvature is high but
+ * constant); large near creases, where the neighbourhood mixes low and high curvature.
+ * The paper thresholds it at 1e-4 (pcl_ext::LocalVarianceClassification does).
+ *
+ * Neighbourhoods: setKSearch (paper: the same k as for the curvature, 50),
+ * setRadiusSearch, or shared ones (setNeighbourhoods). Output:
+ * pcl_ext::CurvatureVariance.
+ */
+template <typename PointInT,
+          typename PointNT,
+          typename PointOutT = pcl_ext::CurvatureVariance>
 class CurvatureVarianceEstimation
-  : public NeighbourhoodFeature<pcl::FeatureFromNormals<PointInT, PointNT, PointOutT>, PointInT>
-{
+: public NeighbourhoodFeature<pcl::FeatureFromNormals<PointInT, PointNT, PointOutT>,
+                              PointInT> {
   using Base =
-      NeighbourhoodFeature<pcl::FeatureFromNormals<PointInT, PointNT, PointOutT>, PointInT>;
+      NeighbourhoodFeature<pcl::FeatureFromNormals<PointInT, PointNT, PointOutT>,
+                           PointInT>;
 
 public:
-  using Ptr = pcl::shared_ptr<CurvatureVarianceEstimation<PointInT, PointNT, PointOutT>>;
+  using Ptr =
+      pcl::shared_ptr<CurvatureVarianceEstimation<PointInT, PointNT, PointOutT>>;
   using ConstPtr =
       pcl::shared_ptr<const CurvatureVarianceEstimation<PointInT, PointNT, PointOutT>>;
   using PointCloudOut = pcl::PointCloud<PointOutT>;
 
-  CurvatureVarianceEstimation () { this->feature_name_ = "CurvatureVarianceEstimation"; }
+  CurvatureVarianceEstimation() { this->feature_name_ = "CurvatureVarianceEstimation"; }
 
 protected:
-  using Base::input_;
   using Base::indices_;
-  using Base::normals_;
+  using Base::input_;
   using Base::nb_;
+  using Base::normals_;
 
   bool
   checkInputs () override;
@@ -76,7 +80,7 @@ protected:
   bool
   computePoint (std::size_t row, PointOutT& out) const;
 };
-}  // namespace pcl_ext
+} // namespace pcl_ext
 
 #ifdef PCL_NO_PRECOMPILE
 #include <pcl_ext/features/impl/curvature_variance.hpp>

@@ -15,45 +15,50 @@
 #include <functional>
 #include <vector>
 
-namespace pcl_ext
-{
-/** \brief Where a scan was taken from, to turn each plane's normal to the side it was seen
-  * from. Either one position for the whole cloud or one per point (merged scans). */
-struct ScanViewpoints
-{
-  std::vector<Eigen::Vector3d> positions;   ///< scanner positions (cloud frame)
-  std::vector<std::uint16_t> scanner_of_point;  ///< per point index into positions; empty: positions[0]
+namespace pcl_ext {
+/** \brief Where a scan was taken from, to turn each plane's normal to the side it was
+ * seen from. Either one position for the whole cloud or one per point (merged scans).
+ */
+struct ScanViewpoints {
+  std::vector<Eigen::Vector3d> positions; ///< scanner positions (cloud frame)
+  std::vector<std::uint16_t>
+      scanner_of_point; ///< per point index into positions; empty: positions[0]
 };
 
-/** \brief Fit a plane to each inlier set and orient it (the common part of every extractor).
-  *
-  * The fit is the double-precision covariance kernel of pcl_ext (normal = eigenvector of the
-  * smallest eigenvalue, rms = sqrt(l0)); d = n . centroid; the extent is the 1st-99th percentile
-  * box of the inliers per axis, so that stray inliers far along the infinite plane do not
-  * inflate it. The normal is turned to the scanner side: towards the viewpoint of most inliers
-  * (the cloud's sensor origin when \a viewpoints is empty).
-  * \return false (PCL_ERROR) when a viewpoint index is out of range; sets with fewer than 3
-  *         finite points are skipped
-  */
-template <typename PointT> bool
-fitScanPlanes (const pcl::PointCloud<PointT>& cloud, const std::vector<pcl::PointIndices>& inliers,
-               const ScanViewpoints& viewpoints, std::vector<ScanPlane>& planes);
+/** \brief Fit a plane to each inlier set and orient it (the common part of every
+ * extractor).
+ *
+ * The fit is the double-precision covariance kernel of pcl_ext (normal = eigenvector of
+ * the smallest eigenvalue, rms = sqrt(l0)); d = n . centroid; the extent is the
+ * 1st-99th percentile box of the inliers per axis, so that stray inliers far along the
+ * infinite plane do not inflate it. The normal is turned to the scanner side: towards
+ * the viewpoint of most inliers (the cloud's sensor origin when \a viewpoints is
+ * empty). \return false (PCL_ERROR) when a viewpoint index is out of range; sets with
+ * fewer than 3 finite points are skipped
+ */
+template <typename PointT>
+bool
+fitScanPlanes (const pcl::PointCloud<PointT>& cloud,
+               const std::vector<pcl::PointIndices>& inliers,
+               const ScanViewpoints& viewpoints,
+               std::vector<ScanPlane>& planes);
 
-/** \brief A plane extractor: inlier sets of the planes of a cloud, as indices of that cloud,
-  * taken among the given indices only (all points when the pointer is null; this is how
-  * PlaneMatchingRegistration passes its setIndices). Any segmenter fits (the Belton & Lichti
-  * region growing, a range-image segmentation as in the paper, ...). Passing the whole cloud
-  * with indices, rather than a copy of the indexed points, keeps per-point inputs of the
-  * extractor (labels, viewpoints) aligned with the cloud. */
+/** \brief A plane extractor: inlier sets of the planes of a cloud, as indices of that
+ * cloud, taken among the given indices only (all points when the pointer is null; this
+ * is how PlaneMatchingRegistration passes its setIndices). Any segmenter fits (the
+ * Belton & Lichti region growing, a range-image segmentation as in the paper, ...).
+ * Passing the whole cloud with indices, rather than a copy of the indexed points, keeps
+ * per-point inputs of the extractor (labels, viewpoints) aligned with the cloud. */
 template <typename PointT>
 using PlaneExtractor =
-    std::function<bool (const typename pcl::PointCloud<PointT>::ConstPtr&, const pcl::IndicesConstPtr&,
+    std::function<bool (const typename pcl::PointCloud<PointT>::ConstPtr&,
+                        const pcl::IndicesConstPtr&,
                         std::vector<pcl::PointIndices>&)>;
 
-/** \brief A plane extraction class as a PlaneExtractor: a copy of \a extraction, run on the
-  * cloud and indices it is given. \a Extraction is a pcl::PCLBase<PointT> with
-  * bool extract (std::vector<pcl::PointIndices>&), as SACPlaneExtraction and
-  * RoofOutlinePlaneExtraction. */
+/** \brief A plane extraction class as a PlaneExtractor: a copy of \a extraction, run on
+ * the cloud and indices it is given. \a Extraction is a pcl::PCLBase<PointT> with bool
+ * extract (std::vector<pcl::PointIndices>&), as SACPlaneExtraction and
+ * RoofOutlinePlaneExtraction. */
 template <typename PointT, typename Extraction>
 PlaneExtractor<PointT>
 makePlaneExtractor (const Extraction& extraction)
@@ -62,52 +67,78 @@ makePlaneExtractor (const Extraction& extraction)
                               const pcl::IndicesConstPtr& indices,
                               std::vector<pcl::PointIndices>& planes) mutable {
     copy.setInputCloud (cloud);
-    // A null pointer resets to every point (PCLBase makes its own indices in initCompute).
-    copy.setIndices (indices ? pcl::make_shared<pcl::Indices> (*indices) : pcl::IndicesPtr ());
+    // A null pointer resets to every point (PCLBase makes its own indices in
+    // initCompute).
+    copy.setIndices (indices ? pcl::make_shared<pcl::Indices> (*indices)
+                             : pcl::IndicesPtr());
     return copy.extract (planes);
   };
 }
 
-/** \brief Sequential RANSAC plane extraction with pcl::SACSegmentation: the largest plane,
-  * then the largest of the rest, until \a max_planes or fewer than \a min_inliers remain.
-  *
-  * Stands in for the gradient-based range image segmentation of Gorte (2007) the paper uses
-  * (section 3.1). Deterministic: PCL's RANSAC draws from a fixed seed.
-  */
+/** \brief Sequential RANSAC plane extraction with pcl::SACSegmentation: the largest
+ * plane, then the largest of the rest, until \a max_planes or fewer than \a min_inliers
+ * remain.
+ *
+ * Stands in for the gradient-based range image segmentation of Gorte (2007) the paper
+ * uses (section 3.1). Deterministic: PCL's RANSAC draws from a fixed seed.
+ */
 template <typename PointT>
-class SACPlaneExtraction : public pcl::PCLBase<PointT>
-{
+class SACPlaneExtraction : public pcl::PCLBase<PointT> {
 public:
   using PointCloudConstPtr = typename pcl::PointCloud<PointT>::ConstPtr;
 
   /** \brief Inlier distance (m), > 0; default 0.4 (twice the paper's 20 cm noise). */
   void
-  setDistanceThreshold (double distance) { distance_threshold_ = distance; }
+  setDistanceThreshold (double distance)
+  {
+    distance_threshold_ = distance;
+  }
   double
-  getDistanceThreshold () const { return distance_threshold_; }
+  getDistanceThreshold () const
+  {
+    return distance_threshold_;
+  }
 
   /** \brief Least inliers of a plane, >= 3; default 200. */
   void
-  setMinInliers (int count) { min_inliers_ = count; }
+  setMinInliers (int count)
+  {
+    min_inliers_ = count;
+  }
   int
-  getMinInliers () const { return min_inliers_; }
+  getMinInliers () const
+  {
+    return min_inliers_;
+  }
 
   /** \brief Most planes extracted, >= 1; default 30 (the paper's real scan gave 32). */
   void
-  setMaxPlanes (int count) { max_planes_ = count; }
+  setMaxPlanes (int count)
+  {
+    max_planes_ = count;
+  }
   int
-  getMaxPlanes () const { return max_planes_; }
+  getMaxPlanes () const
+  {
+    return max_planes_;
+  }
 
   /** \brief RANSAC iterations per plane, >= 1; default 500. */
   void
-  setMaxIterations (int count) { max_iterations_ = count; }
+  setMaxIterations (int count)
+  {
+    max_iterations_ = count;
+  }
   int
-  getMaxIterations () const { return max_iterations_; }
+  getMaxIterations () const
+  {
+    return max_iterations_;
+  }
 
-  /** \brief Inlier sets of the planes, largest first; none when fewer than the minimum of
-    * inliers lie on any plane (e.g. too few points). Non-finite points are never inliers.
-    * \return false (PCL_ERROR, no planes) on bad parameters, no input, an index out of range or
-    *         no finite point */
+  /** \brief Inlier sets of the planes, largest first; none when fewer than the minimum
+   * of inliers lie on any plane (e.g. too few points). Non-finite points are never
+   * inliers. \return false (PCL_ERROR, no planes) on bad parameters, no input, an index
+   * out of range or no finite point */
   bool
   extract (std::vector<pcl::PointIndices>& planes);
 
@@ -124,7 +155,7 @@ protected:
   int max_planes_ = 30;
   int max_iterations_ = 500;
 };
-}  // namespace pcl_ext
+} // namespace pcl_ext
 
 #ifdef PCL_NO_PRECOMPILE
 #include <pcl_ext/registration/impl/plane_extraction.hpp>

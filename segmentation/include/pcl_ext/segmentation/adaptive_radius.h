@@ -14,71 +14,77 @@
 #include <limits>
 #include <vector>
 
-namespace pcl_ext
-{
+namespace pcl_ext {
 /** \brief Parameters of the adaptive radius (Lim & Suter 2008, section 3.1, eq. 1-4).
-  *
-  * The radius follows Mitra, Nguyen & Guibas' optimal neighbourhood size, shrunk by the colour
-  * variance. The printed eq. 1-4 are garbled; this is how pcl_ext reads them:
-  * r_new = (1 - damp) r + damp [ (1 / kappa) (c1 sigma / sqrt(eps rho) + c2 sigma^2) ]^(1/3)
-  *         (1 - w max(var R, var G, var B)),
-  * rho = k / (pi r^2), kappa = 2 d / mu^2, k = pi rho r^2.
-  *
-  * The paper gives no values for c1, c2 and eps. On a noisy plane d is of the order of sigma, so
-  * kappa ~ 2 sigma / mu^2 with mu ~ 0.6 r, and eq. 3 settles where k ~ pi (0.18 c1)^2 / eps,
-  * whatever sigma: the defaults (c1 = 4, eps = 0.01) put that above the k threshold, so flat
-  * regions grow to it (the large super-voxels on building and terrain of figure 6a) while
-  * curvature, scatter and colour variance shrink the others.
-  */
-struct AdaptiveRadiusParameters
-{
-  int initial_k = 15;          ///< k at the first step (paper: 15); >= 3
-  double damping = 0.2;        ///< damp (paper: 0.2); in (0, 1]
-  int max_iterations = 10;     ///< at most this many steps (paper: 10); >= 1
-  int max_k = 60;              ///< stop when k = pi rho r^2 passes this threshold; > initial_k
-  double saturation = 0.5;     ///< stop when k changes by less than this ("k saturates"); >= 0
-  double noise = 0.0;          ///< sigma, the noise constant (m); 0 = estimate from the cloud
-  double c1 = 4.0;             ///< c1 (Mitra et al.'s constant); > 0
-  double c2 = 1.0;             ///< c2 (Mitra et al.'s constant); >= 0
-  double epsilon = 0.01;       ///< eps, "a very small number"; in (0, 1]
-  double colour_weight = 1.0;  ///< w, weight of the colour factor (paper: 1); in [0, 1 / max var]
-  double min_radius = 0.0;     ///< lower bound on r (m); >= 0
-  double max_radius = std::numeric_limits<double>::infinity ();  ///< upper bound on r (m)
+ *
+ * The radius follows Mitra, Nguyen & Guibas' optimal neighbourhood size, shrunk by the
+ * colour variance. The printed eq. 1-4 are garbled; this is how pcl_ext reads them:
+ * r_new = (1 - damp) r + damp [ (1 / kappa) (c1 sigma / sqrt(eps rho) + c2 sigma^2)
+ * ]^(1/3) (1 - w max(var R, var G, var B)), rho = k / (pi r^2), kappa = 2 d / mu^2, k =
+ * pi rho r^2.
+ *
+ * The paper gives no values for c1, c2 and eps. On a noisy plane d is of the order of
+ * sigma, so kappa ~ 2 sigma / mu^2 with mu ~ 0.6 r, and eq. 3 settles where k ~ pi
+ * (0.18 c1)^2 / eps, whatever sigma: the defaults (c1 = 4, eps = 0.01) put that above
+ * the k threshold, so flat regions grow to it (the large super-voxels on building and
+ * terrain of figure 6a) while curvature, scatter and colour variance shrink the others.
+ */
+struct AdaptiveRadiusParameters {
+  int initial_k = 15;      ///< k at the first step (paper: 15); >= 3
+  double damping = 0.2;    ///< damp (paper: 0.2); in (0, 1]
+  int max_iterations = 10; ///< at most this many steps (paper: 10); >= 1
+  int max_k = 60; ///< stop when k = pi rho r^2 passes this threshold; > initial_k
+  double saturation =
+      0.5;            ///< stop when k changes by less than this ("k saturates"); >= 0
+  double noise = 0.0; ///< sigma, the noise constant (m); 0 = estimate from the cloud
+  double c1 = 4.0;    ///< c1 (Mitra et al.'s constant); > 0
+  double c2 = 1.0;    ///< c2 (Mitra et al.'s constant); >= 0
+  double epsilon = 0.01; ///< eps, "a very small number"; in (0, 1]
+  double colour_weight =
+      1.0; ///< w, weight of the colour factor (paper: 1); in [0, 1 / max var]
+  double min_radius = 0.0; ///< lower bound on r (m); >= 0
+  double max_radius = std::numeric_limits<double>::infinity(); ///< upper bound on r (m)
 };
 
-/** \brief Checks the parameters; PCL_ERROR naming \a caller and false when one is invalid. */
+/** \brief Checks the parameters; PCL_ERROR naming \a caller and false when one is
+ * invalid. */
 bool
-checkAdaptiveRadiusParameters (const AdaptiveRadiusParameters& parameters, const char* caller);
+checkAdaptiveRadiusParameters (const AdaptiveRadiusParameters& parameters,
+                               const char* caller);
 
 /** \brief Mean distance of points to their least-squares plane: Lim & Suter's way of
-  * estimating the noise constant sigma from points acquired from a single plane.
-  * \return NaN when fewer than 3 finite points are given */
+ * estimating the noise constant sigma from points acquired from a single plane.
+ * \return NaN when fewer than 3 finite points are given */
 double
 estimateNoiseFromPlanarPatch (const pcl::PointCloud<pcl::PointXYZ>& cloud,
                               const std::vector<pcl::index_t>& patch);
 
 /** \brief The adaptive radius of any point of a cloud, with the k-d tree built once.
-  *
-  * Not templated on the point type: the classes that use it copy xyz and normalised colour out
-  * of their input. estimate() is const and thread-safe.
-  */
-class AdaptiveRadiusEstimator
-{
+ *
+ * Not templated on the point type: the classes that use it copy xyz and normalised
+ * colour out of their input. estimate() is const and thread-safe.
+ */
+class AdaptiveRadiusEstimator {
 public:
   /** \brief Build the search structure over the finite points of \a cloud.
-    * \param[in] colours normalised RGB (r, g, b) / (r + g + b) per point, or empty
-    * \return false when there are fewer than initial_k finite points or a parameter is bad */
+   * \param[in] colours normalised RGB (r, g, b) / (r + g + b) per point, or empty
+   * \return false when there are fewer than initial_k finite points or a parameter is
+   * bad */
   bool
   initialize (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
               const std::vector<Eigen::Vector3f>& colours,
               const AdaptiveRadiusParameters& parameters);
 
-  /** \brief The noise constant in use: the given one, or the estimate (see estimateNoise). */
+  /** \brief The noise constant in use: the given one, or the estimate (see
+   * estimateNoise). */
   double
-  getNoise () const { return noise_; }
+  getNoise () const
+  {
+    return noise_;
+  }
 
-  /** \brief The radius of point \a index (finite), iterating eq. 1-4; \a steps gets the number
-    * of iterations done. */
+  /** \brief The radius of point \a index (finite), iterating eq. 1-4; \a steps gets the
+   * number of iterations done. */
   float
   estimate (pcl::index_t index, int* steps = nullptr) const;
 
@@ -91,17 +97,27 @@ public:
   nearest (const Eigen::Vector3f& position, std::size_t k, pcl::Indices& result) const;
 
   const search::KdTree3f&
-  tree () const { return tree_; }
+  tree () const
+  {
+    return tree_;
+  }
 
   const pcl::PointCloud<pcl::PointXYZ>::ConstPtr&
-  cloud () const { return cloud_; }
+  cloud () const
+  {
+    return cloud_;
+  }
 
   const std::vector<Eigen::Vector3f>&
-  colours () const { return colours_; }
+  colours () const
+  {
+    return colours_;
+  }
 
-  /** \brief Sigma estimated as the median plane residual of the flattest 10 % of 512 sampled
-    * 15-neighbourhoods: a stand-in for "points acquired from a single plane" when no planar
-    * patch is given (pcl_ext addition). Returns 0 when nothing is planar enough to tell. */
+  /** \brief Sigma estimated as the median plane residual of the flattest 10 % of 512
+   * sampled 15-neighbourhoods: a stand-in for "points acquired from a single plane"
+   * when no planar patch is given (pcl_ext addition). Returns 0 when nothing is planar
+   * enough to tell. */
   double
   estimateNoise () const;
 
@@ -113,4 +129,4 @@ private:
   std::size_t finite_ = 0;
   double noise_ = 0.0;
 };
-}  // namespace pcl_ext
+} // namespace pcl_ext

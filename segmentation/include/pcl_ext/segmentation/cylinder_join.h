@@ -12,39 +12,38 @@
 #include <limits>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace cylinder_join
-{
-/** \brief Everything the join needs; see CylinderSegmentJoin for the meaning and defaults. */
-struct JoinParameters
-{
+namespace pcl_ext {
+namespace cylinder_join {
+/** \brief Everything the join needs; see CylinderSegmentJoin for the meaning and
+ * defaults. */
+struct JoinParameters {
   cylinders::DetectionParameters detection;
-  double max_gap = 2.0;              ///< longest gap bridged along an axis or to an elbow
-  double max_axis_angle = M_PI / 36.0;  ///< radians (5 degrees): one straight run
-  double min_elbow_angle = M_PI / 6.0;  ///< radians (30 degrees): two legs of an elbow
+  double max_gap = 2.0; ///< longest gap bridged along an axis or to an elbow
+  double max_axis_angle = M_PI / 36.0; ///< radians (5 degrees): one straight run
+  double min_elbow_angle = M_PI / 6.0; ///< radians (30 degrees): two legs of an elbow
   double max_radius_difference = 0.3;  ///< share of the larger radius
-  double max_axis_offset = 0.3;      ///< in radii, plus the distance tolerance
+  double max_axis_offset = 0.3;        ///< in radii, plus the distance tolerance
   double whole_segment_fraction = 0.5;
-  double absorb_fraction = 0.5;      ///< 0: off; else the share of a pieceless segment on a group
+  double absorb_fraction =
+      0.5; ///< 0: off; else the share of a pieceless segment on a group
   unsigned int threads = 1;
 };
 
-constexpr std::uint32_t kNoSegment = std::numeric_limits<std::uint32_t>::max ();
+constexpr std::uint32_t kNoSegment = std::numeric_limits<std::uint32_t>::max();
 
 /** \brief A cylinder found in an input segment. */
-struct Piece
-{
-  std::uint32_t segment = 0;           ///< the input segment it was found in
-  std::uint32_t joined = kNoSegment;   ///< output segment of its group; kNoSegment if alone
-  cylinders::Cylinder cylinder;        ///< inliers as positions in the coordinates
+struct Piece {
+  std::uint32_t segment = 0; ///< the input segment it was found in
+  std::uint32_t joined =
+      kNoSegment;               ///< output segment of its group; kNoSegment if alone
+  cylinders::Cylinder cylinder; ///< inliers as positions in the coordinates
 };
 
 /** \brief The joined segmentation. */
-struct JoinResult
-{
-  std::vector<Piece> pieces;           ///< in segment order, then the order found
-  std::vector<std::uint32_t> labels;   ///< output segment of each point; kNoSegment if none
+struct JoinResult {
+  std::vector<Piece> pieces; ///< in segment order, then the order found
+  std::vector<std::uint32_t>
+      labels; ///< output segment of each point; kNoSegment if none
   std::size_t num_segments = 0;
 };
 
@@ -52,23 +51,27 @@ struct JoinResult
 bool
 validParameters (const JoinParameters& p);
 
-/** \brief Whether two cylinders continue one another: one straight run (axes parallel, each
-  * end's axis through the other's facing end, a gap no longer than the maximum) or the two
-  * legs of an elbow (axes meeting near both ends); radii agreeing in both cases. */
+/** \brief Whether two cylinders continue one another: one straight run (axes parallel,
+ * each end's axis through the other's facing end, a gap no longer than the maximum) or
+ * the two legs of an elbow (axes meeting near both ends); radii agreeing in both cases.
+ */
 bool
-continues (const cylinders::Cylinder& a, const cylinders::Cylinder& b, const JoinParameters& p);
+continues (const cylinders::Cylinder& a,
+           const cylinders::Cylinder& b,
+           const JoinParameters& p);
 
-/** \brief Find the cylinders of every segment (in parallel; the result does not depend on
-  * the thread count), join those that continue one another, and relabel: a segment whose
-  * pieces all joined one group, and cover at least the whole-segment fraction of it, moves
-  * to that group whole; otherwise only its pieces' points move.
-  * \param[in] xyz finite coordinates, best centred near the origin
-  * \param[in] segments positions in \a xyz; a position in no segment, or in an earlier one,
-  * keeps the label it has (kNoSegment or the earlier segment's)
-  * \return false when a parameter is invalid or a position is out of range */
+/** \brief Find the cylinders of every segment (in parallel; the result does not depend
+ * on the thread count), join those that continue one another, and relabel: a segment
+ * whose pieces all joined one group, and cover at least the whole-segment fraction of
+ * it, moves to that group whole; otherwise only its pieces' points move. \param[in] xyz
+ * finite coordinates, best centred near the origin \param[in] segments positions in \a
+ * xyz; a position in no segment, or in an earlier one, keeps the label it has
+ * (kNoSegment or the earlier segment's) \return false when a parameter is invalid or a
+ * position is out of range */
 bool
 joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
                       const std::vector<std::vector<std::uint32_t>>& segments,
-                      const JoinParameters& p, JoinResult& result);
-}  // namespace cylinder_join
-}  // namespace pcl_ext
+                      const JoinParameters& p,
+                      JoinResult& result);
+} // namespace cylinder_join
+} // namespace pcl_ext

@@ -15,72 +15,84 @@
 #include <cmath>
 #include <vector>
 
-namespace pcl_ext
-{
-/** \brief Joins the segments of a segmentation that lie on one cylinder or cone: the straight
-  * runs of a pipe cut apart where it rests on its supports, the legs of an elbow, the pieces
-  * of a tree trunk cut where branches leave it.
-  *
-  * Sithole & Mapurisa (section 5.2.1, figure 12) segment pipe racks into pipes and note that
-  * "from the data structure it is possible to obtain the axes ... in the pipes", which they do
-  * not elaborate; of a tree (figure 14) they find "the trunk and larger branches". This class
-  * does it after any segmenter (ProfileSegmentation, pcl::EuclideanClusterExtraction,
-  * pcl::RegionGrowing). Where a pipe rests on a beam, a scanner below sees only its underside
-  * next to the beam, and a segmenter that cuts at creases (curve fitting) cuts the pipe there
-  * into its spans; a thin trunk splits where branches leave it. Not in the paper.
-  *
-  * Each input segment is searched for cylinders or cones without normals
-  * (cylinders::detectCylinders: hypotheses from local patches, grown along the axis and refined
-  * by Gauss-Newton, kept when the points near the surface lie on it, so planes and box faces
-  * are rejected); a segment can hold several (two pipes side by side). Two pieces are joined
-  * when they continue one another (cylinder_join::continues): parallel axes, each passing
-  * through the other's facing end, radii where they face each other within the allowed
-  * difference and a gap along the axis no longer than the maximum; or the two legs of an
-  * elbow, axes meeting near both ends. A segment whose pieces all joined one group and cover
-  * at least the whole-segment fraction of it joins that group whole; otherwise only the
-  * points on its pieces move, and the rest stays a segment. Last, a segment in which no piece
-  * was found joins a group when most of its points lie on one of the group's pieces (the
-  * fragments at a trunk's branch junctions).
-  *
-  * Lengths are in the cloud's units; the defaults suit TLS scans in metres (5 mm range noise:
-  * the tolerance is three times it). Work is per segment and parallel (OpenMP); the result
-  * does not depend on the number of threads, and the random draws are seeded (setSeed).
-  * Points with non-finite coordinates are never fitted and go with most of their segment.
-  *
-  * docs/sithole_mapurisa.md reports what the join measures on the generated \c pipes and
-  * \c tree scenes after curve fitting.
-  */
+namespace pcl_ext {
+/** \brief Joins the segments of a segmentation that lie on one cylinder or cone: the
+ * straight runs of a pipe cut apart where it rests on its supports, the legs of an
+ * elbow, the pieces of a tree trunk cut where branches leave it.
+ *
+ * Sithole & Mapurisa (section 5.2.1, figure 12) segment pipe racks into pipes and note
+ * that "from the data structure it is possible to obtain the axes ... in the pipes",
+ * which they do not elaborate; of a tree (figure 14) they find "the trunk and larger
+ * branches". This class does it after any segmenter (ProfileSegmentation,
+ * pcl::EuclideanClusterExtraction, pcl::RegionGrowing). Where a pipe rests on a beam, a
+ * scanner below sees only its underside next to the beam, and a segmenter that cuts at
+ * creases (curve fitting) cuts the pipe there into its spans; a thin trunk splits where
+ * branches leave it. Not in the paper.
+ *
+ * Each input segment is searched for cylinders or cones without normals
+ * (cylinders::detectCylinders: hypotheses from local patches, grown along the axis and
+ * refined by Gauss-Newton, kept when the points near the surface lie on it, so planes
+ * and box faces are rejected); a segment can hold several (two pipes side by side). Two
+ * pieces are joined when they continue one another (cylinder_join::continues): parallel
+ * axes, each passing through the other's facing end, radii where they face each other
+ * within the allowed difference and a gap along the axis no longer than the maximum; or
+ * the two legs of an elbow, axes meeting near both ends. A segment whose pieces all
+ * joined one group and cover at least the whole-segment fraction of it joins that group
+ * whole; otherwise only the points on its pieces move, and the rest stays a segment.
+ * Last, a segment in which no piece was found joins a group when most of its points lie
+ * on one of the group's pieces (the fragments at a trunk's branch junctions).
+ *
+ * Lengths are in the cloud's units; the defaults suit TLS scans in metres (5 mm range
+ * noise: the tolerance is three times it). Work is per segment and parallel (OpenMP);
+ * the result does not depend on the number of threads, and the random draws are seeded
+ * (setSeed). Points with non-finite coordinates are never fitted and go with most of
+ * their segment.
+ *
+ * docs/sithole_mapurisa.md reports what the join measures on the generated \c pipes and
+ * \c tree scenes after curve fitting.
+ */
 template <typename PointT>
-class CylinderSegmentJoin : public pcl::PCLBase<PointT>
-{
+class CylinderSegmentJoin : public pcl::PCLBase<PointT> {
 public:
   using PointCloud = pcl::PointCloud<PointT>;
   using Ptr = pcl::shared_ptr<CylinderSegmentJoin<PointT>>;
   using ConstPtr = pcl::shared_ptr<const CylinderSegmentJoin<PointT>>;
 
   /** \brief A cylinder found in an input segment, with its inliers as cloud indices. */
-  struct JoinedCylinder
-  {
-    cylinders::Cylinder cylinder;  ///< axis point, direction, radius, extent, inliers
-    std::size_t input_segment;     ///< index into the input segments
-    int output_segment;            ///< index into the output of join(); -1 when not joined
+  struct JoinedCylinder {
+    cylinders::Cylinder cylinder; ///< axis point, direction, radius, extent, inliers
+    std::size_t input_segment;    ///< index into the input segments
+    int output_segment; ///< index into the output of join(); -1 when not joined
   };
 
-  CylinderSegmentJoin () = default;
+  CylinderSegmentJoin() = default;
 
   /** \brief The segmentation to refine (indices into the input cloud). */
   void
-  setInputSegments (const std::vector<pcl::PointIndices>& segments) { segments_ = segments; }
+  setInputSegments (const std::vector<pcl::PointIndices>& segments)
+  {
+    segments_ = segments;
+  }
   const std::vector<pcl::PointIndices>&
-  getInputSegments () const { return segments_; }
+  getInputSegments () const
+  {
+    return segments_;
+  }
 
   /** \brief Inlier band around a cylinder's surface. Default 0.015; valid: > 0. */
   void
-  setDistanceTolerance (double tolerance) { parameters_.detection.distance_tolerance = tolerance; }
+  setDistanceTolerance (double tolerance)
+  {
+    parameters_.detection.distance_tolerance = tolerance;
+  }
   double
-  getDistanceTolerance () const { return parameters_.detection.distance_tolerance; }
+  getDistanceTolerance () const
+  {
+    return parameters_.detection.distance_tolerance;
+  }
 
-  /** \brief Radii of the cylinders looked for. Default [0.02, 0.6]; valid: 0 < min <= max. */
+  /** \brief Radii of the cylinders looked for. Default [0.02, 0.6]; valid: 0 < min <=
+   * max. */
   void
   setRadiusLimits (double min_radius, double max_radius)
   {
@@ -94,52 +106,88 @@ public:
     max_radius = parameters_.detection.max_radius;
   }
 
-  /** \brief Longest gap bridged between two pieces of a straight run, or from a leg's end to
-    * where the axes of an elbow meet. Default 2 (a support and the band of curve ends on
-    * either side of it); valid: >= 0. */
+  /** \brief Longest gap bridged between two pieces of a straight run, or from a leg's
+   * end to where the axes of an elbow meet. Default 2 (a support and the band of curve
+   * ends on either side of it); valid: >= 0. */
   void
-  setMaxGap (double gap) { parameters_.max_gap = gap; }
+  setMaxGap (double gap)
+  {
+    parameters_.max_gap = gap;
+  }
   double
-  getMaxGap () const { return parameters_.max_gap; }
+  getMaxGap () const
+  {
+    return parameters_.max_gap;
+  }
 
   /** \brief Largest angle between the axes of one straight run, in radians. Default 5
-    * degrees; valid: [0, pi/2). */
+   * degrees; valid: [0, pi/2). */
   void
-  setMaxAxisAngle (double angle) { parameters_.max_axis_angle = angle; }
+  setMaxAxisAngle (double angle)
+  {
+    parameters_.max_axis_angle = angle;
+  }
   double
-  getMaxAxisAngle () const { return parameters_.max_axis_angle; }
+  getMaxAxisAngle () const
+  {
+    return parameters_.max_axis_angle;
+  }
 
-  /** \brief Smallest angle between the legs of an elbow, in radians. Default 30 degrees;
-    * valid: (max axis angle, pi/2]. Fitted axes are never exactly square: a value at pi/2
-    * joins no elbow, 80 degrees the right-angled ones. */
+  /** \brief Smallest angle between the legs of an elbow, in radians. Default 30
+   * degrees; valid: (max axis angle, pi/2]. Fitted axes are never exactly square: a
+   * value at pi/2 joins no elbow, 80 degrees the right-angled ones. */
   void
-  setMinElbowAngle (double angle) { parameters_.min_elbow_angle = angle; }
+  setMinElbowAngle (double angle)
+  {
+    parameters_.min_elbow_angle = angle;
+  }
   double
-  getMinElbowAngle () const { return parameters_.min_elbow_angle; }
+  getMinElbowAngle () const
+  {
+    return parameters_.min_elbow_angle;
+  }
 
-  /** \brief Largest difference of two joined radii, as a share of the larger. Default 0.3;
-    * valid: [0, 1). */
+  /** \brief Largest difference of two joined radii, as a share of the larger. Default
+   * 0.3; valid: [0, 1). */
   void
-  setMaxRadiusDifference (double share) { parameters_.max_radius_difference = share; }
+  setMaxRadiusDifference (double share)
+  {
+    parameters_.max_radius_difference = share;
+  }
   double
-  getMaxRadiusDifference () const { return parameters_.max_radius_difference; }
+  getMaxRadiusDifference () const
+  {
+    return parameters_.max_radius_difference;
+  }
 
   /** \brief How far one axis may pass from the other's end, in radii (plus the distance
-    * tolerance). Default 0.3; valid: >= 0. */
+   * tolerance). Default 0.3; valid: >= 0. */
   void
-  setMaxAxisOffset (double radii) { parameters_.max_axis_offset = radii; }
+  setMaxAxisOffset (double radii)
+  {
+    parameters_.max_axis_offset = radii;
+  }
   double
-  getMaxAxisOffset () const { return parameters_.max_axis_offset; }
+  getMaxAxisOffset () const
+  {
+    return parameters_.max_axis_offset;
+  }
 
-  /** \brief Radius of the patch a cylinder hypothesis is drawn from. Default 0.6 (at least
-    * twice the largest radius: the patch must be longer than wide); valid: > 0. */
+  /** \brief Radius of the patch a cylinder hypothesis is drawn from. Default 0.6 (at
+   * least twice the largest radius: the patch must be longer than wide); valid: > 0. */
   void
-  setNeighbourhoodRadius (double radius) { parameters_.detection.neighbourhood_radius = radius; }
+  setNeighbourhoodRadius (double radius)
+  {
+    parameters_.detection.neighbourhood_radius = radius;
+  }
   double
-  getNeighbourhoodRadius () const { return parameters_.detection.neighbourhood_radius; }
+  getNeighbourhoodRadius () const
+  {
+    return parameters_.detection.neighbourhood_radius;
+  }
 
-  /** \brief Hypotheses drawn per cylinder, and how many of the best are grown. Default 300
-    * and 20; valid: >= 1. */
+  /** \brief Hypotheses drawn per cylinder, and how many of the best are grown. Default
+   * 300 and 20; valid: >= 1. */
   void
   setNumberOfHypotheses (unsigned int drawn, unsigned int grown)
   {
@@ -147,74 +195,128 @@ public:
     parameters_.detection.refined_hypotheses = grown;
   }
   unsigned int
-  getNumberOfHypotheses () const { return parameters_.detection.hypotheses; }
+  getNumberOfHypotheses () const
+  {
+    return parameters_.detection.hypotheses;
+  }
 
   /** \brief Fewest points on a cylinder. Default 40; valid: >= 3. */
   void
-  setMinCylinderSize (std::size_t points) { parameters_.detection.min_points = points; }
+  setMinCylinderSize (std::size_t points)
+  {
+    parameters_.detection.min_points = points;
+  }
   std::size_t
-  getMinCylinderSize () const { return parameters_.detection.min_points; }
+  getMinCylinderSize () const
+  {
+    return parameters_.detection.min_points;
+  }
 
-  /** \brief The surface test: of the points within three tolerances of a cylinder's surface,
-    * the share that must lie within one. Default 0.9; valid: [0, 1]. A pipe seen from outside
-    * has nearly all of them on its surface; a cylinder that rounds the corner of a box column
-    * or a beam grazes its faces and has far fewer. */
+  /** \brief The surface test: of the points within three tolerances of a cylinder's
+   * surface, the share that must lie within one. Default 0.9; valid: [0, 1]. A pipe
+   * seen from outside has nearly all of them on its surface; a cylinder that rounds the
+   * corner of a box column or a beam grazes its faces and has far fewer. */
   void
-  setMinSurfaceFraction (double share) { parameters_.detection.min_surface_fraction = share; }
+  setMinSurfaceFraction (double share)
+  {
+    parameters_.detection.min_surface_fraction = share;
+  }
   double
-  getMinSurfaceFraction () const { return parameters_.detection.min_surface_fraction; }
+  getMinSurfaceFraction () const
+  {
+    return parameters_.detection.min_surface_fraction;
+  }
 
   /** \brief Largest taper (change of the radius per unit length along the axis) fitted:
-    * 0 fits cylinders only; above, cones too (a tree trunk narrows upwards), and radii are
-    * compared where two pieces face each other. Default 0.1; valid: [0, 1). */
+   * 0 fits cylinders only; above, cones too (a tree trunk narrows upwards), and radii
+   * are compared where two pieces face each other. Default 0.1; valid: [0, 1). */
   void
-  setMaxTaper (double taper) { parameters_.detection.max_taper = taper; }
+  setMaxTaper (double taper)
+  {
+    parameters_.detection.max_taper = taper;
+  }
   double
-  getMaxTaper () const { return parameters_.detection.max_taper; }
+  getMaxTaper () const
+  {
+    return parameters_.detection.max_taper;
+  }
 
   /** \brief Cylinders looked for per segment. Default 8; valid: >= 1. */
   void
-  setMaxCylindersPerSegment (unsigned int count) { parameters_.detection.max_cylinders = count; }
+  setMaxCylindersPerSegment (unsigned int count)
+  {
+    parameters_.detection.max_cylinders = count;
+  }
   unsigned int
-  getMaxCylindersPerSegment () const { return parameters_.detection.max_cylinders; }
+  getMaxCylindersPerSegment () const
+  {
+    return parameters_.detection.max_cylinders;
+  }
 
-  /** \brief A segment moves whole into the group of its pieces when they cover at least this
-    * share of it (and belong to one group). Default 0.5; valid: [0, 1]. */
+  /** \brief A segment moves whole into the group of its pieces when they cover at least
+   * this share of it (and belong to one group). Default 0.5; valid: [0, 1]. */
   void
-  setWholeSegmentFraction (double share) { parameters_.whole_segment_fraction = share; }
+  setWholeSegmentFraction (double share)
+  {
+    parameters_.whole_segment_fraction = share;
+  }
   double
-  getWholeSegmentFraction () const { return parameters_.whole_segment_fraction; }
+  getWholeSegmentFraction () const
+  {
+    return parameters_.whole_segment_fraction;
+  }
 
-  /** \brief A segment in which no cylinder was found joins a group when at least this share
-    * of its points lies on the surface of one of the group's pieces (within the tolerance,
-    * along the piece or within the maximum gap of its ends). Default 0.5; valid: [0, 1]
-    * (0: off). */
+  /** \brief A segment in which no cylinder was found joins a group when at least this
+   * share of its points lies on the surface of one of the group's pieces (within the
+   * tolerance, along the piece or within the maximum gap of its ends). Default 0.5;
+   * valid: [0, 1] (0: off). */
   void
-  setAbsorbFraction (double share) { parameters_.absorb_fraction = share; }
+  setAbsorbFraction (double share)
+  {
+    parameters_.absorb_fraction = share;
+  }
   double
-  getAbsorbFraction () const { return parameters_.absorb_fraction; }
+  getAbsorbFraction () const
+  {
+    return parameters_.absorb_fraction;
+  }
 
   /** \brief Seed of the random draws. Default 1. */
   void
-  setSeed (std::uint64_t seed) { parameters_.detection.seed = seed; }
+  setSeed (std::uint64_t seed)
+  {
+    parameters_.detection.seed = seed;
+  }
   std::uint64_t
-  getSeed () const { return parameters_.detection.seed; }
+  getSeed () const
+  {
+    return parameters_.detection.seed;
+  }
 
   /** \brief OpenMP threads; 0 = all cores (default). Results do not depend on it. */
   void
-  setNumberOfThreads (unsigned int threads) { threads_ = threads; }
+  setNumberOfThreads (unsigned int threads)
+  {
+    threads_ = threads;
+  }
   unsigned int
-  getNumberOfThreads () const { return threads_; }
+  getNumberOfThreads () const
+  {
+    return threads_;
+  }
 
   /** \brief Join the input segments that lie on one cylinder.
-    * \param[out] segments the joined segmentation, largest first (points in no input segment
-    * stay out); empty on error (with a PCL_ERROR) */
+   * \param[out] segments the joined segmentation, largest first (points in no input
+   * segment stay out); empty on error (with a PCL_ERROR) */
   void
   join (std::vector<pcl::PointIndices>& segments);
 
   /** \brief The cylinders found by the last join(). */
   const std::vector<JoinedCylinder>&
-  getCylinders () const { return cylinders_; }
+  getCylinders () const
+  {
+    return cylinders_;
+  }
 
 protected:
   using pcl::PCLBase<PointT>::input_;
@@ -226,7 +328,7 @@ protected:
   unsigned int threads_ = 0;
   std::vector<JoinedCylinder> cylinders_;
 };
-}  // namespace pcl_ext
+} // namespace pcl_ext
 
 #ifdef PCL_NO_PRECOMPILE
 #include <pcl_ext/segmentation/impl/cylinder_segment_join.hpp>

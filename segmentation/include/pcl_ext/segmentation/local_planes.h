@@ -1,6 +1,6 @@
 /*
- * pcl_ext: plane fits to local neighbourhoods and to whole segments, and the intersection of
- * two local planes (Belton & Lichti 2006, sections 3 and 4).
+ * pcl_ext: plane fits to local neighbourhoods and to whole segments, and the
+ * intersection of two local planes (Belton & Lichti 2006, sections 3 and 4).
  */
 #pragma once
 
@@ -17,32 +17,39 @@
 #include <cstddef>
 #include <limits>
 
-namespace pcl_ext
-{
-/** \brief A plane fitted to a few points: n . (x - centroid) = 0, in double precision. */
-struct LocalPlane
-{
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ ();  ///< unit length, sign arbitrary
-  Eigen::Vector3d axis1 = Eigen::Vector3d::UnitX ();   ///< in-plane principal axes of the
-  Eigen::Vector3d axis2 = Eigen::Vector3d::UnitY ();   ///< points (middle, largest eigenvalue)
-  double variance1 = 0.0;  ///< the points' variance along axis1
-  double variance2 = 0.0;  ///< the points' variance along axis2
-  double rms = 0.0;        ///< root mean square distance of the points to the plane
+namespace pcl_ext {
+/** \brief A plane fitted to a few points: n . (x - centroid) = 0, in double precision.
+ */
+struct LocalPlane {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); ///< unit length, sign arbitrary
+  Eigen::Vector3d axis1 = Eigen::Vector3d::UnitX();  ///< in-plane principal axes of the
+  Eigen::Vector3d axis2 =
+      Eigen::Vector3d::UnitY(); ///< points (middle, largest eigenvalue)
+  double variance1 = 0.0;       ///< the points' variance along axis1
+  double variance2 = 0.0;       ///< the points' variance along axis2
+  double rms = 0.0; ///< root mean square distance of the points to the plane
   std::size_t size = 0;
 
   /** \brief Signed distance of \a p to the plane. */
   double
-  distance (const Eigen::Vector3d& p) const { return normal.dot (p - centroid); }
+  distance (const Eigen::Vector3d& p) const
+  {
+    return normal.dot (p - centroid);
+  }
 
   /** \brief Square root of the largest eigenvalue: the points' extent. */
   double
-  spread () const { return std::sqrt (variance2); }
+  spread () const
+  {
+    return std::sqrt (variance2);
+  }
 
-  /** \brief Standard deviation of distance(p) for a new point \a p of the same surface: the
-    * points' noise (from the rms, corrected for the 3 fitted parameters) plus the uncertainty
-    * of the plane at \a p, which grows with its distance from the centroid (the prediction
-    * variance of a least-squares fit, s^2 (1 + 1/n + u^2 / (n l1) + v^2 / (n l2))). */
+  /** \brief Standard deviation of distance(p) for a new point \a p of the same surface:
+   * the points' noise (from the rms, corrected for the 3 fitted parameters) plus the
+   * uncertainty of the plane at \a p, which grows with its distance from the centroid
+   * (the prediction variance of a least-squares fit, s^2 (1 + 1/n + u^2 / (n l1) + v^2
+   * / (n l2))). */
   double
   residualSigma (const Eigen::Vector3d& p) const
   {
@@ -50,73 +57,88 @@ struct LocalPlane
     const double s2 = size > 3 ? rms * rms * n / (n - 3.0) : rms * rms;
     const Eigen::Vector3d d = p - centroid;
     const double u = axis1.dot (d), v = axis2.dot (d);
-    return std::sqrt (s2 * (1.0 + 1.0 / n + u * u / (n * variance1) + v * v / (n * variance2)));
+    return std::sqrt (
+        s2 * (1.0 + 1.0 / n + u * u / (n * variance1) + v * v / (n * variance2)));
   }
 };
 
-/** \brief Fit a plane through the centroid of \a cloud[\a begin .. \a end) (non-finite points
-  * skipped).
-  *
-  * With \a normal null the normal is the eigenvector of the smallest eigenvalue of the
-  * points' covariance (total least squares); otherwise the plane takes that normal
-  * (normalised) through their centroid, as the paper's first form does ("fit a plane through
-  * each point based on their normal vectors ... through the centroid of neighbourhoods").
-  * \return false when fewer than 3 finite points, when the points are collinear or
-  *         coincident, or when the given normal is not finite and non-zero */
+/** \brief Fit a plane through the centroid of \a cloud[\a begin .. \a end) (non-finite
+ * points skipped).
+ *
+ * With \a normal null the normal is the eigenvector of the smallest eigenvalue of the
+ * points' covariance (total least squares); otherwise the plane takes that normal
+ * (normalised) through their centroid, as the paper's first form does ("fit a plane
+ * through each point based on their normal vectors ... through the centroid of
+ * neighbourhoods"). \return false when fewer than 3 finite points, when the points are
+ * collinear or coincident, or when the given normal is not finite and non-zero */
 template <typename PointT, typename IndexIterator>
 bool
-fitLocalPlane (const pcl::PointCloud<PointT>& cloud, IndexIterator begin, IndexIterator end,
-               const Eigen::Vector3d* normal, LocalPlane& plane);
+fitLocalPlane (const pcl::PointCloud<PointT>& cloud,
+               IndexIterator begin,
+               IndexIterator end,
+               const Eigen::Vector3d* normal,
+               LocalPlane& plane);
 
-/** \brief The angle theta of Belton & Lichti eq. 9 between two unoriented unit normals, in
-  * [0, pi/2] radians: arccos |n1 . n2| (a covariance normal has no sign, so n and -n are the
-  * same plane). */
+/** \brief The angle theta of Belton & Lichti eq. 9 between two unoriented unit normals,
+ * in [0, pi/2] radians: arccos |n1 . n2| (a covariance normal has no sign, so n and -n
+ * are the same plane). */
 double
 normalAngle (const Eigen::Vector3d& n1, const Eigen::Vector3d& n2);
 
 /** \brief The local intersection point of two planes, Belton & Lichti eq. 10-17.
-  *
-  * The line of intersection of the planes n_i . x + d_i = 0 (eq. 13-14) solves M x = b
-  * (eq. 10-12) and runs along a = n1 x n2, the null space of M (eq. 15). The minimiser of
-  * eq. 17, sum ||l(t) - p_i||^2, is the projection of the midpoint m of \a p1 and \a p2 onto
-  * that line; it is computed in closed form around m (so large coordinates keep their
-  * precision): x = m + alpha n1 + beta n2 with [1 c; c 1] [alpha beta]^T = -[r1 r2]^T,
-  * c = n1 . n2 and r_i the signed distance of m from plane i.
-  * \param[out] point the intersection point
-  * \param[out] direction the unit direction a of the line
-  * \return false when the normals are parallel (no unique line) or not finite */
+ *
+ * The line of intersection of the planes n_i . x + d_i = 0 (eq. 13-14) solves M x = b
+ * (eq. 10-12) and runs along a = n1 x n2, the null space of M (eq. 15). The minimiser
+ * of eq. 17, sum ||l(t) - p_i||^2, is the projection of the midpoint m of \a p1 and \a
+ * p2 onto that line; it is computed in closed form around m (so large coordinates keep
+ * their precision): x = m + alpha n1 + beta n2 with [1 c; c 1] [alpha beta]^T = -[r1
+ * r2]^T, c = n1 . n2 and r_i the signed distance of m from plane i. \param[out] point
+ * the intersection point \param[out] direction the unit direction a of the line \return
+ * false when the normals are parallel (no unique line) or not finite */
 bool
-intersectLocalPlanes (const LocalPlane& plane1, const LocalPlane& plane2,
-                      const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
-                      Eigen::Vector3d& point, Eigen::Vector3d& direction);
-/** \brief The least-squares plane of one segment: n . x + d = 0 (Belton & Lichti eq. 13). */
-struct SegmentPlane
-{
-  /** Unit normal, turned towards the cloud's sensor origin; NaN when \c valid is false. */
-  Eigen::Vector3d normal = Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN ());
-  double d = std::numeric_limits<double>::quiet_NaN ();  ///< offset: d = -n . centroid
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();    ///< mean of the segment's points
-  double rms_residual = std::numeric_limits<double>::quiet_NaN ();  ///< RMS point-plane distance
-  double max_residual = std::numeric_limits<double>::quiet_NaN ();  ///< largest distance
-  std::size_t size = 0;  ///< points fitted
-  /** False when the segment has fewer than 3 points or they are collinear (no plane). */
+intersectLocalPlanes (const LocalPlane& plane1,
+                      const LocalPlane& plane2,
+                      const Eigen::Vector3d& p1,
+                      const Eigen::Vector3d& p2,
+                      Eigen::Vector3d& point,
+                      Eigen::Vector3d& direction);
+/** \brief The least-squares plane of one segment: n . x + d = 0 (Belton & Lichti eq.
+ * 13). */
+struct SegmentPlane {
+  /** Unit normal, turned towards the cloud's sensor origin; NaN when \c valid is false.
+   */
+  Eigen::Vector3d normal =
+      Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN());
+  double d = std::numeric_limits<double>::quiet_NaN(); ///< offset: d = -n . centroid
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< mean of the segment's points
+  double rms_residual =
+      std::numeric_limits<double>::quiet_NaN(); ///< RMS point-plane distance
+  double max_residual = std::numeric_limits<double>::quiet_NaN(); ///< largest distance
+  std::size_t size = 0;                                           ///< points fitted
+  /** False when the segment has fewer than 3 points or they are collinear (no plane).
+   */
   bool valid = false;
 };
 
 /** \brief Fit a plane to \a indices of \a cloud in double precision around the points'
-  * centroid (so georeferenced coordinates lose nothing), with its residuals.
-  * \param[in] viewpoint the normal is turned to face it (n . (viewpoint - centroid) >= 0)
-  * \return the plane; \c valid is false for fewer than 3 finite points or collinear points */
+ * centroid (so georeferenced coordinates lose nothing), with its residuals.
+ * \param[in] viewpoint the normal is turned to face it (n . (viewpoint - centroid) >=
+ * 0) \return the plane; \c valid is false for fewer than 3 finite points or collinear
+ * points */
 template <typename PointT>
 SegmentPlane
-fitSegmentPlane (const pcl::PointCloud<PointT>& cloud, const pcl::Indices& indices,
+fitSegmentPlane (const pcl::PointCloud<PointT>& cloud,
+                 const pcl::Indices& indices,
                  const Eigen::Vector3d& viewpoint);
-}  // namespace pcl_ext
+} // namespace pcl_ext
 
 template <typename PointT, typename IndexIterator>
 bool
-pcl_ext::fitLocalPlane (const pcl::PointCloud<PointT>& cloud, IndexIterator begin,
-                        IndexIterator end, const Eigen::Vector3d* normal, LocalPlane& plane)
+pcl_ext::fitLocalPlane (const pcl::PointCloud<PointT>& cloud,
+                        IndexIterator begin,
+                        IndexIterator end,
+                        const Eigen::Vector3d* normal,
+                        LocalPlane& plane)
 {
   Eigen::Matrix3d covariance;
   plane.size = computeLocalCovariance (cloud, begin, end, covariance, plane.centroid);
@@ -133,16 +155,16 @@ pcl_ext::fitLocalPlane (const pcl::PointCloud<PointT>& cloud, IndexIterator begi
   plane.axis2 = eigen.vectors.col (2);
   plane.variance1 = l[1];
   plane.variance2 = l[2];
-  if (normal)
-  {
-    const double length = normal->norm ();
+  if (normal) {
+    const double length = normal->norm();
     if (!(length > 0.0) || !std::isfinite (length))
       return false;
     plane.normal = *normal / length;
-    plane.rms = std::sqrt (std::max (0.0, plane.normal.dot (covariance * plane.normal)));
+    plane.rms =
+        std::sqrt (std::max (0.0, plane.normal.dot (covariance * plane.normal)));
     return true;
   }
-  plane.normal = eigen.normal ();
+  plane.normal = eigen.normal();
   plane.rms = std::sqrt (l[0]);
   return true;
 }

@@ -1,5 +1,6 @@
 /*
- * pcl_ext: the profile-intersection segmentation on plain coordinates (Sithole & Mapurisa).
+ * pcl_ext: the profile-intersection segmentation on plain coordinates (Sithole &
+ * Mapurisa).
  */
 #pragma once
 
@@ -11,58 +12,55 @@
 #include <cstdint>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace profiles
-{
+namespace pcl_ext {
+namespace profiles {
 /** \brief The profile segmenters of section 4.1. */
-enum class ProfileMethod
-{
-  Proximity,            ///< proximity chaining (4.1.1)
-  MinimumSpanningTree,  ///< minimum spanning tree cut at the threshold (section 3)
-  CurveFitting          ///< curve fitting with AIC model selection (4.1.2)
+enum class ProfileMethod {
+  Proximity,           ///< proximity chaining (4.1.1)
+  MinimumSpanningTree, ///< minimum spanning tree cut at the threshold (section 3)
+  CurveFitting         ///< curve fitting with AIC model selection (4.1.2)
 };
 
-/** \brief Everything the pipeline needs; see ProfileSegmentation for the meaning and defaults. */
-struct PipelineParameters
-{
-  std::vector<Eigen::Vector3f> normals;  ///< unit stack normals
-  double width = 0.0;                    ///< profile width (> 0)
-  double threshold = 0.0;                ///< proximity threshold (>= 0)
+/** \brief Everything the pipeline needs; see ProfileSegmentation for the meaning and
+ * defaults. */
+struct PipelineParameters {
+  std::vector<Eigen::Vector3f> normals; ///< unit stack normals
+  double width = 0.0;                   ///< profile width (> 0)
+  double threshold = 0.0;               ///< proximity threshold (>= 0)
   ProfileMethod method = ProfileMethod::Proximity;
   unsigned int proximity_neighbours = 4;
-  /** \brief Per-point thresholds: \a threshold times the point's local gap (localGaps) over
-    * the stack's mean local gap, at least \a threshold and at most \a max_threshold; the
-    * curve window scales with them. */
+  /** \brief Per-point thresholds: \a threshold times the point's local gap (localGaps)
+   * over the stack's mean local gap, at least \a threshold and at most \a
+   * max_threshold; the curve window scales with them. */
   bool local_threshold = false;
-  double max_threshold = 0.0;            ///< >= threshold when local_threshold
-  double curve_window = 0.0;             ///< > 0 for CurveFitting
-  double tangent_radius = 0.0;           ///< > 0 for CurveFitting
-  double max_turn = 0.0;                 ///< radians
-  double turn_significance = 0.0;        ///< turns within this many standard errors are noise
-  bool corrected_aic = false;            ///< AICc rather than AIC
-  bool side_frames = false;              ///< fit each side along its own principal axis
+  double max_threshold = 0.0;     ///< >= threshold when local_threshold
+  double curve_window = 0.0;      ///< > 0 for CurveFitting
+  double tangent_radius = 0.0;    ///< > 0 for CurveFitting
+  double max_turn = 0.0;          ///< radians
+  double turn_significance = 0.0; ///< turns within this many standard errors are noise
+  bool corrected_aic = false;     ///< AICc rather than AIC
+  bool side_frames = false;       ///< fit each side along its own principal axis
   double residual_factor = 3.0;
-  double min_residual = 0.0;             ///< floor of the residual tolerance
+  double min_residual = 0.0; ///< floor of the residual tolerance
   unsigned int threads = 1;
 };
 
 /** \brief The data structure of section 2 and the segments it yields. */
-struct PipelineResult
-{
-  std::vector<Stack> stacks;                      ///< one per normal
-  std::vector<std::vector<GraphEdge>> edges;      ///< E_phi: the edges of each stack
-  std::vector<std::uint8_t> breakpoints;          ///< curve ends (CurveFitting only)
-  std::vector<std::uint32_t> labels;              ///< component of each point
+struct PipelineResult {
+  std::vector<Stack> stacks;                 ///< one per normal
+  std::vector<std::vector<GraphEdge>> edges; ///< E_phi: the edges of each stack
+  std::vector<std::uint8_t> breakpoints;     ///< curve ends (CurveFitting only)
+  std::vector<std::uint32_t> labels;         ///< component of each point
   std::size_t num_segments = 0;
 };
 
-/** \brief Build the stacks, segment every profile (in parallel; the result does not depend on
-  * the thread count), and label the connected components of the union of all edges.
-  * \param[in] xyz finite coordinates, best centred near the origin
-  * \return false when a parameter is invalid (nothing computed) */
+/** \brief Build the stacks, segment every profile (in parallel; the result does not
+ * depend on the thread count), and label the connected components of the union of all
+ * edges. \param[in] xyz finite coordinates, best centred near the origin \return false
+ * when a parameter is invalid (nothing computed) */
 bool
 runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
-                        const PipelineParameters& parameters, PipelineResult& result);
-}  // namespace profiles
-}  // namespace pcl_ext
+                        const PipelineParameters& parameters,
+                        PipelineResult& result);
+} // namespace profiles
+} // namespace pcl_ext

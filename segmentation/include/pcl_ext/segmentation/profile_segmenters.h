@@ -8,129 +8,142 @@
 #include <cstdint>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace profiles
-{
+namespace pcl_ext {
+namespace profiles {
 /** \brief The points of one profile in the profile's own frame. */
-struct ProfilePoints
-{
-  std::vector<Eigen::Vector2f> uv;  ///< coordinates in the profile plane
-  std::vector<float> t;             ///< coordinate across the profile, in [0, width)
+struct ProfilePoints {
+  std::vector<Eigen::Vector2f> uv; ///< coordinates in the profile plane
+  std::vector<float> t;            ///< coordinate across the profile, in [0, width)
 };
 
 /** \brief An edge between two points of a profile (local indices, a < b). */
-struct LocalEdge
-{
+struct LocalEdge {
   std::uint32_t a;
   std::uint32_t b;
 };
 
-/** \brief The local gap of every point of a profile, for link thresholds that follow the
-  * local point density (not in the paper, which uses one threshold "slightly larger than the
-  * average point spacing"; see ProfileSegmentation::setLocalThreshold).
-  *
-  * The gap of a point is the distance to its nearest distinct point of the profile (at most
-  * \a max_distance, which also bounds the search). The local gap is the median of the gaps of
-  * the point and its \a neighbours nearest points within \a max_distance: a stretch of chain
-  * sparser than the rest (a surface far from the scanner) lengthens it, a single wide gap (a
-  * chain's end, a hole) does not. Coincident points share their representative's value.
-  * Deterministic.
-  * \param[out] gaps one per point */
+/** \brief The local gap of every point of a profile, for link thresholds that follow
+ * the local point density (not in the paper, which uses one threshold "slightly larger
+ * than the average point spacing"; see ProfileSegmentation::setLocalThreshold).
+ *
+ * The gap of a point is the distance to its nearest distinct point of the profile (at
+ * most \a max_distance, which also bounds the search). The local gap is the median of
+ * the gaps of the point and its \a neighbours nearest points within \a max_distance: a
+ * stretch of chain sparser than the rest (a surface far from the scanner) lengthens it,
+ * a single wide gap (a chain's end, a hole) does not. Coincident points share their
+ * representative's value. Deterministic. \param[out] gaps one per point */
 void
-localGaps (const ProfilePoints& profile, double max_distance, unsigned int neighbours,
+localGaps (const ProfilePoints& profile,
+           double max_distance,
+           unsigned int neighbours,
            std::vector<float>& gaps);
 
-/** \brief Proximity chaining (section 4.1.1): every point is linked to its \a neighbours
-  * nearest points in the profile plane; links longer than \a threshold are cut.
-  *
-  * Coincident points are linked to one another first and chain as one point, so duplicates
-  * cannot use up the links. Ties are broken by index: deterministic.
-  * \param[in] thresholds optional per-point thresholds (see localGaps) replacing \a
-  * threshold: a link i-j is kept when not longer than the smaller of the two; \a threshold
-  * must then be their maximum
-  * \param[out] edges without duplicates */
+/** \brief Proximity chaining (section 4.1.1): every point is linked to its \a
+ * neighbours nearest points in the profile plane; links longer than \a threshold are
+ * cut.
+ *
+ * Coincident points are linked to one another first and chain as one point, so
+ * duplicates cannot use up the links. Ties are broken by index: deterministic.
+ * \param[in] thresholds optional per-point thresholds (see localGaps) replacing \a
+ * threshold: a link i-j is kept when not longer than the smaller of the two; \a
+ * threshold must then be their maximum \param[out] edges without duplicates */
 void
-proximityEdges (const ProfilePoints& profile, double threshold, unsigned int neighbours,
-                std::vector<LocalEdge>& edges, const std::vector<float>* thresholds = nullptr);
+proximityEdges (const ProfilePoints& profile,
+                double threshold,
+                unsigned int neighbours,
+                std::vector<LocalEdge>& edges,
+                const std::vector<float>* thresholds = nullptr);
 
-/** \brief Minimum spanning tree of the profile points with edges longer than \a threshold
-  * cut (section 3: "segmentation of minimum spanning trees"). Its components are the
-  * single-linkage clusters at \a threshold.
-  * \param[in] thresholds optional per-point thresholds, as for proximityEdges
-  * \param[out] edges sorted, without duplicates */
+/** \brief Minimum spanning tree of the profile points with edges longer than \a
+ * threshold cut (section 3: "segmentation of minimum spanning trees"). Its components
+ * are the single-linkage clusters at \a threshold. \param[in] thresholds optional
+ * per-point thresholds, as for proximityEdges \param[out] edges sorted, without
+ * duplicates */
 void
-spanningTreeEdges (const ProfilePoints& profile, double threshold,
-                   std::vector<LocalEdge>& edges, const std::vector<float>* thresholds = nullptr);
+spanningTreeEdges (const ProfilePoints& profile,
+                   double threshold,
+                   std::vector<LocalEdge>& edges,
+                   const std::vector<float>* thresholds = nullptr);
 
 /** \brief Parameters of the curve-fitting profile segmenter. */
-struct CurveFitParameters
-{
-  double threshold = 0.0;   ///< proximity threshold of the chains (the spanning-tree cut)
-  double window = 0.0;      ///< half length of the fitted stretch on each side of a point
-  double tangent_radius = 0.0;  ///< radius of the neighbourhood giving the local direction
-  unsigned int min_side_points = 5;  ///< fewer points on a side: a curve end, not judged
-  bool corrected_aic = false;  ///< select by AICc (small-sample AIC) rather than AIC
-  /** \brief Optional per-point multipliers of the window and the tangent radius (the local
-    * threshold over the global one, see localGaps): the fits then span about as many
-    * points where the profile is sparse as where it is dense. */
+struct CurveFitParameters {
+  double threshold = 0.0; ///< proximity threshold of the chains (the spanning-tree cut)
+  double window = 0.0;    ///< half length of the fitted stretch on each side of a point
+  double tangent_radius =
+      0.0; ///< radius of the neighbourhood giving the local direction
+  unsigned int min_side_points = 5; ///< fewer points on a side: a curve end, not judged
+  bool corrected_aic = false; ///< select by AICc (small-sample AIC) rather than AIC
+  /** \brief Optional per-point multipliers of the window and the tangent radius (the
+   * local threshold over the global one, see localGaps): the fits then span about as
+   * many points where the profile is sparse as where it is dense. */
   const std::vector<float>* window_scale = nullptr;
-  bool side_frames = false;  ///< fit each side along its own principal axis
+  bool side_frames = false; ///< fit each side along its own principal axis
 };
 
 /** \brief What the curve fits say about each point of a profile. */
-struct CurveScores
-{
-  std::vector<std::uint8_t> evaluated;  ///< 1 when both sides could be fitted
-  std::vector<float> turn;              ///< angle between the two sides' normals (rad)
-  std::vector<float> rms;               ///< larger residual RMS of the two sides
-  /** \brief Standard error of \a turn (rad) per metre of noise sigma, propagated to first order
-    * from the two fits' coefficients: how much of the turn the noise alone could make. */
+struct CurveScores {
+  std::vector<std::uint8_t> evaluated; ///< 1 when both sides could be fitted
+  std::vector<float> turn;             ///< angle between the two sides' normals (rad)
+  std::vector<float> rms;              ///< larger residual RMS of the two sides
+  /** \brief Standard error of \a turn (rad) per metre of noise sigma, propagated to
+   * first order from the two fits' coefficients: how much of the turn the noise alone
+   * could make. */
   std::vector<float> turn_sigma;
 };
 
 /** \brief One polynomial curve fit, chosen by the Akaike information criterion. */
-struct PolynomialFit
-{
-  int degree = -1;     ///< 1, 2 or 3; -1 when no model could be fitted
-  double slope = 0.0;  ///< dy/dx at x = 0
-  Eigen::Vector3d terms = Eigen::Vector3d::Zero ();  ///< a1, a2, a3 (0 beyond the degree)
-  double rss = 0.0;    ///< residual sum of squares
-  /** \brief n ln(rss / n) + 2 k, plus 2 k (k + 1) / (n - k - 1) when corrected (AICc), with k
-    * the number of fitted terms (the degree + 2: the constant and the t term). */
+struct PolynomialFit {
+  int degree = -1;    ///< 1, 2 or 3; -1 when no model could be fitted
+  double slope = 0.0; ///< dy/dx at x = 0
+  Eigen::Vector3d terms = Eigen::Vector3d::Zero(); ///< a1, a2, a3 (0 beyond the degree)
+  double rss = 0.0;                                ///< residual sum of squares
+  /** \brief n ln(rss / n) + 2 k, plus 2 k (k + 1) / (n - k - 1) when corrected (AICc),
+   * with k the number of fitted terms (the degree + 2: the constant and the t term). */
   double aic = 0.0;
   /** \brief (Phi^T Phi)^-1 restricted to (a1, a2, a3) (0 beyond the degree): their
-    * covariance is this times the noise variance of y. */
-  Eigen::Matrix3d unit_covariance = Eigen::Matrix3d::Zero ();
+   * covariance is this times the noise variance of y. */
+  Eigen::Matrix3d unit_covariance = Eigen::Matrix3d::Zero();
 
   /** \brief dy/dx at \a x. */
   double
-  slopeAt (double x) const { return terms[0] + x * (2.0 * terms[1] + 3.0 * x * terms[2]); }
+  slopeAt (double x) const
+  {
+    return terms[0] + x * (2.0 * terms[1] + 3.0 * x * terms[2]);
+  }
 
   /** \brief d2y/dx2 at \a x. */
   double
-  secondDerivativeAt (double x) const { return 2.0 * terms[1] + 6.0 * x * terms[2]; }
+  secondDerivativeAt (double x) const
+  {
+    return 2.0 * terms[1] + 6.0 * x * terms[2];
+  }
 };
 
-/** \brief Fit y = a0 + a1 x + ... + ad x^d + c t for d = 1, 2, 3 and keep the model of lowest
-  * AIC. The t term absorbs the slant of a surface crossing the profile obliquely (the profile
-  * has a width), so the residuals measure the curve, not the profile's thickness.
-  * \param[in] x, y, t sample coordinates (same length)
-  * \param[in] scale a length used to condition the normal equations (e.g. the window)
-  * \param[in] corrected use AICc, the small-sample correction of Hurvich & Tsai (1989, "Regression
-  * and time series model selection in small samples"); false: the paper's plain AIC */
+/** \brief Fit y = a0 + a1 x + ... + ad x^d + c t for d = 1, 2, 3 and keep the model of
+ * lowest AIC. The t term absorbs the slant of a surface crossing the profile obliquely
+ * (the profile has a width), so the residuals measure the curve, not the profile's
+ * thickness. \param[in] x, y, t sample coordinates (same length) \param[in] scale a
+ * length used to condition the normal equations (e.g. the window) \param[in] corrected
+ * use AICc, the small-sample correction of Hurvich & Tsai (1989, "Regression and time
+ * series model selection in small samples"); false: the paper's plain AIC */
 PolynomialFit
-fitPolynomialAic (const std::vector<double>& x, const std::vector<double>& y,
-                  const std::vector<double>& t, double scale, bool corrected = false);
+fitPolynomialAic (const std::vector<double>& x,
+                  const std::vector<double>& y,
+                  const std::vector<double>& t,
+                  double scale,
+                  bool corrected = false);
 
-/** \brief Curve fitting (section 4.1.2), the scoring half: for every point, the points of its
-  * chain within the window are split at the point by the local direction, a polynomial chosen
-  * by AIC is fitted on each side, and the turn of the unit normal between the middles of the
-  * two sides, less the turn the fitted curvature explains, is measured, with the worse fit's
-  * residual and the turn's standard error per unit noise.
-  * \param[in] chain_edges spanning-tree edges: only points of the same chain are fitted */
+/** \brief Curve fitting (section 4.1.2), the scoring half: for every point, the points
+ * of its chain within the window are split at the point by the local direction, a
+ * polynomial chosen by AIC is fitted on each side, and the turn of the unit normal
+ * between the middles of the two sides, less the turn the fitted curvature explains, is
+ * measured, with the worse fit's residual and the turn's standard error per unit noise.
+ * \param[in] chain_edges spanning-tree edges: only points of the same chain are fitted
+ */
 void
-scoreCurveTurns (const ProfilePoints& profile, const std::vector<LocalEdge>& chain_edges,
-                 const CurveFitParameters& parameters, CurveScores& scores);
-}  // namespace profiles
-}  // namespace pcl_ext
+scoreCurveTurns (const ProfilePoints& profile,
+                 const std::vector<LocalEdge>& chain_edges,
+                 const CurveFitParameters& parameters,
+                 CurveScores& scores);
+} // namespace profiles
+} // namespace pcl_ext

@@ -9,70 +9,78 @@
 #include <cstdint>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace profiles
-{
+namespace pcl_ext {
+namespace profiles {
 /** \brief How stack normals are spread when the user gives none. */
-enum class StackDistribution
-{
-  Hemisphere,           ///< evenly over the upper hemisphere (the paper's extension, figure 7)
-  HorizontalHalfCircle  ///< evenly over a horizontal half circle (Sithole 2005: vertical profiles)
+enum class StackDistribution {
+  Hemisphere, ///< evenly over the upper hemisphere (the paper's extension, figure 7)
+  HorizontalHalfCircle ///< evenly over a horizontal half circle (Sithole 2005: vertical
+                       ///< profiles)
 };
 
 /** \brief \a count unit stack normals spread as far apart as possible.
-  *
-  * Hemisphere: for 2 to 6 stacks the best known packings of lines through the origin (3:
-  * orthogonal axes, 4: the cube diagonals, 5 and 6: the icosahedron's axes), turned so that no
-  * normal lies along a coordinate axis (axis-aligned walls would otherwise fall into a single
-  * profile); from 7 on a Fibonacci spiral over the hemisphere. Every normal has z >= 0.
-  * HorizontalHalfCircle: angles k pi / count in the xy plane.
-  * \return an empty list when \a count is 0 */
+ *
+ * Hemisphere: for 2 to 6 stacks the best known packings of lines through the origin (3:
+ * orthogonal axes, 4: the cube diagonals, 5 and 6: the icosahedron's axes), turned so
+ * that no normal lies along a coordinate axis (axis-aligned walls would otherwise fall
+ * into a single profile); from 7 on a Fibonacci spiral over the hemisphere. Every
+ * normal has z >= 0. HorizontalHalfCircle: angles k pi / count in the xy plane. \return
+ * an empty list when \a count is 0 */
 std::vector<Eigen::Vector3f>
 makeStackNormals (unsigned int count, StackDistribution distribution);
 
-/** \brief Average point spacing of a surface cloud: the square root of the surface area per
-  * point, sqrt(pi r6^2 / 6) with r6 the distance to the 6th nearest distinct neighbour,
-  * averaged over a sample of points.
-  *
-  * Unlike the nearest-neighbour distance this does not shrink on anisotropic scan patterns
-  * (close points along a scan line, wide gaps between lines) and is the grid step on a square
-  * grid. The points are sorted along the axis of largest extent and each sampled point sweeps
-  * outwards in that order until the sweep distance exceeds its 6th distance, so no tree and
-  * no whole-cloud kNN is built. Up to \a samples points, evenly spread over the array, are
-  * sampled (deterministic). Coincident points are skipped: duplicates do not make the spacing
-  * zero.
-  * \return the spacing, or 0 when no sampled point has 6 distinct neighbours */
+/** \brief Average point spacing of a surface cloud: the square root of the surface area
+ * per point, sqrt(pi r6^2 / 6) with r6 the distance to the 6th nearest distinct
+ * neighbour, averaged over a sample of points.
+ *
+ * Unlike the nearest-neighbour distance this does not shrink on anisotropic scan
+ * patterns (close points along a scan line, wide gaps between lines) and is the grid
+ * step on a square grid. The points are sorted along the axis of largest extent and
+ * each sampled point sweeps outwards in that order until the sweep distance exceeds its
+ * 6th distance, so no tree and no whole-cloud kNN is built. Up to \a samples points,
+ * evenly spread over the array, are sampled (deterministic). Coincident points are
+ * skipped: duplicates do not make the spacing zero. \return the spacing, or 0 when no
+ * sampled point has 6 distinct neighbours */
 double
-estimatePointSpacing (const std::vector<Eigen::Vector3f>& xyz, std::size_t samples = 2048);
+estimatePointSpacing (const std::vector<Eigen::Vector3f>& xyz,
+                      std::size_t samples = 2048);
 
-/** \brief One stack: every point falls into exactly one profile (slab) of width \a width
-  * along the stack normal.
-  *
-  * Profiles are numbered from the lowest coordinate along the normal; only non-empty profiles
-  * are kept, in order. */
-struct Stack
-{
-  Eigen::Vector3f normal = Eigen::Vector3f::UnitZ ();  ///< the stack normal (phi in the paper)
-  Eigen::Vector3f u = Eigen::Vector3f::UnitX ();       ///< first in-profile axis
-  Eigen::Vector3f v = Eigen::Vector3f::UnitY ();       ///< second in-profile axis
-  double origin = 0.0;                                 ///< coordinate along normal of profile 0
-  double width = 0.0;                                  ///< profile width
-  std::vector<std::uint32_t> offsets;  ///< profile p holds order[offsets[p] .. offsets[p + 1])
-  std::vector<std::uint32_t> order;    ///< point positions grouped by profile, ascending within
-  std::vector<std::uint32_t> profile_of_point;  ///< the (non-empty) profile of each point
+/** \brief One stack: every point falls into exactly one profile (slab) of width \a
+ * width along the stack normal.
+ *
+ * Profiles are numbered from the lowest coordinate along the normal; only non-empty
+ * profiles are kept, in order. */
+struct Stack {
+  Eigen::Vector3f normal =
+      Eigen::Vector3f::UnitZ();                 ///< the stack normal (phi in the paper)
+  Eigen::Vector3f u = Eigen::Vector3f::UnitX(); ///< first in-profile axis
+  Eigen::Vector3f v = Eigen::Vector3f::UnitY(); ///< second in-profile axis
+  double origin = 0.0; ///< coordinate along normal of profile 0
+  double width = 0.0;  ///< profile width
+  std::vector<std::uint32_t>
+      offsets; ///< profile p holds order[offsets[p] .. offsets[p + 1])
+  std::vector<std::uint32_t>
+      order; ///< point positions grouped by profile, ascending within
+  std::vector<std::uint32_t>
+      profile_of_point; ///< the (non-empty) profile of each point
 
   std::size_t
-  numProfiles () const { return offsets.empty () ? 0 : offsets.size () - 1; }
+  numProfiles () const
+  {
+    return offsets.empty() ? 0 : offsets.size() - 1;
+  }
 };
 
-/** \brief Slice \a xyz into contiguous profiles of \a width along \a normal (unit length).
-  *
-  * Bucketing by profile number (a counting sort, O(N)) when there are not many more profiles
-  * than points, a comparison sort otherwise. Deterministic.
-  * \return false when the width is not positive and finite or there is no point */
+/** \brief Slice \a xyz into contiguous profiles of \a width along \a normal (unit
+ * length).
+ *
+ * Bucketing by profile number (a counting sort, O(N)) when there are not many more
+ * profiles than points, a comparison sort otherwise. Deterministic. \return false when
+ * the width is not positive and finite or there is no point */
 bool
-buildStack (const std::vector<Eigen::Vector3f>& xyz, const Eigen::Vector3f& normal,
-            double width, Stack& stack);
-}  // namespace profiles
-}  // namespace pcl_ext
+buildStack (const std::vector<Eigen::Vector3f>& xyz,
+            const Eigen::Vector3f& normal,
+            double width,
+            Stack& stack);
+} // namespace profiles
+} // namespace pcl_ext

@@ -8,35 +8,36 @@
 #include <string>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace apps
-{
-/** \brief A PCL-tools command line: `pcl_ext_<verb> input output -option value -switch`.
-  *
-  * Options are single-dash words bound to variables whose current values are the defaults;
-  * `-h` (or `-help`, `--help`) prints the synopsis and every option with its default.
-  * Anything not declared is an error, as is a missing or malformed value.
-  *
-  * \code
-  * int k = 50;
-  * std::string input, output;
-  * pcl_ext::apps::CommandLine cl ("pcl_ext_example", "Estimates something.");
-  * cl.addPositional ("input.pcd", input, "input cloud");
-  * cl.addPositional ("output.pcd", output, "where to write the result");
-  * cl.addOption ("k", k, "number of neighbours");
-  * if (const int code = cl.parse (argc, argv); code >= 0)
-  *   return code;  // help printed (0) or a usage error reported (1)
-  * \endcode
-  */
-class CommandLine
-{
+namespace pcl_ext {
+namespace apps {
+/** \brief A PCL-tools command line: `pcl_ext_<verb> input output -option value
+ * -switch`.
+ *
+ * Options are single-dash words bound to variables whose current values are the
+ * defaults;
+ * `-h` (or `-help`, `--help`) prints the synopsis and every option with its default.
+ * Anything not declared is an error, as is a missing or malformed value.
+ *
+ * \code
+ * int k = 50;
+ * std::string input, output;
+ * pcl_ext::apps::CommandLine cl ("pcl_ext_example", "Estimates something.");
+ * cl.addPositional ("input.pcd", input, "input cloud");
+ * cl.addPositional ("output.pcd", output, "where to write the result");
+ * cl.addOption ("k", k, "number of neighbours");
+ * if (const int code = cl.parse (argc, argv); code >= 0)
+ *   return code;  // help printed (0) or a usage error reported (1)
+ * \endcode
+ */
+class CommandLine {
 public:
   CommandLine (std::string program, std::string description);
 
   /** \brief A required (or optional) positional argument, in order of declaration. */
   void
-  addPositional (const std::string& name, std::string& value, const std::string& help,
+  addPositional (const std::string& name,
+                 std::string& value,
+                 const std::string& help,
                  bool required = true);
 
   void
@@ -52,8 +53,8 @@ public:
   void
   addSwitch (const std::string& name, bool& value, const std::string& help);
 
-  /** \brief Parse; returns -1 to go on, or the exit code to return from main: 0 after -h,
-    * 1 after a usage error (reported on stderr with the synopsis). */
+  /** \brief Parse; returns -1 to go on, or the exit code to return from main: 0 after
+   * -h, 1 after a usage error (reported on stderr with the synopsis). */
   int
   parse (int argc, const char* const* argv);
 
@@ -67,8 +68,7 @@ public:
 
 private:
   enum class Kind { Int, Unsigned, Double, String, Switch };
-  struct Option
-  {
+  struct Option {
     std::string name;
     Kind kind;
     void* target;
@@ -76,8 +76,7 @@ private:
     std::string default_text;
     bool given = false;
   };
-  struct Positional
-  {
+  struct Positional {
     std::string name;
     std::string* target;
     std::string help;
@@ -97,10 +96,10 @@ private:
   std::vector<Positional> positionals_;
 };
 
-/** \brief Prints a stage the way PCL tools do: `Computing normals ... [done, 12 ms : 1000 points]`.
-  */
-class StageTimer
-{
+/** \brief Prints a stage the way PCL tools do: `Computing normals ... [done, 12 ms :
+ * 1000 points]`.
+ */
+class StageTimer {
 public:
   /** \brief Prints "<what> " and starts the clock. */
   explicit StageTimer (const std::string& what);
@@ -116,5 +115,5 @@ public:
 private:
   std::chrono::steady_clock::time_point start_;
 };
-}  // namespace apps
-}  // namespace pcl_ext
+} // namespace apps
+} // namespace pcl_ext

@@ -8,40 +8,39 @@
 
 #include <pcl/console/print.h>
 
-template <typename PointT> void
+template <typename PointT>
+void
 pcl_ext::segmentByLocalVariance (LocalVarianceClassification<PointT>& classifier,
                                  VarianceRegionGrowing<PointT>& growing,
                                  std::vector<pcl::PointIndices>& clusters)
 {
-  clusters.clear ();
-  const auto cloud = growing.getInputCloud ();
-  if (!cloud || cloud->empty ())
-  {
-    PCL_ERROR ("[pcl_ext::segmentByLocalVariance] No input cloud, or an empty one: set it on "
-               "the region growing.\n");
+  clusters.clear();
+  const auto cloud = growing.getInputCloud();
+  if (!cloud || cloud->empty()) {
+    PCL_ERROR (
+        "[pcl_ext::segmentByLocalVariance] No input cloud, or an empty one: set it on "
+        "the region growing.\n");
     return;
   }
-  const pcl::IndicesConstPtr indices = growing.getIndices ();
-  auto nb = growing.getNeighbourhoods ();
-  if (!nb || !nb->isComputedFor (cloud, indices))
-  {
-    auto own = pcl::make_shared<Neighbourhoods<PointT>> ();
+  const pcl::IndicesConstPtr indices = growing.getIndices();
+  auto nb = growing.getNeighbourhoods();
+  if (!nb || !nb->isComputedFor (cloud, indices)) {
+    auto own = pcl::make_shared<Neighbourhoods<PointT>>();
     own->setInputCloud (cloud);
     if (indices)
       own->setIndices (indices);
-    if (growing.getKSearch () != 0)
-    {
-      own->setKSearch (growing.getKSearch ());
-      own->setMaxRadius (growing.getMaxRadius ());
+    if (growing.getKSearch() != 0) {
+      own->setKSearch (growing.getKSearch());
+      own->setMaxRadius (growing.getMaxRadius());
     }
     else
-      own->setRadiusSearch (growing.getRadiusSearch ());
-    if (growing.getSearchMethod ())
-      own->setSearchMethod (growing.getSearchMethod ());
-    own->setNumberOfThreads (growing.getNumberOfThreads ());
-    if (!own->compute ())
-    {
-      PCL_ERROR ("[pcl_ext::segmentByLocalVariance] The neighbourhood search failed.\n");
+      own->setRadiusSearch (growing.getRadiusSearch());
+    if (growing.getSearchMethod())
+      own->setSearchMethod (growing.getSearchMethod());
+    own->setNumberOfThreads (growing.getNumberOfThreads());
+    if (!own->compute()) {
+      PCL_ERROR (
+          "[pcl_ext::segmentByLocalVariance] The neighbourhood search failed.\n");
       return;
     }
     nb = own;
@@ -50,10 +49,9 @@ pcl_ext::segmentByLocalVariance (LocalVarianceClassification<PointT>& classifier
   if (indices)
     classifier.setIndices (indices);
   classifier.setNeighbourhoods (nb);
-  auto classes = pcl::make_shared<pcl::PointCloud<pcl::Label>> ();
+  auto classes = pcl::make_shared<pcl::PointCloud<pcl::Label>>();
   classifier.classify (*classes);
-  if (classes->empty ())
-  {
+  if (classes->empty()) {
     PCL_ERROR ("[pcl_ext::segmentByLocalVariance] The classification failed.\n");
     return;
   }
@@ -62,7 +60,8 @@ pcl_ext::segmentByLocalVariance (LocalVarianceClassification<PointT>& classifier
   growing.extract (clusters);
 }
 
-#define PCL_EXT_INSTANTIATE_segmentByLocalVariance(T)                                         \
-  template void pcl_ext::segmentByLocalVariance<T> (                                          \
-      pcl_ext::LocalVarianceClassification<T>&, pcl_ext::VarianceRegionGrowing<T>&,           \
+#define PCL_EXT_INSTANTIATE_segmentByLocalVariance(T)                                  \
+  template void pcl_ext::segmentByLocalVariance<T> (                                   \
+      pcl_ext::LocalVarianceClassification<T>&,                                        \
+      pcl_ext::VarianceRegionGrowing<T>&,                                              \
       std::vector<pcl::PointIndices>&);

@@ -8,13 +8,15 @@
 
 #include <limits>
 
-template <typename PointInT, typename PointNT, typename PointOutT> bool
-pcl_ext::CurvatureVarianceEstimation<PointInT, PointNT, PointOutT>::checkInputs ()
+template <typename PointInT, typename PointNT, typename PointOutT>
+bool
+pcl_ext::CurvatureVarianceEstimation<PointInT, PointNT, PointOutT>::checkInputs()
 {
   return this->checkNormals (normals_);
 }
 
-template <typename PointInT, typename PointNT, typename PointOutT> bool
+template <typename PointInT, typename PointNT, typename PointOutT>
+bool
 pcl_ext::CurvatureVarianceEstimation<PointInT, PointNT, PointOutT>::computePoint (
     std::size_t row, PointOutT& out) const
 {
@@ -22,24 +24,29 @@ pcl_ext::CurvatureVarianceEstimation<PointInT, PointNT, PointOutT>::computePoint
   const auto& normals = *normals_;
   std::size_t count = 0;
   const double variance = curvatureVariance (
-      nn.begin (), nn.end (),
-      [&normals] (pcl::index_t j) { return detail::curvatureOf (normals[j]); }, count);
+      nn.begin(),
+      nn.end(),
+      [&normals] (pcl::index_t j) { return detail::curvatureOf (normals[j]); },
+      count);
   out.curvature_variance = static_cast<float> (variance);
   return std::isfinite (variance);
 }
 
-template <typename PointInT, typename PointNT, typename PointOutT> void
+template <typename PointInT, typename PointNT, typename PointOutT>
+void
 pcl_ext::CurvatureVarianceEstimation<PointInT, PointNT, PointOutT>::computeFeature (
     PointCloudOut& output)
 {
   output.is_dense = this->computeRows (
-      output, 1024, [this] (std::size_t r, PointOutT& out) { return computePoint (r, out); },
+      output,
+      1024,
+      [this] (std::size_t r, PointOutT& out) { return computePoint (r, out); },
       [] (PointOutT& out) {
-        out.curvature_variance = std::numeric_limits<float>::quiet_NaN ();
+        out.curvature_variance = std::numeric_limits<float>::quiet_NaN();
       });
 }
 
-#define PCL_EXT_INSTANTIATE_CurvatureVarianceEstimation(T)                                \
-  template class pcl_ext::CurvatureVarianceEstimation<T, pcl::Normal>;                    \
-  template class pcl_ext::CurvatureVarianceEstimation<T, pcl::PointNormal>;               \
+#define PCL_EXT_INSTANTIATE_CurvatureVarianceEstimation(T)                             \
+  template class pcl_ext::CurvatureVarianceEstimation<T, pcl::Normal>;                 \
+  template class pcl_ext::CurvatureVarianceEstimation<T, pcl::PointNormal>;            \
   template class pcl_ext::CurvatureVarianceEstimation<T, pcl_ext::CovarianceFeatures>;

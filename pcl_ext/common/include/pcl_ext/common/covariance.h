@@ -10,31 +10,35 @@
 
 #include <cstddef>
 
-namespace pcl_ext
-{
-/** \brief Ascending eigenvalues and matching unit eigenvectors (columns) of a 3x3 covariance. */
-struct EigenDecomposition
-{
-  Eigen::Vector3d values = Eigen::Vector3d::Zero ();       ///< l0 <= l1 <= l2
-  Eigen::Matrix3d vectors = Eigen::Matrix3d::Identity ();  ///< column i belongs to values(i)
+namespace pcl_ext {
+/** \brief Ascending eigenvalues and matching unit eigenvectors (columns) of a 3x3
+ * covariance. */
+struct EigenDecomposition {
+  Eigen::Vector3d values = Eigen::Vector3d::Zero(); ///< l0 <= l1 <= l2
+  Eigen::Matrix3d vectors =
+      Eigen::Matrix3d::Identity(); ///< column i belongs to values(i)
 
   /** \brief The surface normal: the eigenvector of the smallest eigenvalue. */
   Eigen::Vector3d
-  normal () const { return vectors.col (0); }
+  normal () const
+  {
+    return vectors.col (0);
+  }
 };
 
-/** \brief The standard eigen features of a neighbourhood (Weinmann et al. 2015 and Belton &
-  * Lichti 2006 eq. 4), from ascending eigenvalues l0 <= l1 <= l2 and the normal.
-  *
-  * With e_i = l_i / (l0 + l1 + l2):
-  * - surface_variance = l0 / (l0 + l1 + l2)  (Belton & Lichti eq. 4, "change of curvature")
-  * - linearity = (l2 - l1) / l2, planarity = (l1 - l0) / l2, scattering = l0 / l2
-  * - omnivariance = cbrt(e0 e1 e2), anisotropy = (l2 - l0) / l2
-  * - eigenentropy = -sum e_i ln e_i (0 ln 0 taken as 0)
-  * - verticality = 1 - |n_z| (0 on a horizontal surface, 1 on a vertical one)
-  */
-struct EigenFeatures
-{
+/** \brief The standard eigen features of a neighbourhood (Weinmann et al. 2015 and
+ * Belton & Lichti 2006 eq. 4), from ascending eigenvalues l0 <= l1 <= l2 and the
+ * normal.
+ *
+ * With e_i = l_i / (l0 + l1 + l2):
+ * - surface_variance = l0 / (l0 + l1 + l2)  (Belton & Lichti eq. 4, "change of
+ * curvature")
+ * - linearity = (l2 - l1) / l2, planarity = (l1 - l0) / l2, scattering = l0 / l2
+ * - omnivariance = cbrt(e0 e1 e2), anisotropy = (l2 - l0) / l2
+ * - eigenentropy = -sum e_i ln e_i (0 ln 0 taken as 0)
+ * - verticality = 1 - |n_z| (0 on a horizontal surface, 1 on a vertical one)
+ */
+struct EigenFeatures {
   double surface_variance;
   double linearity;
   double planarity;
@@ -45,53 +49,61 @@ struct EigenFeatures
   double verticality;
 };
 
-/** \brief Covariance and centroid of a neighbourhood, accumulated in double around a local
-  * centre (the first finite point), so that coordinates such as x = 6,000,000 m lose nothing.
-  *
-  * \param[in] cloud the points
-  * \param[in] begin, end a range of point indices into \a cloud
-  * \param[out] covariance the population covariance (divided by n)
-  * \param[out] centroid the mean, in the cloud's coordinates
-  * \return the number of finite points used; 0 leaves the outputs unchanged
-  */
+/** \brief Covariance and centroid of a neighbourhood, accumulated in double around a
+ * local centre (the first finite point), so that coordinates such as x = 6,000,000 m
+ * lose nothing.
+ *
+ * \param[in] cloud the points
+ * \param[in] begin, end a range of point indices into \a cloud
+ * \param[out] covariance the population covariance (divided by n)
+ * \param[out] centroid the mean, in the cloud's coordinates
+ * \return the number of finite points used; 0 leaves the outputs unchanged
+ */
 template <typename PointT, typename IndexIterator>
 std::size_t
 computeLocalCovariance (const pcl::PointCloud<PointT>& cloud,
-                        IndexIterator begin, IndexIterator end,
-                        Eigen::Matrix3d& covariance, Eigen::Vector3d& centroid);
+                        IndexIterator begin,
+                        IndexIterator end,
+                        Eigen::Matrix3d& covariance,
+                        Eigen::Vector3d& centroid);
 
 /** \brief Same, over a whole index container. */
 template <typename PointT, typename IndexContainer>
 inline std::size_t
-computeLocalCovariance (const pcl::PointCloud<PointT>& cloud, const IndexContainer& indices,
-                        Eigen::Matrix3d& covariance, Eigen::Vector3d& centroid)
+computeLocalCovariance (const pcl::PointCloud<PointT>& cloud,
+                        const IndexContainer& indices,
+                        Eigen::Matrix3d& covariance,
+                        Eigen::Vector3d& centroid)
 {
-  return computeLocalCovariance (cloud, std::begin (indices), std::end (indices), covariance,
-                                 centroid);
+  return computeLocalCovariance (
+      cloud, std::begin (indices), std::end (indices), covariance, centroid);
 }
 
 /** \brief Eigen decomposition of a symmetric 3x3 covariance, eigenvalues ascending.
-  *
-  * Tiny negative eigenvalues from round-off are clamped to 0. Eigenvector signs are as the
-  * solver returns them: orienting the normal is the caller's business (for instance
-  * pcl::flipNormalTowardsViewpoint).
-  * \return false when the matrix is not finite
-  */
+ *
+ * Tiny negative eigenvalues from round-off are clamped to 0. Eigenvector signs are as
+ * the solver returns them: orienting the normal is the caller's business (for instance
+ * pcl::flipNormalTowardsViewpoint).
+ * \return false when the matrix is not finite
+ */
 bool
-computeEigenDecomposition (const Eigen::Matrix3d& covariance, EigenDecomposition& result);
+computeEigenDecomposition (const Eigen::Matrix3d& covariance,
+                           EigenDecomposition& result);
 
-/** \brief Belton & Lichti eq. 4: l0 / (l0 + l1 + l2); NaN when the sum is not positive. */
+/** \brief Belton & Lichti eq. 4: l0 / (l0 + l1 + l2); NaN when the sum is not positive.
+ */
 double
 surfaceVariance (const Eigen::Vector3d& ascending_values);
 
-/** \brief All eigen features (see EigenFeatures); every field NaN when the eigenvalues sum to
-  * zero (all points coincide) or are not finite. */
+/** \brief All eigen features (see EigenFeatures); every field NaN when the eigenvalues
+ * sum to zero (all points coincide) or are not finite. */
 EigenFeatures
-computeEigenFeatures (const Eigen::Vector3d& ascending_values, const Eigen::Vector3d& normal);
+computeEigenFeatures (const Eigen::Vector3d& ascending_values,
+                      const Eigen::Vector3d& normal);
 
 /** \brief True when every eigen feature is finite. */
 bool
 isFinite (const EigenFeatures& features);
-}  // namespace pcl_ext
+} // namespace pcl_ext
 
 #include <pcl_ext/common/impl/covariance.hpp>

@@ -7,19 +7,19 @@
 #include <omp.h>
 #endif
 
-namespace pcl_ext
-{
-/** \brief Threads to use for a requested count: 0 means all cores, as in PCL's OMP classes. */
+namespace pcl_ext {
+/** \brief Threads to use for a requested count: 0 means all cores, as in PCL's OMP
+ * classes. */
 inline unsigned int
 resolveThreadCount (unsigned int requested)
 {
 #ifdef _OPENMP
   if (requested == 0)
-    return static_cast<unsigned int> (omp_get_num_procs ());
+    return static_cast<unsigned int> (omp_get_num_procs());
   return requested;
 #else
-  (void) requested;
+  (void)requested;
   return 1;
 #endif
 }
-}  // namespace pcl_ext
+} // namespace pcl_ext

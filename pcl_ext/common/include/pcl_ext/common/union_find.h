@@ -9,20 +9,20 @@
 #include <utility>
 #include <vector>
 
-namespace pcl_ext
-{
-/** \brief Disjoint sets with path halving; the root of a set is its smallest element, so
-  * results never depend on the order unions are made in. */
-class UnionFind
-{
+namespace pcl_ext {
+/** \brief Disjoint sets with path halving; the root of a set is its smallest element,
+ * so results never depend on the order unions are made in. */
+class UnionFind {
 public:
-  explicit UnionFind (std::size_t n = 0) : parent_ (n) { std::iota (parent_.begin (), parent_.end (), 0u); }
+  explicit UnionFind (std::size_t n = 0) : parent_ (n)
+  {
+    std::iota (parent_.begin(), parent_.end(), 0u);
+  }
 
   std::uint32_t
   find (std::uint32_t x)
   {
-    while (parent_[x] != x)
-    {
+    while (parent_[x] != x) {
       parent_[x] = parent_[parent_[x]];
       x = parent_[x];
     }
@@ -46,4 +46,4 @@ public:
 private:
   std::vector<std::uint32_t> parent_;
 };
-}  // namespace pcl_ext
+} // namespace pcl_ext

@@ -9,61 +9,63 @@
 #include <string>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace io
-{
+namespace pcl_ext {
+namespace io {
 /** \brief What one column of an ASCII point file holds. */
-enum class AsciiColumn
-{
-  X, Y, Z,     ///< coordinates (required, each once)
-  Intensity,   ///< intensity, any real number
-  Red, Green, Blue,  ///< colour channels, numbers in [0, 255] (rounded)
-  Label,       ///< label / class id: a non-negative integer (written as 3 or 3.0)
-  Skip         ///< a column to ignore (only its presence is checked)
+enum class AsciiColumn {
+  X,
+  Y,
+  Z,         ///< coordinates (required, each once)
+  Intensity, ///< intensity, any real number
+  Red,
+  Green,
+  Blue,  ///< colour channels, numbers in [0, 255] (rounded)
+  Label, ///< label / class id: a non-negative integer (written as 3 or 3.0)
+  Skip   ///< a column to ignore (only its presence is checked)
 };
 
 /** \brief Parse a column spec: names separated by commas (or spaces), case-insensitive.
-  *
-  * Names: x, y, z; i or intensity; r or red, g or green, b or blue; label, l or class;
-  * skip, _ or - for a column to ignore. Example: "x,y,z,i,r,g,b,label", or "x,y,z,label,_" for
-  * the Oakland 3-D files.
-  * \throw std::invalid_argument naming the offending entry, when a name is unknown, x, y or z
-  *        is missing, or a name other than skip occurs twice
-  */
+ *
+ * Names: x, y, z; i or intensity; r or red, g or green, b or blue; label, l or class;
+ * skip, _ or - for a column to ignore. Example: "x,y,z,i,r,g,b,label", or
+ * "x,y,z,label,_" for the Oakland 3-D files. \throw std::invalid_argument naming the
+ * offending entry, when a name is unknown, x, y or z is missing, or a name other than
+ * skip occurs twice
+ */
 std::vector<AsciiColumn>
 parseColumnSpec (const std::string& spec);
 
 /** \brief The columns assumed for a file with \a count columns when no spec is given:
-  * 3 = x y z; 4 = x y z i; 6 = x y z r g b; 7 = x y z i r g b; 8 = x y z i r g b label.
-  * Any other count returns an empty vector (the caller must give a spec). */
+ * 3 = x y z; 4 = x y z i; 6 = x y z r g b; 7 = x y z i r g b; 8 = x y z i r g b label.
+ * Any other count returns an empty vector (the caller must give a spec). */
 std::vector<AsciiColumn>
 defaultColumns (std::size_t count);
 
-/** \brief Read an ASCII point file: one point a line, values separated by whitespace or by
-  * commas (a line containing a comma is split at commas, surrounding blanks ignored).
-  *
-  * Empty lines and lines starting with '#' or "//" are skipped. Numbers are read
-  * locale-independently ("1.5", "-2e3"); coordinates must be finite. Every data line must have
-  * exactly as many values as there are columns.
-  * \param[in] path the file
-  * \param[out] table the points; untouched when an exception is thrown
-  * \param[in] columns the column spec (see parseColumnSpec); empty (default) chooses
-  *            defaultColumns from the first data line
-  * \throw ReadError naming the file (and line) when it cannot be opened, has no point, has a
-  *        line with a wrong number of values or a value that is not a valid number, or when
-  *        \a columns is invalid
-  */
+/** \brief Read an ASCII point file: one point a line, values separated by whitespace or
+ * by commas (a line containing a comma is split at commas, surrounding blanks ignored).
+ *
+ * Empty lines and lines starting with '#' or "//" are skipped. Numbers are read
+ * locale-independently ("1.5", "-2e3"); coordinates must be finite. Every data line
+ * must have exactly as many values as there are columns. \param[in] path the file
+ * \param[out] table the points; untouched when an exception is thrown
+ * \param[in] columns the column spec (see parseColumnSpec); empty (default) chooses
+ *            defaultColumns from the first data line
+ * \throw ReadError naming the file (and line) when it cannot be opened, has no point,
+ * has a line with a wrong number of values or a value that is not a valid number, or
+ * when \a columns is invalid
+ */
 void
-loadAsciiPoints (const std::string& path, PointTable& table, const std::string& columns = "");
+loadAsciiPoints (const std::string& path,
+                 PointTable& table,
+                 const std::string& columns = "");
 
 /** \brief Read the Oakland 3-D format: `x y z label confidence` per line, '#' comments.
-  *
-  * Munoz et al. (CVPR 2009). The label is the fine Oakland label id (1001 ... 1501, 9999); map it
-  * to coarse classes with ClassMapping. The confidence column must be present but is not kept.
-  * \throw ReadError as loadAsciiPoints
-  */
+ *
+ * Munoz et al. (CVPR 2009). The label is the fine Oakland label id (1001 ... 1501,
+ * 9999); map it to coarse classes with ClassMapping. The confidence column must be
+ * present but is not kept. \throw ReadError as loadAsciiPoints
+ */
 void
 loadOaklandFile (const std::string& path, PointTable& table);
-}  // namespace io
-}  // namespace pcl_ext
+} // namespace io
+} // namespace pcl_ext

@@ -1,5 +1,6 @@
 /*
- * pcl_ext: reading and writing one named field of a pcl::PCLPointCloud2, whatever its type.
+ * pcl_ext: reading and writing one named field of a pcl::PCLPointCloud2, whatever its
+ * type.
  */
 #pragma once
 
@@ -9,34 +10,34 @@
 #include <string>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace io
-{
+namespace pcl_ext {
+namespace io {
 /** \brief Read field \a name of every point as a label.
-  *
-  * Works for any PCL field type (int8 ... uint32, float32, float64; the first element when the
-  * field has a count above 1), so ground truth stored as `label` (uint32), `segment` (int32) or
-  * `class` (float) all read the same. The rule: NaN and negative values (e.g. -1 for "none")
-  * become 0; float values must be whole numbers and at most 2^32 - 1.
-  * \param[in] cloud the cloud
-  * \param[in] name the field name
-  * \param[out] labels one label per point (width x height), unchanged on failure
-  * \param[out] error when not null, receives the reason of a failure
-  * \return false when the field does not exist, a value is not a whole number or too large, or
-  *         the cloud's data is shorter than its size claims
-  */
+ *
+ * Works for any PCL field type (int8 ... uint32, float32, float64; the first element
+ * when the field has a count above 1), so ground truth stored as `label` (uint32),
+ * `segment` (int32) or `class` (float) all read the same. The rule: NaN and negative
+ * values (e.g. -1 for "none") become 0; float values must be whole numbers and at most
+ * 2^32 - 1. \param[in] cloud the cloud \param[in] name the field name \param[out]
+ * labels one label per point (width x height), unchanged on failure \param[out] error
+ * when not null, receives the reason of a failure \return false when the field does not
+ * exist, a value is not a whole number or too large, or the cloud's data is shorter
+ * than its size claims
+ */
 bool
-getLabelField (const pcl::PCLPointCloud2& cloud, const std::string& name,
-               std::vector<std::uint32_t>& labels, std::string* error = nullptr);
+getLabelField (const pcl::PCLPointCloud2& cloud,
+               const std::string& name,
+               std::vector<std::uint32_t>& labels,
+               std::string* error = nullptr);
 
-/** \brief Write \a labels into a uint32 field \a name, overwriting it in place when it already
-  * is a single uint32, otherwise replacing it (or, when absent, appending it) and repacking
-  * the points.
-  * \return false when labels.size () differs from the number of points
-  */
+/** \brief Write \a labels into a uint32 field \a name, overwriting it in place when it
+ * already is a single uint32, otherwise replacing it (or, when absent, appending it)
+ * and repacking the points. \return false when labels.size () differs from the number
+ * of points
+ */
 bool
-setLabelField (pcl::PCLPointCloud2& cloud, const std::string& name,
+setLabelField (pcl::PCLPointCloud2& cloud,
+               const std::string& name,
                const std::vector<std::uint32_t>& labels);
-}  // namespace io
-}  // namespace pcl_ext
+} // namespace io
+} // namespace pcl_ext

@@ -1,5 +1,6 @@
 /*
- * pcl_ext: where a feature or classifier gets its neighbourhoods: shared, or searched itself.
+ * pcl_ext: where a feature or classifier gets its neighbourhoods: shared, or searched
+ * itself.
  */
 #pragma once
 
@@ -10,63 +11,72 @@
 #include <memory>
 #include <string>
 
-namespace pcl_ext
-{
+namespace pcl_ext {
 /** \brief The neighbourhoods a class works on: the shared ones given through
-  * setNeighbourhoods() when they were computed for the same cloud and indices, else its own
-  * search with its k or radius.
-  *
-  * Used by every pcl_ext feature and classifier so that a pipeline searches the cloud once:
-  * compute one pcl_ext::Neighbourhoods and hand it to each class.
-  */
+ * setNeighbourhoods() when they were computed for the same cloud and indices, else its
+ * own search with its k or radius.
+ *
+ * Used by every pcl_ext feature and classifier so that a pipeline searches the cloud
+ * once: compute one pcl_ext::Neighbourhoods and hand it to each class.
+ */
 template <typename PointT>
-class NeighbourhoodSource
-{
+class NeighbourhoodSource {
 public:
   using NeighbourhoodsT = Neighbourhoods<PointT>;
   using NeighbourhoodsConstPtr = typename NeighbourhoodsT::ConstPtr;
   using SearchPtr = typename NeighbourhoodsT::SearchPtr;
 
   void
-  setShared (const NeighbourhoodsConstPtr& neighbourhoods) { shared_ = neighbourhoods; }
+  setShared (const NeighbourhoodsConstPtr& neighbourhoods)
+  {
+    shared_ = neighbourhoods;
+  }
 
   NeighbourhoodsConstPtr
-  getShared () const { return shared_; }
+  getShared () const
+  {
+    return shared_;
+  }
 
   /** \brief The neighbourhoods to use for \a cloud and \a indices (null: every point).
-    *
-    * Shared neighbourhoods computed for this cloud and these indices win (k and radius are then
-    * theirs). Otherwise a search runs with exactly one of \a k, \a radius set (the other 0).
-    * \param[in] caller "Class::method", for messages
-    * \param[in] max_radius with \a k: keep only the neighbours within this distance (the k
-    *            nearest within it); 0: no such cap
-    * \return null after a PCL_ERROR when neither is possible */
+   *
+   * Shared neighbourhoods computed for this cloud and these indices win (k and radius
+   * are then theirs). Otherwise a search runs with exactly one of \a k, \a radius set
+   * (the other 0). \param[in] caller "Class::method", for messages \param[in]
+   * max_radius with \a k: keep only the neighbours within this distance (the k nearest
+   * within it); 0: no such cap \return null after a PCL_ERROR when neither is possible
+   */
   const NeighbourhoodsT*
-  prepare (const std::string& caller, const typename NeighbourhoodsT::PointCloudConstPtr& cloud,
-           const pcl::IndicesConstPtr& indices, int k, double radius, const SearchPtr& search,
-           unsigned int threads, double max_radius = 0.0)
+  prepare (const std::string& caller,
+           const typename NeighbourhoodsT::PointCloudConstPtr& cloud,
+           const pcl::IndicesConstPtr& indices,
+           int k,
+           double radius,
+           const SearchPtr& search,
+           unsigned int threads,
+           double max_radius = 0.0)
   {
-    own_.reset ();
-    if (shared_)
-    {
+    own_.reset();
+    if (shared_) {
       if (shared_->isComputedFor (cloud, indices))
-        return shared_.get ();
-      PCL_WARN ("[pcl_ext::%s] The shared neighbourhoods were not computed for this cloud and "
-                "these indices; searching again.\n", caller.c_str ());
+        return shared_.get();
+      PCL_WARN ("[pcl_ext::%s] The shared neighbourhoods were not computed for this "
+                "cloud and "
+                "these indices; searching again.\n",
+                caller.c_str());
     }
-    if ((k != 0) == (radius != 0.0))
-    {
-      PCL_ERROR ("[pcl_ext::%s] Set exactly one of k (setKSearch) and the radius "
-                 "(setRadiusSearch), or give shared neighbourhoods (setNeighbourhoods).\n",
-                 caller.c_str ());
+    if ((k != 0) == (radius != 0.0)) {
+      PCL_ERROR (
+          "[pcl_ext::%s] Set exactly one of k (setKSearch) and the radius "
+          "(setRadiusSearch), or give shared neighbourhoods (setNeighbourhoods).\n",
+          caller.c_str());
       return nullptr;
     }
     own_.reset (new NeighbourhoodsT);
     own_->setInputCloud (cloud);
     if (indices)
       own_->setIndices (indices);
-    if (k != 0)
-    {
+    if (k != 0) {
       own_->setKSearch (k);
       own_->setMaxRadius (max_radius);
     }
@@ -75,21 +85,23 @@ public:
     if (search)
       own_->setSearchMethod (search);
     own_->setNumberOfThreads (threads);
-    if (!own_->compute ())
-    {
-      PCL_ERROR ("[pcl_ext::%s] The neighbourhood search failed.\n", caller.c_str ());
-      own_.reset ();
+    if (!own_->compute()) {
+      PCL_ERROR ("[pcl_ext::%s] The neighbourhood search failed.\n", caller.c_str());
+      own_.reset();
       return nullptr;
     }
-    return own_.get ();
+    return own_.get();
   }
 
   /** \brief Free a search of our own (the rows can be large). */
   void
-  release () { own_.reset (); }
+  release ()
+  {
+    own_.reset();
+  }
 
 private:
   NeighbourhoodsConstPtr shared_;
   std::unique_ptr<NeighbourhoodsT> own_;
 };
-}  // namespace pcl_ext
+} // namespace pcl_ext

@@ -12,58 +12,57 @@
 #include <memory>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace simulation
-{
+namespace pcl_ext {
+namespace simulation {
 /** \brief Appearance of a surface: colour and laser reflectance.
-  *
-  * A point's colour is \a rgb plus Gaussian jitter of \a rgb_jitter per channel (0-255 scale);
-  * its intensity is reflectance * (0.2 + 0.8 |cos incidence|) plus Gaussian jitter of
-  * \a intensity_jitter, clamped to [0, 1] (a Lambertian return with an ambient floor).
-  */
-struct Material
-{
+ *
+ * A point's colour is \a rgb plus Gaussian jitter of \a rgb_jitter per channel (0-255
+ * scale); its intensity is reflectance * (0.2 + 0.8 |cos incidence|) plus Gaussian
+ * jitter of \a intensity_jitter, clamped to [0, 1] (a Lambertian return with an ambient
+ * floor).
+ */
+struct Material {
   Eigen::Vector3f rgb = Eigen::Vector3f (180.f, 180.f, 180.f);
   float rgb_jitter = 6.f;
   float reflectance = 0.5f;
   float intensity_jitter = 0.02f;
 };
 
-/** \brief What a point on a surface is: its segment, object, scene label and material. */
-struct SurfaceInfo
-{
-  std::uint32_t segment = 0;  ///< surface id, >= 1
-  std::uint32_t object = 0;   ///< object id, >= 1
-  std::uint32_t label = 0;    ///< scene label (0 = none)
+/** \brief What a point on a surface is: its segment, object, scene label and material.
+ */
+struct SurfaceInfo {
+  std::uint32_t segment = 0; ///< surface id, >= 1
+  std::uint32_t object = 0;  ///< object id, >= 1
+  std::uint32_t label = 0;   ///< scene label (0 = none)
   Material material;
 };
 
-/** \brief An analytic surface: one segment of the ground truth (except HeightField, which may
-  * carry several regions).
-  *
-  * \a porosity is the probability that a ray passes through the whole primitive (vegetation);
-  * \a roughness is the standard deviation (m) of extra range noise on its returns, modelling
-  * leaves scattered around the ideal surface.
-  */
-class Primitive
-{
+/** \brief An analytic surface: one segment of the ground truth (except HeightField,
+ * which may carry several regions).
+ *
+ * \a porosity is the probability that a ray passes through the whole primitive
+ * (vegetation); \a roughness is the standard deviation (m) of extra range noise on its
+ * returns, modelling leaves scattered around the ideal surface.
+ */
+class Primitive {
 public:
   using Ptr = std::shared_ptr<Primitive>;
   using ConstPtr = std::shared_ptr<const Primitive>;
 
-  virtual ~Primitive () = default;
+  virtual ~Primitive() = default;
 
-  /** \brief Nearest intersection with t in (t_min, t_max); writes t and the unit normal. */
+  /** \brief Nearest intersection with t in (t_min, t_max); writes t and the unit
+   * normal. */
   virtual bool
-  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal) const = 0;
+  intersect (
+      const Ray& ray, double t_min, double t_max, double& t, Vec3& normal) const = 0;
 
   /** \brief Bounding box. */
   virtual Aabb
   bounds () const = 0;
 
-  /** \brief Signed implicit function (negative inside/below, zero on the surface), used to
-    * trace intersection curves with other surfaces; not necessarily a distance. */
+  /** \brief Signed implicit function (negative inside/below, zero on the surface), used
+   * to trace intersection curves with other surfaces; not necessarily a distance. */
   virtual double
   implicit (const Vec3& p) const = 0;
 
@@ -79,19 +78,22 @@ public:
   double roughness = 0.0;
 };
 
-/** \brief A planar polygon with holes: rings of 2D vertices in the frame (origin, u, v).
-  *
-  * Every ring is closed implicitly; inside means inside an odd number of rings, so the first
-  * ring is the outline and the others are holes (windows, doors).
-  */
-class PlanarPolygon : public Primitive
-{
+/** \brief A planar polygon with holes: rings of 2D vertices in the frame (origin, u,
+ * v).
+ *
+ * Every ring is closed implicitly; inside means inside an odd number of rings, so the
+ * first ring is the outline and the others are holes (windows, doors).
+ */
+class PlanarPolygon : public Primitive {
 public:
-  PlanarPolygon (const Vec3& origin, const Vec3& u, const Vec3& v,
+  PlanarPolygon (const Vec3& origin,
+                 const Vec3& u,
+                 const Vec3& v,
                  std::vector<std::vector<Vec2>> rings);
 
   bool
-  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal) const override;
+  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal)
+      const override;
   Aabb
   bounds () const override;
   double
@@ -101,7 +103,7 @@ public:
   Vec3
   toWorld (const Vec2& q) const
   {
-    return origin_ + q.x () * u_ + q.y () * v_;
+    return origin_ + q.x() * u_ + q.y() * v_;
   }
   const std::vector<std::vector<Vec2>>&
   rings () const
@@ -125,13 +127,13 @@ private:
 };
 
 /** \brief A flat disk or annulus: r_inner <= |p - centre| <= r_outer in the plane. */
-class Annulus : public Primitive
-{
+class Annulus : public Primitive {
 public:
   Annulus (const Vec3& centre, const Vec3& normal, double r_inner, double r_outer);
 
   bool
-  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal) const override;
+  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal)
+      const override;
   Aabb
   bounds () const override;
   double
@@ -142,18 +144,19 @@ private:
   double r_inner_, r_outer_;
 };
 
-/** \brief The open lateral surface of a cone frustum (a cylinder when both radii are equal),
-  * seen from outside and from inside (open pipes).
-  *
-  * Axis from \a base along unit \a axis for \a length; radius r0 at the base and r1 at the top.
-  */
-class ConeFrustum : public Primitive
-{
+/** \brief The open lateral surface of a cone frustum (a cylinder when both radii are
+ * equal), seen from outside and from inside (open pipes).
+ *
+ * Axis from \a base along unit \a axis for \a length; radius r0 at the base and r1 at
+ * the top.
+ */
+class ConeFrustum : public Primitive {
 public:
   ConeFrustum (const Vec3& base, const Vec3& axis, double length, double r0, double r1);
 
   bool
-  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal) const override;
+  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal)
+      const override;
   Aabb
   bounds () const override;
   double
@@ -185,16 +188,18 @@ private:
   double length_, r0_, slope_;
 };
 
-/** \brief A sphere, optionally cut open: the part with (p - centre).cut_axis > cut_height is
-  * removed (cut_height >= radius keeps the whole sphere). */
-class Sphere : public Primitive
-{
+/** \brief A sphere, optionally cut open: the part with (p - centre).cut_axis >
+ * cut_height is removed (cut_height >= radius keeps the whole sphere). */
+class Sphere : public Primitive {
 public:
-  Sphere (const Vec3& centre, double radius, const Vec3& cut_axis = Vec3::UnitZ (),
-          double cut_height = std::numeric_limits<double>::infinity ());
+  Sphere (const Vec3& centre,
+          double radius,
+          const Vec3& cut_axis = Vec3::UnitZ(),
+          double cut_height = std::numeric_limits<double>::infinity());
 
   bool
-  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal) const override;
+  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal)
+      const override;
   Aabb
   bounds () const override;
   double
@@ -205,14 +210,15 @@ private:
   double radius_, cut_height_;
 };
 
-/** \brief A closed ellipsoid with semi-axes \a radii along the columns of \a rotation. */
-class Ellipsoid : public Primitive
-{
+/** \brief A closed ellipsoid with semi-axes \a radii along the columns of \a rotation.
+ */
+class Ellipsoid : public Primitive {
 public:
   Ellipsoid (const Vec3& centre, const Eigen::Matrix3d& rotation, const Vec3& radii);
 
   bool
-  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal) const override;
+  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal)
+      const override;
   Aabb
   bounds () const override;
   double
@@ -223,17 +229,21 @@ private:
   Eigen::Matrix3d rotation_;
 };
 
-/** \brief A section of a torus (a pipe elbow): tube radius \a minor around a circle of radius
-  * \a major in the plane normal to \a axis, from direction \a start through \a sweep radians
-  * (counter-clockwise about \a axis). */
-class TorusSection : public Primitive
-{
+/** \brief A section of a torus (a pipe elbow): tube radius \a minor around a circle of
+ * radius \a major in the plane normal to \a axis, from direction \a start through \a
+ * sweep radians (counter-clockwise about \a axis). */
+class TorusSection : public Primitive {
 public:
-  TorusSection (const Vec3& centre, const Vec3& axis, const Vec3& start, double major,
-                double minor, double sweep);
+  TorusSection (const Vec3& centre,
+                const Vec3& axis,
+                const Vec3& start,
+                double major,
+                double minor,
+                double sweep);
 
   bool
-  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal) const override;
+  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal)
+      const override;
   Aabb
   bounds () const override;
   double
@@ -244,20 +254,21 @@ private:
   double major_, minor_, sweep_;
 };
 
-/** \brief A terrain z = h(x, y) on a regular grid, two triangles per cell, traversed cell by
-  * cell along the ray (2D DDA), so long grazing rays cost a few cell tests each.
-  *
-  * An optional region function splits it into several ground-truth surfaces (grass, road,
-  * walkway) that meet without a crease.
-  */
-class HeightField : public Primitive
-{
+/** \brief A terrain z = h(x, y) on a regular grid, two triangles per cell, traversed
+ * cell by cell along the ray (2D DDA), so long grazing rays cost a few cell tests each.
+ *
+ * An optional region function splits it into several ground-truth surfaces (grass,
+ * road, walkway) that meet without a crease.
+ */
+class HeightField : public Primitive {
 public:
   /** \param heights (nx + 1) * (ny + 1) values, x fastest */
-  HeightField (double x0, double y0, double cell, int nx, int ny, std::vector<double> heights);
+  HeightField (
+      double x0, double y0, double cell, int nx, int ny, std::vector<double> heights);
 
   bool
-  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal) const override;
+  intersect (const Ray& ray, double t_min, double t_max, double& t, Vec3& normal)
+      const override;
   Aabb
   bounds () const override;
   double
@@ -271,21 +282,43 @@ public:
 
   /** \brief Regions: \a region maps (x, y) to an index into \a infos. */
   void
-  setRegions (std::function<int (double, double)> region, std::vector<SurfaceInfo> infos);
+  setRegions (std::function<int (double, double)> region,
+              std::vector<SurfaceInfo> infos);
   const std::vector<SurfaceInfo>&
   regions () const
   {
     return region_infos_;
   }
 
-  double x0 () const { return x0_; }
-  double y0 () const { return y0_; }
-  double x1 () const { return x0_ + nx_ * cell_; }
-  double y1 () const { return y0_ + ny_ * cell_; }
+  double
+  x0 () const
+  {
+    return x0_;
+  }
+  double
+  y0 () const
+  {
+    return y0_;
+  }
+  double
+  x1 () const
+  {
+    return x0_ + nx_ * cell_;
+  }
+  double
+  y1 () const
+  {
+    return y0_ + ny_ * cell_;
+  }
 
 private:
   bool
-  intersectCell (const Ray& ray, int i, int j, double t_min, double t_max, double& t,
+  intersectCell (const Ray& ray,
+                 int i,
+                 int j,
+                 double t_min,
+                 double t_max,
+                 double& t,
                  Vec3& normal) const;
   double
   at (int i, int j) const
@@ -296,10 +329,11 @@ private:
   double x0_, y0_, cell_;
   int nx_, ny_;
   std::vector<double> heights_;
-  std::vector<float> cell_min_, cell_max_;  ///< height range of each cell, to skip cells fast
+  std::vector<float> cell_min_,
+      cell_max_; ///< height range of each cell, to skip cells fast
   double zmin_, zmax_;
   std::function<int (double, double)> region_;
   std::vector<SurfaceInfo> region_infos_;
 };
-}  // namespace simulation
-}  // namespace pcl_ext
+} // namespace simulation
+} // namespace pcl_ext

@@ -6,10 +6,8 @@
 #include <cmath>
 #include <cstdint>
 
-namespace pcl_ext
-{
-namespace simulation
-{
+namespace pcl_ext {
+namespace simulation {
 /** \brief SplitMix64 finaliser (Steele, Lea & Flood 2014): a bijective 64-bit mix. */
 inline std::uint64_t
 splitMix64 (std::uint64_t x)
@@ -27,15 +25,16 @@ hashCombine (std::uint64_t a, std::uint64_t b)
   return splitMix64 (a ^ splitMix64 (b + 0x632be59bd9b4e019ULL));
 }
 
-/** \brief A small random stream seeded from a hash, so that every ray draws its own numbers.
-  *
-  * Each ray of a scan seeds one stream from (seed, scanner, ray index), which makes the output
-  * independent of the thread count and of the order in which rays are processed. Uniforms and
-  * Gaussians are computed here (SplitMix64 output, Box-Muller) rather than with the standard
-  * library's distributions, whose algorithms differ between implementations.
-  */
-class RandomStream
-{
+/** \brief A small random stream seeded from a hash, so that every ray draws its own
+ * numbers.
+ *
+ * Each ray of a scan seeds one stream from (seed, scanner, ray index), which makes the
+ * output independent of the thread count and of the order in which rays are processed.
+ * Uniforms and Gaussians are computed here (SplitMix64 output, Box-Muller) rather than
+ * with the standard library's distributions, whose algorithms differ between
+ * implementations.
+ */
+class RandomStream {
 public:
   explicit RandomStream (std::uint64_t key) : state_ (splitMix64 (key)) {}
 
@@ -51,20 +50,20 @@ public:
   double
   uniform ()
   {
-    return static_cast<double> (next () >> 11) * 0x1.0p-53;
+    return static_cast<double> (next() >> 11) * 0x1.0p-53;
   }
 
   /** \brief Standard normal deviate (Box-Muller, cosine branch). */
   double
   gaussian ()
   {
-    const double u1 = (static_cast<double> (next () >> 11) + 1.0) * 0x1.0p-53;  // (0, 1]
-    const double u2 = uniform ();
+    const double u1 = (static_cast<double> (next() >> 11) + 1.0) * 0x1.0p-53; // (0, 1]
+    const double u2 = uniform();
     return std::sqrt (-2.0 * std::log (u1)) * std::cos (6.283185307179586 * u2);
   }
 
 private:
   std::uint64_t state_;
 };
-}  // namespace simulation
-}  // namespace pcl_ext
+} // namespace simulation
+} // namespace pcl_ext

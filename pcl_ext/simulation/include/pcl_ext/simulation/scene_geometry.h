@@ -11,26 +11,24 @@
 #include <map>
 #include <vector>
 
-namespace pcl_ext
-{
-namespace simulation
-{
+namespace pcl_ext {
+namespace simulation {
 /** \brief Result of casting one ray into a SceneGeometry. */
-struct RayHit
-{
+struct RayHit {
   double t = 0.0;              ///< distance along the (unit) ray
-  Vec3 normal = Vec3::UnitZ ();  ///< unit surface normal (either orientation)
+  Vec3 normal = Vec3::UnitZ(); ///< unit surface normal (either orientation)
   int primitive = -1;          ///< index of the primitive hit
 };
 
-/** \brief Primitives and ground-truth curves of a scene, with a bounding volume hierarchy.
-  *
-  * Add primitives and curves, call build(), then cast rays (thread-safe after build()).
-  * Each curve applies only to the points of its own segments (segment_a, segment_b): a point
-  * of one surface near another surface's crease is not an edge point of its own surface.
-  */
-class SceneGeometry
-{
+/** \brief Primitives and ground-truth curves of a scene, with a bounding volume
+ * hierarchy.
+ *
+ * Add primitives and curves, call build(), then cast rays (thread-safe after build()).
+ * Each curve applies only to the points of its own segments (segment_a, segment_b): a
+ * point of one surface near another surface's crease is not an edge point of its own
+ * surface.
+ */
+class SceneGeometry {
 public:
   /** \brief Add a primitive; returns its index. */
   int
@@ -44,23 +42,32 @@ public:
   void
   build ();
 
-  /** \brief Nearest hit in (0, t_max), or false. Porous primitives let the ray through when
-    * a uniform number drawn from (\a ray_key, primitive index) is below their porosity. */
+  /** \brief Nearest hit in (0, t_max), or false. Porous primitives let the ray through
+   * when a uniform number drawn from (\a ray_key, primitive index) is below their
+   * porosity. */
   bool
   intersect (const Ray& ray, double t_max, std::uint64_t ray_key, RayHit& hit) const;
 
   /** \brief The same, testing every primitive (no BVH); a reference for tests. */
   bool
-  intersectBruteForce (const Ray& ray, double t_max, std::uint64_t ray_key, RayHit& hit) const;
+  intersectBruteForce (const Ray& ray,
+                       double t_max,
+                       std::uint64_t ray_key,
+                       RayHit& hit) const;
 
-  /** \brief Distances from \a p (on segment \a segment) to the nearest crease and the nearest
-    * border of that segment within \a max_distance (infinity when none is that close). */
+  /** \brief Distances from \a p (on segment \a segment) to the nearest crease and the
+   * nearest border of that segment within \a max_distance (infinity when none is that
+   * close). */
   void
-  curveDistances (const Vec3& p, std::uint32_t segment, double max_distance, double& crease,
+  curveDistances (const Vec3& p,
+                  std::uint32_t segment,
+                  double max_distance,
+                  double& crease,
                   double& border) const;
 
-  /** \brief Class of a point at true position \a p on segment \a segment: Edge when a crease is
-    * within \a distance (and no border is nearer), Boundary when a border is, else Surface. */
+  /** \brief Class of a point at true position \a p on segment \a segment: Edge when a
+   * crease is within \a distance (and no border is nearer), Boundary when a border is,
+   * else Surface. */
   PointClass
   classify (const Vec3& p, std::uint32_t segment, double distance) const;
 
@@ -82,13 +89,12 @@ public:
   }
 
 private:
-  struct Node
-  {
+  struct Node {
     Aabb box;
-    int left = -1;   ///< first child (internal) or -1
-    int right = -1;  ///< second child
-    int first = 0;   ///< first primitive in order_ (leaf)
-    int count = 0;   ///< number of primitives (leaf)
+    int left = -1;  ///< first child (internal) or -1
+    int right = -1; ///< second child
+    int first = 0;  ///< first primitive in order_ (leaf)
+    int count = 0;  ///< number of primitives (leaf)
   };
 
   int
@@ -99,11 +105,10 @@ private:
   std::vector<Primitive::Ptr> primitives_;
   std::vector<GroundTruthCurve> curves_;
   std::vector<Aabb> curve_boxes_;
-  /** \brief A run of up to kCurveChunk curves of one segment with their common box: curves
-    * are added along their polylines, so consecutive curves are close and most points skip
-    * whole chunks. */
-  struct CurveChunk
-  {
+  /** \brief A run of up to kCurveChunk curves of one segment with their common box:
+   * curves are added along their polylines, so consecutive curves are close and most
+   * points skip whole chunks. */
+  struct CurveChunk {
     Aabb box;
     std::vector<int> curves;
   };
@@ -113,5 +118,5 @@ private:
   std::vector<int> order_;
   Aabb bounds_;
 };
-}  // namespace simulation
-}  // namespace pcl_ext
+} // namespace simulation
+} // namespace pcl_ext

@@ -16,30 +16,33 @@
 #include <algorithm>
 #include <cmath>
 
-namespace pcl_ext
+namespace pcl_ext {
+template <typename PointT>
+bool
+fitScanPlanes (const pcl::PointCloud<PointT>& cloud,
+               const std::vector<pcl::PointIndices>& inliers,
+               const ScanViewpoints& viewpoints,
+               std::vector<ScanPlane>& planes)
 {
-template <typename PointT> bool
-fitScanPlanes (const pcl::PointCloud<PointT>& cloud, const std::vector<pcl::PointIndices>& inliers,
-               const ScanViewpoints& viewpoints, std::vector<ScanPlane>& planes)
-{
-  planes.clear ();
-  const bool per_point = !viewpoints.scanner_of_point.empty ();
-  if (per_point && viewpoints.scanner_of_point.size () != cloud.size ())
-  {
+  planes.clear();
+  const bool per_point = !viewpoints.scanner_of_point.empty();
+  if (per_point && viewpoints.scanner_of_point.size() != cloud.size()) {
     PCL_ERROR ("[pcl_ext::fitScanPlanes] %zu scanner indices for %zu points.\n",
-               viewpoints.scanner_of_point.size (), cloud.size ());
+               viewpoints.scanner_of_point.size(),
+               cloud.size());
     return false;
   }
-  const Eigen::Vector3d origin = cloud.sensor_origin_.template head<3> ().template cast<double> ();
-  for (const auto& set : inliers)
-  {
+  const Eigen::Vector3d origin =
+      cloud.sensor_origin_.template head<3>().template cast<double>();
+  for (const auto& set : inliers) {
     std::vector<int> finite;
-    finite.reserve (set.indices.size ());
+    finite.reserve (set.indices.size());
     for (const auto i : set.indices)
-      if (i >= 0 && static_cast<std::size_t> (i) < cloud.size () &&
-          std::isfinite (cloud[i].x) && std::isfinite (cloud[i].y) && std::isfinite (cloud[i].z))
+      if (i >= 0 && static_cast<std::size_t> (i) < cloud.size() &&
+          std::isfinite (cloud[i].x) && std::isfinite (cloud[i].y) &&
+          std::isfinite (cloud[i].z))
         finite.push_back (i);
-    if (finite.size () < 3)
+    if (finite.size() < 3)
       continue;
     Eigen::Matrix3d covariance;
     ScanPlane plane;
@@ -48,27 +51,26 @@ fitScanPlanes (const pcl::PointCloud<PointT>& cloud, const std::vector<pcl::Poin
     EigenDecomposition eigen;
     if (!computeEigenDecomposition (covariance, eigen))
       continue;
-    plane.normal = eigen.normal ();
+    plane.normal = eigen.normal();
     plane.rms = std::sqrt (std::max (0.0, eigen.values[0]));
 
     // Scanner side: the viewpoint most inliers were seen from.
     long votes = 0;
-    for (const int i : finite)
-    {
+    for (const int i : finite) {
       Eigen::Vector3d view = origin;
-      if (per_point)
-      {
+      if (per_point) {
         const std::size_t s = viewpoints.scanner_of_point[i];
-        if (s >= viewpoints.positions.size ())
-        {
-          PCL_ERROR ("[pcl_ext::fitScanPlanes] Point %d names scanner %zu of %zu.\n", i, s,
-                     viewpoints.positions.size ());
-          planes.clear ();
+        if (s >= viewpoints.positions.size()) {
+          PCL_ERROR ("[pcl_ext::fitScanPlanes] Point %d names scanner %zu of %zu.\n",
+                     i,
+                     s,
+                     viewpoints.positions.size());
+          planes.clear();
           return false;
         }
         view = viewpoints.positions[s];
       }
-      else if (!viewpoints.positions.empty ())
+      else if (!viewpoints.positions.empty())
         view = viewpoints.positions[0];
       const Eigen::Vector3d p (cloud[i].x, cloud[i].y, cloud[i].z);
       votes += plane.normal.dot (view - p) >= 0.0 ? 1 : -1;
@@ -78,65 +80,65 @@ fitScanPlanes (const pcl::PointCloud<PointT>& cloud, const std::vector<pcl::Poin
     plane.d = plane.normal.dot (plane.centroid);
 
     // Robust extent: 1st to 99th percentile per axis.
-    for (int axis = 0; axis < 3; ++axis)
-    {
+    for (int axis = 0; axis < 3; ++axis) {
       std::vector<double> values;
-      values.reserve (finite.size ());
+      values.reserve (finite.size());
       for (const int i : finite)
-        values.push_back (cloud[i].getVector3fMap ()[axis]);
-      const std::size_t lo = values.size () / 100, hi = values.size () - 1 - values.size () / 100;
-      std::nth_element (values.begin (), values.begin () + lo, values.end ());
+        values.push_back (cloud[i].getVector3fMap()[axis]);
+      const std::size_t lo = values.size() / 100,
+                        hi = values.size() - 1 - values.size() / 100;
+      std::nth_element (values.begin(), values.begin() + lo, values.end());
       const double low = values[lo];
-      std::nth_element (values.begin (), values.begin () + hi, values.end ());
-      plane.extent.min ()[axis] = low;
-      plane.extent.max ()[axis] = values[hi];
+      std::nth_element (values.begin(), values.begin() + hi, values.end());
+      plane.extent.min()[axis] = low;
+      plane.extent.max()[axis] = values[hi];
     }
-    plane.support = finite.size ();
-    plane.inliers.indices.assign (finite.begin (), finite.end ());
+    plane.support = finite.size();
+    plane.inliers.indices.assign (finite.begin(), finite.end());
     plane.inliers.header = cloud.header;
     planes.push_back (std::move (plane));
   }
   return true;
 }
 
-template <typename PointT> bool
+template <typename PointT>
+bool
 SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
 {
-  planes.clear ();
-  if (!(distance_threshold_ > 0.0) || !std::isfinite (distance_threshold_) || min_inliers_ < 3 ||
-      max_planes_ < 1 || max_iterations_ < 1)
-  {
-    PCL_ERROR ("[pcl_ext::SACPlaneExtraction::extract] Invalid parameters: distance threshold "
-               "must be > 0, minimum inliers >= 3, maximum planes and iterations >= 1.\n");
+  planes.clear();
+  if (!(distance_threshold_ > 0.0) || !std::isfinite (distance_threshold_) ||
+      min_inliers_ < 3 || max_planes_ < 1 || max_iterations_ < 1) {
+    PCL_ERROR (
+        "[pcl_ext::SACPlaneExtraction::extract] Invalid parameters: distance threshold "
+        "must be > 0, minimum inliers >= 3, maximum planes and iterations >= 1.\n");
     return false;
   }
-  if (!this->initCompute ())
-  {
+  if (!this->initCompute()) {
     PCL_ERROR ("[pcl_ext::SACPlaneExtraction::extract] No input cloud.\n");
     return false;
   }
-  // Finite points only: RANSAC would happily sample NaN. Sorted and unique, as the removal of
-  // each plane's inliers below needs.
+  // Finite points only: RANSAC would happily sample NaN. Sorted and unique, as the
+  // removal of each plane's inliers below needs.
   pcl::IndicesPtr remaining (new pcl::Indices);
-  if (!indicesInRange (*indices_, input_->size (), "[pcl_ext::SACPlaneExtraction::extract]"))
-  {
-    this->deinitCompute ();
+  if (!indicesInRange (
+          *indices_, input_->size(), "[pcl_ext::SACPlaneExtraction::extract]")) {
+    this->deinitCompute();
     return false;
   }
-  for (const auto i : *indices_)
-  {
+  for (const auto i : *indices_) {
     const PointT& p = (*input_)[i];
     if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
       remaining->push_back (i);
   }
-  if (remaining->empty ())
-  {
-    PCL_ERROR ("[pcl_ext::SACPlaneExtraction::extract] The input has no finite point.\n");
-    this->deinitCompute ();
+  if (remaining->empty()) {
+    PCL_ERROR (
+        "[pcl_ext::SACPlaneExtraction::extract] The input has no finite point.\n");
+    this->deinitCompute();
     return false;
   }
-  std::sort (remaining->begin (), remaining->end ());
-  remaining->erase (std::unique (remaining->begin (), remaining->end ()), remaining->end ());
+  std::sort (remaining->begin(), remaining->end());
+  remaining->erase (std::unique (remaining->begin(), remaining->end()),
+                    remaining->end());
   pcl::SACSegmentation<PointT> sac;
   sac.setModelType (pcl::SACMODEL_PLANE);
   sac.setMethodType (pcl::SAC_RANSAC);
@@ -144,57 +146,61 @@ SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
   sac.setMaxIterations (max_iterations_);
   sac.setOptimizeCoefficients (true);
   sac.setInputCloud (input_);
-  while (static_cast<int> (planes.size ()) < max_planes_ &&
-         static_cast<int> (remaining->size ()) >= min_inliers_)
-  {
+  while (static_cast<int> (planes.size()) < max_planes_ &&
+         static_cast<int> (remaining->size()) >= min_inliers_) {
     sac.setIndices (remaining);
     pcl::PointIndices inliers;
     pcl::ModelCoefficients coefficients;
     sac.segment (inliers, coefficients);
-    if (static_cast<int> (inliers.indices.size ()) < min_inliers_)
+    if (static_cast<int> (inliers.indices.size()) < min_inliers_)
       break;
-    // RANSAC's plane rests on 3 samples (and a least-squares polish over a band as thick as
-    // the threshold): refit on the inliers and take the inliers of the refit plane, twice.
-    for (int pass = 0; pass < 2; ++pass)
-    {
+    // RANSAC's plane rests on 3 samples (and a least-squares polish over a band as
+    // thick as the threshold): refit on the inliers and take the inliers of the refit
+    // plane, twice.
+    for (int pass = 0; pass < 2; ++pass) {
       Eigen::Matrix3d covariance;
       Eigen::Vector3d centroid;
       EigenDecomposition eigen;
       if (computeLocalCovariance (*input_, inliers.indices, covariance, centroid) < 3 ||
           !computeEigenDecomposition (covariance, eigen))
         break;
-      const Eigen::Vector3d n = eigen.normal ();
+      const Eigen::Vector3d n = eigen.normal();
       const double d = n.dot (centroid);
       pcl::Indices refit;
       for (const auto i : *remaining)
-        if (std::abs (n.dot ((*input_)[i].getVector3fMap ().template cast<double> ()) - d) <= distance_threshold_)
+        if (std::abs (n.dot ((*input_)[i].getVector3fMap().template cast<double>()) -
+                      d) <= distance_threshold_)
           refit.push_back (i);
-      if (refit.size () < 3)
+      if (refit.size() < 3)
         break;
       inliers.indices.swap (refit);
     }
-    std::sort (inliers.indices.begin (), inliers.indices.end ());
+    std::sort (inliers.indices.begin(), inliers.indices.end());
     pcl::IndicesPtr rest (new pcl::Indices);
-    rest->reserve (remaining->size () - inliers.indices.size ());
-    std::set_difference (remaining->begin (), remaining->end (), inliers.indices.begin (),
-                         inliers.indices.end (), std::back_inserter (*rest));
+    rest->reserve (remaining->size() - inliers.indices.size());
+    std::set_difference (remaining->begin(),
+                         remaining->end(),
+                         inliers.indices.begin(),
+                         inliers.indices.end(),
+                         std::back_inserter (*rest));
     remaining = rest;
     planes.push_back (std::move (inliers));
   }
-  this->deinitCompute ();
+  this->deinitCompute();
   return true;
 }
 
-template <typename PointT> PlaneExtractor<PointT>
-SACPlaneExtraction<PointT>::asExtractor () const
+template <typename PointT>
+PlaneExtractor<PointT>
+SACPlaneExtraction<PointT>::asExtractor() const
 {
   return makePlaneExtractor<PointT> (*this);
 }
-}  // namespace pcl_ext
+} // namespace pcl_ext
 
-#define PCL_EXT_INSTANTIATE_SACPlaneExtraction(T)                                              \
-  template class pcl_ext::SACPlaneExtraction<T>;                                               \
-  template bool pcl_ext::fitScanPlanes<T> (const pcl::PointCloud<T>&,                          \
-                                          const std::vector<pcl::PointIndices>&,               \
-                                          const pcl_ext::ScanViewpoints&,                      \
-                                          std::vector<pcl_ext::ScanPlane>&);
+#define PCL_EXT_INSTANTIATE_SACPlaneExtraction(T)                                      \
+  template class pcl_ext::SACPlaneExtraction<T>;                                       \
+  template bool pcl_ext::fitScanPlanes<T> (const pcl::PointCloud<T>&,                  \
+                                           const std::vector<pcl::PointIndices>&,      \
+                                           const pcl_ext::ScanViewpoints&,             \
+                                           std::vector<pcl_ext::ScanPlane>&);

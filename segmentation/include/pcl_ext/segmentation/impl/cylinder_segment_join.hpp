@@ -13,144 +13,142 @@
 #include <limits>
 #include <numeric>
 
-namespace pcl_ext
-{
-template <typename PointT> void
+namespace pcl_ext {
+template <typename PointT>
+void
 CylinderSegmentJoin<PointT>::join (std::vector<pcl::PointIndices>& segments)
 {
   const char* name = "CylinderSegmentJoin::join";
-  segments.clear ();
-  cylinders_.clear ();
+  segments.clear();
+  cylinders_.clear();
   cylinder_join::JoinParameters p = parameters_;
   p.threads = resolveThreadCount (threads_);
-  if (!cylinder_join::validParameters (p))
-  {
-    PCL_ERROR ("[pcl_ext::%s] Invalid parameters: need a distance tolerance > 0, 0 < minimum "
-               "radius <= maximum radius, a neighbourhood radius > 0, at least one hypothesis, "
-               "a minimum cylinder size >= 3, shares in [0, 1] (radius difference below 1), "
-               "a maximum gap and axis offset >= 0, and 0 <= maximum axis angle < minimum "
-               "elbow angle <= pi/2.\n", name);
+  if (!cylinder_join::validParameters (p)) {
+    PCL_ERROR (
+        "[pcl_ext::%s] Invalid parameters: need a distance tolerance > 0, 0 < minimum "
+        "radius <= maximum radius, a neighbourhood radius > 0, at least one "
+        "hypothesis, "
+        "a minimum cylinder size >= 3, shares in [0, 1] (radius difference below 1), "
+        "a maximum gap and axis offset >= 0, and 0 <= maximum axis angle < minimum "
+        "elbow angle <= pi/2.\n",
+        name);
     return;
   }
-  if (!initCompute ())
-  {
+  if (!initCompute()) {
     PCL_ERROR ("[pcl_ext::%s] No input cloud.\n", name);
     return;
   }
-  const std::size_t cloud_size = input_->size ();
+  const std::size_t cloud_size = input_->size();
   for (const auto& segment : segments_)
     for (const auto index : segment.indices)
-      if (index < 0 || static_cast<std::size_t> (index) >= cloud_size)
-      {
-        PCL_ERROR ("[pcl_ext::%s] A segment holds index %d, outside the cloud of %zu points.\n",
-                   name, static_cast<int> (index), cloud_size);
-        deinitCompute ();
+      if (index < 0 || static_cast<std::size_t> (index) >= cloud_size) {
+        PCL_ERROR ("[pcl_ext::%s] A segment holds index %d, outside the cloud of %zu "
+                   "points.\n",
+                   name,
+                   static_cast<int> (index),
+                   cloud_size);
+        deinitCompute();
         return;
       }
 
-  // The finite points of the segments, centred in double (georeferenced clouds keep their
-  // precision); a point listed in several segments belongs to the first.
-  constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max ();
+  // The finite points of the segments, centred in double (georeferenced clouds keep
+  // their precision); a point listed in several segments belongs to the first.
+  constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> position (cloud_size, kUnset);
   std::vector<pcl::index_t> cloud_index;
-  std::vector<std::vector<std::uint32_t>> by_position (segments_.size ());
-  std::vector<std::vector<pcl::index_t>> not_finite (segments_.size ());
+  std::vector<std::vector<std::uint32_t>> by_position (segments_.size());
+  std::vector<std::vector<pcl::index_t>> not_finite (segments_.size());
   std::vector<std::uint8_t> claimed (cloud_size, 0);
   bool repeated = false;
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero ();
-  for (std::size_t s = 0; s < segments_.size (); ++s)
-    for (const auto index : segments_[s].indices)
-    {
-      if (claimed[index])
-      {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (std::size_t s = 0; s < segments_.size(); ++s)
+    for (const auto index : segments_[s].indices) {
+      if (claimed[index]) {
         repeated = true;
         continue;
       }
       claimed[index] = 1;
-      if (!pcl::isXYZFinite ((*input_)[index]))
-      {
+      if (!pcl::isXYZFinite ((*input_)[index])) {
         not_finite[s].push_back (index);
         continue;
       }
-      position[index] = static_cast<std::uint32_t> (cloud_index.size ());
+      position[index] = static_cast<std::uint32_t> (cloud_index.size());
       by_position[s].push_back (position[index]);
       cloud_index.push_back (index);
-      centre += (*input_)[index].getVector3fMap ().template cast<double> ();
+      centre += (*input_)[index].getVector3fMap().template cast<double>();
     }
   if (repeated)
-    PCL_WARN ("[pcl_ext::%s] Some points are in several segments; each stays with the first.\n",
+    PCL_WARN ("[pcl_ext::%s] Some points are in several segments; each stays with the "
+              "first.\n",
               name);
-  if (!cloud_index.empty ())
-    centre /= static_cast<double> (cloud_index.size ());
-  std::vector<Eigen::Vector3d> xyz (cloud_index.size ());
-  for (std::size_t i = 0; i < cloud_index.size (); ++i)
-    xyz[i] = (*input_)[cloud_index[i]].getVector3fMap ().template cast<double> () - centre;
+  if (!cloud_index.empty())
+    centre /= static_cast<double> (cloud_index.size());
+  std::vector<Eigen::Vector3d> xyz (cloud_index.size());
+  for (std::size_t i = 0; i < cloud_index.size(); ++i)
+    xyz[i] =
+        (*input_)[cloud_index[i]].getVector3fMap().template cast<double>() - centre;
 
   cylinder_join::JoinResult result;
-  if (!cylinder_join::joinCylinderSegments (xyz, by_position, p, result))
-  {
+  if (!cylinder_join::joinCylinderSegments (xyz, by_position, p, result)) {
     PCL_ERROR ("[pcl_ext::%s] Invalid input.\n", name);
-    deinitCompute ();
+    deinitCompute();
     return;
   }
 
   std::vector<pcl::PointIndices> joined (result.num_segments);
-  for (std::size_t i = 0; i < cloud_index.size (); ++i)
+  for (std::size_t i = 0; i < cloud_index.size(); ++i)
     if (result.labels[i] != cylinder_join::kNoSegment)
       joined[result.labels[i]].indices.push_back (cloud_index[i]);
-  // Points that cannot be fitted go where most of their segment went (or stay as it was).
-  for (std::size_t s = 0; s < segments_.size (); ++s)
-  {
-    if (not_finite[s].empty ())
+  // Points that cannot be fitted go where most of their segment went (or stay as it
+  // was).
+  for (std::size_t s = 0; s < segments_.size(); ++s) {
+    if (not_finite[s].empty())
       continue;
     std::vector<std::size_t> votes (result.num_segments, 0);
     for (const auto i : by_position[s])
       ++votes[result.labels[i]];
-    const auto most = std::max_element (votes.begin (), votes.end ());
-    if (most == votes.end () || *most == 0)
-    {
-      joined.emplace_back ();
-      joined.back ().indices = not_finite[s];
+    const auto most = std::max_element (votes.begin(), votes.end());
+    if (most == votes.end() || *most == 0) {
+      joined.emplace_back();
+      joined.back().indices = not_finite[s];
     }
-    else
-    {
-      auto& target = joined[most - votes.begin ()].indices;
-      target.insert (target.end (), not_finite[s].begin (), not_finite[s].end ());
+    else {
+      auto& target = joined[most - votes.begin()].indices;
+      target.insert (target.end(), not_finite[s].begin(), not_finite[s].end());
     }
   }
 
   // Largest first, as the segmenters order theirs.
-  for (auto& segment : joined)
-  {
-    std::sort (segment.indices.begin (), segment.indices.end ());
+  for (auto& segment : joined) {
+    std::sort (segment.indices.begin(), segment.indices.end());
     segment.header = input_->header;
   }
-  std::vector<std::size_t> order (joined.size ());
-  std::iota (order.begin (), order.end (), 0);
-  std::stable_sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) {
-    if (joined[a].indices.size () != joined[b].indices.size ())
-      return joined[a].indices.size () > joined[b].indices.size ();
-    return joined[a].indices.front () < joined[b].indices.front ();
+  std::vector<std::size_t> order (joined.size());
+  std::iota (order.begin(), order.end(), 0);
+  std::stable_sort (order.begin(), order.end(), [&] (std::size_t a, std::size_t b) {
+    if (joined[a].indices.size() != joined[b].indices.size())
+      return joined[a].indices.size() > joined[b].indices.size();
+    return joined[a].indices.front() < joined[b].indices.front();
   });
-  std::vector<int> rank (joined.size ());
-  segments.reserve (joined.size ());
-  for (std::size_t k = 0; k < order.size (); ++k)
-  {
+  std::vector<int> rank (joined.size());
+  segments.reserve (joined.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
     rank[order[k]] = static_cast<int> (k);
     segments.push_back (std::move (joined[order[k]]));
   }
 
-  for (auto& piece : result.pieces)
-  {
+  for (auto& piece : result.pieces) {
     for (auto& i : piece.cylinder.inliers)
       i = static_cast<std::uint32_t> (cloud_index[i]);
     piece.cylinder.point += centre;
-    cylinders_.push_back ({std::move (piece.cylinder), piece.segment,
-                           piece.joined == cylinder_join::kNoSegment ? -1 : rank[piece.joined]});
+    cylinders_.push_back (
+        {std::move (piece.cylinder),
+         piece.segment,
+         piece.joined == cylinder_join::kNoSegment ? -1 : rank[piece.joined]});
   }
-  deinitCompute ();
+  deinitCompute();
 }
-}  // namespace pcl_ext
+} // namespace pcl_ext
 
-#define PCL_EXT_INSTANTIATE_CylinderSegmentJoin(T) \
+#define PCL_EXT_INSTANTIATE_CylinderSegmentJoin(T)                                     \
   template class pcl_ext::CylinderSegmentJoin<T>;

@@ -12,8 +12,10 @@
 #include <algorithm>
 #include <cmath>
 
-template <typename PointT> pcl_ext::SegmentPlane
-pcl_ext::fitSegmentPlane (const pcl::PointCloud<PointT>& cloud, const pcl::Indices& indices,
+template <typename PointT>
+pcl_ext::SegmentPlane
+pcl_ext::fitSegmentPlane (const pcl::PointCloud<PointT>& cloud,
+                          const pcl::Indices& indices,
                           const Eigen::Vector3d& viewpoint)
 {
   SegmentPlane plane;
@@ -23,17 +25,17 @@ pcl_ext::fitSegmentPlane (const pcl::PointCloud<PointT>& cloud, const pcl::Indic
   if (plane.size < kMinNeighbours || !computeEigenDecomposition (covariance, eigen) ||
       !hasTangentPlane (eigen.values, plane.size))
     return plane;
-  Eigen::Vector3d n = eigen.normal ();
+  Eigen::Vector3d n = eigen.normal();
   if (n.dot (viewpoint - plane.centroid) < 0.0)
     n = -n;
   double sum = 0.0, largest = 0.0;
-  for (const auto i : indices)
-  {
+  for (const auto i : indices) {
     const PointT& p = cloud[i];
     if (!pcl::isXYZFinite (p))
       continue;
     // Offsets from the centroid in double: exact enough at any coordinate magnitude.
-    const double r = std::abs (n.dot (Eigen::Vector3d (p.x, p.y, p.z) - plane.centroid));
+    const double r =
+        std::abs (n.dot (Eigen::Vector3d (p.x, p.y, p.z) - plane.centroid));
     sum += r * r;
     largest = std::max (largest, r);
   }
@@ -45,7 +47,6 @@ pcl_ext::fitSegmentPlane (const pcl::PointCloud<PointT>& cloud, const pcl::Indic
   return plane;
 }
 
-#define PCL_EXT_INSTANTIATE_fitSegmentPlane(T)                                                \
-  template pcl_ext::SegmentPlane pcl_ext::fitSegmentPlane<T> (const pcl::PointCloud<T>&,      \
-                                                              const pcl::Indices&,            \
-                                                              const Eigen::Vector3d&);
+#define PCL_EXT_INSTANTIATE_fitSegmentPlane(T)                                         \
+  template pcl_ext::SegmentPlane pcl_ext::fitSegmentPlane<T> (                         \
+      const pcl::PointCloud<T>&, const pcl::Indices&, const Eigen::Vector3d&);

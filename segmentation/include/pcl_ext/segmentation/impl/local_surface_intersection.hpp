@@ -15,12 +15,11 @@
 #include <limits>
 #include <tuple>
 
-namespace pcl_ext
-{
-namespace detail
-{
-/** \brief Rows per unit of parallel work; each chunk collects its own results, which are
-  * concatenated in chunk order, so the output does not depend on the thread count. */
+namespace pcl_ext {
+namespace detail {
+/** \brief Rows per unit of parallel work; each chunk collects its own results, which
+ * are concatenated in chunk order, so the output does not depend on the thread count.
+ */
 constexpr std::ptrdiff_t kIntersectionChunk = 256;
 
 inline bool
@@ -28,91 +27,108 @@ isNonNegativeFinite (double value)
 {
   return value >= 0.0 && std::isfinite (value);
 }
-}  // namespace detail
-}  // namespace pcl_ext
+} // namespace detail
+} // namespace pcl_ext
 
-template <typename PointT> bool
-pcl_ext::LocalSurfaceIntersection<PointT>::checkInput () const
+template <typename PointT>
+bool
+pcl_ext::LocalSurfaceIntersection<PointT>::checkInput() const
 {
   const char* const name = "[pcl_ext::LocalSurfaceIntersection::compute]";
-  const std::size_t n = input_->size ();
-  if (n == 0)
-  {
+  const std::size_t n = input_->size();
+  if (n == 0) {
     PCL_ERROR ("%s The input cloud is empty.\n", name);
     return false;
   }
-  if (!segments_ || segments_->size () != n)
-  {
-    PCL_ERROR ("%s Give one segment label per point (setSegmentLabels): %zu labels for %zu "
-               "points.\n", name, segments_ ? segments_->size () : std::size_t (0), n);
+  if (!segments_ || segments_->size() != n) {
+    PCL_ERROR (
+        "%s Give one segment label per point (setSegmentLabels): %zu labels for %zu "
+        "points.\n",
+        name,
+        segments_ ? segments_->size() : std::size_t (0),
+        n);
     return false;
   }
-  if (!classes_ || classes_->size () != n)
-  {
-    PCL_ERROR ("%s Give one point class per point (setPointClasses): %zu classes for %zu "
-               "points.\n", name, classes_ ? classes_->size () : std::size_t (0), n);
+  if (!classes_ || classes_->size() != n) {
+    PCL_ERROR (
+        "%s Give one point class per point (setPointClasses): %zu classes for %zu "
+        "points.\n",
+        name,
+        classes_ ? classes_->size() : std::size_t (0),
+        n);
     return false;
   }
-  if (normals_ && normals_->size () != n)
-  {
-    PCL_ERROR ("%s %zu normals for %zu points; give one per point or none.\n", name,
-               normals_->size (), n);
+  if (normals_ && normals_->size() != n) {
+    PCL_ERROR ("%s %zu normals for %zu points; give one per point or none.\n",
+               name,
+               normals_->size(),
+               n);
     return false;
   }
   if (!indicesInRange (*indices_, n, name))
     return false;
   if (!this->checkNeighbourhoodOptions (name, 3))
     return false;
-  if (!(parallel_angle_ >= 0.0 && parallel_angle_ <= 0.5 * M_PI))
-  {
-    PCL_ERROR ("%s parallel angle threshold = %g rad; valid: 0 .. pi/2.\n", name,
+  if (!(parallel_angle_ >= 0.0 && parallel_angle_ <= 0.5 * M_PI)) {
+    PCL_ERROR ("%s parallel angle threshold = %g rad; valid: 0 .. pi/2.\n",
+               name,
                parallel_angle_);
     return false;
   }
   if (!detail::isNonNegativeFinite (distance_tolerance_) ||
-      !detail::isNonNegativeFinite (reach_) || !detail::isNonNegativeFinite (fit_tolerance_))
-  {
-    PCL_ERROR ("%s distance tolerance = %g, reach = %g, fit tolerance = %g; each must be "
-               "finite and >= 0.\n", name, distance_tolerance_, reach_, fit_tolerance_);
+      !detail::isNonNegativeFinite (reach_) ||
+      !detail::isNonNegativeFinite (fit_tolerance_)) {
+    PCL_ERROR (
+        "%s distance tolerance = %g, reach = %g, fit tolerance = %g; each must be "
+        "finite and >= 0.\n",
+        name,
+        distance_tolerance_,
+        reach_,
+        fit_tolerance_);
     return false;
   }
-  if (!(reach_factor_ > 0.0) || !std::isfinite (reach_factor_))
-  {
-    PCL_ERROR ("%s reach factor = %g; it must be finite and > 0.\n", name, reach_factor_);
+  if (!(reach_factor_ > 0.0) || !std::isfinite (reach_factor_)) {
+    PCL_ERROR (
+        "%s reach factor = %g; it must be finite and > 0.\n", name, reach_factor_);
     return false;
   }
   return true;
 }
 
-template <typename PointT> double
+template <typename PointT>
+double
 pcl_ext::LocalSurfaceIntersection<PointT>::reachOf (pcl::index_t i) const
 {
   if (reach_ > 0.0)
     return reach_;
   const auto row = (*nb_)[static_cast<std::size_t> (i)];
-  return row.empty () ? 0.0
-                      : reach_factor_ * std::sqrt (static_cast<double> (
-                                            row.sqr_distances[row.size () - 1]));
+  return row.empty()
+             ? 0.0
+             : reach_factor_ *
+                   std::sqrt (static_cast<double> (row.sqr_distances[row.size() - 1]));
 }
 
-template <typename PointT> bool
-pcl_ext::LocalSurfaceIntersection<PointT>::planeOf (pcl::index_t i, pcl::Indices& buffer,
+template <typename PointT>
+bool
+pcl_ext::LocalSurfaceIntersection<PointT>::planeOf (pcl::index_t i,
+                                                    pcl::Indices& buffer,
                                                     LocalPlane& plane) const
 {
   const std::uint32_t s = segmentOf (i);
-  buffer.clear ();
+  buffer.clear();
   for (const pcl::index_t j : (*nb_)[static_cast<std::size_t> (i)])
     if (segmentOf (j) == s)
       buffer.push_back (j);
   if (!normals_)
-    return fitLocalPlane (*input_, buffer.begin (), buffer.end (), nullptr, plane);
+    return fitLocalPlane (*input_, buffer.begin(), buffer.end(), nullptr, plane);
   const pcl::Normal& n = (*normals_)[i];
   const Eigen::Vector3d normal (n.normal_x, n.normal_y, n.normal_z);
-  return normal.allFinite () &&
-         fitLocalPlane (*input_, buffer.begin (), buffer.end (), &normal, plane);
+  return normal.allFinite() &&
+         fitLocalPlane (*input_, buffer.begin(), buffer.end(), &normal, plane);
 }
 
-template <typename PointT> bool
+template <typename PointT>
+bool
 pcl_ext::LocalSurfaceIntersection<PointT>::isInterior (pcl::index_t i) const
 {
   const std::uint32_t s = segmentOf (i);
@@ -123,67 +139,71 @@ pcl_ext::LocalSurfaceIntersection<PointT>::isInterior (pcl::index_t i) const
   return true;
 }
 
-template <typename PointT> void
+template <typename PointT>
+void
 pcl_ext::LocalSurfaceIntersection<PointT>::nearestOfEachSegment (
-    pcl::index_t i, std::uint32_t own, SearchBuffers& buffers,
+    pcl::index_t i,
+    std::uint32_t own,
+    SearchBuffers& buffers,
     std::vector<pcl::index_t>& nearest) const
 {
-  nearest.clear ();
+  nearest.clear();
   const double reach = reachOf (i);
-  if (!(reach > 0.0) || !reach_tree_->getInputCloud ())
+  if (!(reach > 0.0) || !reach_tree_->getInputCloud())
     return;
   // Sorted results: the first point seen of each segment is its nearest.
-  reach_tree_->radiusSearch ((*input_)[i], reach, buffers.indices, buffers.sqr_distances);
-  for (const pcl::index_t j : buffers.indices)
-  {
+  reach_tree_->radiusSearch (
+      (*input_)[i], reach, buffers.indices, buffers.sqr_distances);
+  for (const pcl::index_t j : buffers.indices) {
     const std::uint32_t s = segmentOf (j);
     if (j == i || s == own)
       continue;
-    const bool seen = std::any_of (nearest.begin (), nearest.end (),
-                                   [this, s] (pcl::index_t m) { return segmentOf (m) == s; });
+    const bool seen =
+        std::any_of (nearest.begin(), nearest.end(), [this, s] (pcl::index_t m) {
+          return segmentOf (m) == s;
+        });
     if (!seen)
       nearest.push_back (j);
   }
 }
 
-template <typename PointT> void
+template <typename PointT>
+void
 pcl_ext::LocalSurfaceIntersection<PointT>::intersect (std::vector<Record>& records)
 {
-  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size ());
+  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size());
   const std::ptrdiff_t chunks =
       (rows + detail::kIntersectionChunk - 1) / detail::kIntersectionChunk;
   std::vector<std::vector<Record>> chunk_records (static_cast<std::size_t> (chunks));
   const auto surface = static_cast<std::uint32_t> (PointClass::Surface);
   const auto radius = [this] (pcl::index_t i) {
     const auto row = (*nb_)[static_cast<std::size_t> (i)];
-    return row.empty () ? 0.0
-                        : std::sqrt (static_cast<double> (row.sqr_distances[row.size () - 1]));
+    return row.empty()
+               ? 0.0
+               : std::sqrt (static_cast<double> (row.sqr_distances[row.size() - 1]));
   };
 
-#pragma omp parallel num_threads(resolveThreadCount (threads_))
+#pragma omp parallel num_threads(resolveThreadCount(threads_))
   {
     pcl::Indices buffer;
     SearchBuffers search;
     std::vector<pcl::index_t> nearest;
     LocalPlane plane1, plane2;
 #pragma omp for schedule(dynamic, 1)
-    for (std::ptrdiff_t c = 0; c < chunks; ++c)
-    {
+    for (std::ptrdiff_t c = 0; c < chunks; ++c) {
       auto& out = chunk_records[static_cast<std::size_t> (c)];
       const std::ptrdiff_t end = std::min (rows, (c + 1) * detail::kIntersectionChunk);
-      for (std::ptrdiff_t r = c * detail::kIntersectionChunk; r < end; ++r)
-      {
+      for (std::ptrdiff_t r = c * detail::kIntersectionChunk; r < end; ++r) {
         const pcl::index_t i = (*indices_)[r];
         const PointT& pi = (*input_)[i];
         if (classOf (i) != surface || segmentOf (i) == 0 || !pcl::isFinite (pi) ||
             isInterior (i))
           continue;
         nearestOfEachSegment (i, segmentOf (i), search, nearest);
-        if (nearest.empty ())
+        if (nearest.empty())
           continue;
         const bool have_plane1 = planeOf (i, buffer, plane1);
-        for (const pcl::index_t j : nearest)
-        {
+        for (const pcl::index_t j : nearest) {
           Record record;
           record.a = i;
           record.b = j;
@@ -192,21 +212,20 @@ pcl_ext::LocalSurfaceIntersection<PointT>::intersect (std::vector<Record>& recor
           // Eq. 9: nearly parallel normals mean a jump discontinuity, not a crease.
           else if (normalAngle (plane1.normal, plane2.normal) < parallel_angle_)
             record.outcome = Outcome::Parallel;
-          else
-          {
+          else {
             const PointT& pj = (*input_)[j];
             const Eigen::Vector3d p1 (pi.x, pi.y, pi.z), p2 (pj.x, pj.y, pj.z);
-            if (!intersectLocalPlanes (plane1, plane2, p1, p2, record.point, record.direction))
+            if (!intersectLocalPlanes (
+                    plane1, plane2, p1, p2, record.point, record.direction))
               record.outcome = Outcome::Parallel;
-            else
-            {
-              // Default: a plane is trusted as far as the points it was fitted to, the radius
-              // of its point's neighbourhood.
+            else {
+              // Default: a plane is trusted as far as the points it was fitted to, the
+              // radius of its point's neighbourhood.
               const bool fixed = distance_tolerance_ > 0.0;
               const double tolerance1 = fixed ? distance_tolerance_ : radius (i);
               const double tolerance2 = fixed ? distance_tolerance_ : radius (j);
-              const bool far = (record.point - p1).norm () > tolerance1 &&
-                               (record.point - p2).norm () > tolerance2;
+              const bool far = (record.point - p1).norm() > tolerance1 &&
+                               (record.point - p2).norm() > tolerance2;
               record.outcome = far ? Outcome::BeyondTolerance : Outcome::Accepted;
             }
           }
@@ -216,73 +235,77 @@ pcl_ext::LocalSurfaceIntersection<PointT>::intersect (std::vector<Record>& recor
     }
   }
 
-  // A pair found from both of its points gives the same result twice (the computation is
-  // symmetric): keep its first occurrence.
+  // A pair found from both of its points gives the same result twice (the computation
+  // is symmetric): keep its first occurrence.
   std::vector<std::tuple<pcl::index_t, pcl::index_t, std::size_t>> keys;
   std::size_t total = 0;
   for (const auto& chunk : chunk_records)
-    total += chunk.size ();
+    total += chunk.size();
   keys.reserve (total);
   std::vector<Record> all;
   all.reserve (total);
-  for (auto& chunk : chunk_records)
-  {
-    for (const auto& rec : chunk)
-    {
-      keys.emplace_back (std::min (rec.a, rec.b), std::max (rec.a, rec.b), all.size ());
+  for (auto& chunk : chunk_records) {
+    for (const auto& rec : chunk) {
+      keys.emplace_back (std::min (rec.a, rec.b), std::max (rec.a, rec.b), all.size());
       all.push_back (rec);
     }
-    std::vector<Record> ().swap (chunk);
+    std::vector<Record>().swap (chunk);
   }
-  std::sort (keys.begin (), keys.end ());
-  std::vector<char> duplicate (all.size (), 0);
-  for (std::size_t k = 1; k < keys.size (); ++k)
+  std::sort (keys.begin(), keys.end());
+  std::vector<char> duplicate (all.size(), 0);
+  for (std::size_t k = 1; k < keys.size(); ++k)
     if (std::get<0> (keys[k]) == std::get<0> (keys[k - 1]) &&
         std::get<1> (keys[k]) == std::get<1> (keys[k - 1]))
       duplicate[std::get<2> (keys[k])] = 1;
 
-  records.clear ();
-  for (std::size_t k = 0; k < all.size (); ++k)
-  {
+  records.clear();
+  for (std::size_t k = 0; k < all.size(); ++k) {
     if (duplicate[k])
       continue;
     ++report_.pairs;
-    switch (all[k].outcome)
-    {
-      case Outcome::Accepted: records.push_back (all[k]); break;
-      case Outcome::Parallel: ++report_.parallel; break;
-      case Outcome::BeyondTolerance: ++report_.beyond_tolerance; break;
-      case Outcome::NoPlane: ++report_.no_plane; break;
+    switch (all[k].outcome) {
+    case Outcome::Accepted:
+      records.push_back (all[k]);
+      break;
+    case Outcome::Parallel:
+      ++report_.parallel;
+      break;
+    case Outcome::BeyondTolerance:
+      ++report_.beyond_tolerance;
+      break;
+    case Outcome::NoPlane:
+      ++report_.no_plane;
+      break;
     }
   }
-  report_.intersections = records.size ();
+  report_.intersections = records.size();
 }
 
-template <typename PointT> void
-pcl_ext::LocalSurfaceIntersection<PointT>::reintegrate (const std::vector<Record>& records,
-                                                        LabelCloud& labels)
+template <typename PointT>
+void
+pcl_ext::LocalSurfaceIntersection<PointT>::reintegrate (
+    const std::vector<Record>& records, LabelCloud& labels)
 {
-  // The records touching each point, as compressed rows (built serially: deterministic).
-  const std::size_t n = input_->size ();
+  // The records touching each point, as compressed rows (built serially:
+  // deterministic).
+  const std::size_t n = input_->size();
   std::vector<std::size_t> offsets (n + 1, 0);
-  for (const auto& rec : records)
-  {
+  for (const auto& rec : records) {
     ++offsets[static_cast<std::size_t> (rec.a) + 1];
     ++offsets[static_cast<std::size_t> (rec.b) + 1];
   }
   for (std::size_t i = 0; i < n; ++i)
     offsets[i + 1] += offsets[i];
-  std::vector<std::size_t> of_point (offsets.back ());
+  std::vector<std::size_t> of_point (offsets.back());
   {
-    std::vector<std::size_t> fill (offsets.begin (), offsets.end () - 1);
-    for (std::size_t k = 0; k < records.size (); ++k)
-    {
+    std::vector<std::size_t> fill (offsets.begin(), offsets.end() - 1);
+    for (std::size_t k = 0; k < records.size(); ++k) {
       of_point[fill[static_cast<std::size_t> (records[k].a)]++] = k;
       of_point[fill[static_cast<std::size_t> (records[k].b)]++] = k;
     }
   }
 
-  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size ());
+  const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size());
   const auto edge = static_cast<std::uint32_t> (PointClass::Edge);
   const auto boundary = static_cast<std::uint32_t> (PointClass::Boundary);
   std::size_t examined = 0, reintegrated = 0, ambiguous = 0, left = 0;
@@ -294,8 +317,7 @@ pcl_ext::LocalSurfaceIntersection<PointT>::reintegrate (const std::vector<Record
     std::vector<pcl::index_t> nearest;
     LocalPlane plane;
 #pragma omp for schedule(dynamic, 64)
-    for (std::ptrdiff_t r = 0; r < rows; ++r)
-    {
+    for (std::ptrdiff_t r = 0; r < rows; ++r) {
       const pcl::index_t q = (*indices_)[r];
       const std::uint32_t c = classOf (q);
       const PointT& pq = (*input_)[q];
@@ -306,52 +328,50 @@ pcl_ext::LocalSurfaceIntersection<PointT>::reintegrate (const std::vector<Record
       nearestOfEachSegment (q, 0, search, nearest);
       std::size_t fits = 0;
       pcl::index_t best = -1;
-      double best_residual = std::numeric_limits<double>::infinity ();
-      for (const pcl::index_t j : nearest)
-      {
+      double best_residual = std::numeric_limits<double>::infinity();
+      for (const pcl::index_t j : nearest) {
         if (!planeOf (j, buffer, plane))
           continue;
         // The floor only matters on noise-free data, where the RMS is round-off.
         const double tolerance =
-            fit_tolerance_ > 0.0 ? fit_tolerance_
-                                 : std::max (3.0 * plane.residualSigma (x), 1e-4 * plane.spread ());
+            fit_tolerance_ > 0.0
+                ? fit_tolerance_
+                : std::max (3.0 * plane.residualSigma (x), 1e-4 * plane.spread());
         const double residual = std::abs (plane.distance (x));
         if (residual > tolerance)
           continue;
-        // "Within the circles": not beyond any intersection line of this surface point, on
-        // its own plane.
+        // "Within the circles": not beyond any intersection line of this surface point,
+        // on its own plane.
         const PointT& pj = (*input_)[j];
         const Eigen::Vector3d p (pj.x, pj.y, pj.z);
         bool inside = true;
         for (std::size_t o = offsets[static_cast<std::size_t> (j)];
-             inside && o < offsets[static_cast<std::size_t> (j) + 1]; ++o)
-        {
+             inside && o < offsets[static_cast<std::size_t> (j) + 1];
+             ++o) {
           const Record& rec = records[of_point[o]];
-          const Eigen::Vector3d across = plane.normal.cross (rec.direction).normalized ();
+          const Eigen::Vector3d across =
+              plane.normal.cross (rec.direction).normalized();
           const double own_side = across.dot (p - rec.point);
           if (std::abs (own_side) <= tolerance)
-            continue;  // the point lies on the line: no side to keep
+            continue; // the point lies on the line: no side to keep
           const double side = across.dot (x - rec.point);
           inside = (own_side > 0.0 ? side : -side) >= -tolerance;
         }
         if (!inside)
           continue;
         ++fits;
-        if (residual < best_residual)
-        {
+        if (residual < best_residual) {
           best_residual = residual;
           best = j;
         }
       }
       if (fits == 0)
         ++left;
-      else if (fits == 1)
-      {
+      else if (fits == 1) {
         ++reintegrated;
         labels[q].label = segmentOf (best);
       }
-      else
-      {
+      else {
         ++ambiguous;
         if (assign_ambiguous_)
           labels[q].label = segmentOf (best);
@@ -364,62 +384,60 @@ pcl_ext::LocalSurfaceIntersection<PointT>::reintegrate (const std::vector<Record
   report_.left = left;
 }
 
-template <typename PointT> bool
+template <typename PointT>
+bool
 pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersections,
                                                     LabelCloud& labels)
 {
-  intersections.clear ();
+  intersections.clear();
   intersections.width = intersections.height = 0;
-  labels.clear ();
+  labels.clear();
   labels.width = labels.height = 0;
-  report_ = Report ();
-  if (!initCompute ())
-  {
+  report_ = Report();
+  if (!initCompute()) {
     PCL_ERROR ("[pcl_ext::LocalSurfaceIntersection::compute] No input cloud.\n");
     return false;
   }
-  if (!checkInput ())
-  {
-    deinitCompute ();
+  if (!checkInput()) {
+    deinitCompute();
     return false;
   }
-  // Neighbourhoods of the whole cloud: a point's partner and the points its plane is fitted
-  // to need not be among the indices.
-  nb_ = this->prepareNeighbourhoods ("LocalSurfaceIntersection::compute", input_,
-                                     pcl::IndicesConstPtr ());
-  if (!nb_)
-  {
-    deinitCompute ();
+  // Neighbourhoods of the whole cloud: a point's partner and the points its plane is
+  // fitted to need not be among the indices.
+  nb_ = this->prepareNeighbourhoods (
+      "LocalSurfaceIntersection::compute", input_, pcl::IndicesConstPtr());
+  if (!nb_) {
+    deinitCompute();
     return false;
   }
   // The border points of the segments (surface points with a neighbour outside their
   // segment) are what is searched within the reach: the nearest point of a segment to a
-  // point outside it is on its border, unless the point lies farther from that segment than
-  // its neighbourhood radius across a gap in which nothing was classified.
+  // point outside it is on its border, unless the point lies farther from that segment
+  // than its neighbourhood radius across a gap in which nothing was classified.
   const auto surface = static_cast<std::uint32_t> (PointClass::Surface);
   pcl::IndicesPtr border (new pcl::Indices);
   bool any_segmented = false;
-  for (std::size_t i = 0; i < input_->size (); ++i)
-  {
+  for (std::size_t i = 0; i < input_->size(); ++i) {
     const auto idx = static_cast<pcl::index_t> (i);
-    if (classOf (idx) != surface || segmentOf (idx) == 0 || !pcl::isFinite ((*input_)[i]))
+    if (classOf (idx) != surface || segmentOf (idx) == 0 ||
+        !pcl::isFinite ((*input_)[i]))
       continue;
     any_segmented = true;
     if (!isInterior (idx))
       border->push_back (idx);
   }
-  if (!any_segmented)
-  {
-    PCL_ERROR ("[pcl_ext::LocalSurfaceIntersection::compute] No finite point is both a "
-               "surface point and in a segment: nothing to intersect or to re-integrate "
-               "into.\n");
+  if (!any_segmented) {
+    PCL_ERROR (
+        "[pcl_ext::LocalSurfaceIntersection::compute] No finite point is both a "
+        "surface point and in a segment: nothing to intersect or to re-integrate "
+        "into.\n");
     nb_ = nullptr;
-    this->releaseNeighbourhoods ();
-    deinitCompute ();
+    this->releaseNeighbourhoods();
+    deinitCompute();
     return false;
   }
   reach_tree_.reset (new search::NanoflannKdTree<PointT>);
-  if (!border->empty ())
+  if (!border->empty())
     reach_tree_->setInputCloud (input_, border);
 
   std::vector<Record> records;
@@ -427,13 +445,12 @@ pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersect
   labels = *segments_;
   reintegrate (records, labels);
 
-  intersections.reserve (records.size ());
-  for (const auto& rec : records)
-  {
+  intersections.reserve (records.size());
+  for (const auto& rec : records) {
     SurfaceIntersectionPoint p;
-    p.x = static_cast<float> (rec.point.x ());
-    p.y = static_cast<float> (rec.point.y ());
-    p.z = static_cast<float> (rec.point.z ());
+    p.x = static_cast<float> (rec.point.x());
+    p.y = static_cast<float> (rec.point.y());
+    p.z = static_cast<float> (rec.point.z());
     p.segment_a = segmentOf (rec.a);
     p.segment_b = segmentOf (rec.b);
     p.index_a = static_cast<std::int32_t> (rec.a);
@@ -444,11 +461,11 @@ pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersect
   intersections.is_dense = true;
 
   nb_ = nullptr;
-  reach_tree_.reset ();
-  this->releaseNeighbourhoods ();
-  deinitCompute ();
+  reach_tree_.reset();
+  this->releaseNeighbourhoods();
+  deinitCompute();
   return true;
 }
 
-#define PCL_EXT_INSTANTIATE_LocalSurfaceIntersection(T) \
+#define PCL_EXT_INSTANTIATE_LocalSurfaceIntersection(T)                                \
   template class pcl_ext::LocalSurfaceIntersection<T>;

@@ -13,85 +13,90 @@
 #include <algorithm>
 #include <cmath>
 
-namespace pcl_ext
-{
-template <typename PointT> bool
+namespace pcl_ext {
+template <typename PointT>
+bool
 ProfileSegmentation<PointT>::prepare (std::vector<Eigen::Vector3f>& xyz)
 {
   const char* name = "ProfileSegmentation::extract";
-  const auto bad_length = [] (double value) { return !(value >= 0.0) || !std::isfinite (value); };
-  if (user_normals_.empty () && num_stacks_ == 0)
-  {
+  const auto bad_length = [] (double value) {
+    return !(value >= 0.0) || !std::isfinite (value);
+  };
+  if (user_normals_.empty() && num_stacks_ == 0) {
     PCL_ERROR ("[pcl_ext::%s] The number of stacks must be at least 1.\n", name);
     return false;
   }
   for (const auto& n : user_normals_)
-    if (!n.allFinite () || n.norm () < 1e-6f)
-    {
+    if (!n.allFinite() || n.norm() < 1e-6f) {
       PCL_ERROR ("[pcl_ext::%s] Stack normals must be finite and non-zero.\n", name);
       return false;
     }
   if (bad_length (width_) || bad_length (threshold_) || bad_length (spacing_) ||
-      bad_length (curve_window_))
-  {
-    PCL_ERROR ("[pcl_ext::%s] Width, threshold, spacing and curve window must be finite and "
-               ">= 0 (0: automatic).\n", name);
+      bad_length (curve_window_)) {
+    PCL_ERROR (
+        "[pcl_ext::%s] Width, threshold, spacing and curve window must be finite and "
+        ">= 0 (0: automatic).\n",
+        name);
     return false;
   }
-  if (!(width_factor_ > 0.0) || !std::isfinite (width_factor_) || !(threshold_factor_ > 0.0) ||
-      !std::isfinite (threshold_factor_))
-  {
-    PCL_ERROR ("[pcl_ext::%s] Width and threshold factors must be finite and > 0.\n", name);
+  if (!(width_factor_ > 0.0) || !std::isfinite (width_factor_) ||
+      !(threshold_factor_ > 0.0) || !std::isfinite (threshold_factor_)) {
+    PCL_ERROR ("[pcl_ext::%s] Width and threshold factors must be finite and > 0.\n",
+               name);
     return false;
   }
-  if (!(max_threshold_factor_ >= 1.0) || !std::isfinite (max_threshold_factor_))
-  {
-    PCL_ERROR ("[pcl_ext::%s] The maximum threshold factor must be finite and >= 1.\n", name);
+  if (!(max_threshold_factor_ >= 1.0) || !std::isfinite (max_threshold_factor_)) {
+    PCL_ERROR ("[pcl_ext::%s] The maximum threshold factor must be finite and >= 1.\n",
+               name);
     return false;
   }
   if (proximity_k_ == 0 || !(max_turn_ > 0.0) || !(max_turn_ <= M_PI / 2) ||
       !(residual_factor_ > 0.0) || !std::isfinite (residual_factor_) ||
-      !(turn_significance_ >= 0.0) || !std::isfinite (turn_significance_))
-  {
-    PCL_ERROR ("[pcl_ext::%s] Need proximity neighbours >= 1, a maximum turn in (0, pi/2], "
-               "a residual factor > 0 and a turn significance >= 0.\n", name);
+      !(turn_significance_ >= 0.0) || !std::isfinite (turn_significance_)) {
+    PCL_ERROR (
+        "[pcl_ext::%s] Need proximity neighbours >= 1, a maximum turn in (0, pi/2], "
+        "a residual factor > 0 and a turn significance >= 0.\n",
+        name);
     return false;
   }
-  if (min_size_ < 1 || max_size_ < min_size_)
-  {
-    PCL_ERROR ("[pcl_ext::%s] Need 1 <= minimum cluster size <= maximum cluster size.\n", name);
+  if (min_size_ < 1 || max_size_ < min_size_) {
+    PCL_ERROR (
+        "[pcl_ext::%s] Need 1 <= minimum cluster size <= maximum cluster size.\n",
+        name);
     return false;
   }
-  if (!initCompute ())
-  {
+  if (!initCompute()) {
     PCL_ERROR ("[pcl_ext::%s] No input cloud.\n", name);
     return false;
   }
-  if (user_normals_.empty () && num_stacks_ == 1)
-    PCL_WARN ("[pcl_ext::%s] One stack cannot join profiles: every segment is one profile's "
-              "chain.\n", name);
+  if (user_normals_.empty() && num_stacks_ == 1)
+    PCL_WARN (
+        "[pcl_ext::%s] One stack cannot join profiles: every segment is one profile's "
+        "chain.\n",
+        name);
 
-  // Centre in double: the float offsets then keep full precision for georeferenced clouds.
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero ();
-  points_.clear ();
-  points_.reserve (indices_->size ());
+  // Centre in double: the float offsets then keep full precision for georeferenced
+  // clouds.
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  points_.clear();
+  points_.reserve (indices_->size());
   for (const auto index : *indices_)
-    if (index >= 0 && static_cast<std::size_t> (index) < input_->size () &&
-        pcl::isXYZFinite ((*input_)[index]))
-    {
+    if (index >= 0 && static_cast<std::size_t> (index) < input_->size() &&
+        pcl::isXYZFinite ((*input_)[index])) {
       points_.push_back (index);
-      centre += (*input_)[index].getVector3fMap ().template cast<double> ();
+      centre += (*input_)[index].getVector3fMap().template cast<double>();
     }
-  if (!points_.empty ())
-    centre /= static_cast<double> (points_.size ());
-  xyz.resize (points_.size ());
-  for (std::size_t i = 0; i < points_.size (); ++i)
-    xyz[i] = ((*input_)[points_[i]].getVector3fMap ().template cast<double> () - centre)
-                 .template cast<float> ();
+  if (!points_.empty())
+    centre /= static_cast<double> (points_.size());
+  xyz.resize (points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i)
+    xyz[i] = ((*input_)[points_[i]].getVector3fMap().template cast<double>() - centre)
+                 .template cast<float>();
   return true;
 }
 
-template <typename PointT> bool
+template <typename PointT>
+bool
 ProfileSegmentation<PointT>::resolveLengths (const std::vector<Eigen::Vector3f>& xyz,
                                              profiles::PipelineParameters& p)
 {
@@ -99,11 +104,11 @@ ProfileSegmentation<PointT>::resolveLengths (const std::vector<Eigen::Vector3f>&
   const bool need_spacing = width_ == 0.0 || threshold_ == 0.0;
   if (need_spacing && used_spacing_ == 0.0)
     used_spacing_ = profiles::estimatePointSpacing (xyz);
-  if (need_spacing && !(used_spacing_ > 0.0))
-  {
-    PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] Cannot estimate the point spacing "
-               "(fewer than two distinct finite points); set the profile width and distance "
-               "threshold.\n");
+  if (need_spacing && !(used_spacing_ > 0.0)) {
+    PCL_ERROR (
+        "[pcl_ext::ProfileSegmentation::extract] Cannot estimate the point spacing "
+        "(fewer than two distinct finite points); set the profile width and distance "
+        "threshold.\n");
     return false;
   }
   used_width_ = width_ > 0.0 ? width_ : width_factor_ * used_spacing_;
@@ -116,36 +121,36 @@ ProfileSegmentation<PointT>::resolveLengths (const std::vector<Eigen::Vector3f>&
   return true;
 }
 
-template <typename PointT> void
+template <typename PointT>
+void
 ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
 {
-  clusters.clear ();
-  clusters_.clear ();
-  stack_edges_.clear ();
-  profile_of_point_.clear ();
-  breakpoints_.clear ();
-  used_normals_.clear ();
+  clusters.clear();
+  clusters_.clear();
+  stack_edges_.clear();
+  profile_of_point_.clear();
+  breakpoints_.clear();
+  used_normals_.clear();
   used_spacing_ = used_width_ = used_threshold_ = 0.0;
-  points_.clear ();
+  points_.clear();
 
   std::vector<Eigen::Vector3f> xyz;
   if (!prepare (xyz))
     return;
   profiles::PipelineParameters p;
-  p.normals = user_normals_.empty () ? profiles::makeStackNormals (num_stacks_, distribution_)
-                                     : user_normals_;
+  p.normals = user_normals_.empty()
+                  ? profiles::makeStackNormals (num_stacks_, distribution_)
+                  : user_normals_;
   for (auto& n : p.normals)
-    n.normalize ();
+    n.normalize();
   used_normals_ = p.normals;
-  if (xyz.empty ())
-  {
+  if (xyz.empty()) {
     PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] No finite point to segment.\n");
-    deinitCompute ();
+    deinitCompute();
     return;
   }
-  if (!resolveLengths (xyz, p))
-  {
-    deinitCompute ();
+  if (!resolveLengths (xyz, p)) {
+    deinitCompute();
     return;
   }
   p.method = method_;
@@ -160,69 +165,70 @@ ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
   p.threads = resolveThreadCount (threads_);
 
   profiles::PipelineResult result;
-  if (!profiles::runProfileSegmentation (xyz, p, result))
-  {
+  if (!profiles::runProfileSegmentation (xyz, p, result)) {
     PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] Invalid parameters.\n");
-    deinitCompute ();
+    deinitCompute();
     return;
   }
 
   // The graph, in cloud indices.
-  stack_edges_.resize (result.edges.size ());
-  profile_of_point_.resize (result.stacks.size ());
-  for (std::size_t s = 0; s < result.edges.size (); ++s)
-  {
-    stack_edges_[s].reserve (result.edges[s].size ());
+  stack_edges_.resize (result.edges.size());
+  profile_of_point_.resize (result.stacks.size());
+  for (std::size_t s = 0; s < result.edges.size(); ++s) {
+    stack_edges_[s].reserve (result.edges[s].size());
     for (const auto& e : result.edges[s])
       stack_edges_[s].push_back ({points_[e.source], points_[e.target]});
     profile_of_point_[s] = std::move (result.stacks[s].profile_of_point);
   }
-  for (std::size_t i = 0; i < result.breakpoints.size (); ++i)
+  for (std::size_t i = 0; i < result.breakpoints.size(); ++i)
     if (result.breakpoints[i])
       breakpoints_.push_back (points_[i]);
 
   // Segments: the connected components within the size limits, largest first.
   std::vector<pcl::PointIndices> all (result.num_segments);
-  for (std::size_t i = 0; i < points_.size (); ++i)
+  for (std::size_t i = 0; i < points_.size(); ++i)
     all[result.labels[i]].indices.push_back (points_[i]);
   for (auto& segment : all)
-    if (segment.indices.size () >= min_size_ && segment.indices.size () <= max_size_)
-    {
-      std::sort (segment.indices.begin (), segment.indices.end ());
+    if (segment.indices.size() >= min_size_ && segment.indices.size() <= max_size_) {
+      std::sort (segment.indices.begin(), segment.indices.end());
       clusters_.push_back (std::move (segment));
     }
-  std::stable_sort (clusters_.begin (), clusters_.end (),
+  std::stable_sort (clusters_.begin(),
+                    clusters_.end(),
                     [] (const pcl::PointIndices& a, const pcl::PointIndices& b) {
-                      if (a.indices.size () != b.indices.size ())
-                        return a.indices.size () > b.indices.size ();
-                      return a.indices.front () < b.indices.front ();
+                      if (a.indices.size() != b.indices.size())
+                        return a.indices.size() > b.indices.size();
+                      return a.indices.front() < b.indices.front();
                     });
   for (auto& segment : clusters_)
     segment.header = input_->header;
   clusters = clusters_;
-  deinitCompute ();
+  deinitCompute();
 }
 
-template <typename PointT> std::vector<int>
+template <typename PointT>
+std::vector<int>
 ProfileSegmentation<PointT>::getProfileOfPoints (std::size_t s) const
 {
   std::vector<int> profile;
-  if (s >= profile_of_point_.size () || !input_)
+  if (s >= profile_of_point_.size() || !input_)
     return profile;
-  profile.assign (input_->size (), -1);
-  for (std::size_t i = 0; i < points_.size (); ++i)
+  profile.assign (input_->size(), -1);
+  for (std::size_t i = 0; i < points_.size(); ++i)
     profile[points_[i]] = static_cast<int> (profile_of_point_[s][i]);
   return profile;
 }
 
-template <typename PointT> pcl::PointCloud<pcl::PointXYZRGB>::Ptr
-ProfileSegmentation<PointT>::getColoredCloud () const
+template <typename PointT>
+pcl::PointCloud<pcl::PointXYZRGB>::Ptr
+ProfileSegmentation<PointT>::getColoredCloud() const
 {
   if (!input_)
-    return pcl::PointCloud<pcl::PointXYZRGB>::Ptr (new pcl::PointCloud<pcl::PointXYZRGB>);
+    return pcl::PointCloud<pcl::PointXYZRGB>::Ptr (
+        new pcl::PointCloud<pcl::PointXYZRGB>);
   return colourBySegment (*input_, clusters_);
 }
-}  // namespace pcl_ext
+} // namespace pcl_ext
 
-#define PCL_EXT_INSTANTIATE_ProfileSegmentation(T) \
+#define PCL_EXT_INSTANTIATE_ProfileSegmentation(T)                                     \
   template class pcl_ext::ProfileSegmentation<T>;

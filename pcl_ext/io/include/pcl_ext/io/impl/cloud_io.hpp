@@ -7,7 +7,8 @@
 
 #include <pcl/conversions.h>
 
-template <typename PointT> bool
+template <typename PointT>
+bool
 pcl_ext::io::loadCloud (const std::string& path, pcl::PointCloud<PointT>& cloud)
 {
   pcl::PCLPointCloud2 blob;
@@ -17,9 +18,11 @@ pcl_ext::io::loadCloud (const std::string& path, pcl::PointCloud<PointT>& cloud)
   return true;
 }
 
-template <typename PointT> bool
-pcl_ext::io::saveCloud (const std::string& path, const pcl::PointCloud<PointT>& cloud,
-                           bool ascii)
+template <typename PointT>
+bool
+pcl_ext::io::saveCloud (const std::string& path,
+                        const pcl::PointCloud<PointT>& cloud,
+                        bool ascii)
 {
   pcl::PCLPointCloud2 blob;
   pcl::toPCLPointCloud2 (cloud, blob);
