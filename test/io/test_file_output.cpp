@@ -2,6 +2,8 @@
  * Tests of atomic output: a failed write never leaves a file, a good one replaces the
  * old.
  */
+#include "temp_folder.h"
+
 #include <pcl_ext/io/file_output.h>
 
 #include <gtest/gtest.h>
@@ -12,39 +14,6 @@
 #include <sstream>
 #include <sys/stat.h>
 #include <unistd.h>
-
-namespace {
-std::string
-freshFolder (const std::string& name)
-{
-  const std::string dir =
-      testing::TempDir() + "/pcl_ext_" + name + "_" + std::to_string (::getpid());
-  ::mkdir (dir.c_str(), 0755);
-  return dir;
-}
-
-std::vector<std::string>
-listFolder (const std::string& dir)
-{
-  std::vector<std::string> names;
-  if (DIR* d = ::opendir (dir.c_str())) {
-    while (dirent* e = ::readdir (d))
-      if (std::string (e->d_name) != "." && std::string (e->d_name) != "..")
-        names.push_back (e->d_name);
-    ::closedir (d);
-  }
-  return names;
-}
-
-std::string
-readAll (const std::string& path)
-{
-  std::ifstream in (path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-} // namespace
 
 TEST (FileOutput, FailedWriteLeavesNothingAndKeepsTheOldFile)
 {

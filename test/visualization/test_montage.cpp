@@ -3,6 +3,8 @@
  * many there are. Renders, so it needs an X display (scripts/test.sh starts Xvfb when
  * none is set).
  */
+#include "render_test_helpers.h"
+
 #include <pcl_ext/visualization/montage.h>
 
 #include <vtkImageData.h>
@@ -15,28 +17,6 @@
 #include <cstdio>
 #include <string>
 #include <unistd.h>
-
-namespace {
-pcl::PointCloud<pcl::PointXYZ>
-sphereCloud (int n)
-{
-  pcl::PointCloud<pcl::PointXYZ> cloud;
-  for (int i = 0; i < n; ++i) {
-    // Fibonacci sphere: even coverage, no randomness.
-    const double z = 1.0 - 2.0 * (i + 0.5) / n;
-    const double r = std::sqrt (1.0 - z * z);
-    const double phi = i * 2.399963229728653;
-    cloud.push_back (pcl::PointXYZ (r * std::cos (phi), r * std::sin (phi), z));
-  }
-  return cloud;
-}
-
-std::string
-temporaryPng (const std::string& stem)
-{
-  return testing::TempDir() + "/" + stem + "_" + std::to_string (::getpid()) + ".png";
-}
-} // namespace
 
 TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground)
 {
