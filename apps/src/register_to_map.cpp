@@ -365,7 +365,7 @@ main (int argc, char** argv)
     const auto& map = reg.getMapPlanes()[pair.map];
     std::printf ("  %3d (%6zu pts) -> %3d (%s) [%.2f, %.3f]\n",
                  pair.scan,
-                 reg.getSourcePlanes()[pair.scan].support,
+                 reg.getSourcePlanes()[pair.scan].size,
                  pair.map,
                  map.isFloor() ? "floor"
                                : ("wall, edge " + std::to_string (map.edge)).c_str(),

@@ -98,7 +98,7 @@ addRing (const io::Ring2d& ring,
       continue;
     MapPlane wall;
     wall.normal = Eigen::Vector3d (l.y() / length, -l.x() / length, 0.0); // eq. 1
-    wall.d = cross2 (a, b) / length; // eq. 2, signed
+    wall.d = -cross2 (a, b) / length; // eq. 2, signed, as n . x + d = 0
     wall.start = a;
     wall.end = b;
     const Eigen::Vector2d mid = 0.5 * (a + b);
@@ -169,7 +169,7 @@ computeMapPlanes (const std::vector<io::Footprint>& footprints,
   if (parameters.add_floor) {
     MapPlane floor;
     floor.normal = Eigen::Vector3d::UnitZ();
-    floor.d = parameters.floor_height - parameters.origin.z();
+    floor.d = parameters.origin.z() - parameters.floor_height;
     result.push_back (floor);
   }
   int polygon = 0;

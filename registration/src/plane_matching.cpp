@@ -24,7 +24,7 @@
 namespace pcl_ext {
 namespace {
 bool
-checkPlanes (const std::vector<RegistrationPlane>& planes, const char* which)
+checkPlanes (const std::vector<Plane>& planes, const char* which)
 {
   for (std::size_t i = 0; i < planes.size(); ++i)
     if (!planes[i].normal.allFinite() || !std::isfinite (planes[i].d) ||
@@ -86,8 +86,8 @@ checkPlaneMatchingParameters (const PlaneMatchingParameters& p)
 }
 
 bool
-matchPlanes (const std::vector<RegistrationPlane>& scan,
-             const std::vector<RegistrationPlane>& map,
+matchPlanes (const std::vector<Plane>& scan,
+             const std::vector<Plane>& map,
              const PlaneMatchingParameters& parameters,
              PlaneMatchingResult& result,
              const Eigen::Matrix4d& guess)

@@ -30,7 +30,7 @@ classify (const Eigen::Vector3d& n, double tolerance_deg)
 
 // Largest first: support, then extent, then input order (a stable, total order).
 std::vector<int>
-bySize (const std::vector<RegistrationPlane>& planes)
+bySize (const std::vector<Plane>& planes)
 {
   std::vector<int> order (planes.size());
   std::iota (order.begin(), order.end(), 0);
@@ -38,8 +38,8 @@ bySize (const std::vector<RegistrationPlane>& planes)
     return planes[i].extent.isEmpty() ? 0.0 : planes[i].extent.diagonal().norm();
   };
   std::stable_sort (order.begin(), order.end(), [&] (int a, int b) {
-    if (planes[a].support != planes[b].support)
-      return planes[a].support > planes[b].support;
+    if (planes[a].size != planes[b].size)
+      return planes[a].size > planes[b].size;
     return size (a) > size (b);
   });
   return order;
@@ -122,7 +122,7 @@ boundAroundGuess (Context& c, const Eigen::Matrix4d& guess)
 // The initial planes: the largest, among the near-vertical/horizontal ones under
 // constraint 1.
 void
-chooseInitialPlanes (const std::vector<RegistrationPlane>& planes,
+chooseInitialPlanes (const std::vector<Plane>& planes,
                      const PlaneMatchingParameters& p,
                      int count,
                      std::vector<int>& init,
@@ -143,7 +143,7 @@ chooseInitialPlanes (const std::vector<RegistrationPlane>& planes,
 }
 
 std::vector<double>
-angleTable (const std::vector<RegistrationPlane>& planes, const std::vector<int>& init)
+angleTable (const std::vector<Plane>& planes, const std::vector<int>& init)
 {
   std::vector<double> table (init.size() * init.size());
   for (std::size_t a = 0; a < init.size(); ++a)
@@ -154,7 +154,7 @@ angleTable (const std::vector<RegistrationPlane>& planes, const std::vector<int>
 }
 
 std::vector<double>
-tripleTable (const std::vector<RegistrationPlane>& planes, const std::vector<int>& init)
+tripleTable (const std::vector<Plane>& planes, const std::vector<int>& init)
 {
   const std::size_t size = init.size();
   std::vector<double> table (size * size * size);
@@ -175,9 +175,8 @@ tabulateConstraints (Context& c)
   const int m = static_cast<int> (c.scan_init.size()),
             n = static_cast<int> (c.map_init.size());
   for (const int i : c.scan_init) {
-    const RegistrationPlane& plane = c.scan[i];
-    c.scan_anchor.push_back (
-        plane.centroid - (plane.normal.dot (plane.centroid) - plane.d) * plane.normal);
+    const Plane& plane = c.scan[i];
+    c.scan_anchor.push_back (plane.project (plane.centroid));
     c.scan_anchor_norm.push_back (c.scan_anchor.back().norm());
   }
   c.scan_angle = angleTable (c.scan, c.scan_init);
@@ -239,7 +238,7 @@ boundInitialPairs (Context& c)
     const double allowance = c.distance_tol + c.translation_bound +
                              chord * (c.scan_anchor[sp] - c.centre).norm();
     for (int mp = 0; mp < n; ++mp) {
-      const RegistrationPlane& target = c.map[c.map_init[mp]];
+      const Plane& target = c.map[c.map_init[mp]];
       double cosine = normal.dot (target.normal);
       if (!parameters.oriented_normals)
         cosine = std::abs (cosine);
@@ -267,7 +266,7 @@ void
 findReachable (Context& c, const std::vector<char>& map_within_reach)
 {
   const PlaneMatchingParameters& parameters = c.p;
-  auto elevation = [] (const RegistrationPlane& plane) {
+  auto elevation = [] (const Plane& plane) {
     return std::asin (
         std::min (1.0, std::abs (plane.normal.z()) / plane.normal.norm()));
   };

@@ -82,8 +82,8 @@ better (const Candidate& a, const Candidate& b)
  * bounds around a guess (beyond the paper) and the sign pattern sets (papers/README.md:
  * unknown signs). */
 struct Context {
-  const std::vector<RegistrationPlane>& scan;
-  const std::vector<RegistrationPlane>& map;
+  const std::vector<Plane>& scan;
+  const std::vector<Plane>& map;
   const PlaneMatchingParameters& p;
   std::vector<int> scan_order; // all scan planes, largest first (extension order)
   std::vector<int> scan_init, map_init; // the m and n initial planes
@@ -123,8 +123,8 @@ struct Context {
   bool distance_screen, up_screen,
       screen; // the screens of constraint 3 in use (Worker::screen)
 
-  Context (const std::vector<RegistrationPlane>& s,
-           const std::vector<RegistrationPlane>& m,
+  Context (const std::vector<Plane>& s,
+           const std::vector<Plane>& m,
            const PlaneMatchingParameters& params)
   : scan (s), map (m), p (params)
   {

@@ -116,7 +116,7 @@ Worker::extend (std::uint64_t order)
         signs_.data(), static_cast<int> (pairs_.size()), candidate.estimate, true);
   }
   for (const auto& pair : pairs_)
-    candidate.support += c_.scan[pair.scan].support;
+    candidate.support += c_.scan[pair.scan].size;
   if (better (candidate, best))
     best = std::move (candidate);
 }

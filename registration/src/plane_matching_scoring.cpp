@@ -129,7 +129,7 @@ Worker::prepareScreen()
       double bound = 0.0, magnitude = 1.0;
       sub.offset = 0.0;
       for (int i = 0; i < 4; ++i) {
-        const double dm = map_ptr_[index[i]]->d;
+        const double dm = -map_ptr_[index[i]]->d; // the paper's d: n . x = d
         sub.index[i] = index[i];
         sub.lambda_q[i] = lambda[i] * scan_side_[t].q[i];
         sub.offset += lambda[i] * dm;

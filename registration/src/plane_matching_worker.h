@@ -121,7 +121,7 @@ private:
       degenerate_; // degeneracy cache, see the constructor
   int initial_signs_[kMaxK] = {};
   std::uint64_t order_ = 0;
-  std::vector<const RegistrationPlane*> scan_ptr_, map_ptr_;
+  std::vector<const Plane*> scan_ptr_, map_ptr_;
   std::vector<int> signs_;
   std::vector<PlanePair> pairs_;
   std::vector<char> used_scan_, used_map_;

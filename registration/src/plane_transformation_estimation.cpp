@@ -16,15 +16,15 @@ namespace {
 // A point of the scan plane where the data is: its centroid projected onto it (d n
 // without one).
 Eigen::Vector3d
-anchor (const RegistrationPlane& p)
+anchor (const Plane& p)
 {
-  return p.centroid - (p.normal.dot (p.centroid) - p.d) * p.normal;
+  return p.project (p.centroid);
 }
 } // namespace
 
 bool
-estimatePlaneTransformation (const RegistrationPlane* const* scan,
-                             const RegistrationPlane* const* map,
+estimatePlaneTransformation (const Plane* const* scan,
+                             const Plane* const* map,
                              const int* signs,
                              int count,
                              PlaneTransformationModel model,
@@ -52,7 +52,7 @@ estimatePlaneTransformation (const RegistrationPlane* const* scan,
     const double s = signs[i];
     Eigen::Vector4d b;
     b.head<3>() = s * scan[i]->normal;
-    b[3] = -s * scan[i]->d + map[i]->d;
+    b[3] = s * scan[i]->d - map[i]->d;
     normal_matrix.noalias() += nm * nm.transpose();
     c.noalias() += b * nm.transpose();
   }
@@ -102,7 +102,7 @@ estimatePlaneTransformation (const RegistrationPlane* const* scan,
     Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
     for (int i = 0; i < count; ++i)
       rhs += map[i]->normal *
-             (map[i]->d - map[i]->normal.dot (rotation * anchor (*scan[i])));
+             (-map[i]->d - map[i]->normal.dot (rotation * anchor (*scan[i])));
     t = normal_inverse * rhs;
   }
   else {
@@ -113,7 +113,7 @@ estimatePlaneTransformation (const RegistrationPlane* const* scan,
       a.head<3>() = map[i]->normal;
       a[3] = map[i]->normal.dot (rotation * anchor (*scan[i]));
       n4.noalias() += a * a.transpose();
-      rhs += a * map[i]->d;
+      rhs -= a * map[i]->d;
     }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen4 (n4, Eigen::EigenvaluesOnly);
     const Eigen::Vector4d v4 = eigen4.eigenvalues();
@@ -145,7 +145,7 @@ estimatePlaneTransformation (const RegistrationPlane* const* scan,
     const Eigen::Vector3d& nm = map[i]->normal;
     const double cosine = std::clamp ((rotation * ns).dot (nm), -1.0, 1.0);
     const double distance =
-        std::abs (nm.dot (scale * (rotation * anchor (*scan[i])) + t) - map[i]->d);
+        std::abs (nm.dot (scale * (rotation * anchor (*scan[i])) + t) + map[i]->d);
     if (per_pair) {
       result.angle_residuals.push_back (std::acos (cosine));
       result.distance_residuals.push_back (distance);
@@ -161,14 +161,14 @@ estimatePlaneTransformation (const RegistrationPlane* const* scan,
 }
 
 bool
-estimatePlaneTransformation (const std::vector<RegistrationPlane>& scan,
-                             const std::vector<RegistrationPlane>& map,
+estimatePlaneTransformation (const std::vector<Plane>& scan,
+                             const std::vector<Plane>& map,
                              const std::vector<PlanePair>& pairs,
                              PlaneTransformationModel model,
                              PlaneTransformationResult& result,
                              double min_conditioning)
 {
-  std::vector<const RegistrationPlane*> s, m;
+  std::vector<const Plane*> s, m;
   std::vector<int> signs;
   for (const auto& pair : pairs) {
     if (pair.scan < 0 || pair.map < 0 || pair.scan >= static_cast<int> (scan.size()) ||

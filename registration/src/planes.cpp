@@ -15,7 +15,7 @@ PlaneTransformer::PlaneTransformer (const Eigen::Matrix4d& transformation)
 }
 
 Eigen::AlignedBox3d
-PlaneTransformer::extent (const RegistrationPlane& plane) const
+PlaneTransformer::extent (const Plane& plane) const
 {
   Eigen::AlignedBox3d out;
   if (!plane.extent.isEmpty())
@@ -25,20 +25,20 @@ PlaneTransformer::extent (const RegistrationPlane& plane) const
   return out;
 }
 
-RegistrationPlane
-PlaneTransformer::operator() (const RegistrationPlane& plane) const
+Plane
+PlaneTransformer::operator() (const Plane& plane) const
 {
-  RegistrationPlane out = plane;
+  Plane out = plane;
   out.normal = normal (plane);
-  out.d = scale_ * plane.d + out.normal.dot (t_);
+  out.d = scale_ * plane.d - out.normal.dot (t_);
   out.centroid = point (plane.centroid);
   if (!plane.extent.isEmpty())
     out.extent = extent (plane);
   return out;
 }
 
-RegistrationPlane
-transformPlane (const RegistrationPlane& plane, const Eigen::Matrix4d& transformation)
+Plane
+transformPlane (const Plane& plane, const Eigen::Matrix4d& transformation)
 {
   return PlaneTransformer (transformation) (plane);
 }

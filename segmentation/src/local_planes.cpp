@@ -18,8 +18,8 @@ pcl_ext::normalAngle (const Eigen::Vector3d& n1, const Eigen::Vector3d& n2)
 }
 
 bool
-pcl_ext::intersectLocalPlanes (const LocalPlane& plane1,
-                               const LocalPlane& plane2,
+pcl_ext::intersectLocalPlanes (const Plane& plane1,
+                               const Plane& plane2,
                                const Eigen::Vector3d& p1,
                                const Eigen::Vector3d& p2,
                                Eigen::Vector3d& point,
@@ -33,8 +33,8 @@ pcl_ext::intersectLocalPlanes (const LocalPlane& plane1,
     return false;
   const Eigen::Vector3d m = 0.5 * (p1 + p2);
   const double c = n1.dot (n2);
-  const double r1 = plane1.distance (m);
-  const double r2 = plane2.distance (m);
+  const double r1 = plane1.signedDistance (m);
+  const double r2 = plane2.signedDistance (m);
   const double alpha = (-r1 + c * r2) / det;
   const double beta = (-r2 + c * r1) / det;
   point = m + alpha * n1 + beta * n2;

@@ -58,9 +58,9 @@ main (int argc, char** argv)
     return 1;
   pcl::PointCloud<pcl::PointXYZ> aligned;
   reg.align (aligned);
-  const std::vector<pcl_ext::RegistrationPlane> scan (reg.getSourcePlanes().begin(),
-                                                      reg.getSourcePlanes().end());
-  const std::vector<pcl_ext::RegistrationPlane>& map = reg.getTargetPlanes();
+  const std::vector<pcl_ext::Plane> scan (reg.getSourcePlanes().begin(),
+                                          reg.getSourcePlanes().end());
+  const std::vector<pcl_ext::Plane>& map = reg.getTargetPlanes();
   std::printf (
       "building scene: %zu points, %zu scan planes, %zu map planes, %u threads\n",
       cloud->size(),

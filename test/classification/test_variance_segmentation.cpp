@@ -219,11 +219,11 @@ TEST (SegmentByLocalVariance, FitsPlanesToTheSegments)
   ASSERT_EQ (planes.size(), clusters.size());
   ASSERT_EQ (planes.size(), 6u);
   for (const auto& plane : planes) {
-    ASSERT_TRUE (plane.valid);
+    ASSERT_TRUE (plane.isValid());
     // Each face is axis-aligned at 0 or 1, the noise is 1 mm along its normal.
     EXPECT_GT (plane.normal.cwiseAbs().maxCoeff(), 0.9999);
     EXPECT_NEAR (std::abs (plane.d), std::abs (plane.d) < 0.5 ? 0.0 : 1.0, 1e-3);
-    EXPECT_LT (plane.rms_residual, 0.0015);
+    EXPECT_LT (plane.rms, 0.0015);
   }
 }
 

@@ -294,7 +294,7 @@ TEST (Deterministic, PlaneMatchingRegistration)
   std::vector<ScanPlane> source;
   for (const auto& plane : scan) {
     ScanPlane s;
-    static_cast<RegistrationPlane&> (s) = plane;
+    static_cast<Plane&> (s) = plane;
     source.push_back (s);
   }
   Cloud::Ptr dummy (new Cloud);

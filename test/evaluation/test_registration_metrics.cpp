@@ -91,7 +91,8 @@ TEST (RegistrationMetrics, PlaneDistances)
   scan.push_back (pcl::PointXYZ (std::nanf (""), 0, 0)); // skipped
   planes[1].indices.push_back (static_cast<int> (scan.size() - 1));
 
-  // The map is the scan moved by a known transform; its planes are (n, -d).
+  // The map is the scan moved by a known transform; its planes are (n, d), n . x + d =
+  // 0.
   const Eigen::Matrix4d truth =
       makeTransform (40.0, Eigen::Vector3d::UnitZ(), Eigen::Vector3d (100, 200, 3));
   const Eigen::Matrix3d r = truth.topLeftCorner<3, 3>();

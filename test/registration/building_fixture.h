@@ -113,16 +113,15 @@ registerToMap (const Building& b)
   o.matches = reg.getMatchingResult().matches.size();
   o.statistics = reg.getMatchingResult().statistics;
   for (const auto& pair : reg.getMatchingResult().matches) {
-    const RegistrationPlane moved =
-        transformPlane (reg.getSourcePlanes()[pair.scan], truth);
-    const RegistrationPlane& map = reg.getMapPlanes()[pair.map];
+    const Plane moved = transformPlane (reg.getSourcePlanes()[pair.scan], truth);
+    const Plane& map = reg.getMapPlanes()[pair.map];
     if (std::abs (moved.normal.dot (map.normal)) < std::cos (2.0 * M_PI / 180.0) ||
         std::abs (map.signedDistance (moved.centroid)) > 0.5)
       ++o.wrong;
   }
   if (std::getenv ("PCL_EXT_DEBUG_PLANES"))
     for (std::size_t i = 0; i < reg.getSourcePlanes().size(); ++i) {
-      const RegistrationPlane moved = transformPlane (reg.getSourcePlanes()[i], truth);
+      const Plane moved = transformPlane (reg.getSourcePlanes()[i], truth);
       int matched = -1;
       for (const auto& pair : reg.getMatchingResult().matches)
         if (pair.scan == static_cast<int> (i))
@@ -140,7 +139,7 @@ registerToMap (const Building& b)
       std::printf ("  plane %zu: %zu pts rms %.2f n (%.3f %.3f %.3f) c (%.1f %.1f "
                    "%.1f) nearest map %d at %.2f m, matched %d\n",
                    i,
-                   reg.getSourcePlanes()[i].support,
+                   reg.getSourcePlanes()[i].size,
                    reg.getSourcePlanes()[i].rms,
                    moved.normal.x(),
                    moved.normal.y(),

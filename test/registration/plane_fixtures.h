@@ -78,7 +78,7 @@ randomPose (std::mt19937& rng, double tilt_deg = 3.0, double shift = 100.0)
  * noise of \a angle_sigma (rad) and offset noise \a distance_sigma (m), minus the first
  * \a missing walls, plus \a superfluous random vertical planes. Supports follow the
  * wall areas. */
-inline std::vector<RegistrationPlane>
+inline std::vector<Plane>
 scanPlanes (const std::vector<MapPlane>& map,
             const Eigen::Matrix4d& scan_to_map,
             std::mt19937& rng,
@@ -90,21 +90,21 @@ scanPlanes (const std::vector<MapPlane>& map,
   std::normal_distribution<double> gauss (0.0, 1.0);
   std::uniform_real_distribution<double> unit (-1.0, 1.0);
   const Eigen::Matrix4d map_to_scan = scan_to_map.inverse();
-  std::vector<RegistrationPlane> distinct;
+  std::vector<Plane> distinct;
   std::vector<double> single_length; // wall length, 0 for merged walls and the floor
   for (const auto& plane : map) {
     bool seen = false;
     for (std::size_t i = 0; i < distinct.size(); ++i)
       if (distinct[i].normal.dot (plane.normal) > 0.9999 &&
           std::abs (distinct[i].d - plane.d) < 1e-6) {
-        distinct[i].support += static_cast<std::size_t> (plane.length() * 100);
+        distinct[i].size += static_cast<std::size_t> (plane.length() * 100);
         distinct[i].extent.extend (plane.extent);
         single_length[i] = 0.0;
         seen = true;
       }
     if (!seen) {
-      RegistrationPlane p = plane;
-      p.support =
+      Plane p = plane;
+      p.size =
           plane.isFloor() ? 20000 : static_cast<std::size_t> (plane.length() * 100);
       distinct.push_back (p);
       single_length.push_back (plane.length());
@@ -115,28 +115,28 @@ scanPlanes (const std::vector<MapPlane>& map,
   std::sort (sorted.rbegin(), sorted.rend());
   const double cut =
       missing > 0 ? sorted[std::min<std::size_t> (missing, sorted.size()) - 1] : 1e300;
-  std::vector<RegistrationPlane> scan;
+  std::vector<Plane> scan;
   int dropped = 0;
   for (std::size_t i = 0; i < distinct.size(); ++i) {
-    const RegistrationPlane& plane = distinct[i];
+    const Plane& plane = distinct[i];
     if (dropped < missing && single_length[i] > 0.0 && single_length[i] >= cut) {
       ++dropped;
       continue;
     }
-    RegistrationPlane p = transformPlane (plane, map_to_scan);
+    Plane p = transformPlane (plane, map_to_scan);
     const Eigen::Vector3d tilt (gauss (rng), gauss (rng), gauss (rng));
     p.normal =
         (p.normal + angle_sigma * (tilt - tilt.dot (p.normal) * p.normal)).normalized();
-    p.d = p.normal.dot (p.centroid) + distance_sigma * gauss (rng);
+    p.d = -(p.normal.dot (p.centroid) + distance_sigma * gauss (rng));
     scan.push_back (p);
   }
   for (int i = 0; i < superfluous; ++i) {
-    RegistrationPlane p;
+    Plane p;
     const double angle = 3.14159265358979323846 * unit (rng);
     p.normal = Eigen::Vector3d (std::cos (angle), std::sin (angle), 0.0);
     p.centroid = Eigen::Vector3d (60.0 * unit (rng), 60.0 * unit (rng), 3.0);
-    p.d = p.normal.dot (p.centroid);
-    p.support = static_cast<std::size_t> (800 + 800 * std::abs (unit (rng)));
+    p.d = -p.normal.dot (p.centroid);
+    p.size = static_cast<std::size_t> (800 + 800 * std::abs (unit (rng)));
     const Eigen::Vector3d along (-p.normal.y(), p.normal.x(), 0.0);
     p.extent.extend (p.centroid - 4.0 * along - Eigen::Vector3d (0, 0, 3));
     p.extent.extend (p.centroid + 4.0 * along + Eigen::Vector3d (0, 0, 3));
@@ -146,10 +146,10 @@ scanPlanes (const std::vector<MapPlane>& map,
   return scan;
 }
 
-inline std::vector<RegistrationPlane>
+inline std::vector<Plane>
 slice (const std::vector<MapPlane>& planes)
 {
-  return std::vector<RegistrationPlane> (planes.begin(), planes.end());
+  return std::vector<Plane> (planes.begin(), planes.end());
 }
 } // namespace test
 } // namespace pcl_ext

@@ -49,10 +49,10 @@ TEST (MapPlanes, HShapeWallsFaceOutwardWithSignedOffsets)
     EXPECT_TRUE (inside (test::hShape(), mid - 0.1 * w.normal.head<2>()))
         << "wall " << i;
   }
-  // Edge (0,0)-(12,0): n = (0, -1, 0), d = 0; edge (40,0)-(40,30): n = (1, 0, 0), d
-  // = 40.
+  // n . x + d = 0. Edge (0,0)-(12,0): n = (0, -1, 0), d = 0; edge (40,0)-(40,30):
+  // n = (1, 0, 0), d = -40.
   EXPECT_TRUE (planes[1].normal.isApprox (Eigen::Vector3d (0, -1, 0)));
-  EXPECT_NEAR (planes[6].d, 40.0, 1e-12);
+  EXPECT_NEAR (planes[6].d, -40.0, 1e-12);
   EXPECT_TRUE (planes[6].normal.isApprox (Eigen::Vector3d (1, 0, 0)));
 }
 
@@ -86,7 +86,7 @@ TEST (MapPlanes, ClockwiseRingAndLargeCoordinatesGiveTheSamePlanes)
     const Eigen::Vector3d p (
         shifted[i].start.x() + 20.0, shifted[i].start.y() + 15.0, 0.0);
     EXPECT_NEAR (reference[i].signedDistance (p), 0.0, 1e-9);
-    EXPECT_NEAR (shifted[i].d - reference[i].d +
+    EXPECT_NEAR (reference[i].d - shifted[i].d +
                      reference[i].normal.dot (Eigen::Vector3d (20, 15, 0)),
                  0.0,
                  1e-9);

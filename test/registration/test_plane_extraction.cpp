@@ -55,11 +55,11 @@ TEST (PlaneExtraction, FitScanPlanesFitsAndFacesTheScanner)
   EXPECT_NEAR (planes[0].d, 0.0, 0.005);
   EXPECT_GT (planes[1].normal.x(), 0.9999);
   for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_EQ (planes[i].support, faces[i].indices.size());
+    EXPECT_EQ (planes[i].size, faces[i].indices.size());
     EXPECT_EQ (planes[i].inliers.indices, faces[i].indices);
     EXPECT_NEAR (planes[i].rms, 0.01, 0.002);
     EXPECT_NEAR (planes[i].normal.norm(), 1.0, 1e-12);
-    EXPECT_NEAR (planes[i].d, planes[i].normal.dot (planes[i].centroid), 1e-12);
+    EXPECT_NEAR (planes[i].d, -planes[i].normal.dot (planes[i].centroid), 1e-12);
   }
   // The extent spans the face (its 1st to 99th percentiles).
   EXPECT_NEAR (planes[0].extent.min().x(), 0.1, 0.25);

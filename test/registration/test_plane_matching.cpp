@@ -21,14 +21,14 @@ const double kPi = 3.14159265358979323846;
 
 // Every pair is right when the truth maps the scan plane onto its map plane.
 int
-wrongPairs (const std::vector<RegistrationPlane>& scan,
-            const std::vector<RegistrationPlane>& map,
+wrongPairs (const std::vector<Plane>& scan,
+            const std::vector<Plane>& map,
             const std::vector<PlanePair>& matches,
             const Eigen::Matrix4d& truth)
 {
   int wrong = 0;
   for (const auto& pair : matches) {
-    const RegistrationPlane moved = transformPlane (scan[pair.scan], truth);
+    const Plane moved = transformPlane (scan[pair.scan], truth);
     const double cosine = pair.sign * moved.normal.dot (map[pair.map].normal);
     if (cosine < std::cos (2.0 * kPi / 180.0) ||
         std::abs (pair.sign * moved.d - map[pair.map].d) > 0.5)
@@ -204,16 +204,13 @@ TEST (PlaneMatching, BadInputDoesNotConverge)
   PlaneMatchingParameters p;
   PlaneMatchingResult r;
   // Fewer than k planes, or none.
-  EXPECT_FALSE (
-      matchPlanes (std::vector<RegistrationPlane> (scan.begin(), scan.begin() + 2),
-                   test::slice (map),
-                   p,
-                   r));
+  EXPECT_FALSE (matchPlanes (
+      std::vector<Plane> (scan.begin(), scan.begin() + 2), test::slice (map), p, r));
   EXPECT_FALSE (r.converged);
   EXPECT_FALSE (matchPlanes ({}, test::slice (map), p, r));
   EXPECT_FALSE (matchPlanes (scan, {}, p, r));
   // All walls parallel: the floor and walls facing +-y only.
-  std::vector<RegistrationPlane> parallel_map, parallel_scan;
+  std::vector<Plane> parallel_map, parallel_scan;
   for (const auto& plane : test::slice (map))
     if (std::abs (plane.normal.x()) < 0.5)
       parallel_map.push_back (plane);
@@ -435,7 +432,7 @@ TEST (PlaneMatchingBounds, BadBoundsAndGuessAreRefused)
       reg.setMapPlanes (map);
       std::vector<ScanPlane> planes (scan.size());
       for (std::size_t i = 0; i < scan.size(); ++i)
-        static_cast<RegistrationPlane&> (planes[i]) = scan[i];
+        static_cast<Plane&> (planes[i]) = scan[i];
       reg.setSourcePlanes (planes);
       pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
       cloud->emplace_back (0.f, 0.f, 0.f);

@@ -14,7 +14,7 @@ using namespace pcl_ext;
 namespace {
 // Floor and three walls of the H plan, as map and scan planes related by scan_to_map.
 struct FourPlanes {
-  std::vector<RegistrationPlane> map, scan;
+  std::vector<Plane> map, scan;
   std::vector<PlanePair> pairs;
   Eigen::Matrix4d truth;
 };
@@ -65,7 +65,7 @@ TEST (PlaneTransformationEstimation, FactoredSolutionEqualsEquation12)
   std::normal_distribution<double> g (0.0, 0.02);
   for (auto& p : f.scan) {
     p.normal = (p.normal + Eigen::Vector3d (g (rng), g (rng), g (rng))).normalized();
-    p.d += 5 * g (rng);
+    p.d -= 5 * g (rng);
   }
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero (16, 12);
   Eigen::VectorXd b (16);
@@ -73,7 +73,7 @@ TEST (PlaneTransformationEstimation, FactoredSolutionEqualsEquation12)
     for (int j = 0; j < 3; ++j)
       a.block<4, 4> (4 * i, 4 * j) = f.map[i].normal[j] * Eigen::Matrix4d::Identity();
     b.segment<3> (4 * i) = f.scan[i].normal;
-    b[4 * i + 3] = -f.scan[i].d + f.map[i].d;
+    b[4 * i + 3] = f.scan[i].d - f.map[i].d;
   }
   const Eigen::VectorXd x = (a.transpose() * a).ldlt().solve (a.transpose() * b);
   PlaneTransformationResult r;
@@ -161,13 +161,13 @@ TEST (PlaneTransformationEstimation, PlaneTransformerGivesTransformPlaneByParts)
   std::mt19937 rng (31);
   Eigen::Matrix4d transformation = test::randomPose (rng);
   transformation.topLeftCorner<3, 3>() *= 1.5; // a similarity
-  RegistrationPlane plane;
+  Plane plane;
   plane.normal = Eigen::Vector3d (0.3, -0.4, 0.2).normalized();
-  plane.d = 7.5;
-  plane.centroid = plane.d * plane.normal + Eigen::Vector3d (0.4, 0.3, 0.0);
+  plane.d = -7.5;
+  plane.centroid = -plane.d * plane.normal + Eigen::Vector3d (0.4, 0.3, 0.0);
   plane.extent =
       Eigen::AlignedBox3d (Eigen::Vector3d (-1, -2, 3), Eigen::Vector3d (4, 5, 6));
-  const RegistrationPlane whole = transformPlane (plane, transformation);
+  const Plane whole = transformPlane (plane, transformation);
   const PlaneTransformer mover (transformation);
   // The parts are those of the whole image to the last bit.
   EXPECT_EQ (mover.normal (plane), whole.normal);
@@ -176,7 +176,7 @@ TEST (PlaneTransformationEstimation, PlaneTransformerGivesTransformPlaneByParts)
   EXPECT_EQ (mover.extent (plane).max(), whole.extent.max());
   // The image plane holds the images of the plane's points.
   const Eigen::Vector3d on_plane =
-      plane.d * plane.normal + Eigen::Vector3d (0.4, 0.3, -0.1).cross (plane.normal);
+      -plane.d * plane.normal + Eigen::Vector3d (0.4, 0.3, -0.1).cross (plane.normal);
   EXPECT_NEAR (whole.signedDistance (mover.point (on_plane)), 0.0, 1e-9);
   EXPECT_NEAR (whole.normal.norm(), 1.0, 1e-12);
   // No extent stays no extent.

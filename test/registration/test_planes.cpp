@@ -1,6 +1,6 @@
 /*
- * Tests of the planes of Khoshelham & Gorte (2009): pi = (n, -d) with n . x = d (eq. 3)
- * and their images under a rigid or similarity transform (eq. 6).
+ * Tests of the planes of Khoshelham & Gorte (2009): pi = (n, d) with n . x + d = 0 (eq.
+ * 3) and their images under a rigid or similarity transform (eq. 6).
  */
 #include "plane_fixtures.h"
 
@@ -12,22 +12,6 @@
 #include <random>
 
 using namespace pcl_ext;
-
-TEST (Planes, CoefficientsAndSignedDistanceAreEquation3)
-{
-  RegistrationPlane plane;
-  plane.normal = Eigen::Vector3d (0.6, 0.0, 0.8);
-  plane.d = 2.0;
-  const Eigen::Vector4d pi = plane.coefficients();
-  EXPECT_EQ (pi, Eigen::Vector4d (0.6, 0.0, 0.8, -2.0));
-  for (const Eigen::Vector3d x : {Eigen::Vector3d (0, 0, 0),
-                                  Eigen::Vector3d (1, 2, 3),
-                                  Eigen::Vector3d (-4, 5, 0.5)})
-    EXPECT_NEAR (plane.signedDistance (x), pi.dot (x.homogeneous()), 1e-12);
-  // Points on the plane: n . x = d; the normal side is positive.
-  EXPECT_NEAR (plane.signedDistance (plane.d * plane.normal), 0.0, 1e-12);
-  EXPECT_NEAR (plane.signedDistance ((plane.d + 1.5) * plane.normal), 1.5, 1e-12);
-}
 
 TEST (Planes, MapPlaneFloorAndWallLength)
 {
@@ -53,13 +37,13 @@ TEST (Planes, TransformPlaneMovesThePlaneWithItsPoints)
     for (int trial = 0; trial < 20; ++trial) {
       Eigen::Matrix4d t = test::randomPose (rng, 20.0, 50.0);
       t.topLeftCorner<3, 3>() *= scale;
-      RegistrationPlane plane;
+      Plane plane;
       plane.normal = Eigen::Vector3d (unit (rng), unit (rng), unit (rng)).normalized();
       plane.centroid = 10.0 * Eigen::Vector3d (unit (rng), unit (rng), unit (rng));
-      plane.d = plane.normal.dot (plane.centroid);
+      plane.d = -plane.normal.dot (plane.centroid);
       plane.extent.extend (plane.centroid - Eigen::Vector3d (2, 3, 1));
       plane.extent.extend (plane.centroid + Eigen::Vector3d (1, 2, 4));
-      const RegistrationPlane image = transformPlane (plane, t);
+      const Plane image = transformPlane (plane, t);
       EXPECT_NEAR (image.normal.norm(), 1.0, 1e-12);
       const Eigen::Vector3d u = plane.normal.unitOrthogonal(),
                             v = plane.normal.cross (u);
@@ -81,11 +65,11 @@ TEST (Planes, TransformPlaneMovesThePlaneWithItsPoints)
         EXPECT_TRUE (image.extent.exteriorDistance (
                          (t * corner.homogeneous()).head<3>()) < 1e-9);
       }
-      const RegistrationPlane back = transformPlane (image, t.inverse());
+      const Plane back = transformPlane (image, t.inverse());
       EXPECT_TRUE (back.normal.isApprox (plane.normal, 1e-9));
       EXPECT_NEAR (back.d, plane.d, 1e-9);
     }
   // An empty extent stays empty.
-  RegistrationPlane bare;
+  Plane bare;
   EXPECT_TRUE (transformPlane (bare, Eigen::Matrix4d::Identity()).extent.isEmpty());
 }

@@ -36,15 +36,15 @@ TEST (FitSegmentPlane, RecoversATiltedPlaneFarFromTheOrigin)
     }
   const auto plane =
       pcl_ext::fitSegmentPlane (cloud, indices, Eigen::Vector3d (x0, y0, 100.0));
-  ASSERT_TRUE (plane.valid);
+  ASSERT_TRUE (plane.isValid());
   EXPECT_EQ (plane.size, cloud.size());
   EXPECT_GT (plane.normal.dot (n_true),
              1.0 - 1e-6); // and turned up, towards the viewpoint
   EXPECT_NEAR (plane.normal.dot (plane.centroid) + plane.d, 0.0, 1e-6);
   // A z offset dz is a distance dz * n_z from the plane.
-  EXPECT_NEAR (plane.rms_residual, 0.002 * n_true.z(), 0.0003);
-  EXPECT_GT (plane.max_residual, 2.5 * plane.rms_residual);
-  EXPECT_LT (plane.max_residual, 6.0 * plane.rms_residual);
+  EXPECT_NEAR (plane.rms, 0.002 * n_true.z(), 0.0003);
+  EXPECT_GT (plane.max_residual, 2.5 * plane.rms);
+  EXPECT_LT (plane.max_residual, 6.0 * plane.rms);
   // The same fit seen from below is turned down.
   const auto below =
       pcl_ext::fitSegmentPlane (cloud, indices, Eigen::Vector3d (x0, y0, -100.0));
@@ -58,11 +58,11 @@ TEST (FitSegmentPlane, OneOrTwoPointsOrALineHaveNoPlane)
   for (int i = 0; i < 5; ++i)
     cloud.push_back (Point (0.1f * i, 0.2f * i, 0.f)); // collinear
   const Eigen::Vector3d view (0, 0, 1);
-  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0}, view).valid);
-  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0, 1}, view).valid);
+  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0}, view).isValid());
+  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0, 1}, view).isValid());
   EXPECT_FALSE (
-      pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0, 1, 2, 3, 4}, view).valid);
-  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{}, view).valid);
+      pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0, 1, 2, 3, 4}, view).isValid());
+  EXPECT_FALSE (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{}, view).isValid());
   EXPECT_TRUE (
       std::isnan (pcl_ext::fitSegmentPlane (cloud, pcl::Indices{0}, view).normal.x()));
 }
@@ -88,7 +88,7 @@ TEST (FitLocalPlane, TotalLeastSquaresAndGivenNormal)
   EXPECT_GT (std::abs (plane.normal.dot (n_true)), 1.0 - 1e-5);
   EXPECT_LT (plane.rms, 1e-3); // the floats' rounding only
   EXPECT_NEAR (
-      std::abs (plane.distance (plane.centroid + 0.3 * plane.normal)), 0.3, 1e-9);
+      std::abs (plane.signedDistance (plane.centroid + 0.3 * plane.normal)), 0.3, 1e-9);
   // Given a normal, the plane takes it (normalised) through the centroid; the residual
   // is the spread along it.
   const Eigen::Vector3d up (0.0, 0.0, 2.0);
@@ -113,11 +113,10 @@ TEST (IntersectLocalPlanes, TwoFacesOfABoxMeetOnTheirCrease)
 {
   // The planes x = 1 and y = 2 meet on the vertical line (1, 2, z); the point returned
   // is the one nearest the midpoint of the two given points.
-  pcl_ext::LocalPlane a, b;
-  a.centroid = Eigen::Vector3d (1.0, 0.0, 0.0);
-  a.normal = Eigen::Vector3d::UnitX();
-  b.centroid = Eigen::Vector3d (0.0, 2.0, 0.0);
-  b.normal = -Eigen::Vector3d::UnitY();
+  const auto a = pcl_ext::Plane::throughPoint (Eigen::Vector3d::UnitX(),
+                                               Eigen::Vector3d (1.0, 0.0, 0.0));
+  auto b = pcl_ext::Plane::throughPoint (-Eigen::Vector3d::UnitY(),
+                                         Eigen::Vector3d (0.0, 2.0, 0.0));
   Eigen::Vector3d point, direction;
   ASSERT_TRUE (pcl_ext::intersectLocalPlanes (a,
                                               b,
@@ -132,7 +131,7 @@ TEST (IntersectLocalPlanes, TwoFacesOfABoxMeetOnTheirCrease)
   EXPECT_NEAR (pcl_ext::normalAngle (a.normal, b.normal), M_PI / 2, 1e-12);
   EXPECT_NEAR (pcl_ext::normalAngle (a.normal, -a.normal), 0.0, 1e-12);
   // Parallel planes have no line of intersection.
-  b.normal = -Eigen::Vector3d::UnitX();
+  b = pcl_ext::Plane::throughPoint (-Eigen::Vector3d::UnitX(), b.centroid);
   EXPECT_FALSE (pcl_ext::intersectLocalPlanes (
       a, b, Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), point, direction));
 }

@@ -304,7 +304,7 @@ TEST (VarianceRegionGrowingBadInput, SegmentsOfOnePoint)
   EXPECT_EQ (clusters[2].indices, pcl::Indices{300});
   ASSERT_EQ (rg.getSegmentPlanes().size(), 3u);
   for (const auto& p : rg.getSegmentPlanes()) {
-    EXPECT_FALSE (p.valid);
+    EXPECT_FALSE (p.isValid());
     EXPECT_EQ (p.size, 1u);
   }
   // With the usual minimum size nothing is left, and that is no error.

@@ -19,7 +19,7 @@ struct MapPlaneParameters {
    * digits in the float clouds PCL registers. The registration result maps the scan
    * into map - origin. */
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-  double floor_height = 0.0; ///< floor plane z = floor_height (map frame); paper: d = 0
+  double floor_height = 0.0; ///< floor plane z = floor_height (map frame); paper: z = 0
   double wall_height =
       10.0; ///< height of the walls' extent boxes (m), > 0; the map has none
   double min_edge_length = 0.5; ///< edges shorter than this (m) give no wall, >= 0
@@ -37,12 +37,13 @@ chooseLocalOrigin (const std::vector<io::Footprint>& footprints,
  * polygon edge (outer rings and holes) and a horizontal floor.
  *
  * A wall on the edge p1 -> p2 (in map - origin coordinates) has the normal of eq. 1,
- * n = (y2 - y1, -(x2 - x1), 0) / |l|, and the signed offset d = (x1 y2 - x2 y1) / |l|,
- * which is n . p1. Eq. 2 takes the absolute value of d, which contradicts eq. 1's
- * normal on one side of the origin; pcl_ext keeps the sign. The readers orient outer
- * rings counter-clockwise and holes clockwise, so eq. 1's normal points out of the
- * building, which is the side a terrestrial scanner sees: this is the canonical sign of
- * every wall. The floor has n = (0, 0, 1) and d = floor_height - origin.z.
+ * n = (y2 - y1, -(x2 - x1), 0) / |l|, and eq. 2's signed offset (x1 y2 - x2 y1) / |l|,
+ * which is n . p1; as a pcl_ext::Plane (n . x + d = 0), d = -n . p1. Eq. 2 takes the
+ * absolute value of d, which contradicts eq. 1's normal on one side of the origin;
+ * pcl_ext keeps the sign. The readers orient outer rings counter-clockwise and holes
+ * clockwise, so eq. 1's normal points out of the building, which is the side a
+ * terrestrial scanner sees: this is the canonical sign of every wall. The floor has n =
+ * (0, 0, 1) and d = origin.z - floor_height.
  *
  * \param[in] footprints polygons in map coordinates (double precision)
  * \param[in] parameters origin, floor, extents

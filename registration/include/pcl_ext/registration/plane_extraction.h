@@ -29,7 +29,7 @@ struct ScanViewpoints {
  * extractor).
  *
  * The fit is the double-precision covariance kernel of pcl_ext (normal = eigenvector of
- * the smallest eigenvalue, rms = sqrt(l0)); d = n . centroid; the extent is the
+ * the smallest eigenvalue, rms = sqrt(l0)); d = -n . centroid; the extent is the
  * 1st-99th percentile box of the inliers per axis, so that stray inliers far along the
  * infinite plane do not inflate it. The normal is turned to the scanner side: towards
  * the viewpoint of most inliers (the cloud's sensor origin when \a viewpoints is

@@ -151,8 +151,8 @@ struct PlaneMatchingResult {
  * valid transform
  */
 bool
-matchPlanes (const std::vector<RegistrationPlane>& scan,
-             const std::vector<RegistrationPlane>& map,
+matchPlanes (const std::vector<Plane>& scan,
+             const std::vector<Plane>& map,
              const PlaneMatchingParameters& parameters,
              PlaneMatchingResult& result,
              const Eigen::Matrix4d& guess = Eigen::Matrix4d::Identity());

@@ -284,7 +284,7 @@ public:
     return source_planes_;
   }
   /** \brief Map planes, or the target cloud's planes scan to scan. */
-  const std::vector<RegistrationPlane>&
+  const std::vector<Plane>&
   getTargetPlanes () const
   {
     return target_planes_;
@@ -350,7 +350,7 @@ private:
   std::vector<ScanPlane> source_planes_;
   bool source_planes_given_ = false;
   std::vector<ScanPlane> target_scan_planes_;
-  std::vector<RegistrationPlane> target_planes_;
+  std::vector<Plane> target_planes_;
   PlaneMatchingResult result_;
   pcl::IndicesPtr
       held_back_indices_; // indices out of range of the source, see setIndices

@@ -86,8 +86,8 @@ struct PlaneTransformationResult {
  * set spread within about 2 degrees of a plane is degenerate) \return result.valid
  */
 bool
-estimatePlaneTransformation (const std::vector<RegistrationPlane>& scan,
-                             const std::vector<RegistrationPlane>& map,
+estimatePlaneTransformation (const std::vector<Plane>& scan,
+                             const std::vector<Plane>& map,
                              const std::vector<PlanePair>& pairs,
                              PlaneTransformationModel model,
                              PlaneTransformationResult& result,
@@ -97,8 +97,8 @@ estimatePlaneTransformation (const std::vector<RegistrationPlane>& scan,
  * per-pair residual vectors (\a per_pair) only for the final match set; the maxima and
  * the norm are always computed. */
 bool
-estimatePlaneTransformation (const RegistrationPlane* const* scan,
-                             const RegistrationPlane* const* map,
+estimatePlaneTransformation (const Plane* const* scan,
+                             const Plane* const* map,
                              const int* signs,
                              int count,
                              PlaneTransformationModel model,

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pcl_ext/common/covariance.h>
+#include <pcl_ext/common/plane.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -18,25 +19,15 @@
 #include <limits>
 
 namespace pcl_ext {
-/** \brief A plane fitted to a few points: n . (x - centroid) = 0, in double precision.
- */
-struct LocalPlane {
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ(); ///< unit length, sign arbitrary
-  Eigen::Vector3d axis1 = Eigen::Vector3d::UnitX();  ///< in-plane principal axes of the
+/** \brief A plane fitted to a few points (pcl_ext::Plane: n . x + d = 0 through their
+ * centroid), with the in-plane principal axes and variances of the points, which give
+ * the plane's uncertainty away from its centroid. */
+struct LocalPlane : Plane {
+  Eigen::Vector3d axis1 = Eigen::Vector3d::UnitX(); ///< in-plane principal axes of the
   Eigen::Vector3d axis2 =
       Eigen::Vector3d::UnitY(); ///< points (middle, largest eigenvalue)
   double variance1 = 0.0;       ///< the points' variance along axis1
   double variance2 = 0.0;       ///< the points' variance along axis2
-  double rms = 0.0; ///< root mean square distance of the points to the plane
-  std::size_t size = 0;
-
-  /** \brief Signed distance of \a p to the plane. */
-  double
-  distance (const Eigen::Vector3d& p) const
-  {
-    return normal.dot (p - centroid);
-  }
 
   /** \brief Square root of the largest eigenvalue: the points' extent. */
   double
@@ -45,11 +36,11 @@ struct LocalPlane {
     return std::sqrt (variance2);
   }
 
-  /** \brief Standard deviation of distance(p) for a new point \a p of the same surface:
-   * the points' noise (from the rms, corrected for the 3 fitted parameters) plus the
-   * uncertainty of the plane at \a p, which grows with its distance from the centroid
-   * (the prediction variance of a least-squares fit, s^2 (1 + 1/n + u^2 / (n l1) + v^2
-   * / (n l2))). */
+  /** \brief Standard deviation of signedDistance(p) for a new point \a p of the same
+   * surface: the points' noise (from the rms, corrected for the 3 fitted parameters)
+   * plus the uncertainty of the plane at \a p, which grows with its distance from the
+   * centroid (the prediction variance of a least-squares fit, s^2 (1 + 1/n + u^2 / (n
+   * l1) + v^2 / (n l2))). */
   double
   residualSigma (const Eigen::Vector3d& p) const
   {
@@ -96,37 +87,20 @@ normalAngle (const Eigen::Vector3d& n1, const Eigen::Vector3d& n2);
  * the intersection point \param[out] direction the unit direction a of the line \return
  * false when the normals are parallel (no unique line) or not finite */
 bool
-intersectLocalPlanes (const LocalPlane& plane1,
-                      const LocalPlane& plane2,
+intersectLocalPlanes (const Plane& plane1,
+                      const Plane& plane2,
                       const Eigen::Vector3d& p1,
                       const Eigen::Vector3d& p2,
                       Eigen::Vector3d& point,
                       Eigen::Vector3d& direction);
-/** \brief The least-squares plane of one segment: n . x + d = 0 (Belton & Lichti eq.
- * 13). */
-struct SegmentPlane {
-  /** Unit normal, turned towards the cloud's sensor origin; NaN when \c valid is false.
-   */
-  Eigen::Vector3d normal =
-      Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN());
-  double d = std::numeric_limits<double>::quiet_NaN(); ///< offset: d = -n . centroid
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< mean of the segment's points
-  double rms_residual =
-      std::numeric_limits<double>::quiet_NaN(); ///< RMS point-plane distance
-  double max_residual = std::numeric_limits<double>::quiet_NaN(); ///< largest distance
-  std::size_t size = 0;                                           ///< points fitted
-  /** False when the segment has fewer than 3 points or they are collinear (no plane).
-   */
-  bool valid = false;
-};
-
 /** \brief Fit a plane to \a indices of \a cloud in double precision around the points'
- * centroid (so georeferenced coordinates lose nothing), with its residuals.
+ * centroid (so georeferenced coordinates lose nothing), with its residuals (rms,
+ * max_residual) and size.
  * \param[in] viewpoint the normal is turned to face it (n . (viewpoint - centroid) >=
- * 0) \return the plane; \c valid is false for fewer than 3 finite points or collinear
- * points */
+ * 0) \return the plane; invalid (Plane::isValid false, normal NaN) for fewer than 3
+ * finite points or collinear points */
 template <typename PointT>
-SegmentPlane
+Plane
 fitSegmentPlane (const pcl::PointCloud<PointT>& cloud,
                  const pcl::Indices& indices,
                  const Eigen::Vector3d& viewpoint);
@@ -160,11 +134,13 @@ pcl_ext::fitLocalPlane (const pcl::PointCloud<PointT>& cloud,
     if (!(length > 0.0) || !std::isfinite (length))
       return false;
     plane.normal = *normal / length;
+    plane.d = -plane.normal.dot (plane.centroid);
     plane.rms =
         std::sqrt (std::max (0.0, plane.normal.dot (covariance * plane.normal)));
     return true;
   }
   plane.normal = eigen.normal();
+  plane.d = -plane.normal.dot (plane.centroid);
   plane.rms = std::sqrt (l[0]);
   return true;
 }

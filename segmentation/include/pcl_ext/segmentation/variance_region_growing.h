@@ -255,7 +255,7 @@ public:
 
   /** \brief The planes of the last extract()'s segments, one per cluster, when
    * setFitPlanes was on; empty otherwise. */
-  const std::vector<SegmentPlane>&
+  const std::vector<Plane>&
   getSegmentPlanes () const
   {
     return planes_;
@@ -286,7 +286,7 @@ protected:
 
   // Results of the last extract().
   std::vector<pcl::PointIndices> clusters_;
-  std::vector<SegmentPlane> planes_;
+  std::vector<Plane> planes_;
 };
 } // namespace pcl_ext
 

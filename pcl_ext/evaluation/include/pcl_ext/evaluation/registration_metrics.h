@@ -91,14 +91,15 @@ struct PlaneDistanceMetrics {
  *
  * \param[in] scan the scan cloud (source coordinates)
  * \param[in] scan_planes inliers of each scan plane (e.g. a plane segmenter's output)
- * \param[in] map_planes map planes pi = (n1, n2, n3, -d), points x on the plane
- * satisfying n . x = d (Khoshelham & Gorte eq. 3); n need not be unit, it is normalised
- * \param[in] matches index_query = scan plane, index_match = map plane (as
- * pcl::Correspondence) \param[in] transformation the scan-to-map transform to assess
- * \param[out] metrics the result (reset first)
- * \return false (error printed, empty metrics) when a correspondence is out of range or
- * a map normal is zero or not finite. Non-finite points are skipped; a pair without any
- * finite inlier is reported with points = 0 and left out of the means.
+ * \param[in] map_planes map planes (a, b, c, d): points x on the plane satisfy
+ * n . x + d = 0 with n = (a, b, c), as pcl::ModelCoefficients and
+ * pcl_ext::Plane::coefficients() (Khoshelham & Gorte eq. 3's pi); n need not be unit,
+ * it is normalised \param[in] matches index_query = scan plane, index_match = map plane
+ * (as pcl::Correspondence) \param[in] transformation the scan-to-map transform to
+ * assess \param[out] metrics the result (reset first) \return false (error printed,
+ * empty metrics) when a correspondence is out of range or a map normal is zero or not
+ * finite. Non-finite points are skipped; a pair without any finite inlier is reported
+ * with points = 0 and left out of the means.
  */
 template <typename PointT>
 bool

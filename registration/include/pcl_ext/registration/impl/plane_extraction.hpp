@@ -77,7 +77,7 @@ fitScanPlanes (const pcl::PointCloud<PointT>& cloud,
     }
     if (votes < 0)
       plane.normal = -plane.normal;
-    plane.d = plane.normal.dot (plane.centroid);
+    plane.d = -plane.normal.dot (plane.centroid);
 
     // Robust extent: 1st to 99th percentile per axis.
     for (int axis = 0; axis < 3; ++axis) {
@@ -93,7 +93,7 @@ fitScanPlanes (const pcl::PointCloud<PointT>& cloud,
       plane.extent.min()[axis] = low;
       plane.extent.max()[axis] = values[hi];
     }
-    plane.support = finite.size();
+    plane.size = finite.size();
     plane.inliers.indices.assign (finite.begin(), finite.end());
     plane.inliers.header = cloud.header;
     planes.push_back (std::move (plane));

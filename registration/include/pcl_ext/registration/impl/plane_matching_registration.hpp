@@ -107,7 +107,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::getFitnessScore (double max
     // matched.
     if (static_cast<std::size_t> (pair.scan) >= source_planes_.size())
       continue;
-    const RegistrationPlane& map = target_planes_[pair.map];
+    const Plane& map = target_planes_[pair.map];
     double squares = 0.0;
     std::size_t points = 0;
     for (const auto i : source_planes_[pair.scan].inliers.indices) {
@@ -273,8 +273,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (
     return;
   }
 
-  const std::vector<RegistrationPlane> scan (source_planes_.begin(),
-                                             source_planes_.end());
+  const std::vector<Plane> scan (source_planes_.begin(), source_planes_.end());
   if (!matchPlanes (
           scan, target_planes_, parameters_, result_, guess.template cast<double>()))
     return;

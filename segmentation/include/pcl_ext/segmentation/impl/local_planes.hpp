@@ -13,12 +13,12 @@
 #include <cmath>
 
 template <typename PointT>
-pcl_ext::SegmentPlane
+pcl_ext::Plane
 pcl_ext::fitSegmentPlane (const pcl::PointCloud<PointT>& cloud,
                           const pcl::Indices& indices,
                           const Eigen::Vector3d& viewpoint)
 {
-  SegmentPlane plane;
+  Plane plane;
   Eigen::Matrix3d covariance;
   plane.size = computeLocalCovariance (cloud, indices, covariance, plane.centroid);
   EigenDecomposition eigen;
@@ -41,12 +41,11 @@ pcl_ext::fitSegmentPlane (const pcl::PointCloud<PointT>& cloud,
   }
   plane.normal = n;
   plane.d = -n.dot (plane.centroid);
-  plane.rms_residual = std::sqrt (sum / static_cast<double> (plane.size));
+  plane.rms = std::sqrt (sum / static_cast<double> (plane.size));
   plane.max_residual = largest;
-  plane.valid = true;
   return plane;
 }
 
 #define PCL_EXT_INSTANTIATE_fitSegmentPlane(T)                                         \
-  template pcl_ext::SegmentPlane pcl_ext::fitSegmentPlane<T> (                         \
+  template pcl_ext::Plane pcl_ext::fitSegmentPlane<T> (                                \
       const pcl::PointCloud<T>&, const pcl::Indices&, const Eigen::Vector3d&);

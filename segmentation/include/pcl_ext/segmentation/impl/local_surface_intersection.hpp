@@ -337,7 +337,7 @@ pcl_ext::LocalSurfaceIntersection<PointT>::reintegrate (
             fit_tolerance_ > 0.0
                 ? fit_tolerance_
                 : std::max (3.0 * plane.residualSigma (x), 1e-4 * plane.spread());
-        const double residual = std::abs (plane.distance (x));
+        const double residual = std::abs (plane.signedDistance (x));
         if (residual > tolerance)
           continue;
         // "Within the circles": not beyond any intersection line of this surface point,
