@@ -3,6 +3,7 @@
  */
 #include <pcl_ext/io/ptx_reader.h>
 
+#include "table_builder.h"
 #include "text_lines.h"
 
 #include <Eigen/Geometry>
@@ -14,6 +15,7 @@
 namespace pcl_ext {
 namespace io {
 namespace {
+using detail::TableBuilder;
 using detail::TextLines;
 
 /** Next data line split into values; fails with \a what when the file ends. */
@@ -88,34 +90,6 @@ coordinates (TextLines& lines, const std::vector<std::string_view>& values)
   return p;
 }
 
-/** Points of a table being filled scan by scan, where attributes may appear in some
- * scans only: missing ones are padded (NaN intensity, black colour). */
-struct Collector {
-  PointTable table;
-  bool intensity = false, rgb = false;
-
-  void
-  add (const Eigen::Vector3d& p,
-       const float* intensity_value,
-       const std::array<std::uint8_t, 3>* colour)
-  {
-    if (intensity_value && !intensity) {
-      table.intensity.assign (table.size(), std::numeric_limits<float>::quiet_NaN());
-      intensity = true;
-    }
-    if (colour && !rgb) {
-      table.rgb.assign (table.size(), {0, 0, 0});
-      rgb = true;
-    }
-    table.xyz.push_back (p);
-    if (intensity)
-      table.intensity.push_back (
-          intensity_value ? *intensity_value : std::numeric_limits<float>::quiet_NaN());
-    if (rgb)
-      table.rgb.push_back (colour ? *colour : std::array<std::uint8_t, 3>{0, 0, 0});
-  }
-};
-
 /** Rotation of a linear map whose columns are the scanner axes: columns normalised (a
  * PTX may scale an axis), then the nearest rotation. */
 Eigen::Quaterniond
@@ -136,7 +110,7 @@ axesRotation (const Eigen::Matrix3d& linear)
 
 /** Reads one scan's header and points; false when the file has no further scan. */
 bool
-readPtxScan (TextLines& lines, const PtxOptions& options, Collector& out)
+readPtxScan (TextLines& lines, const PtxOptions& options, TableBuilder& out)
 {
   std::string_view first;
   if (!lines.nextData (first, false))
@@ -209,9 +183,13 @@ readPtxScan (TextLines& lines, const PtxOptions& options, Collector& out)
         options.keep_scanner_frame ? p : Eigen::Vector3d (linear * p + translation);
     if (!q.allFinite())
       lines.fail (scan + ": the transformed point is not finite");
-    out.add (q, values.size() >= 4 ? &intensity : nullptr, width == 7 ? &rgb : nullptr);
-    out.table.row.push_back (static_cast<std::int32_t> (k % rows));
-    out.table.column.push_back (static_cast<std::int32_t> (k / rows));
+    const std::int32_t row = static_cast<std::int32_t> (k % rows);
+    const std::int32_t column = static_cast<std::int32_t> (k / rows);
+    out.add (q,
+             values.size() >= 4 ? &intensity : nullptr,
+             width == 7 ? &rgb : nullptr,
+             &row,
+             &column);
     out.table.scan.push_back (static_cast<std::uint16_t> (index));
   }
   return true;
@@ -222,7 +200,7 @@ void
 loadPTX (const std::string& path, PointTable& table, const PtxOptions& options)
 {
   TextLines lines (path);
-  Collector out;
+  TableBuilder out;
   while (readPtxScan (lines, options, out)) {
   }
   if (out.table.stations.empty())
@@ -234,7 +212,7 @@ void
 loadPTS (const std::string& path, PointTable& table)
 {
   TextLines lines (path);
-  Collector out;
+  TableBuilder out;
   std::vector<std::string_view> values;
   std::string_view line;
   std::size_t width = 0;
