@@ -56,6 +56,8 @@ E57PointConverter::E57PointConverter (const E57ScanInfo& scan,
       intensity_minimum_ = f.value_minimum;
       intensity_range_ = f.value_maximum - f.value_minimum;
     }
+    if (!std::isfinite (intensity_range_) || !std::isfinite (intensity_minimum_))
+      intensity_range_ = 0.0; // no usable range: kept as written
   }
   for (int c = 0; c < 3; ++c) {
     colour_minimum_[c] = 0.0;
@@ -71,8 +73,10 @@ E57PointConverter::E57PointConverter (const E57ScanInfo& scan,
       colour_minimum_[c] = f.value_minimum;
       colour_range_[c] = f.value_maximum - f.value_minimum;
     }
-    if (!std::isfinite (colour_range_[c]))
+    if (!std::isfinite (colour_range_[c]) || !std::isfinite (colour_minimum_[c])) {
+      colour_minimum_[c] = 0.0;
       colour_range_[c] = 255.0;
+    }
   }
 }
 

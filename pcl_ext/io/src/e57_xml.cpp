@@ -234,6 +234,8 @@ public:
       if (t)
         s.translation = Eigen::Vector3d (
             number (t, "x", 0.0), number (t, "y", 0.0), number (t, "z", 0.0));
+      if (!s.translation.allFinite())
+        fail (where + ": the pose translation is not finite");
     }
     if (const XmlNode* limits = node.child ("intensityLimits")) {
       s.has_intensity_limits = true;
