@@ -121,3 +121,52 @@ TEST (PointTable, TypedCloudsKeepTheMillimetreAndTheirOwnFields)
   ASSERT_EQ (intensity.size(), 2u);
   EXPECT_EQ (intensity[0].intensity, 0.f);
 }
+
+TEST (PointTable, ScanGridAndStationFieldsAndTheSensorOfAPoint)
+{
+  PointTable t;
+  t.xyz = {Eigen::Vector3d (1, 2, 3), Eigen::Vector3d (4, 5, 6)};
+  t.row = {7, -1};
+  t.column = {-2, 2147483647};
+  t.scan = {1, 0};
+  pcl_ext::io::ScanStation a, b;
+  a.position = Eigen::Vector3d (10, 20, 30);
+  b.position = Eigen::Vector3d (-1, -2, -3);
+  b.points_in_scanner_frame = true;
+  t.stations = {a, b};
+  pcl::PCLPointCloud2 blob;
+  pcl_ext::io::toPCLPointCloud2 (t, Eigen::Vector3d::Zero(), blob);
+  ASSERT_EQ (blob.fields.size(), 6u);
+  EXPECT_EQ (blob.fields[3].name, "row");
+  EXPECT_EQ (blob.fields[3].datatype, pcl::PCLPointField::INT32);
+  EXPECT_EQ (blob.fields[4].name, "column");
+  EXPECT_EQ (blob.fields[4].offset, 16u);
+  EXPECT_EQ (blob.fields[5].name, "scan");
+  EXPECT_EQ (blob.fields[5].datatype, pcl::PCLPointField::UINT16);
+  EXPECT_EQ (blob.fields[5].offset, 20u);
+  // 22 bytes of fields padded to 24.
+  EXPECT_EQ (blob.point_step, 24u);
+  ASSERT_EQ (blob.data.size(), 48u);
+  std::int32_t row, column;
+  std::uint16_t scan;
+  std::memcpy (&row, blob.data.data() + 24 + 12, 4);
+  std::memcpy (&column, blob.data.data() + 24 + 16, 4);
+  std::memcpy (&scan, blob.data.data() + 20, 2);
+  EXPECT_EQ (row, -1);
+  EXPECT_EQ (column, 2147483647);
+  EXPECT_EQ (scan, 1u);
+
+  // Point 1 comes from station 0 (file frame); point 0 from station 1, whose points
+  // stayed in the scanner frame: its sensor is at their origin.
+  Eigen::Vector3d sensor (9, 9, 9);
+  ASSERT_TRUE (pcl_ext::io::sensorPosition (t, 1, sensor));
+  EXPECT_EQ (sensor, Eigen::Vector3d (10, 20, 30));
+  ASSERT_TRUE (pcl_ext::io::sensorPosition (t, 0, sensor));
+  EXPECT_EQ (sensor, Eigen::Vector3d::Zero());
+  EXPECT_FALSE (pcl_ext::io::sensorPosition (t, 2, sensor));
+  t.scan[0] = 2;
+  EXPECT_FALSE (pcl_ext::io::sensorPosition (t, 0, sensor));
+  t.scan.clear();
+  EXPECT_FALSE (pcl_ext::io::sensorPosition (t, 0, sensor));
+  EXPECT_EQ (sensor, Eigen::Vector3d::Zero());
+}

@@ -27,6 +27,18 @@ computeLocalOrigin (const PointTable& table, double grid)
   return origin;
 }
 
+bool
+sensorPosition (const PointTable& table, std::size_t index, Eigen::Vector3d& position)
+{
+  if (index >= table.size() || table.scan.size() != table.size() ||
+      table.scan[index] >= table.stations.size())
+    return false;
+  const ScanStation& station = table.stations[table.scan[index]];
+  position =
+      station.points_in_scanner_frame ? Eigen::Vector3d::Zero() : station.position;
+  return true;
+}
+
 void
 toPCLPointCloud2 (const PointTable& table,
                   const Eigen::Vector3d& origin,
@@ -37,15 +49,20 @@ toPCLPointCloud2 (const PointTable& table,
   const bool has_intensity = table.intensity.size() == n && n > 0;
   const bool has_rgb = table.rgb.size() == n && n > 0;
   const bool has_label = table.label.size() == n && n > 0;
+  const bool has_row = table.row.size() == n && n > 0;
+  const bool has_column = table.column.size() == n && n > 0;
+  const bool has_scan = table.scan.size() == n && n > 0;
   std::uint32_t offset = 0;
-  const auto add = [&cloud, &offset] (const std::string& name, std::uint8_t type) {
+  const auto add = [&cloud, &offset] (const std::string& name,
+                                      std::uint8_t type,
+                                      std::uint32_t size = 4) {
     pcl::PCLPointField f;
     f.name = name;
     f.offset = offset;
     f.datatype = type;
     f.count = 1;
     cloud.fields.push_back (f);
-    offset += 4;
+    offset += size;
     return f.offset;
   };
   add ("x", pcl::PCLPointField::FLOAT32);
@@ -58,7 +75,13 @@ toPCLPointCloud2 (const PointTable& table,
       has_rgb ? add ("rgb", pcl::PCLPointField::FLOAT32) : 0;
   const std::uint32_t label_offset =
       has_label ? add ("label", pcl::PCLPointField::UINT32) : 0;
-  cloud.point_step = offset;
+  const std::uint32_t row_offset = has_row ? add ("row", pcl::PCLPointField::INT32) : 0;
+  const std::uint32_t column_offset =
+      has_column ? add ("column", pcl::PCLPointField::INT32) : 0;
+  const std::uint32_t scan_offset =
+      has_scan ? add ("scan", pcl::PCLPointField::UINT16, 2) : 0;
+  // Keep every point 4-byte aligned (a trailing uint16 leaves 2 bytes of padding).
+  cloud.point_step = (offset + 3u) & ~3u;
   cloud.width = static_cast<std::uint32_t> (n);
   cloud.height = 1;
   cloud.row_step = cloud.point_step * cloud.width;
@@ -81,6 +104,12 @@ toPCLPointCloud2 (const PointTable& table,
     }
     if (has_label)
       std::memcpy (point + label_offset, &table.label[i], 4);
+    if (has_row)
+      std::memcpy (point + row_offset, &table.row[i], 4);
+    if (has_column)
+      std::memcpy (point + column_offset, &table.column[i], 4);
+    if (has_scan)
+      std::memcpy (point + scan_offset, &table.scan[i], 2);
   }
 }
 } // namespace io

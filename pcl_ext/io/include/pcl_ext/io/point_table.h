@@ -9,26 +9,58 @@
 #include <pcl/point_cloud.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace pcl_ext {
 namespace io {
+/** \brief One scanner set-up (station) of a terrestrial scan file: where the scanner
+ * stood and how it was turned.
+ *
+ * The pose maps the scanner's own frame into the file's frame: p_file = orientation *
+ * p_scanner + position (ASTM E2807 section 8.4.3, the data3D pose; the PTX header's
+ * transform). So \a position is the sensor's origin in the file's frame. When a reader
+ * was asked to keep the points in the scanner frame, \a points_in_scanner_frame is
+ * true: that station's points are then in the scanner's own frame, where the sensor is
+ * at the origin, and applying the pose above brings them into the file's frame.
+ */
+struct ScanStation {
+  std::string name; ///< the scan's name, may be empty
+  std::string guid; ///< the scan's identifier, may be empty
+  Eigen::Vector3d position = Eigen::Vector3d::Zero(); ///< sensor origin, file frame
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity(); ///< scanner to file
+  std::int32_t rows = 0;    ///< grid rows of a structured scan, 0 when unknown
+  std::int32_t columns = 0; ///< grid columns of a structured scan, 0 when unknown
+  bool points_in_scanner_frame = false; ///< this station's points were not moved
+};
+
 /** \brief Points as a reader found them: coordinates in double, optional attributes.
  *
  * Georeferenced coordinates (e.g. RD New x = 119,300 m, UTM y = 5,400,000 m) do not fit
  * a float to the millimetre, so readers keep doubles and the conversion to a PCL cloud
  * subtracts a local origin (see computeLocalOrigin). Each attribute vector is either
  * empty (the file has no such column) or has one entry per point.
+ *
+ * Terrestrial scan readers (E57, PTX) also fill \a stations, one per scan, and \a scan
+ * with each point's station index, so that the scanner position of every point stays
+ * known: sensorPosition (table, i) returns it (for normal orientation or incidence
+ * angles). \a row and \a column give a point's place in its scan's grid when the file
+ * has one (-1 for a point without one in a table mixing gridded and other scans).
  */
 struct PointTable {
   std::vector<Eigen::Vector3d> xyz;             ///< coordinates, as in the file
   std::vector<float> intensity;                 ///< intensity, as in the file
   std::vector<std::array<std::uint8_t, 3>> rgb; ///< colour, 0..255 per channel
   std::vector<std::uint32_t> label;             ///< label / class id
+  std::vector<std::int32_t> row;                ///< grid row of a structured scan
+  std::vector<std::int32_t> column;             ///< grid column of a structured scan
+  std::vector<std::uint16_t> scan;              ///< index into \a stations
+  std::vector<ScanStation> stations;            ///< the scans the points come from
 
   std::size_t
   size () const
@@ -58,9 +90,21 @@ constexpr double kFloatSafeCoordinate = 8192.0;
 Eigen::Vector3d
 computeLocalOrigin (const PointTable& table, double grid = 100.0);
 
+/** \brief The sensor position of point \a index, in the frame its coordinates are in.
+ *
+ * stations[scan[index]].position, or the origin when that station's points were kept in
+ * the scanner frame. \return false (and \a position untouched) when the table has no
+ * station for the point (no \a scan column, \a index out of range, or an index past
+ * \a stations).
+ */
+bool
+sensorPosition (const PointTable& table, std::size_t index, Eigen::Vector3d& position);
+
 /** \brief Convert to a PCL blob with fields x y z (float32, coordinates minus \a
  * origin) and, when present, intensity (float32), rgb (float32-packed as
- * pcl::PointXYZRGB) and label (uint32); width = number of points, height = 1, dense.
+ * pcl::PointXYZRGB), label (uint32), row and column (int32) and scan (uint16, the
+ * station index; the station table itself stays in the PointTable); width = number of
+ * points, height = 1, dense.
  */
 void
 toPCLPointCloud2 (const PointTable& table,
