@@ -13,25 +13,6 @@ namespace las {
 namespace {
 using F = pcl::PCLPointField;
 
-std::size_t
-typeSize (Type type)
-{
-  switch (type) {
-  case F::INT8:
-  case F::UINT8:
-    return 1;
-  case F::INT16:
-  case F::UINT16:
-    return 2;
-  case F::INT32:
-  case F::UINT32:
-  case F::FLOAT32:
-    return 4;
-  default:
-    return 8;
-  }
-}
-
 /** The wave packet dimensions (formats 4, 5, 9, 10) starting at byte \a at. */
 void
 addWavePacket (std::vector<Dimension>& d, std::size_t at)
@@ -93,6 +74,25 @@ scaledColumn (const DecodeStep& s,
   });
 }
 } // namespace
+
+std::size_t
+typeSize (Type type)
+{
+  switch (type) {
+  case F::INT8:
+  case F::UINT8:
+    return 1;
+  case F::INT16:
+  case F::UINT16:
+    return 2;
+  case F::INT32:
+  case F::UINT32:
+  case F::FLOAT32:
+    return 4;
+  default:
+    return 8;
+  }
+}
 
 std::vector<Dimension>
 standardDimensions (int format)

@@ -42,6 +42,10 @@ standardDimensions (int format);
 bool
 hasColour (int format, std::size_t* red_offset = nullptr);
 
+/** Bytes of a value of PCL type \a type. */
+std::size_t
+typeSize (Type type);
+
 /** The PCL type of one element of extra bytes of base type \a base (0-10). */
 Type
 extraBytesFieldType (int base);

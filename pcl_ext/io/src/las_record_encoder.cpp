@@ -6,6 +6,7 @@
 #include "las_bytes.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <limits>
 
@@ -198,9 +199,8 @@ RecordEncoder::init (const pcl::PCLPointCloud2& cloud,
       return false;
     }
   }
-  use_integers_ = like != nullptr;
-  for (const auto& f : integers_)
-    use_integers_ = use_integers_ && f.type == F::INT32;
+  for (int a = 0; a < 3; ++a)
+    use_integers_[a] = like != nullptr && integers_[a].type == F::INT32;
   scale_ = scale;
   shift_ = offset - origin;
   origin_minus_offset_ = origin - offset;
@@ -243,35 +243,47 @@ RecordEncoder::init (const pcl::PCLPointCloud2& cloud,
   std::size_t at = lasPointRecordLength (format);
   std::vector<int> reused;
   CloudField undescribed;
+  // The fields that become extra bytes: those \a like describes first, in its order
+  // (so that its record is kept when nothing changed), then the others in cloud order.
+  std::vector<std::pair<std::string, int>> extra; // field name, index in like or -1
+  for (std::size_t j = 0; j < like_names.size(); ++j) {
+    const CloudField from = findField (cloud, like_names[j]);
+    if (from.type != 0 &&
+        std::find (reserved.begin(), reserved.end(), like_names[j]) == reserved.end() &&
+        readerFieldType (like->extra_bytes[j]) ==
+            std::make_pair (from.type, from.count))
+      extra.emplace_back (like_names[j], static_cast<int> (j));
+  }
   for (const auto& field : cloud.fields) {
-    if (std::find (reserved.begin(), reserved.end(), field.name) != reserved.end())
+    const bool taken =
+        std::find (reserved.begin(), reserved.end(), field.name) != reserved.end() ||
+        std::any_of (extra.begin(), extra.end(), [&field] (const auto& e) {
+          return e.first == field.name;
+        });
+    if (taken)
       continue;
-    const CloudField from = findField (cloud, field.name);
-    if (field.name == "extra_bytes" && from.type == F::UINT8) {
-      undescribed = from;
-      continue;
-    }
+    if (field.name == "extra_bytes" && field.datatype == F::UINT8)
+      undescribed = findField (cloud, field.name);
+    else
+      extra.emplace_back (field.name, -1);
+  }
+  for (const auto& [name, index] : extra) {
+    const CloudField from = findField (cloud, name);
     LasExtraBytesDescriptor d;
-    const auto known = std::find (like_names.begin(), like_names.end(), field.name);
-    const int index = static_cast<int> (known - like_names.begin());
-    if (known != like_names.end() && readerFieldType (like->extra_bytes[index]) ==
-                                         std::make_pair (from.type, from.count)) {
+    if (index >= 0)
       d = like->extra_bytes[index];
-      reused.push_back (index);
-    }
     else {
       bool ok = false;
       d.data_type = extraBytesType (from.type, from.count, ok);
       if (!ok) {
-        error = "field " + field.name + " (type " + std::to_string (from.type) +
-                ", count " + std::to_string (from.count) +
-                ") cannot be stored as LAS extra bytes";
+        error = "field " + name + " (type " + std::to_string (from.type) + ", count " +
+                std::to_string (from.count) + ") cannot be stored as LAS extra bytes";
         return false;
       }
       d.options = d.data_type == 0 ? static_cast<std::uint8_t> (from.count) : 0;
-      d.name = field.name.substr (0, 32);
-      reused.push_back (-1);
+      d.name = name.substr (0, 32);
     }
+    reused.push_back (index);
     const int base = d.baseType();
     const std::size_t elements = base == 0 ? d.size() : d.elements();
     const std::size_t element_size = base == 0 ? 1 : d.elementSize();
@@ -317,7 +329,7 @@ RecordEncoder::encode (const std::uint8_t* point,
   std::fill_n (record, record_length_, std::uint8_t (0));
   for (int a = 0; a < 3; ++a) {
     const double v = loadDouble (point + coordinates_[a].offset, coordinates_[a].type);
-    if (use_integers_) {
+    if (use_integers_[a]) {
       const std::int32_t i = get<std::int32_t> (point + integers_[a].offset);
       if (static_cast<float> (static_cast<double> (i) * scale_[a] + shift_[a]) ==
           static_cast<float> (v)) {
@@ -349,6 +361,8 @@ RecordEncoder::encode (const std::uint8_t* point,
     }
     else if (s.from.type == 0)
       storeDouble (to, s.storage, s.fallback);
+    else if (!s.scaled && s.from.type == s.storage) // as it is (NaN payloads too)
+      std::memcpy (to, point + s.from.offset, typeSize (s.storage));
     else if (s.scaled)
       storeDouble (to,
                    s.storage,

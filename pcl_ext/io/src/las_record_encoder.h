@@ -88,7 +88,8 @@ private:
   std::array<CloudField, 3> coordinates_, integers_;
   CloudField red_, green_, blue_, rgb_;
   std::size_t red_at_ = 0;
-  bool colour_ = false, use_integers_ = false, keeps_like_ = false;
+  std::array<bool, 3> use_integers_{};
+  bool colour_ = false, keeps_like_ = false;
   Eigen::Vector3d scale_, shift_, origin_minus_offset_;
   std::size_t record_length_ = 0;
   std::vector<LasExtraBytesDescriptor> descriptors_;
