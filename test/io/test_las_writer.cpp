@@ -411,11 +411,17 @@ TEST (LasWriter, Refusals)
   xyz[1].x = std::nanf ("");
   pcl::toPCLPointCloud2 (xyz, blob);
   EXPECT_FALSE (pcl_ext::io::saveLas (path, blob, Eigen::Vector3d::Zero()));
+  xyz[1].x = 0.0f;
+  pcl::toPCLPointCloud2 (xyz, blob);
+  EXPECT_FALSE (
+      pcl_ext::io::saveLas (pathOf ("no_folder/a.las"), blob, Eigen::Vector3d::Zero()));
+  pcl::PCLPointCloud2 outside = blob; // a field past the end of the point
+  outside.fields.push_back (
+      {"far", outside.point_step - 2, pcl::PCLPointField::UINT32, 1});
+  EXPECT_FALSE (pcl_ext::io::saveLas (path, outside, Eigen::Vector3d::Zero()));
   removeField (blob, "x");
   EXPECT_FALSE (pcl_ext::io::saveLas (path, blob, Eigen::Vector3d::Zero()));
   EXPECT_EQ (readAll (path), "previous");
-  EXPECT_FALSE (
-      pcl_ext::io::saveLas (pathOf ("no_folder/a.las"), blob, Eigen::Vector3d::Zero()));
   const auto names = listFolder (folder());
   for (const auto& n : names)
     EXPECT_EQ (n.find (".tmp"), std::string::npos) << n;

@@ -9,6 +9,8 @@
 #include "las_file.h"
 #include "las_point_layout.h"
 
+#include <pcl/console/print.h>
+
 #include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
@@ -266,6 +268,14 @@ LasReader::open (const std::string& path)
 void
 LasReader::setOrigin (const Eigen::Vector3d& origin)
 {
+  if (!origin.allFinite()) {
+    PCL_ERROR ("[pcl_ext::io::LasReader::setOrigin] the origin must be finite; kept "
+               "(%g, %g, %g).\n",
+               info_.origin.x(),
+               info_.origin.y(),
+               info_.origin.z());
+    return;
+  }
   info_.origin = origin;
   if (!decoding_)
     return;

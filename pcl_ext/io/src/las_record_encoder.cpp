@@ -190,6 +190,14 @@ RecordEncoder::init (const pcl::PCLPointCloud2& cloud,
                      const LasFileInfo* like,
                      std::string& error)
 {
+  for (const auto& f : cloud.fields)
+    if (f.name != "_" &&
+        f.offset + typeSize (f.datatype) * std::max<std::uint32_t> (f.count, 1) >
+            cloud.point_step) {
+      error = "field " + f.name + " lies outside the " +
+              std::to_string (cloud.point_step) + "-byte point";
+      return false;
+    }
   std::vector<std::string> reserved = {"x", "y", "z", "las_x", "las_y", "las_z", "_"};
   for (int a = 0; a < 3; ++a) {
     coordinates_[a] = findField (cloud, reserved[a]);

@@ -156,8 +156,9 @@ struct LasFileInfo {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
 };
 
-/** \brief Size of the standard header of LAS 1.\a minor: 227 bytes (1.0-1.2), 235
- * (1.3), 375 (1.4); 0 for any other version. */
+/** \brief Size of the standard header of LAS 1.\a minor (LAS 1.4 R15, section 2.4 and
+ * the earlier versions' header tables): 227 bytes (1.0-1.2), 235 (1.3), 375 (1.4); 0
+ * for any other version. */
 std::size_t
 lasHeaderSize (int major, int minor);
 
@@ -189,13 +190,13 @@ parseLasHeader (const std::uint8_t* data,
 std::vector<std::uint8_t>
 encodeLasHeader (const LasHeader& header);
 
-/** \brief Whether \a vlr is the extra-bytes record (user id "LASF_Spec", record id 4).
- */
+/** \brief Whether \a vlr is the extra-bytes record (LAS 1.4 R15, section 2.6.3: user
+ * id "LASF_Spec", record id 4). */
 bool
 isExtraBytesRecord (const LasVariableLengthRecord& vlr);
 
 /** \brief Whether \a vlr is the LASzip record (user id "laszip encoded", record id
- * 22204). */
+ * 22204: the LASzip format's, not the LAS specification's). */
 bool
 isLaszipRecord (const LasVariableLengthRecord& vlr);
 
@@ -207,8 +208,8 @@ isLaszipRecord (const LasVariableLengthRecord& vlr);
 std::vector<LasExtraBytesDescriptor>
 parseExtraBytes (const LasVariableLengthRecord& vlr, const std::string& path);
 
-/** \brief The 192-byte form of each descriptor, in order (the payload of the
- * extra-bytes record). */
+/** \brief The 192-byte form of each descriptor (LAS 1.4 R15, section 2.6.3), in order:
+ * the payload of the extra-bytes record. */
 std::vector<std::uint8_t>
 encodeExtraBytes (const std::vector<LasExtraBytesDescriptor>& descriptors);
 } // namespace io

@@ -129,7 +129,9 @@ public:
   }
 
   /** \brief Use \a origin for the chunks read from now on (e.g. one origin for several
-   * tiles). Any finite value; coordinates far from it lose float precision. */
+   * tiles). Default: see the class comment. Any finite value (coordinates far from it
+   * lose float precision); a value that is not finite is refused (PCL_ERROR, the origin
+   * is kept). */
   void
   setOrigin (const Eigen::Vector3d& origin);
 
