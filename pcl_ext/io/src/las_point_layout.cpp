@@ -397,7 +397,7 @@ decodeRecords (const PointLayout& layout,
 {
   // One field at a time over a few records: the records and their points stay in the
   // first-level cache while every field is decoded.
-  constexpr std::size_t kSmallBlock = 512;
+  constexpr std::size_t kSmallBlock = 128;
   for (std::size_t first = 0; first < n; first += kSmallBlock)
     decodeSmallBlock (layout,
                       transform,
