@@ -464,3 +464,24 @@ TEST (LasReader, ReadWithoutAFile)
   pcl::PCLPointCloud2 c;
   EXPECT_THROW (reader.read (1, c), pcl_ext::io::ReadError);
 }
+
+TEST (LasReader, FileCutWhileReading)
+{
+  const auto f = randomFile (1, 20000);
+  const std::string path = write ("cut.las", f);
+  LasReader reader;
+  reader.open (path);
+  pcl::PCLPointCloud2 chunk;
+  ASSERT_EQ (reader.read (100, chunk), 100u);
+  ::truncate (path.c_str(), 375 + 10000 * 28); // another program cuts the file
+  expectReadError (
+      [&] {
+        while (reader.read (1000, chunk) > 0) {
+        }
+      },
+      path,
+      0,
+      "truncated point data");
+  EXPECT_EQ (chunk.width, 0u); // left empty
+  EXPECT_TRUE (chunk.data.empty());
+}

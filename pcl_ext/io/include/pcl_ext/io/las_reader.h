@@ -150,9 +150,10 @@ public:
   }
 
   /** \brief Read up to \a max_points further points into \a chunk (replacing its
-   * content; fields as in the class comment). \return the number read, 0 at the end
-   * \throw ReadError naming the file when the point data is truncated or corrupt
-   * (\a chunk is then untouched) or no file is open */
+   * content, reusing its memory; fields as in the class comment; at the end, no point
+   * but the fields). \return the number read, 0 at the end \throw ReadError naming
+   * the file when the point data is truncated or corrupt (\a chunk is then left empty
+   * and the reader should not be read further) or no file is open */
   std::size_t
   read (std::size_t max_points, pcl::PCLPointCloud2& chunk);
 
