@@ -194,29 +194,5 @@ LazIntegerDecompressor::reset()
   k_ = 0;
 }
 
-std::int64_t
-LazIntegerDecompressor::readCorrector (LazArithmeticDecoder& dec, std::uint32_t context)
-{
-  if (context >= m_bits_.size())
-    throw std::invalid_argument ("LazIntegerDecompressor: context out of range");
-  k_ = dec.decodeSymbol (m_bits_[context]);
-  if (k_ == 0) // c is 0 or 1
-    return dec.decodeBit (m_corrector0_);
-  if (k_ >= 32)
-    return corr_min_;
-  std::int64_t c;
-  if (k_ <= bits_high_)
-    c = dec.decodeSymbol (m_corrector_[k_ - 1]);
-  else {
-    const unsigned low_bits = k_ - bits_high_;
-    const std::uint32_t high = dec.decodeSymbol (m_corrector_[k_ - 1]);
-    c = (static_cast<std::int64_t> (high) << low_bits) | dec.readBits (low_bits);
-  }
-  // c is in [0, 2^k): the upper half stands for [2^(k-1) + 1, 2^k], the lower half for
-  // [-(2^k - 1), -2^(k-1)].
-  if (c >= (std::int64_t (1) << (k_ - 1)))
-    return c + 1;
-  return c - ((std::int64_t (1) << k_) - 1);
-}
 } // namespace io
 } // namespace pcl_ext

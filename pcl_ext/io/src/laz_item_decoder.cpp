@@ -15,64 +15,6 @@ constexpr std::int32_t multi_max = 500;
 constexpr std::int32_t multi_minus = -10;
 } // namespace
 
-void
-StreamingMedian5::add (std::int32_t v)
-{
-  std::int32_t* x = values_;
-  if (high_) {
-    if (v < x[2]) {
-      x[4] = x[3];
-      x[3] = x[2];
-      if (v < x[0]) {
-        x[2] = x[1];
-        x[1] = x[0];
-        x[0] = v;
-      }
-      else if (v < x[1]) {
-        x[2] = x[1];
-        x[1] = v;
-      }
-      else
-        x[2] = v;
-    }
-    else {
-      if (v < x[3]) {
-        x[4] = x[3];
-        x[3] = v;
-      }
-      else
-        x[4] = v;
-      high_ = false;
-    }
-  }
-  else {
-    if (x[2] < v) {
-      x[0] = x[1];
-      x[1] = x[2];
-      if (x[4] < v) {
-        x[2] = x[3];
-        x[3] = x[4];
-        x[4] = v;
-      }
-      else if (x[3] < v) {
-        x[2] = x[3];
-        x[3] = v;
-      }
-      else
-        x[2] = v;
-    }
-    else {
-      if (x[1] < v) {
-        x[0] = x[1];
-        x[1] = v;
-      }
-      else
-        x[0] = v;
-      high_ = true;
-    }
-  }
-}
-
 GpsTimeDecoder::GpsTimeDecoder (bool layered)
 : layered_ (layered)
 , m_multi_ (layered ? multi_max - multi_minus + 5 : multi_max - multi_minus + 6)

@@ -283,7 +283,27 @@ public:
 
 private:
   std::int64_t
-  readCorrector (LazArithmeticDecoder& dec, std::uint32_t context);
+  readCorrector (LazArithmeticDecoder& dec, std::uint32_t context)
+  {
+    k_ = dec.decodeSymbol (m_bits_[context < m_bits_.size() ? context : 0]);
+    if (k_ == 0) // c is 0 or 1
+      return dec.decodeBit (m_corrector0_);
+    if (k_ >= 32)
+      return corr_min_;
+    std::int64_t c;
+    if (k_ <= bits_high_)
+      c = dec.decodeSymbol (m_corrector_[k_ - 1]);
+    else {
+      const unsigned low_bits = k_ - bits_high_;
+      const std::uint32_t high = dec.decodeSymbol (m_corrector_[k_ - 1]);
+      c = (static_cast<std::int64_t> (high) << low_bits) | dec.readBits (low_bits);
+    }
+    // c is in [0, 2^k): the upper half stands for [2^(k-1) + 1, 2^k], the lower half
+    // for [-(2^k - 1), -2^(k-1)].
+    if (c >= (std::int64_t (1) << (k_ - 1)))
+      return c + 1;
+    return c - ((std::int64_t (1) << k_) - 1);
+  }
 
   std::uint32_t bits_high_;
   std::uint32_t corr_bits_;
