@@ -181,16 +181,16 @@ LazIntegerDecompressor::LazIntegerDecompressor (std::uint32_t bits,
   m_corrector_.reserve (corr_bits_);
   for (std::uint32_t k = 1; k <= corr_bits_; ++k)
     m_corrector_.emplace_back (1u << (k <= bits_high_ ? k : bits_high_));
+  bits_stale_.assign (m_bits_.size(), false);
+  corrector_stale_.assign (m_corrector_.size(), false);
 }
 
 void
 LazIntegerDecompressor::reset()
 {
-  for (auto& m : m_bits_)
-    m.reset();
+  bits_stale_.assign (m_bits_.size(), true);
   m_corrector0_.reset();
-  for (auto& m : m_corrector_)
-    m.reset();
+  corrector_stale_.assign (m_corrector_.size(), true);
   k_ = 0;
 }
 

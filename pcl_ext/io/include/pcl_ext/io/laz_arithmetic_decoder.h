@@ -285,17 +285,19 @@ private:
   std::int64_t
   readCorrector (LazArithmeticDecoder& dec, std::uint32_t context)
   {
-    k_ = dec.decodeSymbol (m_bits_[context < m_bits_.size() ? context : 0]);
+    k_ = dec.decodeSymbol (
+        fresh (m_bits_, bits_stale_, context < m_bits_.size() ? context : 0));
     if (k_ == 0) // c is 0 or 1
       return dec.decodeBit (m_corrector0_);
     if (k_ >= 32)
       return corr_min_;
     std::int64_t c;
+    LazSymbolModel& m = fresh (m_corrector_, corrector_stale_, k_ - 1);
     if (k_ <= bits_high_)
-      c = dec.decodeSymbol (m_corrector_[k_ - 1]);
+      c = dec.decodeSymbol (m);
     else {
       const unsigned low_bits = k_ - bits_high_;
-      const std::uint32_t high = dec.decodeSymbol (m_corrector_[k_ - 1]);
+      const std::uint32_t high = dec.decodeSymbol (m);
       c = (static_cast<std::int64_t> (high) << low_bits) | dec.readBits (low_bits);
     }
     // c is in [0, 2^k): the upper half stands for [2^(k-1) + 1, 2^k], the lower half
@@ -303,6 +305,18 @@ private:
     if (c >= (std::int64_t (1) << (k_ - 1)))
       return c + 1;
     return c - ((std::int64_t (1) << k_) - 1);
+  }
+
+  /** The model \a i, reset first if reset() was called since its last use: a chunk
+   * resets a few hundred models of which it often uses a few. */
+  static LazSymbolModel&
+  fresh (std::vector<LazSymbolModel>& models, std::vector<bool>& stale, std::size_t i)
+  {
+    if (stale[i]) {
+      models[i].reset();
+      stale[i] = false;
+    }
+    return models[i];
   }
 
   std::uint32_t bits_high_;
@@ -313,6 +327,7 @@ private:
   std::vector<LazSymbolModel> m_bits_;
   LazBitModel m_corrector0_;
   std::vector<LazSymbolModel> m_corrector_; // index k - 1 for k = 1 ... corr_bits
+  std::vector<bool> bits_stale_, corrector_stale_;
 };
 } // namespace io
 } // namespace pcl_ext
