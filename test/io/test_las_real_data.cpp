@@ -3,6 +3,8 @@
  * data is absent): known values, twin files holding the same points, refusals, and
  * LAS -> PCLPointCloud2 -> LAS round trips.
  */
+#include "las_samples.h"
+
 #include <pcl_ext/io/las_reader.h>
 #include <pcl_ext/io/las_writer.h>
 
@@ -13,29 +15,10 @@
 #include "temp_folder.h"
 #include "test_helpers.h"
 
-#include <sys/stat.h>
-
 using las_test::value;
 using pcl_ext::io::LasFileInfo;
 
 namespace {
-std::string
-sample (const std::string& name)
-{
-  return std::string (PCL_EXT_SHARED_DATA_DIR) + "/las_samples/" + name;
-}
-
-bool
-exists (const std::string& path)
-{
-  struct stat st;
-  return ::stat (path.c_str(), &st) == 0;
-}
-
-#define REQUIRE_SAMPLE(name)                                                           \
-  if (!exists (sample (name)))                                                         \
-  GTEST_SKIP() << "LAS sample not found: " << sample (name)
-
 struct Loaded {
   pcl::PCLPointCloud2 cloud;
   LasFileInfo info;
@@ -72,8 +55,8 @@ records (const std::string& path, const LasFileInfo& info)
 
 TEST (LasRealData, SimpleLasKnownValues)
 {
-  REQUIRE_SAMPLE ("simple.las");
-  const Loaded l = load (sample ("simple.las"));
+  REQUIRE_LAS_SAMPLE ("simple.las");
+  const Loaded l = load (las_samples::path ("simple.las"));
   const auto& h = l.info.header;
   EXPECT_EQ (h.version_minor, 2);
   EXPECT_EQ (h.pointFormat(), 3);
@@ -111,18 +94,18 @@ TEST (LasRealData, SimpleLasKnownValues)
 
 TEST (LasRealData, TwinFilesHoldTheSamePoints)
 {
-  REQUIRE_SAMPLE ("1.2-with-color.las");
-  REQUIRE_SAMPLE ("simple.las");
-  const Loaded a = load (sample ("simple.las"));
-  const Loaded b = load (sample ("1.2-with-color.las"));
+  REQUIRE_LAS_SAMPLE ("1.2-with-color.las");
+  REQUIRE_LAS_SAMPLE ("simple.las");
+  const Loaded a = load (las_samples::path ("simple.las"));
+  const Loaded b = load (las_samples::path ("1.2-with-color.las"));
   EXPECT_TRUE (a.cloud.data == b.cloud.data);
   EXPECT_EQ (b.info.pre_point_bytes.size(),
              2u); // points at 229 after a 227-byte header
 
-  REQUIRE_SAMPLE ("autzen_trim.las");
-  REQUIRE_SAMPLE ("autzen_trim_7.las");
-  const Loaded f3 = load (sample ("autzen_trim.las"));
-  const Loaded f7 = load (sample ("autzen_trim_7.las"));
+  REQUIRE_LAS_SAMPLE ("autzen_trim.las");
+  REQUIRE_LAS_SAMPLE ("autzen_trim_7.las");
+  const Loaded f3 = load (las_samples::path ("autzen_trim.las"));
+  const Loaded f7 = load (las_samples::path ("autzen_trim_7.las"));
   ASSERT_EQ (f3.cloud.width, 110000u);
   ASSERT_EQ (f7.cloud.width, 110000u);
   EXPECT_EQ (f3.info.header.pointFormat(), 3);
@@ -145,8 +128,8 @@ TEST (LasRealData, TwinFilesHoldTheSamePoints)
 
 TEST (LasRealData, ExtraBytesAsTheRecordDescribesThem)
 {
-  REQUIRE_SAMPLE ("extrabytes.las");
-  const Loaded l = load (sample ("extrabytes.las"));
+  REQUIRE_LAS_SAMPLE ("extrabytes.las");
+  const Loaded l = load (las_samples::path ("extrabytes.las"));
   ASSERT_EQ (l.cloud.width, 1065u);
   ASSERT_EQ (l.info.extra_bytes.size(), 5u);
   EXPECT_EQ (las_test::field (l.cloud, "Colors")->count, 3u); // deprecated 3 x ushort
@@ -178,8 +161,8 @@ TEST (LasRealData, ExtraBytesAsTheRecordDescribesThem)
 
 TEST (LasRealData, FineScaleAndEmptyFiles)
 {
-  REQUIRE_SAMPLE ("test1_4.las");
-  const Loaded l = load (sample ("test1_4.las"));
+  REQUIRE_LAS_SAMPLE ("test1_4.las");
+  const Loaded l = load (las_samples::path ("test1_4.las"));
   ASSERT_EQ (l.cloud.width, 1000u);
   EXPECT_EQ (l.info.header.pointFormat(), 6);
   EXPECT_NEAR (coordinate (l, 0, 0), 1694510.3869346841, 1e-6);
@@ -194,8 +177,8 @@ TEST (LasRealData, FineScaleAndEmptyFiles)
   EXPECT_EQ (value<std::uint8_t> (l.cloud, "classification", 0), 2);
   EXPECT_EQ (l.info.vlrs.size(), 2u);
 
-  REQUIRE_SAMPLE ("no-points.las");
-  const Loaded empty = load (sample ("no-points.las"));
+  REQUIRE_LAS_SAMPLE ("no-points.las");
+  const Loaded empty = load (las_samples::path ("no-points.las"));
   EXPECT_EQ (empty.cloud.width, 0u);
   EXPECT_TRUE (empty.cloud.data.empty());
   EXPECT_TRUE (las_test::hasField (empty.cloud, "gps_time"));
@@ -204,11 +187,11 @@ TEST (LasRealData, FineScaleAndEmptyFiles)
 
 TEST (LasRealData, MalformedSamplesAreRefused)
 {
-  REQUIRE_SAMPLE ("garbage_nVariableLength.las");
-  const std::string garbage = sample ("garbage_nVariableLength.las");
+  REQUIRE_LAS_SAMPLE ("garbage_nVariableLength.las");
+  const std::string garbage = las_samples::path ("garbage_nVariableLength.las");
   expectReadError (
       [&] { load (garbage); }, garbage, 0, "is larger than the file holds");
-  const std::string bad_count = sample ("bad_vlr_count.las");
+  const std::string bad_count = las_samples::path ("bad_vlr_count.las");
   expectReadError ([&] { load (bad_count); }, bad_count, 0, "VLR 3 of 3");
 }
 
@@ -223,13 +206,13 @@ TEST (LasRealData, RoundTripKeepsRecordsAndRecords)
                            "extrabytes.las",
                            "no-points.las"}) {
     SCOPED_TRACE (name);
-    if (!exists (sample (name)))
+    if (!las_samples::exists (las_samples::path (name)))
       continue;
-    const Loaded a = load (sample (name));
+    const Loaded a = load (las_samples::path (name));
     const std::string out = dir + "/" + name;
     ASSERT_TRUE (pcl_ext::io::saveLas (out, a.cloud, a.info.origin, &a.info));
     const Loaded b = load (out);
-    EXPECT_TRUE (records (out, b.info) == records (sample (name), a.info));
+    EXPECT_TRUE (records (out, b.info) == records (las_samples::path (name), a.info));
     ASSERT_EQ (b.info.vlrs.size(), a.info.vlrs.size());
     for (std::size_t v = 0; v < a.info.vlrs.size(); ++v) {
       EXPECT_EQ (b.info.vlrs[v].user_id, a.info.vlrs[v].user_id);
@@ -253,20 +236,20 @@ TEST (LasRealData, LazFilesNeedTheDecoder)
                                  std::make_pair ("1.2-with-color.copc.laz", ""),
                                  std::make_pair ("lone-star.copc.laz", "")}) {
     SCOPED_TRACE (laz);
-    if (!exists (sample (laz)))
+    if (!las_samples::exists (las_samples::path (laz)))
       continue;
     Loaded compressed;
     try {
-      pcl_ext::io::loadLas (sample (laz), compressed.cloud, compressed.info);
+      pcl_ext::io::loadLas (las_samples::path (laz), compressed.cloud, compressed.info);
     }
     catch (const pcl_ext::io::ReadError& e) {
       // Until the LASzip decoder is built in, the one clear error.
-      EXPECT_EQ (e.path(), sample (laz));
+      EXPECT_EQ (e.path(), las_samples::path (laz));
       EXPECT_EQ (e.message(), "LAZ decompression is not available in this build");
       continue;
     }
     EXPECT_TRUE (compressed.info.header.isCompressed());
-    if (*las != '\0' && exists (sample (las)))
-      EXPECT_TRUE (compressed.cloud.data == load (sample (las)).cloud.data);
+    if (*las != '\0' && las_samples::exists (las_samples::path (las)))
+      EXPECT_TRUE (compressed.cloud.data == load (las_samples::path (las)).cloud.data);
   }
 }

@@ -4,46 +4,30 @@
  * has the same format and order, as sorted sets of point attributes where it has not
  * (COPC).
  */
+#include "las_samples.h"
+
 #include "laz_test_file.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <sys/stat.h>
 #include <tuple>
 
 namespace {
-std::string
-sample (const std::string& name)
-{
-  return std::string (PCL_EXT_SHARED_DATA_DIR) + "/las_samples/" + name;
-}
-
-bool
-exists (const std::string& path)
-{
-  struct stat st;
-  return ::stat (path.c_str(), &st) == 0;
-}
-
-#define REQUIRE_SAMPLE(name)                                                           \
-  if (!exists (sample (name)))                                                         \
-  GTEST_SKIP() << "LAS samples not found: " << sample (name)
-
 /** Decodes \a laz and expects its records to equal those of \a las, byte for byte. */
 void
 expectSameRecords (const std::string& laz, const std::string& las)
 {
-  const LasTestFile z = readLasTestFile (sample (laz));
-  const LasTestFile s = readLasTestFile (sample (las));
+  const LasTestFile z = readLasTestFile (las_samples::path (laz));
+  const LasTestFile s = readLasTestFile (las_samples::path (las));
   ASSERT_TRUE (z.compressed);
   ASSERT_FALSE (z.laszip_vlr.empty());
   ASSERT_EQ (z.point_format, s.point_format);
   ASSERT_EQ (z.record_length, s.record_length);
   ASSERT_EQ (z.point_count, s.point_count);
   const std::vector<std::uint8_t> expected = lasRecords (s);
-  const std::vector<std::uint8_t> decoded = lazRecords (sample (laz), z);
+  const std::vector<std::uint8_t> decoded = lazRecords (las_samples::path (laz), z);
   ASSERT_EQ (decoded.size(), expected.size());
   for (std::size_t i = 0; i < s.point_count; ++i)
     ASSERT_EQ (0,
@@ -109,36 +93,37 @@ attributes (const LasTestFile& f, const std::vector<std::uint8_t>& records)
 
 TEST (RealDataLaz, SimpleMatchesItsLasTwin)
 {
-  REQUIRE_SAMPLE ("simple.laz");
+  REQUIRE_LAS_SAMPLE ("simple.laz");
   expectSameRecords ("simple.laz", "simple.las");
 }
 
 TEST (RealDataLaz, AutzenTrimMatchesItsLasTwin)
 {
-  REQUIRE_SAMPLE ("autzen_trim.laz");
+  REQUIRE_LAS_SAMPLE ("autzen_trim.laz");
   expectSameRecords ("autzen_trim.laz", "autzen_trim.las");
 }
 
 TEST (RealDataLaz, AutzenTrimDecodesInAnyBlockSize)
 {
-  REQUIRE_SAMPLE ("autzen_trim.laz");
-  const LasTestFile z = readLasTestFile (sample ("autzen_trim.laz"));
+  REQUIRE_LAS_SAMPLE ("autzen_trim.laz");
+  const LasTestFile z = readLasTestFile (las_samples::path ("autzen_trim.laz"));
   // Blocks that straddle the chunks of 50,000 points.
-  EXPECT_EQ (lazRecords (sample ("autzen_trim.laz"), z, 1),
-             lazRecords (sample ("autzen_trim.laz"), z, 49999));
+  EXPECT_EQ (lazRecords (las_samples::path ("autzen_trim.laz"), z, 1),
+             lazRecords (las_samples::path ("autzen_trim.laz"), z, 49999));
 }
 
 TEST (RealDataLaz, LoneStarMatchesReturnCountsAndBounds)
 {
-  REQUIRE_SAMPLE ("lone-star.laz");
-  REQUIRE_SAMPLE ("lone-star.copc.laz");
-  const LasTestFile z = readLasTestFile (sample ("lone-star.laz"));
+  REQUIRE_LAS_SAMPLE ("lone-star.laz");
+  REQUIRE_LAS_SAMPLE ("lone-star.copc.laz");
+  const LasTestFile z = readLasTestFile (las_samples::path ("lone-star.laz"));
   // lone-star.laz states its bounds rounded to a few millimetres; the COPC copy of the
   // same points states them exactly.
-  const LasTestFile c = readLasTestFile (sample ("lone-star.copc.laz"));
+  const LasTestFile c = readLasTestFile (las_samples::path ("lone-star.copc.laz"));
   ASSERT_EQ (z.point_format, 1);
   ASSERT_EQ (z.point_count, 518862u);
-  const std::vector<std::uint8_t> records = lazRecords (sample ("lone-star.laz"), z);
+  const std::vector<std::uint8_t> records =
+      lazRecords (las_samples::path ("lone-star.laz"), z);
   ASSERT_EQ (records.size(), z.point_count * z.record_length);
   // The points by return of the header, the bounds of the COPC copy.
   std::int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX};
@@ -166,24 +151,26 @@ TEST (RealDataLaz, LoneStarMatchesReturnCountsAndBounds)
 
 TEST (RealDataLaz, ColourCopcHoldsThePointsOfItsLasTwin)
 {
-  REQUIRE_SAMPLE ("1.2-with-color.copc.laz");
-  const LasTestFile z = readLasTestFile (sample ("1.2-with-color.copc.laz"));
-  const LasTestFile s = readLasTestFile (sample ("1.2-with-color.las"));
+  REQUIRE_LAS_SAMPLE ("1.2-with-color.copc.laz");
+  const LasTestFile z = readLasTestFile (las_samples::path ("1.2-with-color.copc.laz"));
+  const LasTestFile s = readLasTestFile (las_samples::path ("1.2-with-color.las"));
   ASSERT_EQ (z.point_format, 7);
   ASSERT_EQ (s.point_format, 3);
   const auto decoded =
-      attributes (z, lazRecords (sample ("1.2-with-color.copc.laz"), z));
+      attributes (z, lazRecords (las_samples::path ("1.2-with-color.copc.laz"), z));
   ASSERT_EQ (decoded.size(), 1065u);
   EXPECT_TRUE (decoded == attributes (s, lasRecords (s)));
 }
 
 TEST (RealDataLaz, LoneStarCopcHoldsThePointsOfTheLaz)
 {
-  REQUIRE_SAMPLE ("lone-star.copc.laz");
-  const LasTestFile c = readLasTestFile (sample ("lone-star.copc.laz"));
-  const LasTestFile z = readLasTestFile (sample ("lone-star.laz"));
+  REQUIRE_LAS_SAMPLE ("lone-star.copc.laz");
+  const LasTestFile c = readLasTestFile (las_samples::path ("lone-star.copc.laz"));
+  const LasTestFile z = readLasTestFile (las_samples::path ("lone-star.laz"));
   ASSERT_EQ (c.point_format, 6);
-  const auto copc = attributes (c, lazRecords (sample ("lone-star.copc.laz"), c));
+  const auto copc =
+      attributes (c, lazRecords (las_samples::path ("lone-star.copc.laz"), c));
   ASSERT_EQ (copc.size(), 518862u);
-  EXPECT_TRUE (copc == attributes (z, lazRecords (sample ("lone-star.laz"), z)));
+  EXPECT_TRUE (copc ==
+               attributes (z, lazRecords (las_samples::path ("lone-star.laz"), z)));
 }
