@@ -38,7 +38,7 @@ TEST_F (RealFormats, ClassifyVarianceLazToLas)
   pcl_ext::io::loadPointFile (path ("out.las"), out);
   EXPECT_EQ (out.las->header.scale, in.las->header.scale);
   EXPECT_EQ (out.las->header.offset, in.las->header.offset);
-  EXPECT_EQ (out.las->header.point_format & 0x3f, in.las->header.point_format & 0x3f);
+  EXPECT_EQ (out.las->header.pointFormat(), in.las->header.pointFormat());
   // Every dimension of the input, with its values; the classes in lv_class.
   for (const auto& f : in.cloud.fields) {
     ASSERT_GE (pcl::getFieldIndex (out.cloud, f.name), 0) << f.name;
