@@ -1,16 +1,15 @@
 /*
  * pcl_ext_classify_variance: labels every point surface (1), edge (2), boundary (3) or
  * unknown (0) by local variance (Belton & Lichti 2006, section 2) and writes the input
- * points with a `label` field.
+ * points, every input field and the class in the field `lv_class` (-output_field), in
+ * the input's coordinates.
  */
 #include "variance/variance_options.h"
 
 #include <pcl_ext/classification/local_variance_classification.h>
-#include <pcl_ext/io/cloud_fields.h>
-#include <pcl_ext/io/cloud_io.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
-#include <pcl_ext/io/file_output.h>
+#include <pcl_ext/apps/output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
@@ -22,22 +21,6 @@
 #include <cstring>
 #include <cmath>
 #include <iostream>
-
-namespace {
-/** Write \a labels into the cloud's `label` field (a scene's own labels are replaced;
- * the field is appended when absent). */
-bool
-attachLabels (const pcl::PCLPointCloud2& input,
-              const pcl::PointCloud<pcl::Label>& labels,
-              pcl::PCLPointCloud2& output)
-{
-  std::vector<std::uint32_t> values (labels.size());
-  for (std::size_t i = 0; i < labels.size(); ++i)
-    values[i] = labels[i].label;
-  output = input;
-  return pcl_ext::io::setLabelField (output, "label", values);
-}
-} // namespace
 
 int
 main (int argc, char** argv)
@@ -51,10 +34,16 @@ main (int argc, char** argv)
                                  "Labels every point 1 surface, 2 edge, 3 boundary or "
                                  "0 unknown from the covariance of its "
                                  "neighbourhood (Belton & Lichti 2006, section 2) and "
-                                 "writes the input points with a "
-                                 "'label' field.");
-  cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
-  cl.addPositional ("output.pcd", output_path, "output cloud with a 'label' field");
+                                 "writes the input points, their fields and the class "
+                                 "(field 'lv_class') in the input's coordinates.");
+  pcl_ext::apps::ResultField result (
+      "lv_class",
+      "class (1 surface, 2 edge, 3 boundary, 0 unknown)",
+      "",
+      "surface, edge and boundary have no ASPRS class code; the classes go to the "
+      "-output_field field (LAS: an extra-bytes dimension)");
+  cl.addPositional ("input", input_path, pcl_ext::apps::kInputFormats);
+  cl.addPositional ("output", output_path, pcl_ext::apps::kOutputFormats);
   cl.addOption ("k", k, "neighbours per point (the paper's k)");
   cl.addOption ("radius", radius, "neighbourhood radius instead of k (0: use k)");
   cl.addOption (
@@ -62,6 +51,7 @@ main (int argc, char** argv)
       max_radius,
       "with k: keep only the neighbours within this distance (0: no cap, the paper's)");
   options.addTo (cl);
+  result.addTo (cl);
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png",
                 png_path,
@@ -71,12 +61,13 @@ main (int argc, char** argv)
     return code;
   if (!options.valid())
     return 1;
-  if (!pcl_ext::io::checkOutputsWritable (output_path, {png_path}))
+  if (!result.checkOutput (output_path, {png_path}))
     return 1;
 
-  pcl::PCLPointCloud2 input;
+  pcl_ext::io::PointFile input;
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  if (!pcl_ext::apps::loadInput (input_path, input, *cloud))
+  if (!pcl_ext::apps::loadInput (input_path, input, *cloud) ||
+      !result.checkInput (input, input_path))
     return 1;
 
   pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
@@ -104,20 +95,17 @@ main (int argc, char** argv)
             << "; surface " << counts[1] << ", edge " << counts[2] << ", boundary "
             << counts[3] << ", unknown " << counts[0] << "\n";
 
-  pcl::PCLPointCloud2 output;
-  pcl_ext::apps::StageTimer save ("Saving " + output_path);
-  if (!attachLabels (input, labels, output) ||
-      !pcl_ext::io::saveCloud (output_path, output))
+  std::vector<std::uint32_t> classes (labels.size());
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    classes[i] = labels[i].label;
+  pcl::PCLPointCloud2 output = input.cloud;
+  if (!result.attach (output, classes) ||
+      !pcl_ext::apps::saveOutput (output_path, output, input))
     return 1;
-  save.done (labels.size());
 
   if (!png_path.empty()) {
 #ifdef PCL_EXT_HAVE_VISUALIZATION
     pcl_ext::apps::StageTimer render ("Rendering " + png_path);
-    std::vector<std::uint32_t> classes;
-    classes.reserve (labels.size());
-    for (const auto& l : labels)
-      classes.push_back (l.label);
     pcl_ext::visualization::View view;
     view.title = "Belton & Lichti: surface (blue), edge (red), boundary (green)";
     view.layers.push_back (

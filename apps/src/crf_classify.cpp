@@ -1,19 +1,23 @@
 /*
- * pcl_ext_crf_classify: classify a cloud with a trained multi-scale CRF model.
+ * pcl_ext_crf_classify: classify a cloud with a trained multi-scale CRF model; the
+ * input points and fields written back in the input's coordinates with the class id in
+ * the field `crf_class` (-output_field), and with -asprs in a LAS output's
+ * Classification as ASPRS codes.
  */
 #include "crf/crf_inputs.h"
 
 #include <pcl_ext/evaluation/classification_metrics.h>
-#include <pcl_ext/io/cloud_fields.h>
-#include <pcl_ext/io/cloud_io.h>
 #include <pcl_ext/apps/command_line.h>
-#include <pcl_ext/io/file_output.h>
+#include <pcl_ext/apps/input.h>
+#include <pcl_ext/apps/output.h>
+#include <pcl_ext/io/cloud_fields.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
 #endif
 
 #include <cstdio>
+#include <map>
 #include <iostream>
 
 namespace {
@@ -44,6 +48,26 @@ printMetrics (const pcl_ext::ClassificationMetrics& m)
       m.evaluated_points,
       m.ignored_points);
 }
+
+/** The ASPRS code of each class id of the model (1, unclassified, for the classes
+ * without a code, which are printed, and for ids the model does not name). */
+std::map<std::uint32_t, std::uint32_t>
+asprsCodes (const std::map<std::uint32_t, std::string>& names)
+{
+  std::map<std::uint32_t, std::uint32_t> codes;
+  std::string unmapped;
+  for (const auto& [id, name] : names) {
+    const int code = pcl_ext::apps::asprsClass (name);
+    codes[id] = code >= 0 ? static_cast<std::uint32_t> (code) : 1u;
+    if (code < 0)
+      unmapped += (unmapped.empty() ? "" : ", ") + name;
+    std::cout << "  class " << id << " " << name << " -> ASPRS " << codes[id] << '\n';
+  }
+  if (!unmapped.empty())
+    std::cout << "  no ASPRS code for " << unmapped
+              << ": written as 1 (unclassified) in Classification\n";
+  return codes;
+}
 } // namespace
 
 int
@@ -52,24 +76,35 @@ main (int argc, char** argv)
   std::string model_path, input, output, png, classes_file;
   bool truth = false;
   unsigned int threads = 0;
-  pcl_ext::apps::CommandLine cl ("pcl_ext_crf_classify",
-                                 "Classifies a cloud with a multi-scale CRF model (Lim "
-                                 "& Suter 2008) and writes it with a "
-                                 "'label' field holding the class id.");
+  pcl_ext::apps::CommandLine cl (
+      "pcl_ext_crf_classify",
+      "Classifies a cloud with a multi-scale CRF model (Lim "
+      "& Suter 2008) and writes its points and fields, in the "
+      "input's coordinates, with the class id in the field "
+      "'crf_class'.");
+  pcl_ext::apps::ResultField result (
+      "crf_class",
+      "class id (1.. in the model's order)",
+      "also write the classes as ASPRS codes into the LAS Classification, mapped by "
+      "class name (ground 2, vegetation 5, building / facade 6, wire 14, ...; classes "
+      "without a code: 1)");
   cl.addPositional ("model.txt", model_path, "a model written by pcl_ext_crf_train");
-  cl.addPositional (
-      "input", input, "PCD/PLY, or an Oakland .xyz_label_conf file with -classes");
-  cl.addPositional ("output.pcd", output, "the classified cloud");
+  cl.addPositional ("input",
+                    input,
+                    std::string (pcl_ext::apps::kInputFormats) +
+                        ", or an Oakland .xyz_label_conf file with -classes");
+  cl.addPositional ("output", output, pcl_ext::apps::kOutputFormats);
   cl.addOption (
       "png", png, "also render the result (and the truth with -truth) to this PNG");
   cl.addOption (
       "classes", classes_file, "class file mapping the input's labels (Oakland)");
   cl.addOption ("threads", threads, "threads (0: all cores)");
+  result.addTo (cl);
   cl.addSwitch (
       "truth", truth, "the input's labels are ground truth: print the metrics");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (!pcl_ext::io::checkOutputsWritable (output, {png}))
+  if (!result.checkOutput (output, {png}))
     return 1;
   pcl_ext::MultiscaleCrfModel model;
   {
@@ -101,6 +136,8 @@ main (int argc, char** argv)
     }
     timer.done (cloud.input.xyz->size());
   }
+  if (!result.checkInput (cloud.file, input))
+    return 1;
   if (truth && cloud.labels.empty()) {
     std::cerr << "pcl_ext_crf_classify: -truth needs a labelled input\n";
     return 1;
@@ -124,8 +161,19 @@ main (int argc, char** argv)
       st.iterations,
       st.converged ? ", converged" : ", not converged");
   std::vector<std::uint32_t> truth_labels = cloud.labels;
-  if (!pcl_ext::io::setLabelField (cloud.blob, "label", labels) ||
-      !pcl_ext::io::saveCloud (output, cloud.blob))
+  pcl::PCLPointCloud2 classified = cloud.file.cloud;
+  if (!result.attach (classified, labels))
+    return 1;
+  if (result.asprs()) {
+    const auto codes = asprsCodes (model.getClassNames());
+    std::vector<std::uint32_t> asprs (labels.size(), 1);
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      if (const auto it = codes.find (labels[i]); it != codes.end())
+        asprs[i] = it->second;
+    if (!pcl_ext::io::setLabelField (classified, "classification", asprs))
+      return 1;
+  }
+  if (!pcl_ext::apps::saveOutput (output, classified, cloud.file))
     return 1;
   if (truth) {
     pcl_ext::ClassificationMetrics metrics;

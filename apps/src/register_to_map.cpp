@@ -130,7 +130,9 @@ main (int argc, char** argv)
       "Registers a building scan to its 2D footprint by plane matching "
       "(Khoshelham & Gorte 2009). The output is in the map's local frame "
       "(map coordinates minus the printed origin).");
-  cl.addPositional ("scan.pcd", input, "the building scan (PCD or PLY)");
+  cl.addPositional ("scan",
+                    input,
+                    std::string ("the building scan: ") + pcl_ext::apps::kInputFormats);
   cl.addPositional (
       "footprint.(wkt|geojson|txt)", footprint_path, "footprint polygon file");
   cl.addPositional ("output.pcd", output, "the registered scan");
@@ -247,9 +249,19 @@ main (int argc, char** argv)
   pcl::PointCloud<Point>::Ptr scan (new pcl::PointCloud<Point>);
   pcl::PointCloud<pcl::Label>::Ptr labels (new pcl::PointCloud<pcl::Label>);
   {
-    pcl::PCLPointCloud2 file;
-    if (!pcl_ext::apps::loadInput (input, file, *scan))
+    pcl_ext::io::PointFile point_file;
+    if (!pcl_ext::apps::loadInput (input, point_file, *scan))
       return 1;
+    // The footprints are in the scan's coordinates: a georeferenced input would need
+    // them shifted by its local origin too.
+    if (!point_file.origin.isZero()) {
+      std::cerr
+          << "Error: " << input
+          << " is georeferenced (coordinates beyond 8192 m); "
+             "pcl_ext_register_to_map takes local coordinates, as its footprints.\n";
+      return 1;
+    }
+    const pcl::PCLPointCloud2& file = point_file.cloud;
     if (roof_outline) {
       std::vector<std::uint32_t> values;
       std::string error;

@@ -1,15 +1,14 @@
 /*
  * pcl_ext_segment_profiles: segments a cloud by intersecting profiles (Sithole &
- * Mapurisa) and writes the input points with a `label` field (segment 1, 2, ... by
- * decreasing size; 0 for points in no segment).
+ * Mapurisa) and writes the input points and fields, in the input's coordinates, with
+ * the segment in the field `segment` (-output_field; 1, 2, ... by decreasing size; 0
+ * for points in no segment).
  */
 #include <pcl_ext/segmentation/cylinder_segment_join.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
-#include <pcl_ext/io/cloud_fields.h>
-#include <pcl_ext/io/cloud_io.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
-#include <pcl_ext/io/file_output.h>
+#include <pcl_ext/apps/output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
@@ -25,20 +24,6 @@
 
 namespace {
 using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
-
-/** Write \a labels into the cloud's `label` field (a scene's own labels are replaced;
- * the field is appended when absent). */
-bool
-attachLabels (const pcl::PCLPointCloud2& input,
-              const pcl::PointCloud<pcl::Label>& labels,
-              pcl::PCLPointCloud2& output)
-{
-  std::vector<std::uint32_t> values (labels.size());
-  for (std::size_t i = 0; i < labels.size(); ++i)
-    values[i] = labels[i].label;
-  output = input;
-  return pcl_ext::io::setLabelField (output, "label", values);
-}
 
 bool
 parseMethod (const std::string& name, Segmentation::ProfileMethod& method)
@@ -130,10 +115,18 @@ main (int argc, char** argv)
                                  "Mapurisa): stacks of thin profiles "
                                  "along several normals, chains in every profile, "
                                  "segments = connected components of all "
-                                 "chains. Writes the input points with a 'label' field "
-                                 "(1.. by decreasing size, 0: none).");
-  cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
-  cl.addPositional ("output.pcd", output_path, "output cloud with a 'label' field");
+                                 "chains. Writes the input points and fields, in the "
+                                 "input's coordinates, with the segment in the field "
+                                 "'segment' (1.. by decreasing size, 0: none).");
+  pcl_ext::apps::ResultField result (
+      "segment",
+      "segment id",
+      "",
+      "segment ids are not classes; they go to the -output_field field (LAS: an "
+      "extra-bytes dimension)");
+  cl.addPositional ("input", input_path, pcl_ext::apps::kInputFormats);
+  cl.addPositional ("output", output_path, pcl_ext::apps::kOutputFormats);
+  result.addTo (cl);
   cl.addOption ("stacks", stacks, "number of stacks (stack normals spread evenly)");
   cl.addOption ("distribution",
                 distribution,
@@ -237,12 +230,13 @@ main (int argc, char** argv)
            "(all finite).\n";
     return 1;
   }
-  if (!pcl_ext::io::checkOutputsWritable (output_path, {png_path, png_profiles_path}))
+  if (!result.checkOutput (output_path, {png_path, png_profiles_path}))
     return 1;
 
-  pcl::PCLPointCloud2 input;
+  pcl_ext::io::PointFile input;
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  if (!pcl_ext::apps::loadInput (input_path, input, *cloud))
+  if (!pcl_ext::apps::loadInput (input_path, input, *cloud) ||
+      !result.checkInput (input, input_path))
     return 1;
 
   Segmentation seg;
@@ -315,12 +309,13 @@ main (int argc, char** argv)
   for (std::size_t c = 0; c < clusters.size(); ++c)
     for (const auto i : clusters[c].indices)
       labels[i].label = static_cast<std::uint32_t> (c + 1);
-  pcl::PCLPointCloud2 output;
-  pcl_ext::apps::StageTimer save ("Saving " + output_path);
-  if (!attachLabels (input, labels, output) ||
-      !pcl_ext::io::saveCloud (output_path, output))
+  std::vector<std::uint32_t> ids (labels.size());
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    ids[i] = labels[i].label;
+  pcl::PCLPointCloud2 output = input.cloud;
+  if (!result.attach (output, ids) ||
+      !pcl_ext::apps::saveOutput (output_path, output, input))
     return 1;
-  save.done (labels.size());
 
   if (!png_path.empty() || !png_profiles_path.empty()) {
 #ifdef PCL_EXT_HAVE_VISUALIZATION

@@ -1,21 +1,21 @@
 /*
  * pcl_ext_segment_variance: Belton & Lichti (2006) segmentation: classifies every point
  * surface, edge or boundary by local variance (section 2) and grows segments over the
- * surface points (section 3). Writes the input points with a `label` field: the segment
- * (1, 2, ... by decreasing size), 0 for points in no segment (edges, boundaries,
- * segments too small). Optionally intersects the segments locally (section 4): writes
- * the intersection points and puts edge and boundary points back into the segments they
- * fit.
+ * surface points (section 3). Writes the input points and fields with the segment in
+ * the field `segment` (-output_field): 1, 2, ... by decreasing size, 0 for points in no
+ * segment (edges, boundaries, segments too small), in the input's coordinates.
+ * Optionally intersects the segments locally (section 4): writes the intersection
+ * points and puts edge and boundary points back into the segments they fit.
  */
 #include "variance/variance_options.h"
 
-#include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
-#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/io/point_file.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
+#include <pcl_ext/apps/output.h>
 #include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
@@ -43,11 +43,17 @@ main (int argc, char** argv)
                                  "Lichti (2006) classification: "
                                  "surface points link to their nearest surface "
                                  "neighbours, edge and boundary points stop "
-                                 "the growth. Writes the input points with a 'label' "
-                                 "field (segment 1.. by decreasing "
-                                 "size, 0: none).");
-  cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
-  cl.addPositional ("output.pcd", output_path, "output cloud with a 'label' field");
+                                 "the growth. Writes the input points and fields with "
+                                 "the segment (field 'segment': 1.. by decreasing "
+                                 "size, 0: none) in the input's coordinates.");
+  pcl_ext::apps::ResultField result (
+      "segment",
+      "segment id",
+      "",
+      "segment ids are not classes; they go to the -output_field field (LAS: an "
+      "extra-bytes dimension)");
+  cl.addPositional ("input", input_path, pcl_ext::apps::kInputFormats);
+  cl.addPositional ("output", output_path, pcl_ext::apps::kOutputFormats);
   cl.addOption ("k", k, "neighbours per point (the paper's k)");
   cl.addOption (
       "max_radius",
@@ -67,17 +73,19 @@ main (int argc, char** argv)
       "intersections",
       intersections_path,
       "also write the local intersection points of the segments (section 4) to this "
-      "PCD: x y z, segment_a, segment_b and the two surface points index_a, index_b");
+      "file (.pcd, .ply or .las; input's frame): x y z, segment_a, segment_b and the "
+      "two surface points index_a, index_b");
   cl.addSwitch (
       "reintegrate",
       reintegrate,
       "put edge and boundary points into the segment whose local plane they fit "
-      "(section 4) before writing output.pcd");
+      "(section 4) before writing the output");
   cl.addOption (
       "parallel_angle",
       parallel_angle,
       "with -intersections or -reintegrate: segments whose normals differ by less "
       "(degrees) are parallel, not intersected (eq. 9)");
+  result.addTo (cl);
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption (
       "png", png_path, "also render the segments to this PNG; needs an X display");
@@ -110,12 +118,19 @@ main (int argc, char** argv)
     return 1;
   }
   const bool intersect = !intersections_path.empty() || reintegrate;
-  if (!pcl_ext::io::checkOutputsWritable (output_path, {png_path, intersections_path}))
+  if (!result.checkOutput (output_path, {png_path, intersections_path}))
     return 1;
+  std::string reason;
+  if (!intersections_path.empty() &&
+      !pcl_ext::io::canWritePointFile (intersections_path, &reason)) {
+    std::cerr << "Error: -intersections: " << reason << ".\n";
+    return 1;
+  }
 
-  pcl::PCLPointCloud2 input;
+  pcl_ext::io::PointFile input;
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  if (!pcl_ext::apps::loadInput (input_path, input, *cloud))
+  if (!pcl_ext::apps::loadInput (input_path, input, *cloud) ||
+      !result.checkInput (input, input_path))
     return 1;
 
   // One neighbourhood search for the segmentation and the intersections.
@@ -191,7 +206,10 @@ main (int argc, char** argv)
       labels = reintegrated;
     if (!intersections_path.empty()) {
       pcl_ext::apps::StageTimer save ("Saving " + intersections_path);
-      if (!pcl_ext::io::saveCloud (intersections_path, intersections))
+      // In the input's frame, as the output.
+      pcl::PCLPointCloud2 blob;
+      pcl::toPCLPointCloud2 (intersections, blob);
+      if (!pcl_ext::io::savePointFile (intersections_path, blob, input.origin))
         return 1;
       save.done (intersections.size());
     }
@@ -200,12 +218,10 @@ main (int argc, char** argv)
   std::vector<std::uint32_t> ids (labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i)
     ids[i] = labels[i].label;
-  pcl::PCLPointCloud2 output = input;
-  pcl_ext::apps::StageTimer save ("Saving " + output_path);
-  if (!pcl_ext::io::setLabelField (output, "label", ids) ||
-      !pcl_ext::io::saveCloud (output_path, output))
+  pcl::PCLPointCloud2 output = input.cloud;
+  if (!result.attach (output, ids) ||
+      !pcl_ext::apps::saveOutput (output_path, output, input))
     return 1;
-  save.done (ids.size());
 
   if (!png_path.empty()) {
 #ifdef PCL_EXT_HAVE_VISUALIZATION

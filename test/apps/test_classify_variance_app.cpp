@@ -4,15 +4,24 @@
  * -boundary_band, -boundary_band_fraction, -crease_angle), usage errors, and no output
  * on failure.
  */
+#include "../app_result.h"
 #include "../app_test.h"
 
 #include "../features/analytic_clouds.h"
 
+#include <pcl_ext/io/cloud_fields.h>
+#include <pcl_ext/io/las_reader.h>
+#include <pcl_ext/io/las_writer.h>
+
+#include <pcl/common/io.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace {
@@ -40,7 +49,7 @@ protected:
   check (const std::string& output)
   {
     pcl::PointCloud<pcl::PointXYZRGBL> out;
-    EXPECT_EQ (pcl::io::loadPCDFile (path (output), out), 0);
+    EXPECT_EQ (pcl_ext::test::loadResult (path (output), "lv_class", out), 0);
     EXPECT_EQ (out.size(), cube_.crease_distance.size());
     if (out.size() != cube_.crease_distance.size())
       return {0.0, 0.0};
@@ -108,4 +117,106 @@ TEST_F (ClassifyVarianceApp, BadUsageFailsWithoutOutput)
   EXPECT_EQ (run (io + " -variance_threshold -1"), 1);
   EXPECT_EQ (run (io + " -k 2"), 1);
   EXPECT_FALSE (exists ("out.pcd"));
+}
+
+// The georeferencing test of issue 29: the cube at UTM coordinates (x ~ 500,000, y ~
+// 6,000,000, mm scale), classified and written back as LAS, has the input's integers
+// and the labels of the same cube at the origin.
+TEST_F (ClassifyVarianceApp, UtmLasKeepsItsCoordinatesAndGetsTheLocalLabels)
+{
+  pcl::PCLPointCloud2 local;
+  {
+    pcl::PointCloud<pcl::PointXYZRGB> cloud;
+    pcl::io::loadPCDFile (path ("cube.pcd"), cloud);
+    pcl::toPCLPointCloud2 (cloud, local);
+  }
+  const Eigen::Vector3d utm (500000.0, 6000000.0, 0.0);
+  ASSERT_TRUE (
+      pcl_ext::io::saveLas (path ("local.las"), local, Eigen::Vector3d::Zero()));
+  ASSERT_TRUE (pcl_ext::io::saveLas (path ("utm.las"), local, utm));
+  ASSERT_EQ (run (path ("local.las") + " " + path ("local_out.las") + " -threads 2"), 0)
+      << output_;
+  ASSERT_EQ (run (path ("utm.las") + " " + path ("utm_out.las") + " -threads 2"), 0)
+      << output_;
+  pcl::PCLPointCloud2 in, out, local_out;
+  pcl_ext::io::LasFileInfo in_info, out_info, local_info;
+  pcl_ext::io::loadLas (path ("utm.las"), in, in_info);
+  pcl_ext::io::loadLas (path ("utm_out.las"), out, out_info);
+  pcl_ext::io::loadLas (path ("local_out.las"), local_out, local_info);
+  EXPECT_EQ (out_info.header.scale, in_info.header.scale);
+  EXPECT_EQ (out_info.header.offset, in_info.header.offset);
+  std::vector<std::uint32_t> in_x, out_x, in_y, out_y, labels, local_labels;
+  ASSERT_TRUE (pcl_ext::io::getLabelField (out, "lv_class", labels));
+  ASSERT_TRUE (pcl_ext::io::getLabelField (local_out, "lv_class", local_labels));
+  EXPECT_EQ (labels, local_labels);
+  // The file coordinates, to the integer, and within 1 mm of the cube at UTM.
+  pcl::PointCloud<pcl::PointXYZ> a, b;
+  pcl::fromPCLPointCloud2 (in, a);
+  pcl::fromPCLPointCloud2 (out, b);
+  ASSERT_EQ (a.size(), b.size());
+  ASSERT_EQ (a.size(), cube_.cloud->size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Eigen::Vector3d file_in =
+        in_info.origin + a[i].getVector3fMap().cast<double>();
+    const Eigen::Vector3d file_out =
+        out_info.origin + b[i].getVector3fMap().cast<double>();
+    EXPECT_EQ (file_in, file_out);
+    const Eigen::Vector3d truth =
+        utm + (*cube_.cloud)[i].getVector3fMap().cast<double>();
+    worst = std::max (worst, (file_out - truth).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LE (worst, 0.0005 + 1e-6); // the mm scale's rounding
+  const auto las_integers = [] (const pcl::PCLPointCloud2& c) {
+    const int f = pcl::getFieldIndex (c, "las_x");
+    std::vector<std::int32_t> v;
+    for (std::size_t i = 0; f >= 0 && i < c.width; ++i) {
+      std::int32_t x;
+      std::memcpy (&x, &c.data[i * c.point_step + c.fields[f].offset], 4);
+      v.push_back (x);
+    }
+    return v;
+  };
+  EXPECT_EQ (las_integers (in), las_integers (out));
+  // Every input dimension is in the output, with its values.
+  for (const auto& f : in.fields) {
+    EXPECT_GE (pcl::getFieldIndex (out, f.name), 0) << f.name;
+    if (f.name == "red" || f.name == "classification") {
+      std::vector<std::uint32_t> before, after;
+      pcl_ext::io::getLabelField (in, f.name, before);
+      pcl_ext::io::getLabelField (out, f.name, after);
+      EXPECT_EQ (before, after) << f.name;
+    }
+  }
+}
+
+TEST_F (ClassifyVarianceApp, NamedFieldsAndRefusals)
+{
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("first.pcd") + " -threads 2"), 0)
+      << output_;
+  // lv_class exists now: not overwritten unless named.
+  EXPECT_EQ (run (path ("first.pcd") + " " + path ("second.pcd")), 1);
+  EXPECT_NE (output_.find ("already has a field 'lv_class'"), std::string::npos)
+      << output_;
+  EXPECT_FALSE (exists ("second.pcd"));
+  EXPECT_EQ (run (path ("first.pcd") + " " + path ("second.pcd") +
+                  " -threads 2 -output_field lv_class"),
+             0)
+      << output_;
+  // Output formats refused before any work.
+  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.laz")), 1);
+  EXPECT_NE (output_.find ("writing LAZ is not supported"), std::string::npos)
+      << output_;
+  EXPECT_EQ (output_.find ("Loading"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("out.laz"));
+  EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.las") + " -asprs"), 1);
+  EXPECT_NE (output_.find ("no ASPRS class code"), std::string::npos) << output_;
+  // A lying input: a PCD named .las is read as PCD; garbage named .las is refused.
+  std::filesystem::copy_file (path ("cube.pcd"), path ("cube_pcd.las"));
+  EXPECT_EQ (run (path ("cube_pcd.las") + " " + path ("lied.pcd") + " -threads 2"), 0)
+      << output_;
+  std::ofstream (path ("garbage.las")) << "LASF but far too short";
+  EXPECT_EQ (run (path ("garbage.las") + " " + path ("garbage_out.las")), 1);
+  EXPECT_NE (output_.find (path ("garbage.las")), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("garbage_out.las"));
 }

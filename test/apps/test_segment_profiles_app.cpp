@@ -2,6 +2,7 @@
  * pcl_ext_segment_profiles run as a command: the curve-fitting options reach the
  * segmenter, usage errors, and no output on failure.
  */
+#include "../app_result.h"
 #include "../app_test.h"
 
 #include "../segmentation/profile_test_clouds.h"
@@ -58,7 +59,7 @@ TEST_F (SegmentProfilesApp, CurveFittingSeparatesTheCoaxialSurfaces)
   ASSERT_EQ (run (io + " -method curve"), 0) << output_;
   EXPECT_NE (output_.find ("3 segments"), std::string::npos) << output_;
   pcl::PointCloud<pcl::PointXYZL> out;
-  ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("out.pcd"), "segment", out), 0);
   ASSERT_EQ (out.size(), truth_.size());
   std::vector<pcl::PointIndices> segments;
   for (std::size_t i = 0; i < out.size(); ++i)
@@ -100,7 +101,7 @@ TEST_F (SegmentProfilesApp, LocalThresholdJoinsTheSparseSurface)
   ASSERT_EQ (pcl::io::savePCDFileBinary (path ("density.pcd"), *scene.cloud), 0);
   const auto best_iou_of_sparse = [&] () {
     pcl::PointCloud<pcl::PointXYZL> out;
-    EXPECT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
+    EXPECT_EQ (pcl_ext::test::loadResult (path ("out.pcd"), "segment", out), 0);
     std::vector<pcl::PointIndices> segments;
     for (std::size_t i = 0; i < out.size(); ++i)
       if (out[i].label > 0) {
@@ -141,7 +142,7 @@ TEST_F (SegmentProfilesApp, JoinCylindersJoinsThePipeSpans)
   EXPECT_NE (output_.find (" 1 segments"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("2 cylinders joined"), std::string::npos) << output_;
   pcl::PointCloud<pcl::PointXYZL> out;
-  ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("out.pcd"), "segment", out), 0);
   ASSERT_EQ (out.size(), scene.labels.size());
   for (const auto& p : out)
     EXPECT_EQ (p.label, 1u);

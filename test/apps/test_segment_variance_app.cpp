@@ -4,6 +4,7 @@
  * paper (-noise_sigma, -boundary_band, -boundary_band_fraction, -crease_angle,
  * -max_radius), usage errors, and no output on failure.
  */
+#include "../app_result.h"
 #include "../app_test.h"
 
 #include "../features/analytic_clouds.h"
@@ -55,7 +56,7 @@ TEST_F (SegmentVarianceApp, CubeFacesAreLabelledSegments)
   EXPECT_NE (output_.find ("6 segments"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("[done, "), std::string::npos) << output_;
   pcl::PointCloud<pcl::PointXYZRGBL> out;
-  ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("out.pcd"), "segment", out), 0);
   ASSERT_EQ (out.size(), crease_distance_.size());
   std::set<std::uint32_t> ids;
   for (std::size_t i = 0; i < out.size(); ++i) {
@@ -90,8 +91,8 @@ TEST_F (SegmentVarianceApp, ClassifierOptionsReachTheSegmentation)
       << output_;
   EXPECT_NE (output_.find ("6 segments"), std::string::npos) << output_;
   pcl::PointCloud<pcl::PointXYZRGBL> noise, capped;
-  ASSERT_EQ (pcl::io::loadPCDFile (path ("noise.pcd"), noise), 0);
-  ASSERT_EQ (pcl::io::loadPCDFile (path ("capped.pcd"), capped), 0);
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("noise.pcd"), "segment", noise), 0);
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("capped.pcd"), "segment", capped), 0);
   ASSERT_EQ (capped.size(), crease_distance_.size());
   ASSERT_EQ (noise.size(), crease_distance_.size());
   std::size_t unsegmented = 0, far_capped = 0, far_uncapped = 0;
@@ -204,8 +205,8 @@ TEST_F (SegmentVarianceApp, IntersectionsLieOnTheCubeEdges)
   // re-integrated point keeps to a face it lies on (within the 1 mm noise and the
   // band).
   pcl::PointCloud<pcl::PointXYZRGBL> plain, out;
-  ASSERT_EQ (pcl::io::loadPCDFile (path ("plain.pcd"), plain), 0);
-  ASSERT_EQ (pcl::io::loadPCDFile (path ("out.pcd"), out), 0);
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("plain.pcd"), "segment", plain), 0);
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("out.pcd"), "segment", out), 0);
   ASSERT_EQ (plain.size(), out.size());
   std::size_t unsegmented_before = 0, unsegmented_after = 0, changed_segmented = 0;
   for (std::size_t i = 0; i < out.size(); ++i) {

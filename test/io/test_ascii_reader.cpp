@@ -60,10 +60,11 @@ TEST (AsciiReader, CommaSeparatedWithCrLf)
   EXPECT_EQ (t.xyz[0], Eigen::Vector3d (1, 2, 3));
   EXPECT_EQ (t.label[0], 7u);
   EXPECT_EQ (t.label[1], 0u);
-  // Without a spec, 4 values mean x y z intensity.
+  // Without a spec, the commented header "//X,Y,Z,label" names the columns.
   pcl_ext::io::loadAsciiPoints (fixture ("points_comma.csv"), t);
-  EXPECT_EQ (t.intensity.size(), 2u);
-  EXPECT_TRUE (t.label.empty());
+  EXPECT_TRUE (t.intensity.empty());
+  EXPECT_EQ (t.label.size(), 2u);
+  EXPECT_EQ (t.label[0], 7u);
 }
 
 TEST (AsciiReader, GeoreferencedKeepsDoublesAndLocalOrigin)

@@ -6,7 +6,6 @@
 #include <pcl_ext/io/ascii_reader.h>
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/point_table.h>
-#include <pcl_ext/io/cloud_io.h>
 
 #include <pcl/common/io.h>
 #include <pcl/conversions.h>
@@ -40,28 +39,28 @@ loadCrfCloud (const std::string& path,
       }
       io::PointTable table;
       io::loadOaklandFile (path, table);
-      io::toPCLPointCloud2 (table, io::computeLocalOrigin (table), out.blob);
+      out.file.origin = io::computeLocalOrigin (table);
+      out.file.format = io::PointFileFormat::ASCII;
+      io::toPCLPointCloud2 (table, out.file.origin, out.file.cloud);
     }
-    else if (!io::loadCloud (path, out.blob)) {
-      error = path + ": cannot read the cloud";
-      return false;
-    }
+    else
+      io::loadPointFile (path, out.file);
   }
   catch (const std::exception& e) {
     error = e.what();
     return false;
   }
-  if (out.blob.width * out.blob.height == 0) {
+  const pcl::PCLPointCloud2& blob = out.file.cloud;
+  if (blob.width * blob.height == 0) {
     error = path + ": no points";
     return false;
   }
   auto xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  pcl::fromPCLPointCloud2 (out.blob, *xyz);
+  pcl::fromPCLPointCloud2 (blob, *xyz);
   out.input.xyz = xyz;
-  if (pcl::getFieldIndex (out.blob, "rgb") >= 0 ||
-      pcl::getFieldIndex (out.blob, "rgba") >= 0) {
+  if (pcl::getFieldIndex (blob, "rgb") >= 0 || pcl::getFieldIndex (blob, "rgba") >= 0) {
     pcl::PointCloud<pcl::PointXYZRGB> rgb;
-    pcl::fromPCLPointCloud2 (out.blob, rgb);
+    pcl::fromPCLPointCloud2 (blob, rgb);
     out.input.colours.resize (rgb.size());
     for (std::size_t i = 0; i < rgb.size(); ++i) {
       const float sum = static_cast<float> (rgb[i].r) + rgb[i].g + rgb[i].b;
@@ -70,16 +69,16 @@ loadCrfCloud (const std::string& path,
                     : Eigen::Vector3f::Constant (1.f / 3.f);
     }
   }
-  if (pcl::getFieldIndex (out.blob, "intensity") >= 0) {
+  if (pcl::getFieldIndex (blob, "intensity") >= 0) {
     pcl::PointCloud<pcl::PointXYZI> in;
-    pcl::fromPCLPointCloud2 (out.blob, in);
+    pcl::fromPCLPointCloud2 (blob, in);
     out.input.intensity.resize (in.size());
     for (std::size_t i = 0; i < in.size(); ++i)
       out.input.intensity[i] = std::isfinite (in[i].intensity) ? in[i].intensity : 0.f;
   }
-  if (pcl::getFieldIndex (out.blob, "label") >= 0) {
+  if (pcl::getFieldIndex (blob, "label") >= 0) {
     std::string why;
-    if (!io::getLabelField (out.blob, "label", out.labels, &why)) {
+    if (!io::getLabelField (blob, "label", out.labels, &why)) {
       error = path + ": " + why;
       return false;
     }

@@ -1,11 +1,12 @@
 /*
- * pcl_ext: reading labelled clouds for the CRF apps (PCD / PLY with a label field, or
- * Oakland).
+ * pcl_ext: reading labelled clouds for the CRF apps (any point file, labels in a
+ * `label` field, or Oakland).
  */
 #pragma once
 
 #include <pcl_ext/classification/crf_model.h>
 #include <pcl_ext/io/class_mapping.h>
+#include <pcl_ext/io/point_file.h>
 
 #include <pcl/PCLPointCloud2.h>
 
@@ -14,18 +15,18 @@
 
 namespace pcl_ext {
 namespace apps {
-/** \brief A cloud read for the CRF: its blob (for writing the result back), the CRF
- * input and, when the file has them, the labels (mapped through the class file when
- * given). */
+/** \brief A cloud read for the CRF: the file (for writing the result back in its
+ * frame), the CRF input and, when the file has them, the labels (mapped through the
+ * class file when given). */
 struct CrfCloud {
-  pcl::PCLPointCloud2 blob;
+  io::PointFile file;
   CrfInput input;
   std::vector<std::uint32_t> labels; ///< empty when the file has no labels
 };
 
-/** \brief Read a PCD/PLY (x y z, optional rgb/rgba, intensity, label) or an Oakland
- * file
- * (.xyz_label_conf; labels mapped with \a mapping, which is then required).
+/** \brief Read a point file of any format io::loadPointFile reads (x y z, optional
+ * rgb/rgba, intensity, label) or an Oakland file (.xyz_label_conf; labels mapped with
+ * \a mapping, which is then required).
  * \return false with \a error set on failure */
 bool
 loadCrfCloud (const std::string& path,

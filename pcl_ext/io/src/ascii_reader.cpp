@@ -43,6 +43,92 @@ describeColumns (std::size_t count)
 {
   return std::to_string (count) + (count == 1 ? " value" : " values");
 }
+
+/** Whether no value of \a values is a number: a header line (column names). */
+bool
+isNameLine (const std::vector<std::string_view>& values)
+{
+  double v;
+  for (const auto& value : values)
+    if (detail::parseDouble (value, v))
+      return false;
+  return !values.empty();
+}
+
+/** The columns a header line names (quotes and case ignored; names it does not know
+ * are skipped columns), or an empty vector when it does not name x, y and z. */
+std::vector<AsciiColumn>
+columnsFromNames (std::string_view line)
+{
+  std::string text (line);
+  for (char& c : text)
+    c = c == '"' || c == '\'' ? ' ' : static_cast<char> (std::tolower (c));
+  std::vector<std::string_view> names;
+  detail::splitValues (text, names);
+  std::vector<AsciiColumn> columns;
+  const auto has = [&columns] (AsciiColumn c) {
+    return std::find (columns.begin(), columns.end(), c) != columns.end();
+  };
+  for (auto name : names) {
+    name = detail::trim (name);
+    AsciiColumn c = AsciiColumn::Skip;
+    if (name == "x")
+      c = AsciiColumn::X;
+    else if (name == "y")
+      c = AsciiColumn::Y;
+    else if (name == "z")
+      c = AsciiColumn::Z;
+    else if (name == "i" || name == "intensity")
+      c = AsciiColumn::Intensity;
+    else if (name == "r" || name == "red")
+      c = AsciiColumn::Red;
+    else if (name == "g" || name == "green")
+      c = AsciiColumn::Green;
+    else if (name == "b" || name == "blue")
+      c = AsciiColumn::Blue;
+    else if (name == "label" || name == "class" || name == "classification")
+      c = AsciiColumn::Label;
+    columns.push_back (has (c) ? AsciiColumn::Skip : c);
+  }
+  if (!has (AsciiColumn::X) || !has (AsciiColumn::Y) || !has (AsciiColumn::Z))
+    return {};
+  if (!(has (AsciiColumn::Red) && has (AsciiColumn::Green) && has (AsciiColumn::Blue)))
+    for (auto& c : columns)
+      if (c == AsciiColumn::Red || c == AsciiColumn::Green || c == AsciiColumn::Blue)
+        c = AsciiColumn::Skip;
+  return columns;
+}
+
+/** Whether \a text is an integer in [0, 255] (a colour channel). */
+bool
+isColourValue (std::string_view text)
+{
+  double v;
+  return detail::parseDouble (text, v) && v >= 0.0 && v <= 255.0 && v == std::floor (v);
+}
+
+/** The order of a 7-column file without header, from its first 1000 data lines:
+ * x y z r g b i (CloudCompare's default export) when columns 4-6 are always colour
+ * values and column 7 is not; x y z i r g b (Leica's PTS order) otherwise. */
+std::vector<AsciiColumn>
+sevenColumns (const std::string& path)
+{
+  detail::TextLines lines (path);
+  std::vector<std::string_view> values;
+  std::string_view line;
+  bool middle_colour = true, last_colour = true;
+  for (int n = 0; n < 1000 && lines.nextData (line);) {
+    detail::splitValues (line, values);
+    if (values.size() != 7 || isNameLine (values))
+      continue;
+    ++n;
+    middle_colour = middle_colour && isColourValue (values[3]) &&
+                    isColourValue (values[4]) && isColourValue (values[5]);
+    last_colour = last_colour && isColourValue (values[6]);
+  }
+  return parseColumnSpec (middle_colour && !last_colour ? "x,y,z,r,g,b,i"
+                                                        : "x,y,z,i,r,g,b");
+}
 } // namespace
 
 std::vector<AsciiColumn>
@@ -139,11 +225,36 @@ loadAsciiPoints (const std::string& path,
   std::string_view line;
   bool first = true;
   bool has_intensity = false, has_rgb = false, has_label = false;
-  while (lines.nextData (line)) {
+  std::vector<AsciiColumn> named;
+  while (lines.next (line)) {
+    line = detail::trim (line);
+    if (line.empty())
+      continue;
+    const bool comment = line[0] == '#' || line.substr (0, 2) == "//";
+    if (comment) {
+      // A commented header (CloudCompare writes "//X,Y,Z,R,G,B,...").
+      // Only a comment that starts with x y z: others are prose.
+      if (first && named.empty()) {
+        named = columnsFromNames (line.substr (line[0] == '#' ? 1 : 2));
+        if (named.size() < 3 || named[0] != AsciiColumn::X ||
+            named[1] != AsciiColumn::Y || named[2] != AsciiColumn::Z)
+          named.clear();
+      }
+      continue;
+    }
     detail::splitValues (line, values);
+    if (first && isNameLine (values)) {
+      // A header line (PDAL writes "X","Y","Z",...): its names unless a spec is given.
+      if (named.empty())
+        named = columnsFromNames (line);
+      continue;
+    }
     if (first) {
+      if (columns.empty() && !named.empty())
+        columns = named;
       if (columns.empty()) {
-        columns = defaultColumns (values.size());
+        columns =
+            values.size() == 7 ? sevenColumns (path) : defaultColumns (values.size());
         if (columns.empty())
           lines.fail ("cannot tell what " + describeColumns (values.size()) +
                       " a line mean: give a column spec such as x,y,z,i,label");

@@ -44,12 +44,22 @@ defaultColumns (std::size_t count);
 /** \brief Read an ASCII point file: one point a line, values separated by whitespace or
  * by commas (a line containing a comma is split at commas, surrounding blanks ignored).
  *
- * Empty lines and lines starting with '#' or "//" are skipped. Numbers are read
- * locale-independently ("1.5", "-2e3"); coordinates must be finite. Every data line
- * must have exactly as many values as there are columns. \param[in] path the file
- * \param[out] table the points; untouched when an exception is thrown
- * \param[in] columns the column spec (see parseColumnSpec); empty (default) chooses
- *            defaultColumns from the first data line
+ * Empty lines and lines starting with '#' or "//" are skipped. Before the first point,
+ * a line none of whose values is a number is a header line and is skipped; when no
+ * column spec is given, the first header line naming x, y and z (a plain line such as
+ * PDAL's `"X","Y","Z","Intensity"`, or a comment starting with x y z such as
+ * CloudCompare's
+ * `//X,Y,Z,R,G,B,Intensity`) gives the columns: names in any case, quotes ignored,
+ * x y z, r / red, g / green, b / blue, i / intensity, label / class / classification;
+ * other names are skipped columns (as are r g b unless all three are named). Without
+ * spec or header, defaultColumns chooses from the first point line; 7 columns are x y
+ * z r g b i (CloudCompare's default export order) when columns 4-6 of the first 1000
+ * points are all integers in [0, 255] and column 7 is not, else x y z i r g b (Leica
+ * PTS order). Numbers are read locale-independently ("1.5", "-2e3"); coordinates must
+ * be finite. Every data line must have exactly as many values as there are columns.
+ * \param[in] path the file \param[out] table the points; untouched when an exception is
+ * thrown \param[in] columns the column spec (see parseColumnSpec); empty (default)
+ * reads the header or chooses as above
  * \throw ReadError naming the file (and line) when it cannot be opened, has no point,
  * has a line with a wrong number of values or a value that is not a valid number, or
  * when \a columns is invalid
