@@ -3,7 +3,7 @@
 
 PCL_EXT_PACKAGES=(
   build-essential cmake pkg-config
-  libpcl-dev libnanoflann-dev libboost-dev libeigen3-dev nlohmann-json3-dev
+  libpcl-dev libnanoflann-dev libboost-dev libeigen3-dev nlohmann-json3-dev libxgboost-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth
   clang-format python3
