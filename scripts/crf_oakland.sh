@@ -35,19 +35,19 @@ tp, sup, pred, order = {}, {}, {}, []
 evaluated = 0
 def f1(p, r):
     return 2 * p * r / (p + r) if p + r > 0 else 0.0
-row = re.compile(r"^(\S+)\s+(\d+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)$")
+row = re.compile(r"^(\S+)\s+(\d+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)"
+                 r"\s+(\d+)\s+(\d+)$")
 for c in chunks:
     line = []
     for text in open(f"{out}/{c}.classify.log"):
         m = row.match(text.strip())
         if m:
             name, s, p, r = m.group(1), int(m.group(2)), float(m.group(3)), float(m.group(4))
-            t = round(r * s)
             if name not in tp:
                 order.append(name)
-            tp[name] = tp.get(name, 0) + t
+            tp[name] = tp.get(name, 0) + int(m.group(8))
             sup[name] = sup.get(name, 0) + s
-            pred[name] = pred.get(name, 0) + (t / p if p > 0 else 0)
+            pred[name] = pred.get(name, 0) + int(m.group(7))
             line.append(f"{name} {f1(p, r):.3f}")
         m = re.search(r"\((\d+) points evaluated", text)
         if m:
