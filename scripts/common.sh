@@ -4,6 +4,7 @@
 PCL_EXT_PACKAGES=(
   build-essential cmake pkg-config
   libpcl-dev libnanoflann-dev libboost-dev libeigen3-dev nlohmann-json3-dev libexpat1-dev
+  libxgboost-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth
   clang-format python3

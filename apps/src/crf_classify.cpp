@@ -24,21 +24,25 @@ namespace {
 void
 printMetrics (const pcl_ext::ClassificationMetrics& m)
 {
-  std::printf ("%-14s %9s %9s %9s %9s %9s\n",
+  std::printf ("%-14s %9s %9s %9s %9s %9s %9s %9s\n",
                "class",
                "support",
                "precision",
                "recall",
                "F1",
-               "IoU");
+               "IoU",
+               "predicted",
+               "correct");
   for (const auto& c : m.classes)
-    std::printf ("%-14s %9zu %9.4f %9.4f %9.4f %9.4f\n",
+    std::printf ("%-14s %9zu %9.4f %9.4f %9.4f %9.4f %9zu %9zu\n",
                  c.name.c_str(),
                  c.support,
                  c.precision,
                  c.recall,
                  c.f1,
-                 c.iou);
+                 c.iou,
+                 c.predicted,
+                 c.true_positives);
   std::printf (
       "overall accuracy %.4f, macro F1 %.4f, mean IoU %.4f (%zu points evaluated, "
       "%zu ignored)\n",

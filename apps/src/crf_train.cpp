@@ -16,12 +16,14 @@
 int
 main (int argc, char** argv)
 {
-  std::string output, classes_file, mode_text = "mcrf", scales_text = "none",
-                                    expansion_text = "linear",
-                                    ground_text = "lowest_in_block";
+  std::string output, classes_file,
+      mode_text = "mcrf", scales_text = "none", expansion_text = "linear",
+      node_model_text = "logistic", ground_text = "lowest_in_block";
   double sigma = 1.0, noise = 0.0, min_radius = 0.5;
   int ground_reach = 3;
   int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200, knots = 2;
+  int rounds = 200, depth = 6;
+  double eta = 0.1;
   unsigned int threads = 0, seed = 1;
   bool no_balance = false;
   pcl_ext::apps::CommandLine cl (
@@ -41,10 +43,17 @@ main (int argc, char** argv)
       scales_text,
       "radii (m) of the multi-scale features, ascending, "
       "comma-separated, e.g. 0.5,1,2; 'none': the paper's single-scale features");
+  cl.addOption ("node_model",
+                node_model_text,
+                "classifier of the node potentials: logistic (the paper's "
+                "multinomial logistic regression) or boosted_trees (XGBoost)");
+  cl.addOption ("rounds", rounds, "boosting rounds (boosted_trees)");
+  cl.addOption ("depth", depth, "maximum tree depth (boosted_trees)");
+  cl.addOption ("eta", eta, "learning rate of the boosting (boosted_trees)");
   cl.addOption (
       "expansion",
       expansion_text,
-      "inputs of the node model: linear "
+      "inputs of the logistic node model: linear "
       "(the paper's), spline (piecewise-linear in each feature) or spline_products "
       "(spline and the products of feature pairs)");
   cl.addOption (
@@ -94,13 +103,16 @@ main (int argc, char** argv)
     return code;
   pcl_ext::CrfMode mode;
   pcl_ext::CrfNodeExpansion expansion;
+  pcl_ext::CrfNodeModel node_model;
   pcl_ext::GroundEstimate ground;
   if (output.empty() || inputs.empty() || !pcl_ext::parseCrfMode (mode_text, mode) ||
+      !pcl_ext::parseCrfNodeModel (node_model_text, node_model) ||
       !pcl_ext::parseCrfNodeExpansion (expansion_text, expansion) ||
       !pcl_ext::parseGroundEstimate (ground_text, ground)) {
     std::cerr
         << "pcl_ext_crf_train: need -o model.txt, at least one training cloud, a mode "
-           "among node, crf, mcrf, an expansion among linear, spline, spline_products "
+           "among node, crf, mcrf, a node model among boosted_trees, logistic, an "
+           "expansion among linear, spline, spline_products "
            "and a ground among lowest_in_block, opening (see -h)\n";
     return 1;
   }
@@ -139,6 +151,10 @@ main (int argc, char** argv)
   s.mode = mode;
   s.sigma = sigma;
   s.node_expansion = expansion;
+  s.node_model = node_model;
+  s.boost_rounds = rounds;
+  s.boost_depth = depth;
+  s.boost_eta = eta;
   s.spline_knots = knots;
   s.features.ground_estimate = ground;
   s.features.ground_reach = ground_reach;

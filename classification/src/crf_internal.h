@@ -23,6 +23,13 @@ struct MultiscaleCrfModel::Weights {
   std::vector<std::vector<double>>
       knots; // per feature, ascending (spline expansions only)
   Eigen::MatrixXd node_s, node_x, local_edge, regional_edge;
+  CrfNodeModel node_model = CrfNodeModel::Logistic;
+  /** BoostedTrees: the boosters (XGBoost models, UBJ bytes) of the super-voxel and
+   * the local-point nodes, whose log class probabilities are graph.phi; node_s and
+   * node_x are then the identity (C x (C + 1), bias 0). */
+  struct Boosters {
+    std::vector<char> supervoxel, point;
+  } boosters;
   double edge_scale =
       1.0; // beta: the log edge potentials are multiplied by it (stage 3)
 };
@@ -158,6 +165,74 @@ trainWeights (const Graph& graph,
               Eigen::VectorXd& theta,
               bool& converged,
               double& value);
+
+using Boosters = MultiscaleCrfModel::Weights::Boosters;
+
+/** Trains an XGBoost softmax classifier of \a classes classes on rows \a rows of \a
+ * x with labels and weights per row of x (see CrfSettings for the parameters; the
+ * histogram method on one thread, so the model does not depend on the thread count)
+ * into \a model (UBJ bytes). */
+bool
+trainBooster (const Eigen::MatrixXf& x,
+              const std::vector<int>& labels,
+              const std::vector<double>& weights,
+              const std::vector<std::size_t>& rows,
+              std::size_t classes,
+              const CrfSettings& settings,
+              std::vector<char>& model,
+              std::string& error);
+
+/** Log class probabilities (rows of \a x by classes) of a booster. */
+bool
+boosterLogProbabilities (const std::vector<char>& model,
+                         const Eigen::MatrixXf& x,
+                         std::size_t classes,
+                         unsigned int threads,
+                         Eigen::MatrixXf& log_probabilities,
+                         std::string& error);
+
+/** Checks that \a model is a booster over \a features features and \a classes
+ * classes. */
+bool
+checkBooster (const std::vector<char>& model,
+              std::size_t classes,
+              std::size_t features,
+              std::string& error);
+
+std::string
+encodeBase64 (const std::vector<char>& bytes);
+
+/** Decodes canonical base64 (what encodeBase64 writes); false for anything else. */
+bool
+decodeBase64 (const std::string& text, std::vector<char>& bytes);
+
+/** Stage 1 with boosted trees: one booster for the super-voxel nodes and one for the
+ * local points (when the graph has any), each on its labelled nodes of positive
+ * weight; graph.phi becomes their log class probabilities. With several training
+ * clouds, graph.phi of each cloud's nodes comes from boosters trained on the other
+ * clouds (cross-fitting), so that the edges (stage 2) and the edge scale (stage 3) are
+ * fitted against node potentials as confident as on unseen data, not as on the data
+ * the trees were fitted to. */
+bool
+trainBoostedNodes (Graph& graph,
+                   const std::vector<double>& node_weights,
+                   const std::vector<int>& node_cloud,
+                   std::size_t classes,
+                   const CrfSettings& settings,
+                   Boosters& boosters,
+                   std::string& error);
+
+/** graph.phi from graph.z by the boosters (inference). */
+bool
+boostedNodeInputs (const Boosters& boosters,
+                   std::size_t classes,
+                   unsigned int threads,
+                   Graph& graph,
+                   std::string& error);
+
+/** The node blocks of \a theta (see packWeights) as the identity on C inputs. */
+void
+setIdentityNodeWeights (std::size_t classes, Eigen::VectorXd& theta);
 
 /** Loopy BP marginals of the super-voxel nodes (rows) over classes. \a messages, when
  * given and of the graph's size (C x 2E, log messages), are the starting messages (else

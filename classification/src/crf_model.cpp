@@ -64,6 +64,23 @@ parseCrfNodeExpansion (const std::string& text, CrfNodeExpansion& expansion)
   return false;
 }
 
+const char*
+crfNodeModelName (CrfNodeModel model)
+{
+  return model == CrfNodeModel::BoostedTrees ? "boosted_trees" : "logistic";
+}
+
+bool
+parseCrfNodeModel (const std::string& text, CrfNodeModel& model)
+{
+  for (const auto m : {CrfNodeModel::Logistic, CrfNodeModel::BoostedTrees})
+    if (text == crfNodeModelName (m)) {
+      model = m;
+      return true;
+    }
+  return false;
+}
+
 bool
 checkCrfSettings (const CrfSettings& s, const char* caller)
 {
@@ -90,6 +107,14 @@ checkCrfSettings (const CrfSettings& s, const char* caller)
     bad = "the ground grid needs a positive cell, a reach >= 0 and a non-zero up axis";
   else if (!validFeatureScales (s.features.scales))
     bad = "the feature scales must be positive, finite and ascending";
+  else if (s.boost_rounds < 1 || s.boost_rounds > 10000 || s.boost_depth < 1 ||
+           s.boost_depth > 32 || !(s.boost_eta > 0.0 && s.boost_eta <= 1.0))
+    bad = "the boosted trees need rounds in [1, 10000], a depth in [1, 32] and a "
+          "learning rate in (0, 1]";
+  else if (s.node_model == CrfNodeModel::BoostedTrees &&
+           s.node_expansion != CrfNodeExpansion::Linear)
+    bad = "the spline expansions are inputs of the logistic node model, not of the "
+          "boosted trees";
   if (bad) {
     PCL_ERROR ("[pcl_ext::%s] Invalid CRF settings: %s.\n", caller, bad);
     return false;
@@ -223,6 +248,7 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
   crf::Graph graph;
   Eigen::MatrixXf raw;
   SupervoxelSet last;
+  std::vector<int> node_cloud; // the input each node comes from
   for (std::size_t c = 0; c < inputs.size(); ++c) {
     crf::Graph g;
     Eigen::MatrixXf r;
@@ -290,6 +316,10 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
       merged.edge_b.push_back (remap_new (g.edge_b[e]));
       merged.edge_regional.push_back (g.edge_regional[e]);
     }
+    std::vector<int> cloud_of (merged.size(), static_cast<int> (c));
+    std::copy (node_cloud.begin(), node_cloud.begin() + S0, cloud_of.begin());
+    std::copy (node_cloud.begin() + S0, node_cloud.end(), cloud_of.begin() + S0 + S1);
+    node_cloud = std::move (cloud_of);
     graph = std::move (merged);
     raw = std::move (mraw);
   }
@@ -308,10 +338,12 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
     scale (d) = var > 1e-12 ? std::sqrt (var) : 1.0;
   }
   crf::finishGraph (raw, mean, scale, graph);
+  const bool boosted = settings.node_model == CrfNodeModel::BoostedTrees;
   const std::vector<std::vector<double>> knots =
-      crf::fitKnots (graph.z, settings.node_expansion, settings.spline_knots);
-  crf::expandFeatures (settings.node_expansion, knots, graph);
-  const Eigen::Index Dn = graph.phi.cols();
+      boosted ? std::vector<std::vector<double>> (static_cast<std::size_t> (D))
+              : crf::fitKnots (graph.z, settings.node_expansion, settings.spline_knots);
+  if (!boosted)
+    crf::expandFeatures (settings.node_expansion, knots, graph);
 
   // Node weights: nodes that take part in this mode, balanced by class frequency.
   std::vector<double> node_weights (graph.size(), 0.0);
@@ -343,20 +375,35 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
         node_weights[n] = std::sqrt (total / (C * count[graph.labels[n]]));
 
   auto t0 = std::chrono::steady_clock::now();
+  // Stage 1: node potentials alone (all of NodeOnly). Boosted trees: their log class
+  // probabilities become the node inputs, with identity weights held fixed.
+  crf::Boosters boosters;
+  if (boosted) {
+    std::string error;
+    if (!crf::trainBoostedNodes (
+            graph, node_weights, node_cloud, C, settings, boosters, error)) {
+      PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::train] %s.\n", error.c_str());
+      return false;
+    }
+  }
+  const Eigen::Index Dn = graph.phi.cols();
   Eigen::VectorXd theta = Eigen::VectorXd::Zero (
       static_cast<Eigen::Index> (2 * C * (Dn + 1) + 2 * C * (D + 1)));
-  bool converged = false;
+  bool converged = !boosted;
   double value = 0.0;
-  // Stage 1: node potentials alone (multinomial logistic regression; all of NodeOnly).
-  int iterations = crf::trainWeights (graph,
-                                      node_weights,
-                                      Eigen::MatrixXd(),
-                                      C,
-                                      settings,
-                                      false,
-                                      theta,
-                                      converged,
-                                      value);
+  int iterations = 0;
+  if (boosted)
+    crf::setIdentityNodeWeights (C, theta);
+  else
+    iterations = crf::trainWeights (graph,
+                                    node_weights,
+                                    Eigen::MatrixXd(),
+                                    C,
+                                    settings,
+                                    false,
+                                    theta,
+                                    converged,
+                                    value);
   if (settings.mode != CrfMode::NodeOnly) {
     // Stage 2: the edge weights, with the node weights held at stage 1. Each node hears
     // from its neighbours the message BP's first sweep sends, computed from their
@@ -390,6 +437,8 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
   w.scale = scale;
   w.expansion = settings.node_expansion;
   w.knots = knots;
+  w.node_model = settings.node_model;
+  w.boosters = std::move (boosters);
   crf::unpackWeights (
       theta, C, static_cast<std::size_t> (Dn), static_cast<std::size_t> (D), w);
   // Stage 3: the weight of the edges against the nodes at inference (see crf_model.h).
@@ -448,7 +497,16 @@ MultiscaleCrfModel::classify (const CrfInput& input,
   if (!crf::buildGraph (input, settings_, svs, raw, graph, stats))
     return false;
   crf::finishGraph (raw, weights_->mean, weights_->scale, graph);
-  crf::expandFeatures (weights_->expansion, weights_->knots, graph);
+  if (weights_->node_model == CrfNodeModel::BoostedTrees) {
+    std::string error;
+    if (!crf::boostedNodeInputs (
+            weights_->boosters, class_ids_.size(), settings_.threads, graph, error)) {
+      PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::classify] %s.\n", error.c_str());
+      return false;
+    }
+  }
+  else
+    crf::expandFeatures (weights_->expansion, weights_->knots, graph);
   auto t0 = std::chrono::steady_clock::now();
   Eigen::MatrixXf marginals;
   crf::beliefPropagation (

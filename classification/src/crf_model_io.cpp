@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -18,7 +19,22 @@
 namespace pcl_ext {
 namespace {
 constexpr const char* kMagic = "pcl_ext_crf_model";
-constexpr int kVersion = 4;
+constexpr int kVersion = 5;
+
+/** FNV-1a (64 bits) of \a bytes in hexadecimal: a damaged booster is refused before
+ * XGBoost reads it. */
+std::string
+checksum (const std::vector<char>& bytes)
+{
+  std::uint64_t h = 14695981039346656037ull;
+  for (const char c : bytes) {
+    h ^= static_cast<unsigned char> (c);
+    h *= 1099511628211ull;
+  }
+  char buf[20];
+  std::snprintf (buf, sizeof (buf), "%016llx", static_cast<unsigned long long> (h));
+  return buf;
+}
 
 std::string
 num (double v)
@@ -195,6 +211,8 @@ MultiscaleCrfModel::toText() const
   out << "prior_sigma " << num (s.sigma) << '\n';
   out << "node_expansion " << crfNodeExpansionName (s.node_expansion) << ' '
       << s.spline_knots << '\n';
+  out << "node_model " << crfNodeModelName (s.node_model) << ' ' << s.boost_rounds
+      << ' ' << s.boost_depth << ' ' << num (s.boost_eta) << '\n';
   out << "belief_propagation " << num (s.bp_damping) << ' ' << s.bp_iterations << ' '
       << num (s.bp_tolerance) << '\n';
   out << "classes " << class_ids_.size() << '\n';
@@ -212,8 +230,22 @@ MultiscaleCrfModel::toText() const
         out << ' ' << num (t);
       out << '\n';
     }
-  writeMatrix (out, "node_supervoxel", w.node_s);
-  writeMatrix (out, "node_point", w.node_x);
+  if (w.node_model == CrfNodeModel::BoostedTrees) {
+    // booster <nodes> <bytes> <checksum> <base64>, or "-" for a model without one.
+    for (int type = 0; type < 2; ++type) {
+      const std::vector<char>& b = type == 0 ? w.boosters.supervoxel : w.boosters.point;
+      out << "booster " << (type == 0 ? "supervoxel" : "point");
+      if (b.empty())
+        out << " -\n";
+      else
+        out << ' ' << b.size() << ' ' << checksum (b) << ' ' << crf::encodeBase64 (b)
+            << '\n';
+    }
+  }
+  else {
+    writeMatrix (out, "node_supervoxel", w.node_s);
+    writeMatrix (out, "node_point", w.node_x);
+  }
   writeMatrix (out, "local_edge", w.local_edge);
   writeMatrix (out, "regional_edge", w.regional_edge);
   out << "edge_scale " << num (w.edge_scale) << '\n';
@@ -280,7 +312,8 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
       return rd.fail (std::string ("not a model file (expected '") + kMagic + " 1')");
     if (version != kVersion)
       return rd.fail ("model version " + std::to_string (version) +
-                      ", this build reads " + std::to_string (kVersion));
+                      ", this build reads only version " + std::to_string (kVersion) +
+                      " (retrain the model with this build)");
     if (!rd.next ("mode") || !rd.expect ("mode", 1))
       return false;
     if (!parseCrfMode (rd.word (1), s.mode))
@@ -350,6 +383,17 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
     if (!rd.integer (2, s.spline_knots, 1, 64))
       return false;
     w.expansion = s.node_expansion;
+    if (!rd.next ("node_model") || !rd.expect ("node_model", 4))
+      return false;
+    if (!parseCrfNodeModel (rd.word (1), s.node_model))
+      return rd.fail ("unknown node model '" + rd.word (1) +
+                      "' (logistic or boosted_trees)");
+    if (!rd.integer (2, s.boost_rounds, 1, 10000) ||
+        !rd.integer (3, s.boost_depth, 1, 32) || !rd.number (4, s.boost_eta))
+      return false;
+    if (!(s.boost_eta > 0.0 && s.boost_eta <= 1.0))
+      return rd.fail ("the boosted trees' learning rate must be in (0, 1]");
+    w.node_model = s.node_model;
     if (!rd.next ("belief_propagation") || !rd.expect ("belief_propagation", 3) ||
         !rd.number (1, s.bp_damping) || !rd.integer (2, s.bp_iterations, 1, 1 << 20) ||
         !rd.number (3, s.bp_tolerance))
@@ -422,9 +466,40 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
     const Eigen::Index rows = static_cast<Eigen::Index> (C),
                        cols = static_cast<Eigen::Index> (D + 1);
     const Eigen::Index node_cols = static_cast<Eigen::Index> (Dn + 1);
-    if (!readMatrix (rd, "node_supervoxel", rows, node_cols, w.node_s) ||
-        !readMatrix (rd, "node_point", rows, node_cols, w.node_x) ||
-        !readMatrix (rd, "local_edge", rows, cols, w.local_edge) ||
+    if (w.node_model == CrfNodeModel::BoostedTrees) {
+      // The boosters' log class probabilities are the node inputs, with identity
+      // weights (not stored).
+      for (int type = 0; type < 2; ++type) {
+        const char* name = type == 0 ? "supervoxel" : "point";
+        std::vector<char>& model = type == 0 ? w.boosters.supervoxel : w.boosters.point;
+        if (!rd.next ("booster") || rd.size() < 3 || rd.word (0) != "booster" ||
+            rd.word (1) != name)
+          return rd.fail (std::string ("expected 'booster ") + name +
+                          " <bytes> <checksum> <base64>'");
+        if (type == 1 && rd.word (2) == "-" && rd.expect ("booster", 2))
+          continue;
+        std::size_t bytes = 0;
+        if (!rd.expect ("booster", 4) || !rd.integer (2, bytes, 1, 1LL << 40))
+          return false;
+        if (!crf::decodeBase64 (rd.word (4), model) || model.size() != bytes ||
+            checksum (model) != rd.word (3))
+          return rd.fail (std::string ("the ") + name +
+                          " booster is damaged (its size or checksum does not match)");
+        std::string error;
+        if (!crf::checkBooster (model, C, D, error))
+          return rd.fail (std::string ("the ") + name + " booster: " + error);
+      }
+      if (w.boosters.point.empty() && s.mode != CrfMode::NodeOnly)
+        return rd.fail ("a CRF needs the booster of the local points");
+      Eigen::VectorXd theta = Eigen::VectorXd::Zero (rows * (rows + 1) * 2);
+      crf::setIdentityNodeWeights (C, theta);
+      w.node_s = Eigen::Map<const Eigen::MatrixXd> (theta.data(), rows, rows + 1);
+      w.node_x = w.node_s;
+    }
+    else if (!readMatrix (rd, "node_supervoxel", rows, node_cols, w.node_s) ||
+             !readMatrix (rd, "node_point", rows, node_cols, w.node_x))
+      return false;
+    if (!readMatrix (rd, "local_edge", rows, cols, w.local_edge) ||
         !readMatrix (rd, "regional_edge", rows, cols, w.regional_edge))
       return false;
     if (!rd.next ("edge_scale") || !rd.expect ("edge_scale", 1) ||

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 
@@ -99,37 +100,54 @@ validFeatureScales (const std::vector<float>& scales)
 }
 
 namespace {
-/** Block minimum (\a take_min) or maximum of \a in over the (2 reach + 1)^2 cells
- * around each cell of a w x h grid, separably (rows, then columns); +inf cells are left
- * out. */
-std::vector<float>
-blockExtremum (const std::vector<float>& in, int w, int h, int reach, bool take_min)
+/** The map key of cell (x, y). */
+std::uint64_t
+cellKey (int x, int y)
 {
-  const float inf = std::numeric_limits<float>::infinity();
-  auto pick = [take_min] (float m, float c) {
-    if (!std::isfinite (c))
-      return m;
-    if (!std::isfinite (m))
-      return c;
-    return take_min ? std::min (m, c) : std::max (m, c);
-  };
-  std::vector<float> rows (in.size(), inf), out (in.size(), inf);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      float m = inf;
-      for (int dx = std::max (0, x - reach); dx <= std::min (w - 1, x + reach); ++dx)
-        m = pick (m, in[static_cast<std::size_t> (y) * w + dx]);
-      rows[static_cast<std::size_t> (y) * w + x] = m;
-    }
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      float m = inf;
-      for (int dy = std::max (0, y - reach); dy <= std::min (h - 1, y + reach); ++dy)
-        m = pick (m, rows[static_cast<std::size_t> (dy) * w + x]);
-      out[static_cast<std::size_t> (y) * w + x] = m;
-    }
-  return out;
+  return (static_cast<std::uint64_t> (static_cast<std::uint32_t> (x)) << 32) |
+         static_cast<std::uint32_t> (y);
 }
+
+int
+cellX (std::uint64_t key)
+{
+  return static_cast<int> (static_cast<std::uint32_t> (key >> 32));
+}
+
+int
+cellY (std::uint64_t key)
+{
+  return static_cast<int> (static_cast<std::uint32_t> (key & 0xffffffffu));
+}
+
+/** Block minimum (\a take_min) or maximum of the cells \a in over the (2 reach + 1)^2
+ * cells around each cell, separably (rows, then columns), scattered from the cells that
+ * have a value to the cells within reach of them: only cells with a value are stored.
+ */
+LocalGround::CellMap
+blockExtremum (const LocalGround::CellMap& in, int reach, bool take_min)
+{
+  auto scatter = [&] (const LocalGround::CellMap& from, bool along_x) {
+    LocalGround::CellMap to;
+    to.reserve (from.size() * static_cast<std::size_t> (2 * reach + 1));
+    for (const auto& [key, value] : from) {
+      const int x = cellX (key), y = cellY (key);
+      const int c = along_x ? x : y;
+      for (int k = c - reach; k <= c + reach; ++k) {
+        const auto [it, inserted] =
+            to.emplace (along_x ? cellKey (k, y) : cellKey (x, k), value);
+        if (!inserted)
+          it->second =
+              take_min ? std::min (it->second, value) : std::max (it->second, value);
+      }
+    }
+    return to;
+  };
+  return scatter (scatter (in, true), false);
+}
+
+/** Largest cell index magnitude kept (the cell's indices must fit an int). */
+constexpr float kMaxCellIndex = 1073741824.f; // 2^30
 } // namespace
 
 const char*
@@ -150,6 +168,17 @@ parseGroundEstimate (const std::string& text, GroundEstimate& estimate)
   return true;
 }
 
+bool
+LocalGround::cellOf (const Eigen::Vector3f& p, Eigen::Vector2i& cell) const
+{
+  const float x = std::floor (p.dot (u_) / cell_);
+  const float y = std::floor (p.dot (v_) / cell_);
+  if (!(std::abs (x) <= kMaxCellIndex && std::abs (y) <= kMaxCellIndex))
+    return false;
+  cell = Eigen::Vector2i (static_cast<int> (x), static_cast<int> (y));
+  return true;
+}
+
 void
 LocalGround::build (const pcl::PointCloud<pcl::PointXYZ>& cloud,
                     const Eigen::Vector3f& up,
@@ -162,49 +191,34 @@ LocalGround::build (const pcl::PointCloud<pcl::PointXYZ>& cloud,
   v_ = up_.cross (u_);
   cell_ = cell > 0.f ? cell : 1.f;
   reach_ = std::max (0, reach);
-  Eigen::Vector2f lo = Eigen::Vector2f::Constant (std::numeric_limits<float>::max());
-  Eigen::Vector2f hi = -lo;
-  for (const auto& p : cloud)
-    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z)) {
-      const Eigen::Vector2f q (p.getVector3fMap().dot (u_),
-                               p.getVector3fMap().dot (v_));
-      lo = lo.cwiseMin (q);
-      hi = hi.cwiseMax (q);
-    }
   ground_.clear();
-  size_ = Eigen::Vector2i::Zero();
-  if (lo.x() > hi.x())
+  // The lowest point per occupied cell.
+  CellMap lowest;
+  for (const auto& p : cloud) {
+    Eigen::Vector2i c;
+    if (!std::isfinite (p.x) || !std::isfinite (p.y) || !std::isfinite (p.z) ||
+        !cellOf (p.getVector3fMap(), c))
+      continue;
+    const float h = p.getVector3fMap().dot (up_);
+    const auto [it, inserted] = lowest.emplace (cellKey (c.x(), c.y()), h);
+    if (!inserted)
+      it->second = std::min (it->second, h);
+  }
+  if (lowest.empty())
     return;
-  origin_ = (lo / cell_).array().floor().cast<int>().matrix();
-  size_ = (hi / cell_).array().floor().cast<int>().matrix() - origin_ +
-          Eigen::Vector2i::Ones();
-  const float inf = std::numeric_limits<float>::infinity();
-  std::vector<float> cells (static_cast<std::size_t> (size_.x()) * size_.y(), inf);
-  for (const auto& p : cloud)
-    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z)) {
-      const Eigen::Vector3f q = p.getVector3fMap();
-      const int cx = static_cast<int> (std::floor (q.dot (u_) / cell_)) - origin_.x();
-      const int cy = static_cast<int> (std::floor (q.dot (v_) / cell_)) - origin_.y();
-      float& c = cells[static_cast<std::size_t> (cy) * size_.x() + cx];
-      c = std::min (c, q.dot (up_));
-    }
-  ground_ = blockExtremum (cells, size_.x(), size_.y(), reach_, true);
+  ground_ = blockExtremum (lowest, reach_, true);
   if (estimate == GroundEstimate::Opening)
-    ground_ = blockExtremum (ground_, size_.x(), size_.y(), reach_, false);
+    ground_ = blockExtremum (ground_, reach_, false);
 }
 
 float
 LocalGround::heightAbove (const Eigen::Vector3f& p) const
 {
-  const float h = p.dot (up_);
-  if (ground_.empty())
+  Eigen::Vector2i c;
+  if (ground_.empty() || !cellOf (p, c))
     return 0.f;
-  const int cx = static_cast<int> (std::floor (p.dot (u_) / cell_)) - origin_.x();
-  const int cy = static_cast<int> (std::floor (p.dot (v_) / cell_)) - origin_.y();
-  if (cx < 0 || cy < 0 || cx >= size_.x() || cy >= size_.y())
-    return 0.f;
-  const float g = ground_[static_cast<std::size_t> (cy) * size_.x() + cx];
-  return std::isfinite (g) ? h - g : 0.f;
+  const auto it = ground_.find (cellKey (c.x(), c.y()));
+  return it == ground_.end() ? 0.f : p.dot (up_) - it->second;
 }
 
 std::vector<std::string>

@@ -182,7 +182,7 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
   const std::vector<std::pair<const char*, std::string>> cases = {
       {"empty", ""},
       {"not a model", "hello world\n"},
-      {"other version", replaced ("pcl_ext_crf_model 4", "pcl_ext_crf_model 3")},
+      {"other version", replaced ("pcl_ext_crf_model 5", "pcl_ext_crf_model 4")},
       {"unknown ground estimate", replaced (" lowest_in_block\n", " lowest\n")},
       {"no ground estimate", replaced (" lowest_in_block\n", "\n")},
       {"unknown mode", replaced ("mode mcrf", "mode best")},
@@ -222,11 +222,13 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
 
 TEST (MultiscaleCrf, NodeExpansionsAreStoredAndRefusedWhenInconsistent)
 {
-  // The spline expansion with products: a knots line per feature, node weights over the
-  // expanded inputs, edge weights over the features alone.
+  // The spline expansion with products (inputs of the logistic node model): a knots
+  // line per feature, node weights over the expanded inputs, edge weights over the
+  // features alone.
   MultiscaleCrfModel m;
   pcl_ext::CrfSettings m_settings = m.getSettings();
   m_settings.mode = CrfMode::MultiscaleCrf;
+  m_settings.node_model = pcl_ext::CrfNodeModel::Logistic;
   m_settings.node_expansion = pcl_ext::CrfNodeExpansion::SplineProducts;
   m_settings.spline_knots = 3;
   m.setSettings (m_settings);
@@ -355,4 +357,69 @@ TEST (MultiscaleCrf, BadClassificationInput)
   ASSERT_TRUE (m.classify (with_nan, labels, prob));
   EXPECT_EQ (labels[10], 0u);
   EXPECT_NE (labels[11], 0u);
+}
+
+// Both node models: the paper's logistic regression (the default) and the boosted
+// trees, each the same model for one and two threads, and the boosted trees' file
+// refused when its boosters are damaged or missing.
+TEST (MultiscaleCrf, NodeModels)
+{
+  EXPECT_EQ (pcl_ext::CrfSettings().node_model, pcl_ext::CrfNodeModel::Logistic);
+  std::string good;
+  for (const auto node_model :
+       {pcl_ext::CrfNodeModel::Logistic, pcl_ext::CrfNodeModel::BoostedTrees}) {
+    SCOPED_TRACE (pcl_ext::crfNodeModelName (node_model));
+    MultiscaleCrfModel one, two;
+    pcl_ext::CrfSettings settings;
+    settings.node_model = node_model;
+    settings.threads = 1;
+    one.setSettings (settings);
+    settings.threads = 2;
+    two.setSettings (settings);
+    ASSERT_TRUE (one.train ({street (1).input}, {street (1).labels}));
+    ASSERT_TRUE (two.train ({street (1).input}, {street (1).labels}));
+    EXPECT_EQ (one.toText(), two.toText());
+    pcl_ext::ClassificationMetrics metrics;
+    EXPECT_GE (accuracy (one, street (2), &metrics), 0.95);
+    std::printf ("street mcrf, %s nodes: overall accuracy %.4f, macro F1 %.4f\n",
+                 pcl_ext::crfNodeModelName (node_model),
+                 metrics.overall_accuracy,
+                 metrics.macro_f1);
+    std::vector<std::uint32_t> la, lb;
+    Eigen::MatrixXf pa, pb;
+    ASSERT_TRUE (one.classify (street (2).input, la, pa));
+    ASSERT_TRUE (two.classify (street (2).input, lb, pb));
+    EXPECT_EQ (la, lb);
+    MultiscaleCrfModel loaded;
+    ASSERT_TRUE (loaded.parseModel (one.toText(), "round trip"));
+    EXPECT_EQ (loaded.getSettings().node_model, node_model);
+    EXPECT_EQ (loaded.toText(), one.toText());
+    good = one.toText();
+  }
+  ASSERT_NE (good.find ("node_model boosted_trees"), std::string::npos);
+  auto replaced = [&] (const std::string& from, const std::string& to) {
+    std::string t = good;
+    const auto at = t.find (from);
+    EXPECT_NE (at, std::string::npos) << from;
+    return at == std::string::npos ? t : t.replace (at, from.size(), to);
+  };
+  const auto point = good.find ("booster point ");
+  ASSERT_NE (point, std::string::npos);
+  std::string cut = good;
+  cut.erase (point + 14 + 40, 8); // 8 base64 characters (6 bytes) gone
+  const std::vector<std::pair<const char*, std::string>> cases = {
+      {"logistic without weights",
+       replaced ("node_model boosted_trees", "node_model logistic")},
+      {"unknown node model",
+       replaced ("node_model boosted_trees", "node_model forest")},
+      {"no point booster", replaced ("booster point ", "booster point - ")},
+      {"not base64", replaced ("booster supervoxel ", "booster supervoxel *")},
+      {"booster cut short", cut},
+      {"boosters swapped", replaced ("booster supervoxel ", "booster point ")},
+  };
+  for (const auto& [name, text] : cases) {
+    MultiscaleCrfModel m;
+    EXPECT_FALSE (m.parseModel (text, name)) << name;
+    EXPECT_FALSE (m.isTrained()) << name;
+  }
 }

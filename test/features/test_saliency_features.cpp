@@ -184,3 +184,42 @@ TEST (SaliencyFeatures, LocalGroundOnASlope)
   EXPECT_EQ (parsed, pcl_ext::GroundEstimate::Opening);
   EXPECT_FALSE (pcl_ext::parseGroundEstimate ("lowest", parsed));
 }
+
+// One point 1e6 m away from a 20 m x 20 m street (a distant outlier): a grid over the
+// bounding box would need 1e12 cells. The ground under every street point is the same
+// with and without it; the cells stored are those within reach of a street cell (twice
+// the reach with the opening), and the outlier adds those within reach of its own.
+TEST (SaliencyFeatures, LocalGroundFarOutlier)
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 0; i < 200; ++i)
+    for (int j = 0; j < 200; ++j)
+      cloud.push_back (pcl::PointXYZ (0.1f * i, 0.1f * j, 0.05f * std::sin (0.3f * i)));
+  for (int k = 0; k <= 60; ++k)
+    cloud.push_back (pcl::PointXYZ (10.05f, 10.05f, 0.1f * k));
+  pcl::PointCloud<pcl::PointXYZ> with_outlier = cloud;
+  with_outlier.push_back (pcl::PointXYZ (1e6f, 1e6f, -30.f));
+  const int reach = 3;
+  for (const auto estimate :
+       {pcl_ext::GroundEstimate::LowestInBlock, pcl_ext::GroundEstimate::Opening}) {
+    SCOPED_TRACE (pcl_ext::groundEstimateName (estimate));
+    pcl_ext::LocalGround clean, dirty;
+    clean.build (cloud, Eigen::Vector3f::UnitZ(), 1.f, reach, estimate);
+    dirty.build (with_outlier, Eigen::Vector3f::UnitZ(), 1.f, reach, estimate);
+    // The street spans 20 m: 20 or 21 cells of 1 m along each axis of the plane,
+    // depending on where the cell edges fall; the cells within reach of them (twice
+    // the reach with the opening) are stored.
+    const std::size_t spread =
+        estimate == pcl_ext::GroundEstimate::Opening ? 2 * reach : reach;
+    EXPECT_GE (clean.getCellCount(), (20 + 2 * spread) * (20 + 2 * spread));
+    EXPECT_LE (clean.getCellCount(), (21 + 2 * spread) * (21 + 2 * spread));
+    EXPECT_EQ (dirty.getCellCount(),
+               clean.getCellCount() + (2 * spread + 1) * (2 * spread + 1));
+    for (const auto& p : cloud)
+      ASSERT_EQ (dirty.heightAbove (p.getVector3fMap()),
+                 clean.heightAbove (p.getVector3fMap()));
+    // The outlier is its own ground; the pole's top is 6 m above the street.
+    EXPECT_EQ (dirty.heightAbove (Eigen::Vector3f (1e6f, 1e6f, -30.f)), 0.f);
+    EXPECT_GT (dirty.heightAbove (Eigen::Vector3f (10.05f, 10.05f, 6.f)), 5.9f);
+  }
+}

@@ -56,6 +56,26 @@ crfNodeExpansionName (CrfNodeExpansion expansion);
 bool
 parseCrfNodeExpansion (const std::string& text, CrfNodeExpansion& expansion);
 
+/** \brief The classifier of the node potentials (pcl_ext addition).
+ *
+ * Logistic is the paper's multinomial logistic regression (eq. 8) over the node
+ * expansion of the features. BoostedTrees are gradient-boosted decision trees (XGBoost,
+ * softmax objective) over the standardised features: the node potential is the log of
+ * their class probabilities. Trees separate what a linear score cannot (wires from
+ * facade edges, poles from trunks, the middle of a feature's range). */
+enum class CrfNodeModel {
+  Logistic,    ///< the paper's multinomial logistic regression (eq. 8)
+  BoostedTrees ///< gradient-boosted trees (XGBoost), log class probabilities
+};
+
+/** \brief "logistic", "boosted_trees". */
+const char*
+crfNodeModelName (CrfNodeModel model);
+
+/** \brief Parses "logistic", "boosted_trees"; false for anything else. */
+bool
+parseCrfNodeModel (const std::string& text, CrfNodeModel& model);
+
 /** \brief A cloud as the CRF sees it: xyz (non-finite points are skipped), normalised
  * RGB and intensity per point (each empty when absent). */
 struct CrfInput {
@@ -102,8 +122,15 @@ struct CrfSettings {
    */
   SaliencyFeatureOptions features;
   double sigma = 1.0; ///< sigma_C of the Gaussian prior, eq. 9; > 0
-  /** Inputs of the node model: Linear (the paper's, the default) or a spline expansion.
-   */
+  /** The node classifier (see CrfNodeModel): Logistic, the paper's, by default.
+   * BoostedTrees gave the better node-only model but the worse mCRF in cross-validation
+   * between Oakland chunks (docs/lim_suter.md has the figures of both). */
+  CrfNodeModel node_model = CrfNodeModel::Logistic;
+  int boost_rounds = 200; ///< boosting rounds (BoostedTrees); [1, 10000]
+  int boost_depth = 6;    ///< maximum tree depth (BoostedTrees); [1, 32]
+  double boost_eta = 0.1; ///< learning rate (BoostedTrees); (0, 1]
+  /** Inputs of the logistic node model: Linear (the paper's, the default) or a spline
+   * expansion (refused with BoostedTrees). */
   CrfNodeExpansion node_expansion = CrfNodeExpansion::Linear;
   int spline_knots = 2; ///< K, hinges per feature of the spline expansions; [1, 64]
   bool balance_classes = true; ///< weight training nodes by 1 / sqrt(class frequency)
@@ -150,6 +177,14 @@ struct CrfStatistics {
  * (CrfSettings::features; see there). The model file stores the feature set, and a
  * model of another set is refused.
  *
+ * Node model (CrfSettings::node_model, pcl_ext addition): the paper's logistic
+ * regression by default, or gradient-boosted trees (XGBoost), one booster for the
+ * super-voxel nodes and one for the local points,
+ * over the standardised features, whose log class probabilities are the log node
+ * potentials: log psi_i(c) = log P_boost(c | s_i). Logistic is the paper's eq. 8 below.
+ * The edges, the training of the edges (stages 2 and 3 below) and inference are the
+ * same for both.
+ *
  * Potentials (as eq. 6-8): node psi_i(c) = exp(lambda_i^c . [1, phi(s_i)]) for
  * super-voxels and exp(lambda_x^c . [1, phi(x_j)]) for local points (multinomial
  * logistic regression), phi the node expansion of the standardised features
@@ -166,18 +201,23 @@ struct CrfStatistics {
  * function over a loopy graph is intractable, minus |lambda|^2 / (2 sigma^2), by L-BFGS
  * (a quasi-Newton method; the paper used scaled conjugate gradients), in three stages.
  * Stage 1 fits the node potentials alone (exactly penalised logistic regression; all of
- * NodeOnly). Stage 2 fits the edge weights with the node weights held at stage 1: each
- * node is scored with, from each neighbour, the message a first (undamped) BP sweep
- * sends given that neighbour's stage-1 class probabilities q, log(1 + q(c) (e^d - 1))
- * (a stacked pseudo-likelihood). The node weights stay fixed and the neighbours enter
- * through their probabilities, not their labels: otherwise the edges explain the labels
- * alone, the node potentials lose their meaning, and rare classes get edge potentials
- * so large that a small belief in a neighbour already triggers them in BP
- * (docs/lim_suter.md describes both variants). Stage 3 fits the weight beta of the
- * edges against the nodes at inference (log edge potentials times beta), which the
- * pseudo-likelihood cannot: it sees each neighbour once, while loopy BP hears the same
- * evidence again around the graph's short cycles. beta is the value on the grid 0.1,
- * 0.2,
+ * NodeOnly; with boosted trees, the boosters, trained by XGBoost's histogram method
+ * on one thread with a fixed seed and no subsampling, so that the model does not
+ * depend on the thread count;
+ * with several training clouds, the node potentials that stages 2 and 3 see on each
+ * cloud come from boosters trained on the other clouds, as confident as on unseen
+ * scans; the boosters kept are trained on all clouds). Stage 2 fits the edge weights
+ * with the node weights held at stage 1: each node is scored with, from each neighbour,
+ * the message a first (undamped) BP sweep sends given that neighbour's stage-1 class
+ * probabilities q, log(1 + q(c) (e^d - 1)) (a stacked pseudo-likelihood). The node
+ * weights stay fixed and the neighbours enter through their probabilities, not their
+ * labels: otherwise the edges explain the labels alone, the node potentials lose their
+ * meaning, and rare classes get edge potentials so large that a small belief in a
+ * neighbour already triggers them in BP (docs/lim_suter.md describes both variants).
+ * Stage 3 fits the weight beta of the edges against the nodes at inference (log edge
+ * potentials times beta), which the pseudo-likelihood cannot: it sees each neighbour
+ * once, while loopy BP hears the same evidence again around the graph's short cycles.
+ * beta is the value on the grid 0.1, 0.2,
  * .., 1.5 that minimises the weighted negative log-likelihood of the labelled
  * super-voxels under their BP marginals on the training graph (CrfSettings::edge_scale
  * fixes it instead); each grid point's BP starts from the previous one's messages. A
@@ -285,11 +325,12 @@ public:
     return statistics_;
   }
 
-  /** \brief Write the model as versioned text (format "pcl_ext_crf_model 4": settings
-   * with the ground estimate, the feature scales and the node expansion, classes,
-   * feature names and scaling, the knots of a spline expansion, weights, edge scale),
-   * atomically. Other versions are refused. \return false with an untrained model or
-   * when the file cannot be written */
+  /** \brief Write the model as versioned text (format "pcl_ext_crf_model 5": settings
+   * with the ground estimate, the feature scales, the node expansion and the node
+   * model, classes, feature names and scaling, the knots of a spline expansion, the
+   * node weights or the two boosters (XGBoost's UBJ model, base64), the edge weights,
+   * the edge scale), atomically. Other versions are refused. \return false with an
+   * untrained model or when the file cannot be written */
   bool
   saveModel (const std::string& path) const;
 

@@ -11,7 +11,10 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace pcl_ext {
@@ -46,6 +49,16 @@ parseGroundEstimate (const std::string& text, GroundEstimate& estimate);
  * position is found from the lowest points of the (2 reach + 1)^2 cells around its cell
  * as GroundEstimate says. Where no point lies near (an isolated roof, say) the position
  * is its own ground (height 0).
+ *
+ * Only the cells that hold a ground height are stored (a hash map keyed by the cell),
+ * not a grid over the bounding box: memory grows with the number of occupied cells
+ * times (2 reach + 1)^2 (twice the reach with Opening), however far apart the points
+ * are, so one distant outlier adds a few cells instead of a grid up to it. The heights
+ * are those of a grid without bounds: the same as the former bounding-box grid with
+ * LowestInBlock; with Opening they differ within 2 reach cells of the bounding box's
+ * edge, which cut the block short there (and made the ground at the edge depend on
+ * how far the farthest point was). Points more than 2^30 cells from the origin along
+ * the plane are left out (their cell index would not fit an int).
  */
 class LocalGround {
 public:
@@ -64,12 +77,25 @@ public:
   float
   heightAbove (const Eigen::Vector3f& p) const;
 
+  /** \brief Number of cells holding a ground height, what the memory grows with. */
+  std::size_t
+  getCellCount () const
+  {
+    return ground_.size();
+  }
+
+  /** \brief Cells keyed by their two indices. */
+  using CellMap = std::unordered_map<std::uint64_t, float>;
+
 private:
+  /** The cell of \a p; false when its index would not fit an int. */
+  bool
+  cellOf (const Eigen::Vector3f& p, Eigen::Vector2i& cell) const;
+
   Eigen::Vector3f u_, v_, up_;
   float cell_ = 1.f;
   int reach_ = 0;
-  Eigen::Vector2i origin_, size_;
-  std::vector<float> ground_; // ground height per cell; +inf when unknown
+  CellMap ground_; // ground height per cell that has one
 };
 
 /** \brief What goes into a feature vector (Lim & Suter 2008, section 4.1). */
