@@ -1,6 +1,6 @@
 /*
  * Tests of loadInput: an app's input cloud as the file has it and as x, y, z, with the
- * timing line, and the errors of pcl_ext::io::loadCloud.
+ * timing line, and the errors of pcl_ext::io::loadPointFile.
  */
 #include <pcl_ext/apps/input.h>
 
@@ -33,7 +33,7 @@ TEST (Input, LoadsEveryFieldAndTheCoordinates)
   }
   const std::string path = temporaryPath ("input.pcd");
   ASSERT_EQ (pcl::io::savePCDFileASCII (path, cloud), 0);
-  pcl::PCLPointCloud2 input;
+  pcl_ext::io::PointFile input;
   pcl::PointCloud<pcl::PointXYZ> xyz;
   testing::internal::CaptureStdout();
   ASSERT_TRUE (pcl_ext::apps::loadInput (path, input, xyz));
@@ -47,16 +47,17 @@ TEST (Input, LoadsEveryFieldAndTheCoordinates)
   EXPECT_EQ (xyz[2].y, 4.f);
   EXPECT_EQ (xyz[2].z, 3.f);
   // The file's fields are kept for the output.
-  EXPECT_EQ (input.width * input.height, 3u);
+  EXPECT_EQ (input.cloud.width * input.cloud.height, 3u);
+  EXPECT_TRUE (input.origin.isZero());
   bool has_intensity = false;
-  for (const auto& f : input.fields)
+  for (const auto& f : input.cloud.fields)
     has_intensity = has_intensity || f.name == "intensity";
   EXPECT_TRUE (has_intensity);
 }
 
 TEST (Input, MissingFileAndFolderAreRefused)
 {
-  pcl::PCLPointCloud2 input;
+  pcl_ext::io::PointFile input;
   pcl::PointCloud<pcl::PointXYZ> xyz;
   testing::internal::CaptureStdout();
   testing::internal::CaptureStderr();
@@ -65,7 +66,7 @@ TEST (Input, MissingFileAndFolderAreRefused)
   const std::string errors = testing::internal::GetCapturedStderr();
   testing::internal::GetCapturedStdout();
   EXPECT_NE (errors.find ("missing.pcd: no such file"), std::string::npos) << errors;
-  EXPECT_NE (errors.find ("it is a folder"), std::string::npos) << errors;
+  EXPECT_NE (errors.find ("is a folder"), std::string::npos) << errors;
   EXPECT_TRUE (xyz.empty());
-  EXPECT_TRUE (input.data.empty());
+  EXPECT_TRUE (input.cloud.data.empty());
 }
