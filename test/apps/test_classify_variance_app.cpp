@@ -194,11 +194,23 @@ TEST_F (ClassifyVarianceApp, NamedFieldsAndRefusals)
 {
   ASSERT_EQ (run (path ("cube.pcd") + " " + path ("first.pcd") + " -threads 2"), 0)
       << output_;
-  // lv_class exists now: not overwritten unless named.
-  EXPECT_EQ (run (path ("first.pcd") + " " + path ("second.pcd")), 1);
-  EXPECT_NE (output_.find ("already has a field 'lv_class'"), std::string::npos)
+  // lv_class exists now: kept, the result goes to the next free name.
+  EXPECT_EQ (run (path ("first.pcd") + " " + path ("second.pcd") + " -threads 2"), 0)
       << output_;
-  EXPECT_FALSE (exists ("second.pcd"));
+  EXPECT_NE (output_.find ("already has a field 'lv_class' (kept)"), std::string::npos)
+      << output_;
+  EXPECT_NE (output_.find ("goes to 'lv_class_2'"), std::string::npos) << output_;
+  {
+    pcl::PCLPointCloud2 first, second;
+    ASSERT_EQ (pcl::io::loadPCDFile (path ("first.pcd"), first), 0);
+    ASSERT_EQ (pcl::io::loadPCDFile (path ("second.pcd"), second), 0);
+    std::vector<std::uint32_t> kept, before, again;
+    ASSERT_TRUE (pcl_ext::io::getLabelField (first, "lv_class", before));
+    ASSERT_TRUE (pcl_ext::io::getLabelField (second, "lv_class", kept));
+    ASSERT_TRUE (pcl_ext::io::getLabelField (second, "lv_class_2", again));
+    EXPECT_EQ (kept, before);  // the input's field untouched
+    EXPECT_EQ (again, before); // the same cloud classified again
+  }
   EXPECT_EQ (run (path ("first.pcd") + " " + path ("second.pcd") +
                   " -threads 2 -output_field lv_class"),
              0)

@@ -64,16 +64,24 @@ ResultField::checkOutput (const std::string& output,
 }
 
 bool
-ResultField::checkInput (const io::PointFile& input,
-                         const std::string& input_path) const
+ResultField::checkInput (const io::PointFile& input, const std::string& input_path)
 {
   if (pcl::getFieldIndex (input.cloud, name_) < 0 ||
       (cl_ && cl_->given ("output_field")))
     return true;
-  std::cerr << "Error: " << input_path << " already has a field '" << name_
-            << "'; it is not overwritten: name another field with -output_field, or "
-               "this one to replace it.\n";
-  return false;
+  // Never over an input field the user did not name (a truth, a LAS dimension): the
+  // result takes the first free name after it.
+  std::string free_name;
+  for (int suffix = 2; free_name.empty(); ++suffix) {
+    const std::string candidate = name_ + "_" + std::to_string (suffix);
+    if (pcl::getFieldIndex (input.cloud, candidate) < 0)
+      free_name = candidate;
+  }
+  std::cout << "  " << input_path << " already has a field '" << name_
+            << "' (kept): the " << what_ << " goes to '" << free_name
+            << "' (-output_field names another, or this one to replace it)\n";
+  name_ = free_name;
+  return true;
 }
 
 bool

@@ -45,10 +45,12 @@ public:
   checkOutput (const std::string& output,
                std::initializer_list<std::string> optional = {}) const;
 
-  /** \brief After loading: false (with a message) when \a input already has the field
-   * and the user did not name it. */
+  /** \brief After loading: when \a input already has the field and the user did not
+   * name it, the result goes to the first free name \a name_2, \a name_3, ... (the
+   * input's field is kept; a note says where the result is). A field the user named is
+   * replaced. \return true (kept for the callers' checks) */
   bool
-  checkInput (const io::PointFile& input, const std::string& input_path) const;
+  checkInput (const io::PointFile& input, const std::string& input_path);
 
   /** \brief \a cloud with \a values (one per point) in the result field (uint32).
    * \return false (message printed) on a size mismatch */
