@@ -14,7 +14,7 @@
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/transform_file.h>
 #include <pcl_ext/point_types.h>
-#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/io/point_file.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/io/file_output.h>
 
@@ -82,13 +82,19 @@ loadLabels (const std::string& path,
             std::vector<std::uint32_t>& labels)
 {
   pcl_ext::apps::StageTimer timer ("Loading " + path + " ...");
-  pcl::PCLPointCloud2 cloud;
-  if (!pcl_ext::io::loadCloud (path, cloud)) {
+  // Any point file the tools read (LAS, LAZ, E57, PTX, PTS, PCD, PLY, ASCII): only the
+  // label fields are compared, point by point.
+  pcl_ext::io::PointFile file;
+  try {
+    pcl_ext::io::loadPointFile (path, file);
+  }
+  catch (const pcl_ext::io::ReadError& e) {
     std::cout << std::endl;
+    std::cerr << "Error: " << e.what() << '\n';
     return false;
   }
   std::string error;
-  if (!pcl_ext::io::getLabelField (cloud, field, labels, &error)) {
+  if (!pcl_ext::io::getLabelField (file.cloud, field, labels, &error)) {
     std::cout << std::endl;
     std::cerr << "Error: " << path << ": " << error << ".\n";
     return false;
@@ -354,9 +360,10 @@ main (int argc, char** argv)
       "the true one, both text files of 16 (or 12) numbers row by row.");
   cl.addPositional ("prediction.pcd",
                     prediction_path,
-                    "cloud holding the predicted labels (PCD or PLY)");
+                    "cloud holding the predicted labels (LAS, LAZ, E57, PTX, PTS, PCD, "
+                    "PLY or ASCII)");
   cl.addPositional (
-      "truth.pcd", truth_path, "cloud holding the ground truth (PCD or PLY)");
+      "truth.pcd", truth_path, "cloud holding the ground truth (the same formats)");
   cl.addSwitch ("segments", segments, "evaluate a segmentation");
   cl.addSwitch ("classes", classes, "evaluate a classification");
   cl.addSwitch ("transform",

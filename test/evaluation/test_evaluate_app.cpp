@@ -3,6 +3,9 @@
  */
 #include "../app_test.h"
 
+#include <pcl_ext/io/las_writer.h>
+
+#include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
 
@@ -78,6 +81,26 @@ TEST_F (EvaluateApp, Segments)
              0)
       << output_;
   EXPECT_NE (output_.find ("correct                  2"), std::string::npos) << output_;
+}
+
+TEST_F (EvaluateApp, ReadsTheToolsOutputFormats)
+{
+  // The same prediction as a georeferenced LAS file (its label an extra-bytes
+  // dimension, as the tools write their results): the same figures as from the PCD.
+  pcl::PointCloud<pcl::PointXYZL> prediction;
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("prediction.pcd"), prediction), 0);
+  pcl::PCLPointCloud2 blob;
+  pcl::toPCLPointCloud2 (prediction, blob);
+  ASSERT_TRUE (pcl_ext::io::saveLas (
+      path ("prediction.las"), blob, Eigen::Vector3d (500000.0, 6000000.0, 0.0)));
+  ASSERT_EQ (run ("-segments " + path ("prediction.las") + " " + path ("truth.pcd")), 0)
+      << output_;
+  EXPECT_NE (output_.find ("correct                  1"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("missed                   1"), std::string::npos) << output_;
+  // A file that is no point file at all is refused, naming it.
+  std::ofstream (path ("garbage.las")) << "not a point cloud\n";
+  EXPECT_EQ (run ("-segments " + path ("garbage.las") + " " + path ("truth.pcd")), 1);
+  EXPECT_NE (output_.find ("garbage.las"), std::string::npos) << output_;
 }
 
 TEST_F (EvaluateApp, Classes)
