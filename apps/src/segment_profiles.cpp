@@ -118,12 +118,7 @@ main (int argc, char** argv)
                                  "chains. Writes the input points and fields, in the "
                                  "input's coordinates, with the segment in the field "
                                  "'segment' (1.. by decreasing size, 0: none).");
-  pcl_ext::apps::ResultField result (
-      "segment",
-      "segment id",
-      "",
-      "segment ids are not classes; they go to the -output_field field (LAS: an "
-      "extra-bytes dimension)");
+  pcl_ext::apps::ResultField result = pcl_ext::apps::segmentIdField();
   cl.addPositional ("input", input_path, pcl_ext::apps::kInputFormats);
   cl.addPositional ("output", output_path, pcl_ext::apps::kOutputFormats);
   result.addTo (cl);

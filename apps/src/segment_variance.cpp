@@ -46,12 +46,7 @@ main (int argc, char** argv)
                                  "the growth. Writes the input points and fields with "
                                  "the segment (field 'segment': 1.. by decreasing "
                                  "size, 0: none) in the input's coordinates.");
-  pcl_ext::apps::ResultField result (
-      "segment",
-      "segment id",
-      "",
-      "segment ids are not classes; they go to the -output_field field (LAS: an "
-      "extra-bytes dimension)");
+  pcl_ext::apps::ResultField result = pcl_ext::apps::segmentIdField();
   cl.addPositional ("input", input_path, pcl_ext::apps::kInputFormats);
   cl.addPositional ("output", output_path, pcl_ext::apps::kOutputFormats);
   cl.addOption ("k", k, "neighbours per point (the paper's k)");

@@ -145,5 +145,14 @@ asprsClass (const std::string& name)
     return 17;
   return -1;
 }
+ResultField
+segmentIdField ()
+{
+  return ResultField ("segment",
+                      "segment id",
+                      "",
+                      "segment ids are not classes; they go to the -output_field field "
+                      "(LAS: an extra-bytes dimension)");
+}
 } // namespace apps
 } // namespace pcl_ext

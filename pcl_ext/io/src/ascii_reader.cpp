@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace pcl_ext {
@@ -55,6 +56,33 @@ isNameLine (const std::vector<std::string_view>& values)
   return !values.empty();
 }
 
+/** The column a lower-case name stands for, in a column spec or a header line: x, y, z;
+ * i / intensity; r / red, g / green, b / blue; label / l / class / classification;
+ * skip / _ / - for a column to ignore. None for any other name. */
+std::optional<AsciiColumn>
+columnNamed (std::string_view name)
+{
+  if (name == "x")
+    return AsciiColumn::X;
+  if (name == "y")
+    return AsciiColumn::Y;
+  if (name == "z")
+    return AsciiColumn::Z;
+  if (name == "i" || name == "intensity")
+    return AsciiColumn::Intensity;
+  if (name == "r" || name == "red")
+    return AsciiColumn::Red;
+  if (name == "g" || name == "green")
+    return AsciiColumn::Green;
+  if (name == "b" || name == "blue")
+    return AsciiColumn::Blue;
+  if (name == "label" || name == "l" || name == "class" || name == "classification")
+    return AsciiColumn::Label;
+  if (name == "skip" || name == "_" || name == "-")
+    return AsciiColumn::Skip;
+  return std::nullopt;
+}
+
 /** The columns a header line names (quotes and case ignored; names it does not know
  * are skipped columns), or an empty vector when it does not name x, y and z. */
 std::vector<AsciiColumn>
@@ -71,23 +99,8 @@ columnsFromNames (std::string_view line)
   };
   for (auto name : names) {
     name = detail::trim (name);
-    AsciiColumn c = AsciiColumn::Skip;
-    if (name == "x")
-      c = AsciiColumn::X;
-    else if (name == "y")
-      c = AsciiColumn::Y;
-    else if (name == "z")
-      c = AsciiColumn::Z;
-    else if (name == "i" || name == "intensity")
-      c = AsciiColumn::Intensity;
-    else if (name == "r" || name == "red")
-      c = AsciiColumn::Red;
-    else if (name == "g" || name == "green")
-      c = AsciiColumn::Green;
-    else if (name == "b" || name == "blue")
-      c = AsciiColumn::Blue;
-    else if (name == "label" || name == "class" || name == "classification")
-      c = AsciiColumn::Label;
+    // Names a header may hold that are no column of ours are skipped columns.
+    const AsciiColumn c = columnNamed (name).value_or (AsciiColumn::Skip);
     columns.push_back (has (c) ? AsciiColumn::Skip : c);
   }
   if (!has (AsciiColumn::X) || !has (AsciiColumn::Y) || !has (AsciiColumn::Z))
@@ -144,28 +157,11 @@ parseColumnSpec (const std::string& spec)
     std::transform (name.begin(), name.end(), name.begin(), [] (unsigned char c) {
       return static_cast<char> (std::tolower (c));
     });
-    AsciiColumn c;
-    if (name == "x")
-      c = AsciiColumn::X;
-    else if (name == "y")
-      c = AsciiColumn::Y;
-    else if (name == "z")
-      c = AsciiColumn::Z;
-    else if (name == "i" || name == "intensity")
-      c = AsciiColumn::Intensity;
-    else if (name == "r" || name == "red")
-      c = AsciiColumn::Red;
-    else if (name == "g" || name == "green")
-      c = AsciiColumn::Green;
-    else if (name == "b" || name == "blue")
-      c = AsciiColumn::Blue;
-    else if (name == "label" || name == "l" || name == "class")
-      c = AsciiColumn::Label;
-    else if (name == "skip" || name == "_" || name == "-")
-      c = AsciiColumn::Skip;
-    else
+    const std::optional<AsciiColumn> named = columnNamed (name);
+    if (!named)
       throw std::invalid_argument ("unknown column '" + name + "' in column spec '" +
                                    spec + "' (known: x y z i r g b label skip)");
+    const AsciiColumn c = *named;
     if (c != AsciiColumn::Skip &&
         std::find (columns.begin(), columns.end(), c) != columns.end())
       throw std::invalid_argument ("column '" + name +

@@ -4,6 +4,8 @@
 #include <pcl_ext/io/cloud_io.h>
 #include <pcl_ext/io/file_output.h>
 
+#include "pcd_header.h"
+
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
@@ -16,12 +18,8 @@
 
 namespace pcl_ext {
 namespace io {
-namespace {
-/** Whether \a path starts like a PCD file: a FIELDS line naming at least one field
- * before a DATA line. PCL 1.13's reader crashes on files without fields (fixed upstream
- * after 1.13), so anything else is refused before it gets there. */
 bool
-hasPcdHeader (const std::string& path)
+detail::hasPcdHeader (const std::string& path)
 {
   std::ifstream in (path, std::ios::binary);
   std::string line;
@@ -37,7 +35,6 @@ hasPcdHeader (const std::string& path)
   }
   return false;
 }
-} // namespace
 
 bool
 loadCloud (const std::string& path, pcl::PCLPointCloud2& cloud)
@@ -68,7 +65,7 @@ loadCloud (const std::string& path, pcl::PCLPointCloud2& cloud)
   int result = -1;
   try {
     if (ext == "pcd")
-      result = hasPcdHeader (path) ? pcl::io::loadPCDFile (path, cloud) : -1;
+      result = detail::hasPcdHeader (path) ? pcl::io::loadPCDFile (path, cloud) : -1;
     else if (ext == "ply")
       result = pcl::io::loadPLYFile (path, cloud);
     else {

@@ -9,6 +9,7 @@
 #include <pcl_ext/io/ptx_reader.h>
 
 #include "cloud_repack.h"
+#include "pcd_header.h"
 
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
@@ -24,33 +25,13 @@
 namespace pcl_ext {
 namespace io {
 namespace {
-/** Whether the PCD header of \a path names at least one field before its DATA line.
- * PCL 1.13's reader crashes on files without fields (fixed upstream after 1.13). */
-bool
-pcdHeaderHasFields (const std::string& path)
-{
-  std::ifstream in (path, std::ios::binary);
-  std::string line;
-  bool fields = false;
-  for (int i = 0; i < 64 && std::getline (in, line); ++i) {
-    std::istringstream words (line);
-    std::string key, first;
-    words >> key;
-    if (key == "FIELDS")
-      fields = static_cast<bool> (words >> first);
-    else if (key == "DATA")
-      return fields;
-  }
-  return false;
-}
-
 /** Reads a PCD or PLY file through PCL (its own messages silenced: the ReadError
  * thrown names the file). */
 void
 loadPclFile (const std::string& path, PointFileFormat format, pcl::PCLPointCloud2& raw)
 {
   const char* name = formatName (format);
-  if (format == PointFileFormat::PCD && !pcdHeaderHasFields (path))
+  if (format == PointFileFormat::PCD && !detail::hasPcdHeader (path))
     throw ReadError (path, 0, "not a valid PCD file (no FIELDS before DATA)");
   const auto level = pcl::console::getVerbosityLevel();
   pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);

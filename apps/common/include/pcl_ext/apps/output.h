@@ -89,5 +89,9 @@ saveOutput (const std::string& path,
  * bridge 17; -1 for a name with no code (matched case-insensitively on words). */
 int
 asprsClass (const std::string& name);
+/** \brief The segmenters' result field: segment ids in 'segment' (1.. by decreasing
+ * size, 0: none); -asprs refused, segment ids being no classes. */
+ResultField
+segmentIdField ();
 } // namespace apps
 } // namespace pcl_ext

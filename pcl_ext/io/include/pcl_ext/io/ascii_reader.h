@@ -26,7 +26,8 @@ enum class AsciiColumn {
 
 /** \brief Parse a column spec: names separated by commas (or spaces), case-insensitive.
  *
- * Names: x, y, z; i or intensity; r or red, g or green, b or blue; label, l or class;
+ * Names: x, y, z; i or intensity; r or red, g or green, b or blue; label, l, class or
+ * classification;
  * skip, _ or - for a column to ignore. Example: "x,y,z,i,r,g,b,label", or
  * "x,y,z,label,_" for the Oakland 3-D files. \throw std::invalid_argument naming the
  * offending entry, when a name is unknown, x, y or z is missing, or a name other than
