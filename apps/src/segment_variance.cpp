@@ -167,10 +167,10 @@ main (int argc, char** argv)
     segmented += c.indices.size();
   for (const auto& c : *rg.getInputClasses())
     ++classes[std::min<std::size_t> (c.label, pcl_ext::kNumPointClasses - 1)];
-  std::cout << clusters.size() << " segments, " << segmented << " points segmented, "
-            << cloud->size() - segmented << " not (surface " << classes[1] << ", edge "
-            << classes[2] << ", boundary " << classes[3] << ", unknown " << classes[0]
-            << ")\n";
+  std::cout << clusters.size() << (clusters.size() == 1 ? " segment, " : " segments, ")
+            << segmented << " points segmented, " << cloud->size() - segmented
+            << " not (surface " << classes[1] << ", edge " << classes[2]
+            << ", boundary " << classes[3] << ", unknown " << classes[0] << ")\n";
 
   pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> intersections;
   if (intersect) {
