@@ -50,3 +50,28 @@ TEST (FileOutput, UnwritableTargetsAreRefusedUpFront)
   EXPECT_EQ (pcl_ext::io::fileExtension ("a/b.c/scan.PCD"), "pcd");
   EXPECT_EQ (pcl_ext::io::fileExtension ("a/b.c/scan"), "");
 }
+
+TEST (FileOutput, AtomicOutputAppearsOnlyOnCommit)
+{
+  const std::string dir = freshFolder ("atomic_output");
+  const std::string path = dir + "/result.txt";
+  {
+    pcl_ext::io::AtomicFileOutput abandoned;
+    ASSERT_TRUE (abandoned.open (path));
+    std::ofstream (abandoned.getTemporaryPath()) << "half";
+  }
+  EXPECT_TRUE (listFolder (dir).empty());
+  pcl_ext::io::AtomicFileOutput output;
+  ASSERT_TRUE (output.open (path));
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (output.commit()); // nothing was written to the temporary path
+  testing::internal::GetCapturedStderr();
+  ASSERT_TRUE (output.open (path));
+  std::ofstream (output.getTemporaryPath()) << "whole";
+  EXPECT_TRUE (listFolder (dir).size() == 1u && listFolder (dir)[0] != "result.txt");
+  ASSERT_TRUE (output.commit());
+  EXPECT_EQ (readAll (path), "whole");
+  EXPECT_EQ (listFolder (dir), std::vector<std::string>{"result.txt"});
+  std::remove (path.c_str());
+  ::rmdir (dir.c_str());
+}

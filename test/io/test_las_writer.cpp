@@ -1,7 +1,7 @@
 /*
  * saveLas: every point format written back byte for byte, new files from PCL clouds,
- * the integer round trip of georeferenced coordinates, extra bytes, header counts and
- * the refusals.
+ * the integer round trip of georeferenced coordinates, extra bytes, header counts, the
+ * refusals, and LasWriter's chunks.
  */
 #include <pcl_ext/io/file_output.h>
 #include <pcl_ext/io/las_reader.h>
@@ -15,6 +15,7 @@
 #include "temp_folder.h"
 #include "test_helpers.h"
 
+#include <algorithm>
 #include <cmath>
 
 using las_test::get;
@@ -425,4 +426,69 @@ TEST (LasWriter, Refusals)
   const auto names = listFolder (folder());
   for (const auto& n : names)
     EXPECT_EQ (n.find (".tmp"), std::string::npos) << n;
+}
+
+TEST (LasWriter, ChunksWriteTheFileSaveLasWrites)
+{
+  las_test::LasFile f;
+  f.format_byte = 7;
+  f.minor = 4;
+  f.record_length = static_cast<std::uint16_t> (pcl_ext::io::lasPointRecordLength (7));
+  f.vlrs.push_back ({"LASF_Projection", 2112, "WKT", {'W', 'K', 'T', 0}});
+  f.randomRecords (2500, 7);
+  const std::string in = pathOf ("chunks_in.las");
+  las_test::writeBytes (in, f.bytes());
+  const Loaded whole = load (in);
+  ASSERT_TRUE (pcl_ext::io::saveLas (
+      pathOf ("whole.las"), whole.cloud, whole.info.origin, &whole.info));
+
+  pcl_ext::io::LasReader reader;
+  reader.open (in);
+  pcl::PCLPointCloud2 chunk;
+  ASSERT_EQ (reader.read (1000, chunk), 1000u);
+  pcl_ext::io::LasWriter writer;
+  ASSERT_TRUE (writer.open (
+      pathOf ("chunks.las"), chunk, reader.getOrigin(), &reader.getFileInfo()));
+  do
+    ASSERT_TRUE (writer.write (chunk));
+  while (reader.read (1000, chunk) > 0);
+  EXPECT_EQ (writer.getPointsWritten(), 2500u);
+  const auto names = listFolder (folder()); // nothing at the path before close()
+  EXPECT_EQ (std::count (names.begin(), names.end(), "chunks.las"), 0);
+  ASSERT_TRUE (writer.close());
+  EXPECT_TRUE (las_test::readBytes (pathOf ("chunks.las")) ==
+               las_test::readBytes (pathOf ("whole.las")));
+  EXPECT_TRUE (records (pathOf ("chunks.las")) == f.records);
+}
+
+TEST (LasWriter, AnUnfinishedFileLeavesNothing)
+{
+  pcl::PointCloud<pcl::PointXYZ> xyz;
+  xyz.push_back (pcl::PointXYZ (1, 2, 3));
+  pcl::PCLPointCloud2 blob;
+  pcl::toPCLPointCloud2 (xyz, blob);
+  const std::string dir = freshFolder ("las_writer_unfinished");
+  const std::string path = dir + "/out.las";
+  pcl_ext::io::writeTextFile (path, "previous");
+  {
+    pcl_ext::io::LasWriter abandoned; // destroyed without close()
+    ASSERT_TRUE (abandoned.open (path, blob, Eigen::Vector3d::Zero()));
+    ASSERT_TRUE (abandoned.write (blob));
+  }
+  pcl_ext::io::LasWriter writer;
+  ASSERT_TRUE (writer.open (path, blob, Eigen::Vector3d::Zero()));
+  pcl::PointCloud<pcl::PointXYZI> other;
+  other.push_back (pcl::PointXYZI (1.0f));
+  pcl::PCLPointCloud2 other_blob;
+  pcl::toPCLPointCloud2 (other, other_blob);
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (writer.write (other_blob)); // other fields than open() was given
+  EXPECT_FALSE (writer.write (blob));       // a failed writer stays failed
+  EXPECT_FALSE (writer.close());
+  pcl_ext::io::LasWriter never_opened;
+  EXPECT_FALSE (never_opened.write (blob));
+  EXPECT_FALSE (never_opened.close());
+  testing::internal::GetCapturedStderr();
+  EXPECT_EQ (readAll (path), "previous");
+  EXPECT_EQ (listFolder (dir), std::vector<std::string>{"out.las"});
 }

@@ -102,16 +102,50 @@ checkOutputsWritable (const std::string& output,
   return true;
 }
 
+AtomicFileOutput::~AtomicFileOutput() { abandon(); }
+
+bool
+AtomicFileOutput::open (const std::string& path)
+{
+  abandon();
+  if (!checkWritable (path))
+    return false;
+  path_ = path;
+  temporary_ = temporaryPathFor (path);
+  return true;
+}
+
+bool
+AtomicFileOutput::commit()
+{
+  if (!temporary_.empty() && fileExists (temporary_) &&
+      std::rename (temporary_.c_str(), path_.c_str()) == 0) {
+    temporary_.clear();
+    return true;
+  }
+  abandon();
+  PCL_ERROR ("[pcl_ext::io] could not write %s; nothing was written.\n", path_.c_str());
+  return false;
+}
+
+void
+AtomicFileOutput::abandon()
+{
+  if (!temporary_.empty())
+    std::remove (temporary_.c_str());
+  temporary_.clear();
+}
+
 bool
 writeFileAtomically (const std::string& path,
                      const std::function<bool (const std::string&)>& writer)
 {
-  if (!checkWritable (path))
+  AtomicFileOutput output;
+  if (!output.open (path))
     return false;
-  const std::string temporary = temporaryPathFor (path);
   bool ok = false;
   try {
-    ok = writer (temporary) && fileExists (temporary);
+    ok = writer (output.getTemporaryPath());
   }
   catch (const std::exception& e) {
     PCL_ERROR ("[pcl_ext::io::writeFileAtomically] writing %s failed: %s\n",
@@ -119,9 +153,9 @@ writeFileAtomically (const std::string& path,
                e.what());
     ok = false;
   }
-  if (ok && std::rename (temporary.c_str(), path.c_str()) == 0)
-    return true;
-  std::remove (temporary.c_str());
+  if (ok)
+    return output.commit();
+  output.abandon();
   PCL_ERROR (
       "[pcl_ext::io::writeFileAtomically] could not write %s; nothing was written.\n",
       path.c_str());

@@ -22,6 +22,43 @@ writeFileAtomically (
     const std::string& path,
     const std::function<bool (const std::string& temporary_path)>& writer);
 
+/** \brief A file written under a temporary name in its folder and moved to its path
+ * only when complete: the machinery of writeFileAtomically, for writers that write a
+ * file over many calls (e.g. LasWriter). Destroyed before commit(), it removes the
+ * temporary file. */
+class AtomicFileOutput {
+public:
+  AtomicFileOutput() = default;
+  ~AtomicFileOutput();
+  AtomicFileOutput (const AtomicFileOutput&) = delete;
+  AtomicFileOutput&
+  operator= (const AtomicFileOutput&) = delete;
+
+  /** \brief Choose the temporary path for \a path (checkWritable first). \return false
+   * (an error naming \a path) when \a path cannot be written */
+  bool
+  open (const std::string& path);
+
+  /** \brief Where to write until commit(). */
+  const std::string&
+  getTemporaryPath () const
+  {
+    return temporary_;
+  }
+
+  /** \brief Rename the temporary file over the path. \return false (the temporary file
+   * removed, an error naming the path) when it does not exist or cannot be renamed */
+  bool
+  commit ();
+
+  /** \brief Remove the temporary file; the path is left as it was. */
+  void
+  abandon ();
+
+private:
+  std::string path_, temporary_;
+};
+
 /** \brief Write text to \a path atomically (see writeFileAtomically). */
 bool
 writeTextFile (const std::string& path, const std::string& text);

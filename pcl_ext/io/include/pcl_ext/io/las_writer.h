@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
+#include <memory>
 #include <string>
 
 namespace pcl_ext {
@@ -62,5 +64,62 @@ saveLas (const std::string& path,
          const pcl::PCLPointCloud2& cloud,
          const Eigen::Vector3d& origin,
          const LasFileInfo* like = nullptr);
+
+/** \brief Writes an uncompressed LAS file chunk by chunk, with the rules of saveLas,
+ * so that a file larger than memory can be written (e.g. the chunks of a LasReader with
+ * a result field added).
+ *
+ * open() takes the layout of the chunks (their fields; the points of \a layout are not
+ * written), write() appends the points of a chunk of that layout, close() writes the
+ * EVLRs and the header's counts and bounds and renames the temporary file over the
+ * path. Nothing is visible at the path before close() succeeds: a writer destroyed
+ * without close(), or one whose write() or close() failed, removes its temporary file
+ * and leaves the path as it was.
+ *
+ * \code
+ * pcl_ext::io::LasWriter writer;
+ * if (!writer.open ("out.las", first_chunk, reader.getOrigin (), &reader.getFileInfo
+ * ())) return false; do ok = writer.write (chunk); while (ok && reader.read (1000000,
+ * chunk) > 0); ok = ok && writer.close (); \endcode
+ */
+class LasWriter {
+public:
+  LasWriter();
+  ~LasWriter();
+  LasWriter (const LasWriter&) = delete;
+  LasWriter&
+  operator= (const LasWriter&) = delete;
+
+  /** \brief Start writing \a path (see saveLas for \a origin and \a like). \return
+   * false (PCL_ERROR names the reason, nothing is written) when the folder is not
+   * writable, the origin is not finite or a field of \a layout cannot be stored */
+  bool
+  open (const std::string& path,
+        const pcl::PCLPointCloud2& layout,
+        const Eigen::Vector3d& origin,
+        const LasFileInfo* like = nullptr);
+
+  /** \brief Append the points of \a chunk, whose fields must be those of the layout
+   * given to open(). \return false (PCL_ERROR names the reason; the file will not be
+   * written) when no file is open, the fields differ, the data is shorter than the
+   * points, a coordinate cannot be stored or the disk is full */
+  bool
+  write (const pcl::PCLPointCloud2& chunk);
+
+  /** \brief Finish the file and move it to the path given to open(). \return false
+   * (PCL_ERROR names the reason; nothing is left at the path) when a write failed, a
+   * file before LAS 1.4 would hold more than 2^32 - 1 points or the file cannot be
+   * finished */
+  bool
+  close ();
+
+  /** \brief The points written so far. */
+  std::uint64_t
+  getPointsWritten () const;
+
+private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 } // namespace io
 } // namespace pcl_ext
