@@ -6,7 +6,7 @@
 #   scripts/test.sh --sanitize         # ASan + UBSan build in build-sanitize/, then every test
 #   scripts/test.sh --sanitize-quick   # ASan + UBSan build in build-sanitize-quick/ with the
 #                                      # libraries precompiled for the point types these tests
-#                                      # use, then the unit tests of io, common, search,
+#                                      # use, then the unit tests of io, common, search, tiling,
 #                                      # apps/common, evaluation, features, segmentation and
 #                                      # the fuzz seeds (not the scene-sized `quality` tests)
 #   scripts/test.sh --fuzz [SECONDS]   # clang libFuzzer build in build-fuzz/, then each fuzz
@@ -32,7 +32,7 @@ jobs="$(pcl_ext_jobs)"
 
 # Unit tests of the sanitized quick run: ctest folders under test/ (small inputs; the tests on
 # generated scenes, label `quality`, and on real data, label `data`, are left to --sanitize).
-quick_dirs=(io common search apps/common evaluation features segmentation fuzz)
+quick_dirs=(io common search tiling apps/common evaluation features segmentation fuzz)
 # The point types those tests use. Every precompiled type costs each library source about ten
 # seconds under the sanitizers; the whole sanitized suite keeps the full list.
 quick_point_types="pcl::PointXYZ;pcl::PointXYZRGBNormal"

@@ -19,6 +19,20 @@ public:
     std::iota (parent_.begin(), parent_.end(), 0u);
   }
 
+  /** \brief Add a set of one new element; \return the element (the previous size). */
+  std::uint32_t
+  add ()
+  {
+    parent_.push_back (static_cast<std::uint32_t> (parent_.size()));
+    return parent_.back();
+  }
+
+  std::size_t
+  size () const
+  {
+    return parent_.size();
+  }
+
   std::uint32_t
   find (std::uint32_t x)
   {
