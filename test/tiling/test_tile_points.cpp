@@ -18,7 +18,8 @@ TEST (TilePoints, WrittenThroughSmallBuffersAndReadBack)
   {
     pcl_ext::tiling::TilePointWriter writer (dir, 3, 7);
     for (std::uint64_t i = 0; i < 1000; ++i) {
-      const TilePoint p{i, 0.5f * i, -1.0f * i, 3.0f};
+      const TilePoint p{
+          i, 0.5f * i, -1.0f * i, 3.0f, static_cast<std::uint32_t> (i % 3)};
       ASSERT_TRUE (writer.add (i % 2, p)); // tile 0 even, tile 1 odd, tile 2 none
     }
     ASSERT_TRUE (writer.finish());
@@ -33,6 +34,7 @@ TEST (TilePoints, WrittenThroughSmallBuffersAndReadBack)
     EXPECT_EQ (points[i].x, 0.5f * (2 * i));
     EXPECT_EQ (points[i].y, -1.0f * (2 * i));
     EXPECT_EQ (points[i].z, 3.0f);
+    EXPECT_EQ (points[i].owner, (2 * i) % 3);
   }
   ASSERT_TRUE (pcl_ext::tiling::readTilePoints (dir, 2, points));
   EXPECT_TRUE (points.empty()); // an empty tile has an empty file
@@ -41,7 +43,7 @@ TEST (TilePoints, WrittenThroughSmallBuffersAndReadBack)
 TEST (TilePoints, BrokenFilesAreRefused)
 {
   const std::string dir = freshFolder ("tile_points_broken");
-  std::vector<TilePoint> points{{1, 0, 0, 0}};
+  std::vector<TilePoint> points{{1, 0, 0, 0, 0}};
   testing::internal::CaptureStderr();
   EXPECT_FALSE (pcl_ext::tiling::readTilePoints (dir, 9, points)); // missing
   EXPECT_TRUE (points.empty());
@@ -49,13 +51,13 @@ TEST (TilePoints, BrokenFilesAreRefused)
   EXPECT_FALSE (pcl_ext::tiling::readTilePoints (dir, 0, points)); // 3 bytes
   {
     pcl_ext::tiling::TilePointWriter writer (dir, 1);
-    writer.add (0, {5, 0, 0, 0});
-    writer.add (0, {4, 0, 0, 0}); // out of order
+    writer.add (0, {5, 0, 0, 0, 0});
+    writer.add (0, {4, 0, 0, 0, 0}); // out of order
     writer.finish();
   }
   EXPECT_FALSE (pcl_ext::tiling::readTilePoints (dir, 0, points));
   pcl_ext::tiling::TilePointWriter unwritable ("/nonexistent-folder", 1, 1);
-  EXPECT_FALSE (unwritable.add (0, {0, 0, 0, 0}));
+  EXPECT_FALSE (unwritable.add (0, {0, 0, 0, 0, 0}));
   EXPECT_FALSE (unwritable.finish());
   testing::internal::GetCapturedStderr();
 }

@@ -39,6 +39,14 @@ CommandLine::addPositional (const std::string& name,
 }
 
 void
+CommandLine::addPositionalList (const std::string& name,
+                                std::vector<std::string>& values,
+                                const std::string& help)
+{
+  positionals_.push_back ({name, nullptr, help, true, &values});
+}
+
+void
 CommandLine::addOption (const std::string& name, int& value, const std::string& help)
 {
   options_.push_back ({name, Kind::Int, &value, help, toText (value)});
@@ -117,7 +125,7 @@ CommandLine::assign (Option& option, const std::string& text)
 int
 CommandLine::parse (int argc, const char* const* argv)
 {
-  std::size_t next_positional = 0;
+  std::vector<std::string> args;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-h" || arg == "-help" || arg == "--help") {
@@ -129,11 +137,7 @@ CommandLine::parse (int argc, const char* const* argv)
         arg.size() > 1 && arg[0] == '-' &&
         (std::isalpha (static_cast<unsigned char> (arg[1])) || arg[1] == '-');
     if (!is_option) {
-      if (next_positional >= positionals_.size()) {
-        usageError ("unexpected argument '" + arg + "'");
-        return 1;
-      }
-      *positionals_[next_positional++].target = arg;
+      args.push_back (arg);
       continue;
     }
     const std::string name = arg.substr (arg.find_first_not_of ('-'));
@@ -164,12 +168,44 @@ CommandLine::parse (int argc, const char* const* argv)
       return 1;
     }
   }
-  for (std::size_t p = next_positional; p < positionals_.size(); ++p)
-    if (positionals_[p].required) {
-      usageError ("missing argument " + positionals_[p].name);
-      return 1;
+  return assignPositionals (args) ? -1 : 1;
+}
+
+bool
+CommandLine::assignPositionals (const std::vector<std::string>& args)
+{
+  std::size_t list = positionals_.size();
+  for (std::size_t p = 0; p < positionals_.size(); ++p)
+    if (positionals_[p].list)
+      list = p;
+  if (list == positionals_.size()) {
+    if (args.size() > positionals_.size()) {
+      usageError ("unexpected argument '" + args[positionals_.size()] + "'");
+      return false;
     }
-  return -1;
+    for (std::size_t a = 0; a < args.size(); ++a)
+      *positionals_[a].target = args[a];
+    for (std::size_t p = args.size(); p < positionals_.size(); ++p)
+      if (positionals_[p].required) {
+        usageError ("missing argument " + positionals_[p].name);
+        return false;
+      }
+    return true;
+  }
+  // With a list every positional is required: those before it, those after it, and at
+  // least one for the list.
+  const std::size_t after = positionals_.size() - list - 1;
+  if (args.size() < positionals_.size()) {
+    usageError ("missing argument " +
+                positionals_[std::min (args.size(), positionals_.size() - 1)].name);
+    return false;
+  }
+  for (std::size_t p = 0; p < list; ++p)
+    *positionals_[p].target = args[p];
+  positionals_[list].list->assign (args.begin() + list, args.end() - after);
+  for (std::size_t p = 0; p < after; ++p)
+    *positionals_[list + 1 + p].target = args[args.size() - after + p];
+  return true;
 }
 
 bool
@@ -186,7 +222,9 @@ CommandLine::synopsis() const
 {
   std::string s = program_;
   for (const auto& p : positionals_)
-    s += p.required ? " " + p.name : " [" + p.name + "]";
+    s += p.list       ? " " + p.name + "..."
+         : p.required ? " " + p.name
+                      : " [" + p.name + "]";
   if (!options_.empty())
     s += " <options>";
   return s;

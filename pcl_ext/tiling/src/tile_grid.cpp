@@ -92,21 +92,37 @@ TileGrid::getTilesNear (double x, double y, std::vector<std::size_t>& tiles) con
 }
 
 double
-TileGrid::getReach (std::size_t tile, double x, double y) const
+TileGrid::getReach (std::size_t tile, double x, double y, std::size_t rings) const
 {
   Eigen::Vector2d lo, hi;
   getCoreBox (tile, lo, hi);
   const std::size_t c = tile % columns_, r = tile / columns_;
+  const double widen = static_cast<double> (rings) * size_ + halo_;
   double reach = std::numeric_limits<double>::infinity();
-  if (c > 0)
-    reach = std::min (reach, x - (lo.x() - halo_));
-  if (c + 1 < columns_)
-    reach = std::min (reach, (hi.x() + halo_) - x);
-  if (r > 0)
-    reach = std::min (reach, y - (lo.y() - halo_));
-  if (r + 1 < rows_)
-    reach = std::min (reach, (hi.y() + halo_) - y);
+  if (c > rings)
+    reach = std::min (reach, x - (lo.x() - widen));
+  if (c + rings + 1 < columns_)
+    reach = std::min (reach, (hi.x() + widen) - x);
+  if (r > rings)
+    reach = std::min (reach, y - (lo.y() - widen));
+  if (r + rings + 1 < rows_)
+    reach = std::min (reach, (hi.y() + widen) - y);
   return reach;
+}
+
+void
+TileGrid::getTilesAround (std::size_t tile,
+                          std::size_t rings,
+                          std::vector<std::size_t>& tiles) const
+{
+  tiles.clear();
+  const std::size_t c = tile % columns_, r = tile / columns_;
+  const std::size_t c0 = c > rings ? c - rings : 0, r0 = r > rings ? r - rings : 0;
+  const std::size_t c1 = std::min (columns_ - 1, c + rings);
+  const std::size_t r1 = std::min (rows_ - 1, r + rings);
+  for (std::size_t row = r0; row <= r1; ++row)
+    for (std::size_t col = c0; col <= c1; ++col)
+      tiles.push_back (row * columns_ + col);
 }
 } // namespace tiling
 } // namespace pcl_ext

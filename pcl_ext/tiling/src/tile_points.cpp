@@ -12,7 +12,7 @@
 namespace pcl_ext {
 namespace tiling {
 namespace {
-constexpr std::size_t kRecordBytes = 20;
+constexpr std::size_t kRecordBytes = 24;
 
 void
 encode (const TilePoint& p, char* out)
@@ -21,6 +21,7 @@ encode (const TilePoint& p, char* out)
   std::memcpy (out + 8, &p.x, 4);
   std::memcpy (out + 12, &p.y, 4);
   std::memcpy (out + 16, &p.z, 4);
+  std::memcpy (out + 20, &p.owner, 4);
 }
 } // namespace
 
@@ -120,6 +121,7 @@ readTilePoints (const std::string& folder,
     std::memcpy (&points[i].x, r + 8, 4);
     std::memcpy (&points[i].y, r + 12, 4);
     std::memcpy (&points[i].z, r + 16, 4);
+    std::memcpy (&points[i].owner, r + 20, 4);
     if (i > 0 && points[i].index <= points[i - 1].index) {
       PCL_ERROR ("[pcl_ext::tiling::readTilePoints] %s: point indices not ascending at "
                  "record %zu.\n",

@@ -105,3 +105,35 @@ TEST (CommandLine, UsageErrorsExitOne)
                std::string::npos);
   }
 }
+
+TEST (CommandLine, APositionalListTakesWhatTheOthersLeave)
+{
+  std::string method, output;
+  std::vector<std::string> inputs;
+  int k = 0;
+  pcl_ext::apps::CommandLine cl ("pcl_ext_test", "A test tool.");
+  cl.addPositional ("METHOD", method, "method");
+  cl.addPositionalList ("input", inputs, "inputs");
+  cl.addPositional ("output", output, "output");
+  cl.addOption ("k", k, "neighbours");
+  std::vector<const char*> argv{
+      "pcl_ext_test", "classify", "a.las", "-k", "5", "b.laz", "c.e57", "out.las"};
+  ASSERT_EQ (cl.parse (static_cast<int> (argv.size()), argv.data()), -1);
+  EXPECT_EQ (method, "classify");
+  EXPECT_EQ (inputs, (std::vector<std::string>{"a.las", "b.laz", "c.e57"}));
+  EXPECT_EQ (output, "out.las");
+  EXPECT_EQ (k, 5);
+
+  std::vector<std::string> few_inputs;
+  std::string few_method, few_output;
+  pcl_ext::apps::CommandLine few ("pcl_ext_test", "A test tool.");
+  few.addPositional ("METHOD", few_method, "method");
+  few.addPositionalList ("input", few_inputs, "inputs");
+  few.addPositional ("output", few_output, "output");
+  std::vector<const char*> two{"pcl_ext_test", "classify", "out.las"};
+  testing::internal::CaptureStderr();
+  EXPECT_EQ (few.parse (static_cast<int> (two.size()), two.data()), 1);
+  const std::string error = testing::internal::GetCapturedStderr();
+  EXPECT_NE (error.find ("missing argument"), std::string::npos) << error;
+  EXPECT_NE (error.find ("input..."), std::string::npos) << error;
+}

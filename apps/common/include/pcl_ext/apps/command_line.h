@@ -40,6 +40,13 @@ public:
                  const std::string& help,
                  bool required = true);
 
+  /** \brief One or more positional arguments (e.g. `input...`): those that the
+   * positionals declared before and after it leave (one list per command line). */
+  void
+  addPositionalList (const std::string& name,
+                     std::vector<std::string>& values,
+                     const std::string& help);
+
   void
   addOption (const std::string& name, int& value, const std::string& help);
   void
@@ -81,7 +88,12 @@ private:
     std::string* target;
     std::string help;
     bool required;
+    std::vector<std::string>* list = nullptr;
   };
+
+  /** Hands the positional arguments to their targets; false after a usage error. */
+  bool
+  assignPositionals (const std::vector<std::string>& args);
 
   bool
   assign (Option& option, const std::string& text);

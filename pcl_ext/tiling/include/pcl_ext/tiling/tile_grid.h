@@ -97,12 +97,20 @@ public:
   getTilesNear (double x, double y, std::vector<std::size_t>& tiles) const;
 
   /** \brief How far (x, y), a point of \a tile's core or halo, is from the edge of the
-   * data \a tile holds: the halo box's nearest side, sides on the grid's outer border
-   * excepted (no data lies beyond them). Infinity for a single tile. A neighbourhood
-   * search around the point is complete within the tile when its radius is at most this
-   * distance. */
+   * data \a tile holds: the sides of its core box widened by \a rings tile sizes and
+   * the halo (rings = 0: the tile's own points; 1: also the cores and halos of the 8
+   * tiles around, ...), sides beyond the grid's outer border excepted (no data lies
+   * there). Infinity when no side is left. A neighbourhood search around the point is
+   * complete within those points when its radius is at most this distance. */
   double
-  getReach (std::size_t tile, double x, double y) const;
+  getReach (std::size_t tile, double x, double y, std::size_t rings = 0) const;
+
+  /** \brief The tiles within \a rings rings around \a tile (itself included),
+   * ascending. */
+  void
+  getTilesAround (std::size_t tile,
+                  std::size_t rings,
+                  std::vector<std::size_t>& tiles) const;
 
 private:
   Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();

@@ -11,12 +11,14 @@
 namespace pcl_ext {
 namespace tiling {
 /** \brief A point as a tile holds it: its index in the whole input (the inputs one
- * after another, each in file order) and its coordinates relative to the run's origin,
- * as the reader gave them (float, so that a tile computes on the very values an untiled
- * run does). */
+ * after another, each in file order), its coordinates relative to the run's origin as
+ * the reader gave them (float, so that a tile computes on the very values an untiled
+ * run does) and the tile whose core holds it (its owner: the tile itself for a core
+ * point, a neighbour for a halo point). */
 struct TilePoint {
   std::uint64_t index = 0;
   float x = 0.0f, y = 0.0f, z = 0.0f;
+  std::uint32_t owner = 0;
 };
 
 /** \brief The file of tile \a tile in \a folder: `tile_<tile>.points`. */
@@ -26,9 +28,10 @@ tilePointsPath (const std::string& folder, std::size_t tile);
 /** \brief Sorts points into the files of their tiles in a work folder, a bounded buffer
  * per tile: one pass over inputs of any size holds at most the buffers.
  *
- * Each file is a sequence of 20-byte records (index UINT64, x y z FLOAT32, in the
- * machine's byte order: the files are for the processes of one run). Points must be
- * added in ascending index order so that each tile's file is in that order too. */
+ * Each file is a sequence of 24-byte records (index UINT64, x y z FLOAT32, owner
+ * UINT32, in the machine's byte order: the files are for the processes of one run).
+ * Points must be added in ascending index order so that each tile's file is in that
+ * order too. */
 class TilePointWriter {
 public:
   /** \brief Files for \a tiles tiles in \a folder, which must exist; existing tile

@@ -1,0 +1,69 @@
+/*
+ * pcl_ext: the inputs of a tiled run read back chunk by chunk with each point's merged
+ * result.
+ */
+#pragma once
+
+#include <pcl_ext/tiling/point_file_chunks.h>
+#include <pcl_ext/tiling/segment_merge.h>
+#include <pcl_ext/tiling/tile_plan.h>
+
+#include <pcl/PCLPointCloud2.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pcl_ext {
+namespace tiling {
+/** \brief The points of a tiled run's inputs, in chunks, with their results: what the
+ * merge step writes out.
+ *
+ * For per-point results (classes) a point's result is what its owner tile wrote
+ * (TileResults; kNoResult for a point no tile holds: not finite). For segments the
+ * owners' labels are joined across the halos first (SegmentMerge over every tile's
+ * halo labels), then numbered 0, 1, ... in the order of the segments' first points;
+ * SegmentMerge::kNoSegment for a point in no segment. Either way the values depend
+ * neither on the tile size, nor on the order or the number of the processes that ran
+ * the tiles. */
+class MergedResults {
+public:
+  enum class Kind { PerPoint, Segments };
+
+  /** \brief Prepare to read the results of \a plan in \a folder. \return false
+   * (PCL_ERROR names it) when a tile was not run (its halo labels are missing) or a
+   * file is broken \throw io::ReadError naming an input that cannot be read */
+  bool
+  open (const TilePlan& plan, const std::string& folder, Kind kind);
+
+  /** \brief The next chunk of at most \a max_points points of the inputs (fields of
+   * io::loadPointFile, x y z relative to the plan's origin), its input's index in
+   * \a input, and one value per point in \a values. \return the number of points, 0 at
+   * the end or on error (see failed()) */
+  std::size_t
+  read (std::size_t max_points,
+        pcl::PCLPointCloud2& chunk,
+        std::size_t& input,
+        std::vector<std::uint32_t>& values);
+
+  /** \brief Whether reading stopped on an error (PCL_ERROR said which). */
+  bool
+  failed () const
+  {
+    return failed_;
+  }
+
+private:
+  TilePlan plan_;
+  TileGrid grid_;
+  std::string folder_;
+  Kind kind_ = Kind::PerPoint;
+  SegmentMerge merge_;
+  std::unique_ptr<PointFileChunks> file_;
+  std::size_t input_ = 0;
+  std::uint64_t next_index_ = 0;
+  bool failed_ = false;
+};
+} // namespace tiling
+} // namespace pcl_ext

@@ -1,0 +1,92 @@
+/*
+ * pcl_ext: the plan of a tiled run (inputs, origin, tile grid, settings), kept as text
+ * in its work folder.
+ */
+#pragma once
+
+#include <pcl_ext/tiling/tile_grid.h>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace pcl_ext {
+namespace tiling {
+/** \brief What every step of a tiled run (plan, tile, merge; any process) must agree
+ * on.
+ *
+ * The points of the inputs are numbered one input after another, each in file order:
+ * point i of input f has the global index sum(counts[0..f)) + i. Coordinates are
+ * handed to the methods relative to \a origin (the origin io::loadPointFile gives the
+ * first input), the tiles are laid in the inputs' own (double) coordinates. */
+struct TilePlan {
+  std::vector<std::string> inputs;
+  std::vector<std::uint64_t> counts;                ///< points per input
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero(); ///< of every chunk's x y z
+  Eigen::Vector2d min = Eigen::Vector2d::Zero();    ///< box of the points (x, y)
+  Eigen::Vector2d max = Eigen::Vector2d::Zero();
+  double tile_size = 0.0;
+  double halo = 0.0;
+  /** The method, its options and the parameters estimated for the whole cloud: text
+   * values that the steps read back (e.g. "method" -> "classify_variance"). */
+  std::map<std::string, std::string> settings;
+
+  /** \brief The tile grid of the plan (invalid when the plan is). */
+  TileGrid
+  getGrid () const
+  {
+    return TileGrid (min, max, tile_size, halo);
+  }
+
+  /** \brief Points of all inputs. */
+  std::uint64_t
+  getTotalPoints () const;
+
+  /** \brief Global index of the first point of input \a input. */
+  std::uint64_t
+  getFirstIndex (std::size_t input) const;
+};
+
+/** \brief Write \a plan to \a path (text, one `key value` line each; atomically).
+ * \return false (PCL_ERROR) when it cannot be written */
+bool
+saveTilePlan (const std::string& path, const TilePlan& plan);
+
+/** \brief Read a plan written by saveTilePlan. \return false (PCL_ERROR names the file
+ * and line) when it is missing, malformed, or describes no valid grid */
+bool
+loadTilePlan (const std::string& path, TilePlan& plan);
+
+/** \brief The plan of the inputs: counts, origin and box (each input opened through
+ * PointFileChunks: LAS / LAZ headers only, other formats read), the grid of
+ * \a tile_size with \a halo. \throw io::ReadError naming an input that cannot be read;
+ * \return false (PCL_ERROR) when there is no point with finite coordinates, the tile
+ * size or halo is not valid, or the inputs are more than 1e6 m apart */
+bool
+planTiles (const std::vector<std::string>& inputs,
+           double tile_size,
+           double halo,
+           TilePlan& plan);
+
+/** \brief A tile size for \a points points over the plan's box such that a tile holds
+ * about \a points_per_tile of them (a uniform density assumed), rounded up to 1, 2 or 5
+ * times a power of ten. */
+double
+suggestTileSize (const Eigen::Vector2d& min,
+                 const Eigen::Vector2d& max,
+                 std::uint64_t points,
+                 std::uint64_t points_per_tile);
+
+/** \brief Sort the points of every input into the files of the tiles of \a plan in
+ * \a folder (tile_<t>.points: each point of a tile's core or halo, see
+ * TilePointWriter), reading the inputs in chunks. Points that are not finite go to no
+ * tile. \throw io::ReadError naming an input that cannot be read \return false
+ * (PCL_ERROR) when a point lies outside the plan's box (an input changed since the
+ * plan, or a LAS header whose box lies) or a file cannot be written */
+bool
+writeTiles (const TilePlan& plan, const std::string& folder);
+} // namespace tiling
+} // namespace pcl_ext

@@ -1,0 +1,92 @@
+/*
+ * pcl_ext: what the tiles of a run computed, as files of its work folder.
+ */
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pcl_ext {
+namespace tiling {
+/** \brief The result of every point of a tiled run, one UINT32 per global point index
+ * in `results.bin` of the work folder (machine byte order).
+ *
+ * Each tile writes the results of its core points, at their indices: tiles own disjoint
+ * points, so any number of processes write the one file at once. A point no tile wrote
+ * (not finite, or its tile not run yet) reads as kNoResult. */
+class TileResults {
+public:
+  static constexpr std::uint32_t kNoResult = 0xFFFFFFFFu;
+
+  /** \brief The results file of \a folder. */
+  static std::string
+  pathIn (const std::string& folder);
+
+  /** \brief Make the file for \a points points, every result kNoResult. \return false
+   * (PCL_ERROR) when it cannot be written */
+  static bool
+  create (const std::string& folder, std::uint64_t points);
+
+  /** \brief Write \a values at the global indices \a indices (ascending). \return false
+   * (PCL_ERROR) when the file is missing or shorter, or the disk is full */
+  static bool
+  write (const std::string& folder,
+         const std::vector<std::uint64_t>& indices,
+         const std::vector<std::uint32_t>& values);
+
+  /** \brief Read the results of the points [first, first + count) into \a values.
+   * \return false (PCL_ERROR) when the file is missing or shorter */
+  static bool
+  read (const std::string& folder,
+        std::uint64_t first,
+        std::size_t count,
+        std::vector<std::uint32_t>& values);
+};
+
+/** \brief A halo point's label in a tile that does not own it: what the merge of
+ * segments joins (see SegmentMerge). */
+struct HaloLabel {
+  std::uint64_t index = 0; ///< global point index
+  std::uint32_t owner = 0; ///< the tile whose core holds the point
+  std::uint32_t label = 0; ///< the segment the tile gave it
+};
+
+/** \brief Write the halo labels of tile \a tile (`tile_<tile>.halo`, replaced
+ * atomically). \return false (PCL_ERROR) when it cannot be written */
+bool
+saveHaloLabels (const std::string& folder,
+                std::size_t tile,
+                const std::vector<HaloLabel>& labels);
+
+/** \brief Read the halo labels of tile \a tile. \return false (PCL_ERROR names the
+ * file) when it is missing (the tile was not run) or not a whole number of records */
+bool
+loadHaloLabels (const std::string& folder,
+                std::size_t tile,
+                std::vector<HaloLabel>& labels);
+/** \brief Save \a values (one per core point of tile \a tile, any order) as the tile's
+ * `tile_<tile>.<name>` file: the material of a statistic of the whole cloud that a
+ * method estimates before the tiles run (e.g. a median curvature). \return false
+ * (PCL_ERROR) when it cannot be written */
+bool
+saveTileValues (const std::string& folder,
+                std::size_t tile,
+                const std::string& name,
+                const std::vector<float>& values);
+
+/** \brief The value of rank floor(n * \a fraction) (0-based, at most n - 1) among the n
+ * finite values of tiles 0 .. \a tiles - 1 saved under \a name: what std::nth_element
+ * gives on all of them together, found in two passes over the files whatever their
+ * size. \param[out] count n \return false (PCL_ERROR names the file) when a file is
+ * missing or broken; true with \a count 0 (and \a value NaN) when no value is finite */
+bool
+nthOfTileValues (const std::string& folder,
+                 std::size_t tiles,
+                 const std::string& name,
+                 double fraction,
+                 float& value,
+                 std::uint64_t& count);
+} // namespace tiling
+} // namespace pcl_ext

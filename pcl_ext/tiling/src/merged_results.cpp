@@ -1,0 +1,90 @@
+/*
+ * pcl_ext: the inputs of a tiled run read back chunk by chunk with each point's merged
+ * result.
+ */
+#include <pcl_ext/tiling/merged_results.h>
+#include <pcl_ext/tiling/tile_results.h>
+
+#include <pcl/console/print.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace pcl_ext {
+namespace tiling {
+bool
+MergedResults::open (const TilePlan& plan, const std::string& folder, Kind kind)
+{
+  plan_ = plan;
+  grid_ = plan.getGrid();
+  folder_ = folder;
+  kind_ = kind;
+  merge_ = SegmentMerge();
+  file_.reset();
+  input_ = 0;
+  next_index_ = 0;
+  failed_ = false;
+  if (kind_ == Kind::Segments) {
+    // Join first: the owners' labels of every halo point, read in batches per tile.
+    std::vector<HaloLabel> halo;
+    std::vector<std::uint64_t> indices;
+    std::vector<std::uint32_t> owner_labels;
+    for (std::size_t t = 0; t < grid_.size(); ++t) {
+      if (!loadHaloLabels (folder_, t, halo))
+        return false;
+      for (const auto& h : halo) {
+        if (!TileResults::read (folder_, h.index, 1, owner_labels))
+          return false;
+        if (owner_labels[0] != TileResults::kNoResult)
+          merge_.join (SegmentMerge::key (h.owner, owner_labels[0]),
+                       SegmentMerge::key (static_cast<std::uint32_t> (t), h.label));
+      }
+    }
+  }
+  return true;
+}
+
+std::size_t
+MergedResults::read (std::size_t max_points,
+                     pcl::PCLPointCloud2& chunk,
+                     std::size_t& input,
+                     std::vector<std::uint32_t>& values)
+{
+  values.clear();
+  while (!failed_ && input_ < plan_.inputs.size()) {
+    if (!file_) {
+      file_ = std::make_unique<PointFileChunks>();
+      file_->open (plan_.inputs[input_]);
+      file_->setOrigin (plan_.origin);
+    }
+    const std::size_t n = file_->read (max_points, chunk);
+    if (n == 0) {
+      file_.reset();
+      ++input_;
+      continue;
+    }
+    input = input_;
+    if (!TileResults::read (folder_, next_index_, n, values)) {
+      failed_ = true;
+      return 0;
+    }
+    if (kind_ == Kind::Segments) {
+      const std::uint8_t* xyz = chunk.data.data() + xyzOffset (chunk);
+      for (std::size_t i = 0; i < n; ++i) {
+        float p[3];
+        std::memcpy (p, xyz + i * chunk.point_step, sizeof (p));
+        const std::size_t owner =
+            grid_.getTile (plan_.origin.x() + p[0], plan_.origin.y() + p[1]);
+        values[i] = values[i] == TileResults::kNoResult || owner == TileGrid::kNoTile
+                        ? SegmentMerge::kNoSegment
+                        : merge_.number (SegmentMerge::key (
+                              static_cast<std::uint32_t> (owner), values[i]));
+      }
+    }
+    next_index_ += n;
+    return n;
+  }
+  return 0;
+}
+} // namespace tiling
+} // namespace pcl_ext

@@ -1,0 +1,254 @@
+/*
+ * pcl_ext: the plan of a tiled run (inputs, origin, tile grid, settings), kept as text
+ * in its work folder.
+ */
+#include <pcl_ext/tiling/point_file_chunks.h>
+#include <pcl_ext/tiling/tile_plan.h>
+#include <pcl_ext/tiling/tile_points.h>
+
+#include <pcl_ext/io/file_output.h>
+
+#include <pcl/console/print.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <stdexcept>
+#include <sstream>
+
+namespace pcl_ext {
+namespace tiling {
+namespace {
+constexpr const char* kPlanHeader = "pcl_ext tile plan 1";
+/** How far a point may lie outside the box it was planned in: float rounding of local
+ * coordinates and LAS header bounds rounded to the file's scale. */
+constexpr double kBoxMargin = 0.01;
+constexpr std::size_t kChunkPoints = 1 << 20;
+
+std::string
+number (double v)
+{
+  std::ostringstream s;
+  s << std::setprecision (17) << v;
+  return s.str();
+}
+} // namespace
+
+std::uint64_t
+TilePlan::getTotalPoints() const
+{
+  std::uint64_t n = 0;
+  for (const auto c : counts)
+    n += c;
+  return n;
+}
+
+std::uint64_t
+TilePlan::getFirstIndex (std::size_t input) const
+{
+  std::uint64_t n = 0;
+  for (std::size_t i = 0; i < input && i < counts.size(); ++i)
+    n += counts[i];
+  return n;
+}
+
+bool
+saveTilePlan (const std::string& path, const TilePlan& plan)
+{
+  std::ostringstream s;
+  s << kPlanHeader << "\n";
+  s << "origin " << number (plan.origin.x()) << " " << number (plan.origin.y()) << " "
+    << number (plan.origin.z()) << "\n";
+  s << "box " << number (plan.min.x()) << " " << number (plan.min.y()) << " "
+    << number (plan.max.x()) << " " << number (plan.max.y()) << "\n";
+  s << "tile_size " << number (plan.tile_size) << "\n";
+  s << "halo " << number (plan.halo) << "\n";
+  for (std::size_t i = 0; i < plan.inputs.size(); ++i)
+    s << "input " << plan.counts[i] << " " << plan.inputs[i] << "\n";
+  for (const auto& [key, value] : plan.settings)
+    s << "setting " << key << " " << value << "\n";
+  return io::writeTextFile (path, s.str());
+}
+
+bool
+loadTilePlan (const std::string& path, TilePlan& plan)
+{
+  plan = TilePlan();
+  std::ifstream in (path);
+  auto fail = [&path] (std::size_t line, const std::string& what) {
+    PCL_ERROR ("[pcl_ext::tiling::loadTilePlan] %s:%zu: %s\n",
+               path.c_str(),
+               line,
+               what.c_str());
+    return false;
+  };
+  if (!in)
+    return fail (0, "cannot open the plan (run the plan step first)");
+  std::string line;
+  std::size_t number_of_line = 1;
+  if (!std::getline (in, line) || line != kPlanHeader)
+    return fail (1, "not a tile plan");
+  bool has_origin = false, has_box = false;
+  while (std::getline (in, line)) {
+    ++number_of_line;
+    std::istringstream words (line);
+    std::string key;
+    words >> key;
+    if (key == "origin")
+      has_origin = static_cast<bool> (words >> plan.origin.x() >> plan.origin.y() >>
+                                      plan.origin.z());
+    else if (key == "box")
+      has_box = static_cast<bool> (words >> plan.min.x() >> plan.min.y() >>
+                                   plan.max.x() >> plan.max.y());
+    else if (key == "tile_size") {
+      if (!(words >> plan.tile_size))
+        return fail (number_of_line, "bad tile size");
+    }
+    else if (key == "halo") {
+      if (!(words >> plan.halo))
+        return fail (number_of_line, "bad halo");
+    }
+    else if (key == "input") {
+      std::uint64_t count;
+      std::string name;
+      if (!(words >> count) || !std::getline (words >> std::ws, name) || name.empty())
+        return fail (number_of_line, "bad input line");
+      plan.counts.push_back (count);
+      plan.inputs.push_back (name);
+    }
+    else if (key == "setting") {
+      std::string name, value;
+      if (!(words >> name))
+        return fail (number_of_line, "bad setting line");
+      std::getline (words >> std::ws, value);
+      plan.settings[name] = value;
+    }
+    else if (!key.empty())
+      return fail (number_of_line, "unknown line '" + key + "'");
+  }
+  if (!has_origin || !has_box || plan.inputs.empty() || !plan.origin.allFinite() ||
+      !plan.getGrid().isValid())
+    return fail (number_of_line, "incomplete plan (origin, box, tiles or inputs)");
+  return true;
+}
+
+bool
+planTiles (const std::vector<std::string>& inputs,
+           double tile_size,
+           double halo,
+           TilePlan& plan)
+{
+  plan = TilePlan();
+  Eigen::Vector3d lo =
+      Eigen::Vector3d::Constant (std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    PointFileChunks file;
+    file.open (inputs[i]);
+    if (i == 0)
+      plan.origin = file.getOrigin();
+    Eigen::Vector3d a, b;
+    file.getBounds (a, b);
+    if (file.getPointCount() > 0 && (a.array() <= b.array()).all()) {
+      lo = lo.cwiseMin (a);
+      hi = hi.cwiseMax (b);
+    }
+    plan.inputs.push_back (inputs[i]);
+    plan.counts.push_back (file.getPointCount());
+  }
+  if (!lo.allFinite() || !hi.allFinite()) {
+    PCL_ERROR ("[pcl_ext::tiling::planTiles] the inputs hold no point with finite "
+               "coordinates.\n");
+    return false;
+  }
+  if ((hi - lo).maxCoeff() > 1e6 || (plan.origin - lo).cwiseAbs().maxCoeff() > 1e6) {
+    PCL_ERROR ("[pcl_ext::tiling::planTiles] the inputs span more than 1000 km: files "
+               "of different coordinate systems?\n");
+    return false;
+  }
+  plan.min = lo.head<2>() - Eigen::Vector2d::Constant (kBoxMargin);
+  plan.max = hi.head<2>() + Eigen::Vector2d::Constant (kBoxMargin);
+  plan.tile_size = tile_size;
+  plan.halo = halo;
+  if (!plan.getGrid().isValid()) {
+    PCL_ERROR ("[pcl_ext::tiling::planTiles] tile size %g and halo %g do not make a "
+               "grid (the size must be > 0, the halo >= 0, at most 2^32 tiles).\n",
+               tile_size,
+               halo);
+    return false;
+  }
+  return true;
+}
+
+double
+suggestTileSize (const Eigen::Vector2d& min,
+                 const Eigen::Vector2d& max,
+                 std::uint64_t points,
+                 std::uint64_t points_per_tile)
+{
+  const double area = std::max ((max - min).prod(), 1.0);
+  const double tiles = std::max (
+      1.0, static_cast<double> (points) / std::max<double> (points_per_tile, 1));
+  const double raw = std::sqrt (area / tiles);
+  const double decade = std::pow (10.0, std::floor (std::log10 (raw)));
+  for (const double step : {1.0, 2.0, 5.0, 10.0})
+    if (step * decade >= raw)
+      return step * decade;
+  return 10.0 * decade;
+}
+
+bool
+writeTiles (const TilePlan& plan, const std::string& folder)
+{
+  const TileGrid grid = plan.getGrid();
+  TilePointWriter writer (folder, grid.size());
+  pcl::PCLPointCloud2 chunk;
+  std::vector<std::size_t> near;
+  std::uint64_t index = 0;
+  for (std::size_t f = 0; f < plan.inputs.size(); ++f) {
+    PointFileChunks file;
+    file.open (plan.inputs[f]);
+    if (file.getPointCount() != plan.counts[f]) {
+      PCL_ERROR ("[pcl_ext::tiling::writeTiles] %s has %llu points, the plan %llu: it "
+                 "changed since the plan.\n",
+                 plan.inputs[f].c_str(),
+                 static_cast<unsigned long long> (file.getPointCount()),
+                 static_cast<unsigned long long> (plan.counts[f]));
+      return false;
+    }
+    file.setOrigin (plan.origin);
+    std::size_t n;
+    while ((n = file.read (kChunkPoints, chunk)) > 0) {
+      const std::uint8_t* xyz = chunk.data.data() + xyzOffset (chunk);
+      for (std::size_t i = 0; i < n; ++i, ++index) {
+        TilePoint p;
+        p.index = index;
+        std::memcpy (&p.x, xyz + i * chunk.point_step, 3 * sizeof (float));
+        if (!std::isfinite (p.x) || !std::isfinite (p.y) || !std::isfinite (p.z))
+          continue;
+        const double x = plan.origin.x() + p.x, y = plan.origin.y() + p.y;
+        const std::size_t owner = grid.getTile (x, y);
+        if (owner == TileGrid::kNoTile) {
+          PCL_ERROR ("[pcl_ext::tiling::writeTiles] %s: point %llu (%.3f %.3f) lies "
+                     "outside the box of the plan (a LAS header's bounding box that "
+                     "lies, or a file changed since the plan).\n",
+                     plan.inputs[f].c_str(),
+                     static_cast<unsigned long long> (index - plan.getFirstIndex (f)),
+                     x,
+                     y);
+          return false;
+        }
+        p.owner = static_cast<std::uint32_t> (owner);
+        grid.getTilesNear (x, y, near);
+        for (const std::size_t t : near)
+          if (!writer.add (t, p))
+            return false;
+      }
+    }
+  }
+  return writer.finish();
+}
+} // namespace tiling
+} // namespace pcl_ext

@@ -1,0 +1,304 @@
+/*
+ * pcl_ext: what the tiles of a run computed, as files of its work folder.
+ */
+#include <pcl_ext/tiling/tile_results.h>
+
+#include <pcl_ext/io/file_output.h>
+
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <limits>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace pcl_ext {
+namespace tiling {
+namespace {
+constexpr std::size_t kHaloRecordBytes = 16;
+constexpr std::size_t kBlockValues = 1 << 16;
+
+/** Writes all of \a bytes at \a offset. */
+bool
+writeAt (int fd, const void* bytes, std::size_t size, std::uint64_t offset)
+{
+  const auto* p = static_cast<const char*> (bytes);
+  while (size > 0) {
+    const ssize_t w = ::pwrite (fd, p, size, static_cast<off_t> (offset));
+    if (w <= 0) {
+      if (w < 0 && errno == EINTR)
+        continue;
+      return false;
+    }
+    p += w;
+    size -= static_cast<std::size_t> (w);
+    offset += static_cast<std::uint64_t> (w);
+  }
+  return true;
+}
+
+/** An unsigned key of a float that sorts as the floats do. */
+std::uint32_t
+orderKey (float v)
+{
+  std::uint32_t bits;
+  std::memcpy (&bits, &v, 4);
+  return (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
+}
+
+float
+fromOrderKey (std::uint32_t key)
+{
+  const std::uint32_t bits = (key & 0x80000000u) ? (key & 0x7FFFFFFFu) : ~key;
+  float v;
+  std::memcpy (&v, &bits, 4);
+  return v;
+}
+
+std::string
+valuesPath (const std::string& folder, std::size_t tile, const std::string& name)
+{
+  return folder + "/tile_" + std::to_string (tile) + "." + name;
+}
+
+/** Calls \a visit with every finite value of the tiles' files; false when one is
+ * missing or broken. */
+template <typename Visit>
+bool
+forEachTileValue (const std::string& folder,
+                  std::size_t tiles,
+                  const std::string& name,
+                  Visit visit)
+{
+  std::vector<float> block (kBlockValues);
+  for (std::size_t t = 0; t < tiles; ++t) {
+    const std::string path = valuesPath (folder, t, name);
+    std::ifstream in (path, std::ios::binary);
+    if (!in) {
+      PCL_ERROR ("[pcl_ext::tiling::nthOfTileValues] %s is missing (tile %zu not "
+                 "estimated).\n",
+                 path.c_str(),
+                 t);
+      return false;
+    }
+    while (in) {
+      in.read (reinterpret_cast<char*> (block.data()),
+               static_cast<std::streamsize> (block.size() * sizeof (float)));
+      const std::streamsize got = in.gcount();
+      if (got % static_cast<std::streamsize> (sizeof (float)) != 0) {
+        PCL_ERROR ("[pcl_ext::tiling::nthOfTileValues] %s is broken.\n", path.c_str());
+        return false;
+      }
+      for (std::streamsize i = 0;
+           i < got / static_cast<std::streamsize> (sizeof (float));
+           ++i)
+        if (std::isfinite (block[static_cast<std::size_t> (i)]))
+          visit (block[static_cast<std::size_t> (i)]);
+    }
+  }
+  return true;
+}
+
+std::string
+haloPath (const std::string& folder, std::size_t tile)
+{
+  return folder + "/tile_" + std::to_string (tile) + ".halo";
+}
+} // namespace
+
+std::string
+TileResults::pathIn (const std::string& folder)
+{
+  return folder + "/results.bin";
+}
+
+bool
+TileResults::create (const std::string& folder, std::uint64_t points)
+{
+  const std::string path = pathIn (folder);
+  return io::writeFileAtomically (path, [points] (const std::string& temporary) {
+    std::ofstream out (temporary, std::ios::binary);
+    const std::vector<std::uint32_t> block (kBlockValues, kNoResult);
+    for (std::uint64_t done = 0; done < points && out; done += kBlockValues) {
+      const std::uint64_t n = std::min<std::uint64_t> (kBlockValues, points - done);
+      out.write (reinterpret_cast<const char*> (block.data()),
+                 static_cast<std::streamsize> (n * sizeof (std::uint32_t)));
+    }
+    out.close();
+    return static_cast<bool> (out);
+  });
+}
+
+bool
+TileResults::write (const std::string& folder,
+                    const std::vector<std::uint64_t>& indices,
+                    const std::vector<std::uint32_t>& values)
+{
+  const std::string path = pathIn (folder);
+  const int fd = ::open (path.c_str(), O_WRONLY);
+  struct stat st;
+  if (fd < 0 || ::fstat (fd, &st) != 0) {
+    if (fd >= 0)
+      ::close (fd);
+    PCL_ERROR ("[pcl_ext::tiling::TileResults] cannot open %s.\n", path.c_str());
+    return false;
+  }
+  bool ok = true;
+  // Runs of consecutive indices go in one call each.
+  for (std::size_t i = 0; i < indices.size() && ok;) {
+    std::size_t j = i + 1;
+    while (j < indices.size() && indices[j] == indices[j - 1] + 1)
+      ++j;
+    const std::uint64_t end = (indices[j - 1] + 1) * sizeof (std::uint32_t);
+    ok = end <= static_cast<std::uint64_t> (st.st_size) &&
+         writeAt (fd,
+                  values.data() + i,
+                  (j - i) * sizeof (std::uint32_t),
+                  indices[i] * sizeof (std::uint32_t));
+    i = j;
+  }
+  ok = (::close (fd) == 0) && ok;
+  if (!ok)
+    PCL_ERROR ("[pcl_ext::tiling::TileResults] cannot write %s (a point beyond the "
+               "file, or the disk is full).\n",
+               path.c_str());
+  return ok;
+}
+
+bool
+TileResults::read (const std::string& folder,
+                   std::uint64_t first,
+                   std::size_t count,
+                   std::vector<std::uint32_t>& values)
+{
+  const std::string path = pathIn (folder);
+  values.resize (count);
+  std::ifstream in (path, std::ios::binary);
+  in.seekg (static_cast<std::streamoff> (first * sizeof (std::uint32_t)));
+  in.read (reinterpret_cast<char*> (values.data()),
+           static_cast<std::streamsize> (count * sizeof (std::uint32_t)));
+  if (!in) {
+    PCL_ERROR ("[pcl_ext::tiling::TileResults] cannot read %s (missing or shorter than "
+               "the plan's points).\n",
+               path.c_str());
+    values.clear();
+    return false;
+  }
+  return true;
+}
+
+bool
+saveHaloLabels (const std::string& folder,
+                std::size_t tile,
+                const std::vector<HaloLabel>& labels)
+{
+  return io::writeFileAtomically (
+      haloPath (folder, tile), [&labels] (const std::string& temporary) {
+        std::vector<char> bytes (labels.size() * kHaloRecordBytes);
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+          char* r = bytes.data() + i * kHaloRecordBytes;
+          std::memcpy (r, &labels[i].index, 8);
+          std::memcpy (r + 8, &labels[i].owner, 4);
+          std::memcpy (r + 12, &labels[i].label, 4);
+        }
+        std::ofstream out (temporary, std::ios::binary);
+        out.write (bytes.data(), static_cast<std::streamsize> (bytes.size()));
+        out.close();
+        return static_cast<bool> (out);
+      });
+}
+
+bool
+loadHaloLabels (const std::string& folder,
+                std::size_t tile,
+                std::vector<HaloLabel>& labels)
+{
+  labels.clear();
+  const std::string path = haloPath (folder, tile);
+  std::ifstream in (path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in ? static_cast<std::streamoff> (in.tellg()) : -1;
+  if (size < 0 || size % static_cast<std::streamoff> (kHaloRecordBytes) != 0) {
+    PCL_ERROR ("[pcl_ext::tiling::loadHaloLabels] %s is missing (tile %zu not run) or "
+               "broken.\n",
+               path.c_str(),
+               tile);
+    return false;
+  }
+  in.seekg (0);
+  std::vector<char> bytes (static_cast<std::size_t> (size));
+  in.read (bytes.data(), size);
+  if (!in) {
+    PCL_ERROR ("[pcl_ext::tiling::loadHaloLabels] cannot read %s.\n", path.c_str());
+    return false;
+  }
+  labels.resize (bytes.size() / kHaloRecordBytes);
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const char* r = bytes.data() + i * kHaloRecordBytes;
+    std::memcpy (&labels[i].index, r, 8);
+    std::memcpy (&labels[i].owner, r + 8, 4);
+    std::memcpy (&labels[i].label, r + 12, 4);
+  }
+  return true;
+}
+bool
+saveTileValues (const std::string& folder,
+                std::size_t tile,
+                const std::string& name,
+                const std::vector<float>& values)
+{
+  return io::writeFileAtomically (
+      valuesPath (folder, tile, name), [&values] (const std::string& temporary) {
+        std::ofstream out (temporary, std::ios::binary);
+        out.write (reinterpret_cast<const char*> (values.data()),
+                   static_cast<std::streamsize> (values.size() * sizeof (float)));
+        out.close();
+        return static_cast<bool> (out);
+      });
+}
+
+bool
+nthOfTileValues (const std::string& folder,
+                 std::size_t tiles,
+                 const std::string& name,
+                 double fraction,
+                 float& value,
+                 std::uint64_t& count)
+{
+  value = std::numeric_limits<float>::quiet_NaN();
+  count = 0;
+  // Pass 1: how many values share each high half of the order key.
+  std::vector<std::uint64_t> high (1u << 16, 0);
+  if (!forEachTileValue (folder, tiles, name, [&] (float v) {
+        ++high[orderKey (v) >> 16];
+        ++count;
+      }))
+    return false;
+  if (count == 0)
+    return true;
+  std::uint64_t rank =
+      static_cast<std::uint64_t> (static_cast<double> (count) * fraction);
+  rank = std::min (rank, count - 1);
+  std::uint32_t bin = 0;
+  while (rank >= high[bin])
+    rank -= high[bin++];
+  // Pass 2: the low halves within that bin.
+  std::vector<std::uint64_t> low (1u << 16, 0);
+  if (!forEachTileValue (folder, tiles, name, [&] (float v) {
+        const std::uint32_t key = orderKey (v);
+        if ((key >> 16) == bin)
+          ++low[key & 0xFFFFu];
+      }))
+    return false;
+  std::uint32_t rest = 0;
+  while (rank >= low[rest])
+    rank -= low[rest++];
+  value = fromOrderKey ((bin << 16) | rest);
+  return true;
+}
+} // namespace tiling
+} // namespace pcl_ext

@@ -1,0 +1,109 @@
+/*
+ * TileResults, halo labels and tile values: the files the tiles of a run leave in its
+ * work folder, and the exact statistics read from them.
+ */
+#include <pcl_ext/tiling/tile_results.h>
+
+#include "../io/temp_folder.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+using pcl_ext::tiling::TileResults;
+
+TEST (TileResults, TilesWriteTheirPointsAnywhereInTheFile)
+{
+  const std::string dir = freshFolder ("tile_results");
+  ASSERT_TRUE (TileResults::create (dir, 200000));
+  // Two tiles owning interleaved points, written in runs and singly.
+  std::vector<std::uint64_t> even, odd_block;
+  std::vector<std::uint32_t> even_values, block_values;
+  for (std::uint64_t i = 0; i < 100000; i += 2) {
+    even.push_back (i);
+    even_values.push_back (static_cast<std::uint32_t> (i / 2));
+  }
+  for (std::uint64_t i = 150000; i < 200000; ++i) {
+    odd_block.push_back (i);
+    block_values.push_back (7);
+  }
+  ASSERT_TRUE (TileResults::write (dir, odd_block, block_values));
+  ASSERT_TRUE (TileResults::write (dir, even, even_values));
+  std::vector<std::uint32_t> values;
+  ASSERT_TRUE (TileResults::read (dir, 0, 200000, values));
+  for (std::uint64_t i = 0; i < 200000; ++i) {
+    const std::uint32_t expected = i < 100000
+                                       ? (i % 2 == 0 ? i / 2 : TileResults::kNoResult)
+                                   : i >= 150000 ? 7u
+                                                 : TileResults::kNoResult;
+    ASSERT_EQ (values[i], expected) << i;
+  }
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (TileResults::write (dir, {200000}, {1})); // beyond the points
+  EXPECT_FALSE (TileResults::read (dir, 199999, 2, values));
+  EXPECT_FALSE (TileResults::read (dir + "/none", 0, 1, values));
+  testing::internal::GetCapturedStderr();
+}
+
+TEST (TileResults, HaloLabelsRoundTrip)
+{
+  const std::string dir = freshFolder ("tile_halo");
+  const std::vector<pcl_ext::tiling::HaloLabel> saved{{5, 1, 2}, {1ull << 40, 7, 0}};
+  ASSERT_TRUE (pcl_ext::tiling::saveHaloLabels (dir, 3, saved));
+  std::vector<pcl_ext::tiling::HaloLabel> loaded;
+  ASSERT_TRUE (pcl_ext::tiling::loadHaloLabels (dir, 3, loaded));
+  ASSERT_EQ (loaded.size(), 2u);
+  EXPECT_EQ (loaded[1].index, 1ull << 40);
+  EXPECT_EQ (loaded[1].owner, 7u);
+  EXPECT_EQ (loaded[0].label, 2u);
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (pcl_ext::tiling::loadHaloLabels (dir, 4, loaded)); // tile 4 not run
+  testing::internal::GetCapturedStderr();
+}
+
+TEST (TileResults, NthValueOverAllTilesIsNthElementsAnswer)
+{
+  const std::string dir = freshFolder ("tile_values");
+  std::mt19937 rng (5);
+  std::normal_distribution<float> normal (0.0f, 2.0f);
+  std::vector<float> all;
+  for (std::size_t t = 0; t < 4; ++t) {
+    std::vector<float> values (t == 2 ? 0 : 10001 + t); // tile 2: no core point
+    for (auto& v : values)
+      v = normal (rng);
+    if (t == 1) {
+      values[0] = std::numeric_limits<float>::quiet_NaN(); // not counted
+      values[1] = 0.0f;
+      values[2] = -0.0f;
+      values[3] = 1e-30f;
+    }
+    for (const float v : values)
+      if (std::isfinite (v))
+        all.push_back (v);
+    ASSERT_TRUE (pcl_ext::tiling::saveTileValues (dir, t, "kappa", values));
+  }
+  for (const double fraction : {0.0, 0.1, 0.5, 0.9, 1.0}) {
+    float value;
+    std::uint64_t count;
+    ASSERT_TRUE (
+        pcl_ext::tiling::nthOfTileValues (dir, 4, "kappa", fraction, value, count));
+    EXPECT_EQ (count, all.size());
+    std::vector<float> sorted = all;
+    const std::size_t rank =
+        std::min (all.size() - 1, static_cast<std::size_t> (all.size() * fraction));
+    std::nth_element (sorted.begin(), sorted.begin() + rank, sorted.end());
+    EXPECT_EQ (value, sorted[rank]) << fraction;
+  }
+  float value;
+  std::uint64_t count;
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (pcl_ext::tiling::nthOfTileValues (dir, 5, "kappa", 0.5, value, count));
+  testing::internal::GetCapturedStderr();
+  ASSERT_TRUE (pcl_ext::tiling::saveTileValues (dir, 0, "empty", {}));
+  ASSERT_TRUE (pcl_ext::tiling::nthOfTileValues (dir, 1, "empty", 0.5, value, count));
+  EXPECT_EQ (count, 0u);
+  EXPECT_TRUE (std::isnan (value));
+}
