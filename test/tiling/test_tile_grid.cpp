@@ -112,15 +112,18 @@ TEST (TileGrid, NonsenseIsInvalidAndNanPointsHaveNoTile)
   EXPECT_EQ (point.getTile (3.0, 4.0), 0u);
 }
 
-TEST (TileGrid, RingsAroundATileWidenItsReach)
+TEST (TileGrid, AWiderMarginWidensTheReach)
 {
   // 5 x 5 tiles of 10 m, halo 1 m; tile 12 is the centre one (x 20-30, y 20-30).
   const TileGrid grid (
       Eigen::Vector2d (0.0, 0.0), Eigen::Vector2d (49.0, 49.0), 10.0, 1.0);
   ASSERT_EQ (grid.size(), 25u);
   EXPECT_DOUBLE_EQ (grid.getReach (12, 25.0, 25.0), 6.0);
-  EXPECT_DOUBLE_EQ (grid.getReach (12, 25.0, 25.0, 1), 16.0);
-  EXPECT_TRUE (std::isinf (grid.getReach (12, 25.0, 25.0, 2))); // the whole grid
+  EXPECT_DOUBLE_EQ (grid.getReach (12, 25.0, 25.0, 11.0), 16.0);
+  EXPECT_DOUBLE_EQ (grid.getReach (12, 21.0, 25.0, 11.0), 12.0);
+  EXPECT_TRUE (std::isinf (grid.getReach (12, 25.0, 25.0, 20.0))); // the whole grid
+  EXPECT_TRUE (grid.isWithin (12, 9.5, 25.0, 11.0));
+  EXPECT_FALSE (grid.isWithin (12, 8.5, 25.0, 11.0));
   std::vector<std::size_t> around;
   grid.getTilesAround (12, 1, around);
   EXPECT_EQ (around, (std::vector<std::size_t>{6, 7, 8, 11, 12, 13, 16, 17, 18}));

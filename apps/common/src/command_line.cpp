@@ -3,6 +3,7 @@
  */
 #include <pcl_ext/apps/command_line.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <climits>
@@ -46,10 +47,26 @@ CommandLine::addPositionalList (const std::string& name,
   positionals_.push_back ({name, nullptr, help, true, &values});
 }
 
+CommandLine::Option
+CommandLine::makeOption (const std::string& name,
+                         Kind kind,
+                         void* target,
+                         const std::string& help,
+                         const std::string& default_text)
+{
+  Option o;
+  o.name = name;
+  o.kind = kind;
+  o.target = target;
+  o.help = help;
+  o.default_text = default_text;
+  return o;
+}
+
 void
 CommandLine::addOption (const std::string& name, int& value, const std::string& help)
 {
-  options_.push_back ({name, Kind::Int, &value, help, toText (value)});
+  options_.push_back (makeOption (name, Kind::Int, &value, help, toText (value)));
 }
 
 void
@@ -57,13 +74,13 @@ CommandLine::addOption (const std::string& name,
                         unsigned int& value,
                         const std::string& help)
 {
-  options_.push_back ({name, Kind::Unsigned, &value, help, toText (value)});
+  options_.push_back (makeOption (name, Kind::Unsigned, &value, help, toText (value)));
 }
 
 void
 CommandLine::addOption (const std::string& name, double& value, const std::string& help)
 {
-  options_.push_back ({name, Kind::Double, &value, help, toText (value)});
+  options_.push_back (makeOption (name, Kind::Double, &value, help, toText (value)));
 }
 
 void
@@ -72,13 +89,14 @@ CommandLine::addOption (const std::string& name,
                         const std::string& help)
 {
   options_.push_back (
-      {name, Kind::String, &value, help, value.empty() ? "none" : value});
+      makeOption (name, Kind::String, &value, help, value.empty() ? "none" : value));
 }
 
 void
 CommandLine::addSwitch (const std::string& name, bool& value, const std::string& help)
 {
-  options_.push_back ({name, Kind::Switch, &value, help, value ? "on" : "off"});
+  options_.push_back (
+      makeOption (name, Kind::Switch, &value, help, value ? "on" : "off"));
 }
 
 bool
@@ -154,6 +172,7 @@ CommandLine::parse (int argc, const char* const* argv)
       return 1;
     }
     option->given = true;
+    option->given_order = static_cast<std::size_t> (i);
     if (option->kind == Kind::Switch) {
       assign (*option, "");
       continue;
@@ -163,6 +182,7 @@ CommandLine::parse (int argc, const char* const* argv)
       return 1;
     }
     const std::string value = argv[++i];
+    option->given_text = value;
     if (!assign (*option, value)) {
       usageError ("invalid value '" + value + "' for option '" + arg + "'");
       return 1;
@@ -206,6 +226,25 @@ CommandLine::assignPositionals (const std::vector<std::string>& args)
   for (std::size_t p = 0; p < after; ++p)
     *positionals_[list + 1 + p].target = args[args.size() - after + p];
   return true;
+}
+
+std::vector<std::string>
+CommandLine::getGivenOptions (const std::vector<std::string>& except) const
+{
+  std::vector<const Option*> given;
+  for (const auto& o : options_)
+    if (o.given && std::find (except.begin(), except.end(), o.name) == except.end())
+      given.push_back (&o);
+  std::sort (given.begin(), given.end(), [] (const Option* a, const Option* b) {
+    return a->given_order < b->given_order;
+  });
+  std::vector<std::string> args;
+  for (const Option* o : given) {
+    args.push_back ("-" + o->name);
+    if (o->kind != Kind::Switch)
+      args.push_back (o->given_text);
+  }
+  return args;
 }
 
 bool

@@ -92,22 +92,35 @@ TileGrid::getTilesNear (double x, double y, std::vector<std::size_t>& tiles) con
 }
 
 double
-TileGrid::getReach (std::size_t tile, double x, double y, std::size_t rings) const
+TileGrid::getReach (std::size_t tile, double x, double y, double margin) const
 {
   Eigen::Vector2d lo, hi;
   getCoreBox (tile, lo, hi);
-  const std::size_t c = tile % columns_, r = tile / columns_;
-  const double widen = static_cast<double> (rings) * size_ + halo_;
+  if (margin < 0.0)
+    margin = halo_;
+  lo.array() -= margin;
+  hi.array() += margin;
+  const Eigen::Vector2d grid_lo = origin_;
+  const Eigen::Vector2d grid_hi =
+      origin_ + size_ * Eigen::Vector2d (static_cast<double> (columns_),
+                                         static_cast<double> (rows_));
   double reach = std::numeric_limits<double>::infinity();
-  if (c > rings)
-    reach = std::min (reach, x - (lo.x() - widen));
-  if (c + rings + 1 < columns_)
-    reach = std::min (reach, (hi.x() + widen) - x);
-  if (r > rings)
-    reach = std::min (reach, y - (lo.y() - widen));
-  if (r + rings + 1 < rows_)
-    reach = std::min (reach, (hi.y() + widen) - y);
+  for (int a = 0; a < 2; ++a) {
+    if (lo[a] > grid_lo[a])
+      reach = std::min (reach, (a == 0 ? x : y) - lo[a]);
+    if (hi[a] < grid_hi[a])
+      reach = std::min (reach, hi[a] - (a == 0 ? x : y));
+  }
   return reach;
+}
+
+bool
+TileGrid::isWithin (std::size_t tile, double x, double y, double margin) const
+{
+  Eigen::Vector2d lo, hi;
+  getCoreBox (tile, lo, hi);
+  return x >= lo.x() - margin && x < hi.x() + margin && y >= lo.y() - margin &&
+         y < hi.y() + margin;
 }
 
 void

@@ -137,3 +137,23 @@ TEST (CommandLine, APositionalListTakesWhatTheOthersLeave)
   EXPECT_NE (error.find ("missing argument"), std::string::npos) << error;
   EXPECT_NE (error.find ("input..."), std::string::npos) << error;
 }
+
+TEST (CommandLine, GivenOptionsAreHandedOnAsWritten)
+{
+  int k = 0;
+  double radius = 0.0;
+  bool verbose = false;
+  std::string workdir, input;
+  pcl_ext::apps::CommandLine cl ("pcl_ext_test", "A test tool.");
+  cl.addPositional ("input", input, "input");
+  cl.addOption ("k", k, "neighbours");
+  cl.addOption ("radius", radius, "radius");
+  cl.addOption ("workdir", workdir, "work folder");
+  cl.addSwitch ("verbose", verbose, "talk");
+  std::vector<const char*> argv{
+      "pcl_ext_test", "-verbose", "in.las", "-workdir", "w", "-radius", "0.50"};
+  ASSERT_EQ (cl.parse (static_cast<int> (argv.size()), argv.data()), -1);
+  EXPECT_EQ (cl.getGivenOptions ({"workdir"}),
+             (std::vector<std::string>{"-verbose", "-radius", "0.50"}));
+  EXPECT_EQ (cl.getGivenOptions().size(), 5u);
+}

@@ -127,6 +127,16 @@ public:
     return curvature_threshold_used_;
   }
 
+  /** \brief kappa (eq. 4) of every point of the input cloud as the last classify()
+   * computed it (indexed like the cloud; NaN where not computed): the values whose
+   * median the derived curvature threshold is a multiple of, e.g. to derive one
+   * threshold for the tiles of a cloud too large to classify whole. */
+  const std::vector<float>&
+  getCurvatures () const
+  {
+    return kappa_;
+  }
+
   /** \brief Variance-of-curvature tolerance (eq. 5): above it a point is an edge.
    * Default 1e-4 (the paper's, from user trials); valid: >= 0. */
   void

@@ -69,6 +69,12 @@ public:
   void
   printHelp () const;
 
+  /** \brief The options given on the command line as they were written (`-name`, then
+   * the value unless a switch), in order, but those named in \a except: to hand the
+   * same options to another run of the tool. */
+  std::vector<std::string>
+  getGivenOptions (const std::vector<std::string>& except = {}) const;
+
   /** \brief Whether option \a name was given on the command line (after parse()). */
   bool
   given (const std::string& name) const;
@@ -77,11 +83,13 @@ private:
   enum class Kind { Int, Unsigned, Double, String, Switch };
   struct Option {
     std::string name;
-    Kind kind;
-    void* target;
+    Kind kind = Kind::Int;
+    void* target = nullptr;
     std::string help;
     std::string default_text;
     bool given = false;
+    std::string given_text;
+    std::size_t given_order = 0;
   };
   struct Positional {
     std::string name;
@@ -95,6 +103,12 @@ private:
   bool
   assignPositionals (const std::vector<std::string>& args);
 
+  static Option
+  makeOption (const std::string& name,
+              Kind kind,
+              void* target,
+              const std::string& help,
+              const std::string& default_text);
   bool
   assign (Option& option, const std::string& text);
   void

@@ -97,13 +97,17 @@ public:
   getTilesNear (double x, double y, std::vector<std::size_t>& tiles) const;
 
   /** \brief How far (x, y), a point of \a tile's core or halo, is from the edge of the
-   * data \a tile holds: the sides of its core box widened by \a rings tile sizes and
-   * the halo (rings = 0: the tile's own points; 1: also the cores and halos of the 8
-   * tiles around, ...), sides beyond the grid's outer border excepted (no data lies
-   * there). Infinity when no side is left. A neighbourhood search around the point is
-   * complete within those points when its radius is at most this distance. */
+   * data \a tile holds: the sides of its core box widened by \a margin (negative: the
+   * halo; a tile can hold a wider margin by reading the points of the tiles around),
+   * sides beyond the grid's outer border excepted (no data lies there). Infinity when
+   * no side is left. A neighbourhood search around the point is complete within those
+   * points when its radius is at most this distance. */
   double
-  getReach (std::size_t tile, double x, double y, std::size_t rings = 0) const;
+  getReach (std::size_t tile, double x, double y, double margin = -1.0) const;
+
+  /** \brief Whether (x, y) lies within \a tile's core box widened by \a margin. */
+  bool
+  isWithin (std::size_t tile, double x, double y, double margin) const;
 
   /** \brief The tiles within \a rings rings around \a tile (itself included),
    * ascending. */

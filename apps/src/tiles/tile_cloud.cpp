@@ -1,0 +1,180 @@
+/*
+ * pcl_ext_tiles: the points of one tile with neighbourhoods that are those of the whole
+ * cloud.
+ */
+#include "tile_cloud.h"
+
+#include <pcl_ext/tiling/tile_points.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+
+namespace pcl_ext {
+namespace apps {
+namespace {
+/** The points of the tiles \a tiles, each once, in global order. */
+bool
+readTiles (const std::string& folder,
+           const std::vector<std::size_t>& tiles,
+           std::vector<tiling::TilePoint>& points)
+{
+  points.clear();
+  std::vector<tiling::TilePoint> one;
+  for (const std::size_t t : tiles) {
+    if (!tiling::readTilePoints (folder, t, one))
+      return false;
+    points.insert (points.end(), one.begin(), one.end());
+  }
+  std::sort (points.begin(), points.end(), [] (const auto& a, const auto& b) {
+    return a.index < b.index;
+  });
+  points.erase (
+      std::unique (points.begin(),
+                   points.end(),
+                   [] (const auto& a, const auto& b) { return a.index == b.index; }),
+      points.end());
+  return true;
+}
+
+/** Whether each point's own neighbourhood lies within the loaded data; \a short_by: the
+ * most any falls short by. */
+std::vector<char>
+ownNeighbourhoodsWithin (const tiling::TilePlan& plan,
+                         const tiling::TileGrid& grid,
+                         const TileCloud& t,
+                         const NeighbourhoodReach& reach,
+                         double& short_by)
+{
+  const auto& nb = *t.neighbourhoods;
+  short_by = 0.0;
+  std::vector<char> within (t.cloud->size(), 0);
+  for (std::size_t i = 0; i < t.cloud->size(); ++i) {
+    const auto& p = (*t.cloud)[i];
+    const double space =
+        grid.getReach (t.tile, plan.origin.x() + p.x, plan.origin.y() + p.y, t.margin);
+    if (std::isinf (space)) {
+      within[i] = 1;
+      continue;
+    }
+    const std::ptrdiff_t row = nb.getRowOfPoint (static_cast<pcl::index_t> (i));
+    double needed = std::numeric_limits<double>::infinity();
+    if (reach.radius > 0.0)
+      needed = reach.radius;
+    else if (row >= 0) {
+      const auto r = nb[static_cast<std::size_t> (row)];
+      if (r.size() == static_cast<std::size_t> (reach.k) && r.size() > 0)
+        needed = std::sqrt (static_cast<double> (r.sqr_distances[r.size() - 1]));
+      else if (reach.max_radius > 0.0)
+        needed = reach.max_radius;
+    }
+    within[i] = needed <= space;
+    if (!within[i])
+      short_by = std::max (short_by, needed - space);
+  }
+  return within;
+}
+} // namespace
+
+bool
+loadTileCloud (const tiling::TilePlan& plan,
+               const std::string& folder,
+               std::size_t tile,
+               const NeighbourhoodReach& reach,
+               unsigned int threads,
+               TileCloud& result)
+{
+  const tiling::TileGrid grid = plan.getGrid();
+  result = TileCloud();
+  result.tile = tile;
+  std::vector<std::size_t> tiles;
+  std::vector<tiling::TilePoint> points;
+  double margin = plan.halo;
+  for (;;) {
+    // The tiles whose cores reach into the margin, then their points within it.
+    const auto rings = static_cast<std::size_t> (
+        std::ceil (std::max (0.0, margin - plan.halo) / plan.tile_size));
+    grid.getTilesAround (tile, rings, tiles);
+    if (!readTiles (folder, tiles, points))
+      return false;
+    if (rings > 0)
+      points.erase (std::remove_if (points.begin(),
+                                    points.end(),
+                                    [&] (const tiling::TilePoint& p) {
+                                      return !grid.isWithin (tile,
+                                                             plan.origin.x() + p.x,
+                                                             plan.origin.y() + p.y,
+                                                             margin);
+                                    }),
+                    points.end());
+    result.margin = margin;
+    result.cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+    result.cloud->resize (points.size());
+    result.indices.resize (points.size());
+    result.owners.resize (points.size());
+    result.core.assign (points.size(), false);
+    result.core_points = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      (*result.cloud)[i] = pcl::PointXYZ (points[i].x, points[i].y, points[i].z);
+      result.indices[i] = points[i].index;
+      result.owners[i] = points[i].owner;
+      result.core[i] = points[i].owner == tile;
+      result.core_points += result.core[i];
+    }
+    if (result.core_points == 0)
+      return true; // an empty tile: nothing to compute
+    result.neighbourhoods = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>>();
+    auto& nb = *result.neighbourhoods;
+    nb.setInputCloud (result.cloud);
+    if (reach.radius > 0.0)
+      nb.setRadiusSearch (reach.radius);
+    else {
+      nb.setKSearch (reach.k);
+      nb.setMaxRadius (reach.max_radius);
+    }
+    nb.setNumberOfThreads (threads);
+    if (result.cloud->size() <= static_cast<std::size_t> (reach.k) &&
+        reach.radius <= 0.0 && tiles.size() == grid.size())
+      return true; // fewer points than k in the whole cloud: the method says so
+    if (result.cloud->size() > static_cast<std::size_t> (reach.k) ||
+        reach.radius > 0.0) {
+      if (!nb.compute()) {
+        std::cerr << "Error: the neighbourhood search of tile " << tile << " failed.\n";
+        return false;
+      }
+    }
+    // Within after h steps: its own neighbourhood and those of its neighbours within
+    // after h - 1 steps.
+    double short_by = 0.0;
+    std::vector<char> within;
+    if (nb.empty())
+      short_by = plan.tile_size; // too few points to search: widen
+    else {
+      within = ownNeighbourhoodsWithin (plan, grid, result, reach, short_by);
+      for (int h = 1; h < reach.hops; ++h) {
+        std::vector<char> next = within;
+        for (std::size_t i = 0; i < within.size(); ++i) {
+          if (!within[i])
+            continue;
+          const std::ptrdiff_t row = nb.getRowOfPoint (static_cast<pcl::index_t> (i));
+          if (row < 0)
+            continue;
+          const auto r = nb[static_cast<std::size_t> (row)];
+          for (std::size_t j = 0; j < r.size() && next[i]; ++j)
+            next[i] = within[static_cast<std::size_t> (r.indices[j])];
+        }
+        within.swap (next);
+      }
+    }
+    bool all = !nb.empty();
+    for (std::size_t i = 0; i < within.size() && all; ++i)
+      all = !result.core[i] || within[i];
+    if (all || tiles.size() == grid.size())
+      return true;
+    // Widen by what the farthest neighbourhood lacked, and a little more.
+    margin += std::max (1.25 * short_by, 0.05 * plan.tile_size);
+  }
+}
+} // namespace apps
+} // namespace pcl_ext

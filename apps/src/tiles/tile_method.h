@@ -1,0 +1,102 @@
+/*
+ * pcl_ext_tiles: what a method must do to run tile by tile.
+ */
+#pragma once
+
+#include "tile_cloud.h"
+
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/apps/output.h>
+#include <pcl_ext/tiling/merged_results.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pcl_ext {
+namespace apps {
+/** \brief A method of pcl_ext_tiles: its options (those of its own tool), what it
+ * estimates from the whole cloud before the tiles run, and its result on one tile.
+ *
+ * A tiled run gives the result of the untiled tool because (1) every core point's
+ * neighbourhoods, as far as its result reaches (reach()), are those of the whole cloud
+ * (loadTileCloud checks it and widens the tile until they are), and (2) what the
+ * method derives from the whole cloud (e.g. a median curvature) is derived once from
+ * every tile's values (estimate(), then reduce()) and handed to every tile (run()). */
+class TileMethod {
+public:
+  virtual ~TileMethod() = default;
+
+  /** \brief Declare the method's options on \a cl (the defaults of its own tool). */
+  virtual void
+  addOptions (CommandLine& cl) = 0;
+
+  /** \brief Check the options (message printed when they are not valid). */
+  virtual bool
+  checkOptions (const CommandLine& cl) const = 0;
+
+  /** \brief Where the result goes in the output (the field of the method's tool). */
+  virtual ResultField
+  makeResultField () const = 0;
+
+  /** \brief Classes per point or segment ids (joined across tiles). */
+  virtual tiling::MergedResults::Kind
+  getKind () const = 0;
+
+  /** \brief The neighbourhoods a point's result reaches through. */
+  virtual NeighbourhoodReach
+  getReach () const = 0;
+
+  /** \brief Whether the method estimates something from the whole cloud (then
+   * estimate() runs on every tile, and reduce() once, before run()). */
+  virtual bool
+  needsEstimate () const
+  {
+    return false;
+  }
+
+  /** \brief The values of the tile's core points (order free) that reduce() needs, by
+   * statistic name. \return false on error (message printed) */
+  virtual bool
+  estimate (const TileCloud&, std::map<std::string, std::vector<float>>&)
+  {
+    return true;
+  }
+
+  /** \brief From the statistics of all tiles (tiling::nthOfTileValues over \a tiles
+   * tiles of \a folder), the settings run() reads. \return false on error */
+  virtual bool
+  reduce (const std::string&, std::size_t, std::map<std::string, std::string>&)
+  {
+    return true;
+  }
+
+  /** \brief The result of every point of \a tile (its halo included; only the core's
+   * is kept), given the whole cloud's \a settings. Segments are numbered from 0 in the
+   * tile; tiling::SegmentMerge::kNoSegment for a point in none. \return false on error
+   * (message printed) */
+  virtual bool
+  run (const TileCloud& tile,
+       const std::map<std::string, std::string>& settings,
+       std::vector<std::uint32_t>& labels) = 0;
+
+  /** \brief OpenMP threads of the method (0: all cores). */
+  void
+  setNumberOfThreads (unsigned int threads)
+  {
+    threads_ = threads;
+  }
+
+protected:
+  unsigned int threads_ = 0;
+};
+
+/** \brief The method named \a name (classify_variance, ...), or null. */
+std::unique_ptr<TileMethod>
+makeTileMethod (const std::string& name);
+
+/** \brief The names makeTileMethod knows, for the help text. */
+constexpr const char* kTileMethods = "classify_variance";
+} // namespace apps
+} // namespace pcl_ext

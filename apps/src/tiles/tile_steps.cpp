@@ -1,0 +1,329 @@
+/*
+ * pcl_ext_tiles: the steps of a tiled run (plan, estimate, tile, merge), each usable
+ * alone (scheduler array jobs) or one after another.
+ */
+#include "tile_steps.h"
+
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/io/file_output.h>
+#include <pcl_ext/io/las_writer.h>
+#include <pcl_ext/io/read_error.h>
+#include <pcl_ext/tiling/merged_results.h>
+#include <pcl_ext/tiling/point_file_chunks.h>
+#include <pcl_ext/tiling/tile_results.h>
+
+#include <pcl/common/io.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <sstream>
+#include <sys/stat.h>
+
+namespace pcl_ext {
+namespace apps {
+namespace {
+/** About this many points a tile when no tile size is given: a tile's points, their
+ * neighbourhoods and the method's arrays stay well under a gigabyte. */
+constexpr std::uint64_t kPointsPerTile = 2000000;
+constexpr std::size_t kChunkPoints = 1 << 20;
+
+std::string
+joinArguments (const std::vector<std::string>& args)
+{
+  std::string text;
+  for (const auto& a : args)
+    text += (text.empty() ? "" : "\t") + a;
+  return text;
+}
+
+/** A halo for \a reach from the first million points of \a input: the 99th percentile
+ * of the neighbourhood radii of a sample of them, through every step a result reaches,
+ * with a quarter more. A run of a file's points holds fewer neighbours than the whole
+ * cloud, so the radii are rather too wide than too narrow; where they are too narrow
+ * the tiles widen themselves. */
+double
+estimateHalo (const std::string& input,
+              const Eigen::Vector3d& origin,
+              const NeighbourhoodReach& reach)
+{
+  if (reach.radius > 0.0)
+    return 1.25 * reach.hops * reach.radius;
+  tiling::PointFileChunks file;
+  file.open (input);
+  file.setOrigin (origin);
+  pcl::PCLPointCloud2 chunk;
+  file.read (1 << 20, chunk);
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  const std::uint8_t* xyz = chunk.data.data() + tiling::xyzOffset (chunk);
+  const std::size_t n = static_cast<std::size_t> (chunk.width) * chunk.height;
+  for (std::size_t i = 0; i < n; ++i) {
+    float p[3];
+    std::memcpy (p, xyz + i * chunk.point_step, sizeof (p));
+    if (std::isfinite (p[0]) && std::isfinite (p[1]) && std::isfinite (p[2]))
+      cloud->push_back (pcl::PointXYZ (p[0], p[1], p[2]));
+  }
+  if (cloud->size() <= static_cast<std::size_t> (reach.k))
+    return 0.0;
+  auto sample = pcl::make_shared<pcl::Indices>();
+  const std::size_t step = std::max<std::size_t> (1, cloud->size() / 2000);
+  for (std::size_t i = 0; i < cloud->size(); i += step)
+    sample->push_back (static_cast<pcl::index_t> (i));
+  pcl_ext::Neighbourhoods<pcl::PointXYZ> nb;
+  nb.setInputCloud (cloud);
+  nb.setIndices (sample);
+  nb.setKSearch (reach.k);
+  nb.setMaxRadius (reach.max_radius);
+  if (!nb.compute() || nb.empty())
+    return 0.0;
+  std::vector<float> radii;
+  for (std::size_t r = 0; r < nb.size(); ++r)
+    if (nb[r].size() > 0)
+      radii.push_back (std::sqrt (nb[r].sqr_distances[nb[r].size() - 1]));
+  if (radii.empty())
+    return 0.0;
+  auto at = radii.begin() + static_cast<std::ptrdiff_t> (0.99 * (radii.size() - 1));
+  std::nth_element (radii.begin(), at, radii.end());
+  return 1.25 * reach.hops * static_cast<double> (*at);
+}
+
+std::vector<std::string>
+splitArguments (const std::string& text)
+{
+  std::vector<std::string> args;
+  std::istringstream in (text);
+  std::string a;
+  while (std::getline (in, a, '\t'))
+    args.push_back (a);
+  return args;
+}
+} // namespace
+
+std::string
+planPath (const std::string& workdir)
+{
+  return workdir + "/plan.txt";
+}
+
+bool
+planStep (const std::string& method_name,
+          const std::vector<std::string>& method_arguments,
+          const std::vector<std::string>& inputs,
+          double tile_size,
+          double halo,
+          const std::string& workdir,
+          tiling::TilePlan& plan)
+{
+  const auto method = makeTileMethod (method_name);
+  if (!method) {
+    std::cerr << "Error: unknown method '" << method_name << "' (" << kTileMethods
+              << ").\n";
+    return false;
+  }
+  ::mkdir (workdir.c_str(), 0755);
+  struct stat st;
+  if (::stat (workdir.c_str(), &st) != 0 || !S_ISDIR (st.st_mode)) {
+    std::cerr << "Error: cannot make the work folder " << workdir << ".\n";
+    return false;
+  }
+  StageTimer timer ("Planning");
+  try {
+    // The grid's size and halo need the box: plan once to get it.
+    if (!tiling::planTiles (inputs, 1e9, 0.0, plan))
+      return false;
+    const std::uint64_t points = plan.getTotalPoints();
+    if (!(tile_size > 0.0))
+      tile_size = tiling::suggestTileSize (plan.min, plan.max, points, kPointsPerTile);
+    if (halo < 0.0)
+      halo = std::min (estimateHalo (inputs.front(), plan.origin, method->getReach()),
+                       0.5 * tile_size);
+    if (!tiling::planTiles (inputs, tile_size, halo, plan))
+      return false;
+    plan.settings["method"] = method_name;
+    plan.settings["arguments"] = joinArguments (method_arguments);
+    if (!tiling::TileResults::create (workdir, plan.getTotalPoints()) ||
+        !tiling::writeTiles (plan, workdir) ||
+        !tiling::saveTilePlan (planPath (workdir), plan))
+      return false;
+  }
+  catch (const std::exception& e) {
+    std::cerr << "\nError: " << e.what() << "\n";
+    return false;
+  }
+  timer.done (plan.getTotalPoints());
+  const tiling::TileGrid grid = plan.getGrid();
+  std::cout << grid.size() << " tiles (" << grid.getColumns() << " x " << grid.getRows()
+            << ") of " << plan.tile_size << " m, halo " << plan.halo << " m, in "
+            << workdir << "\n";
+  return true;
+}
+
+bool
+loadPlanAndMethod (const std::string& workdir,
+                   tiling::TilePlan& plan,
+                   std::unique_ptr<TileMethod>& method,
+                   ResultField* result_field)
+{
+  if (!tiling::loadTilePlan (planPath (workdir), plan))
+    return false;
+  method = makeTileMethod (plan.settings["method"]);
+  if (!method) {
+    std::cerr << "Error: the plan's method '" << plan.settings["method"]
+              << "' is unknown.\n";
+    return false;
+  }
+  CommandLine cl ("pcl_ext_tiles", "The options of the plan.");
+  method->addOptions (cl);
+  ResultField unused = method->makeResultField();
+  (result_field ? *result_field : unused).addTo (cl);
+  std::vector<std::string> args = splitArguments (plan.settings["arguments"]);
+  args.insert (args.begin(), "pcl_ext_tiles");
+  std::vector<const char*> argv;
+  for (const auto& a : args)
+    argv.push_back (a.c_str());
+  if (cl.parse (static_cast<int> (argv.size()), argv.data()) >= 0 ||
+      !method->checkOptions (cl)) {
+    std::cerr << "Error: the options in " << planPath (workdir) << " are not valid.\n";
+    return false;
+  }
+  return true;
+}
+
+bool
+estimateStep (const tiling::TilePlan& plan,
+              TileMethod& method,
+              const std::string& workdir,
+              std::size_t tile,
+              unsigned int threads)
+{
+  if (!method.needsEstimate())
+    return true;
+  TileCloud cloud;
+  method.setNumberOfThreads (threads);
+  if (!loadTileCloud (plan, workdir, tile, method.getReach(), threads, cloud))
+    return false;
+  std::map<std::string, std::vector<float>> values;
+  if (!method.estimate (cloud, values))
+    return false;
+  for (const auto& [name, v] : values)
+    if (!tiling::saveTileValues (workdir, tile, name, v))
+      return false;
+  return true;
+}
+
+bool
+reduceStep (tiling::TilePlan& plan, TileMethod& method, const std::string& workdir)
+{
+  if (!method.needsEstimate() || plan.settings.count ("estimated"))
+    return true;
+  if (!method.reduce (workdir, plan.getGrid().size(), plan.settings))
+    return false;
+  plan.settings["estimated"] = "1";
+  return tiling::saveTilePlan (planPath (workdir), plan);
+}
+
+bool
+tileStep (const tiling::TilePlan& plan,
+          TileMethod& method,
+          const std::string& workdir,
+          std::size_t tile,
+          unsigned int threads)
+{
+  StageTimer timer ("Tile " + std::to_string (tile));
+  TileCloud cloud;
+  method.setNumberOfThreads (threads);
+  if (!loadTileCloud (plan, workdir, tile, method.getReach(), threads, cloud))
+    return false;
+  std::vector<std::uint32_t> labels;
+  if (!method.run (cloud, plan.settings, labels))
+    return false;
+  std::vector<std::uint64_t> core_indices;
+  std::vector<std::uint32_t> core_labels;
+  std::vector<tiling::HaloLabel> halo;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (cloud.core[i]) {
+      core_indices.push_back (cloud.indices[i]);
+      core_labels.push_back (labels[i]);
+    }
+    else if (labels[i] != tiling::SegmentMerge::kNoSegment)
+      halo.push_back ({cloud.indices[i], cloud.owners[i], labels[i]});
+  }
+  if (!tiling::TileResults::write (workdir, core_indices, core_labels))
+    return false;
+  if (method.getKind() == tiling::MergedResults::Kind::Segments &&
+      !tiling::saveHaloLabels (workdir, tile, halo))
+    return false;
+  const double ms = timer.done (cloud.core_points);
+  std::cout << "  " << cloud.indices.size() - cloud.core_points << " halo points"
+            << (cloud.margin > plan.halo
+                    ? ", margin widened to " + std::to_string (cloud.margin) + " m"
+                    : "")
+            << ", "
+            << static_cast<long long> (cloud.core_points / std::max (ms, 1.0) * 1e3)
+            << " points/s\n";
+  return true;
+}
+
+bool
+mergeStep (const tiling::TilePlan& plan,
+           TileMethod& method,
+           ResultField& field,
+           const std::string& workdir,
+           const std::string& output)
+{
+  StageTimer timer ("Merging into " + output);
+  const bool segments = method.getKind() == tiling::MergedResults::Kind::Segments;
+  try {
+    tiling::PointFileChunks first;
+    first.open (plan.inputs.front());
+    io::PointFile like = first.getDescription();
+    like.origin = plan.origin;
+    if (!field.checkInput (like, plan.inputs.front()))
+      return false;
+    tiling::MergedResults merged;
+    if (!merged.open (plan, workdir, method.getKind()))
+      return false;
+    const bool las = io::fileExtension (output) == "las";
+    io::LasWriter writer;
+    pcl::PCLPointCloud2 chunk, whole;
+    std::vector<std::uint32_t> values;
+    std::size_t input = 0;
+    bool opened = false;
+    std::uint64_t points = 0;
+    while (merged.read (kChunkPoints, chunk, input, values) > 0) {
+      for (auto& v : values)
+        v = v == tiling::TileResults::kNoResult ? 0u : (segments ? v + 1 : v);
+      if (!field.attach (chunk, values))
+        return false;
+      if (las) {
+        if (!opened &&
+            !writer.open (output, chunk, plan.origin, like.las ? &*like.las : nullptr))
+          return false;
+        opened = true;
+        if (!writer.write (chunk))
+          return false;
+      }
+      else if (whole.data.empty())
+        whole = chunk;
+      else if (!pcl::PCLPointCloud2::concatenate (whole, chunk)) {
+        std::cerr << "\nError: the inputs have different fields; write .las tiles one "
+                     "input at a time.\n";
+        return false;
+      }
+      points += values.size();
+    }
+    if (merged.failed())
+      return false;
+    if (las ? !writer.close() : !io::savePointFile (output, whole, plan.origin, &like))
+      return false;
+    timer.done (points);
+  }
+  catch (const std::exception& e) {
+    std::cerr << "\nError: " << e.what() << "\n";
+    return false;
+  }
+  return true;
+}
+} // namespace apps
+} // namespace pcl_ext

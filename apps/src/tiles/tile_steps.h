@@ -1,0 +1,73 @@
+/*
+ * pcl_ext_tiles: the steps of a tiled run (plan, estimate, tile, merge), each usable
+ * alone (scheduler array jobs) or one after another.
+ */
+#pragma once
+
+#include "tile_method.h"
+
+#include <pcl_ext/tiling/tile_plan.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace pcl_ext {
+namespace apps {
+/** \brief The plan's file in a work folder. */
+std::string
+planPath (const std::string& workdir);
+
+/** \brief Plan a run: the inputs' box and points, the tile grid (\a tile_size 0: about
+ * kPointsPerTile points a tile), the halo (\a halo < 0: from the inputs' density), the
+ * method and its options (\a method_arguments, to parse again in the other steps), and
+ * the points sorted into the tiles' files. \return false (message printed) on error */
+bool
+planStep (const std::string& method_name,
+          const std::vector<std::string>& method_arguments,
+          const std::vector<std::string>& inputs,
+          double tile_size,
+          double halo,
+          const std::string& workdir,
+          tiling::TilePlan& plan);
+
+/** \brief The plan of \a workdir and its method with the options the plan was made
+ * with. \return false (message printed) when either cannot be read */
+bool
+loadPlanAndMethod (const std::string& workdir,
+                   tiling::TilePlan& plan,
+                   std::unique_ptr<TileMethod>& method,
+                   ResultField* result_field = nullptr);
+
+/** \brief Run the estimate of \a tile (when the method needs one). */
+bool
+estimateStep (const tiling::TilePlan& plan,
+              TileMethod& method,
+              const std::string& workdir,
+              std::size_t tile,
+              unsigned int threads);
+
+/** \brief Reduce the tiles' estimates into the plan's settings (saved) when the method
+ * needs one and the plan has none yet. */
+bool
+reduceStep (tiling::TilePlan& plan, TileMethod& method, const std::string& workdir);
+
+/** \brief Run \a tile: its core points' results (and its halo labels, for segments) in
+ * the work folder. A progress line with points/s. */
+bool
+tileStep (const tiling::TilePlan& plan,
+          TileMethod& method,
+          const std::string& workdir,
+          std::size_t tile,
+          unsigned int threads);
+
+/** \brief Write \a output: every input point with its fields and the merged result in
+ * \a field's field, in the inputs' coordinates. */
+bool
+mergeStep (const tiling::TilePlan& plan,
+           TileMethod& method,
+           ResultField& field,
+           const std::string& workdir,
+           const std::string& output);
+} // namespace apps
+} // namespace pcl_ext

@@ -1,0 +1,254 @@
+/*
+ * pcl_ext_tiles: a method over a cloud larger than memory, tile by tile with halos,
+ * with the result of the method's own tool on the whole cloud.
+ */
+#include "tile_steps.h"
+
+#include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/apps/input.h>
+#include <pcl_ext/apps/output.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <sys/resource.h>
+
+namespace {
+using pcl_ext::apps::CommandLine;
+
+constexpr const char* kDescription =
+    "Runs a method over clouds of any size tile by tile: each tile reads only its "
+    "points "
+    "and a halo around them, and the output is what the method's own tool gives on the "
+    "whole cloud (the same classes point by point; the same segments, numbered by "
+    "their "
+    "first point). Methods: classify_variance (the options of "
+    "pcl_ext_classify_variance). Steps for scheduler array jobs: 'plan METHOD input... "
+    "-workdir D', then 'estimate I -workdir D' and 'tile I -workdir D' for every tile "
+    "I, "
+    "then 'merge output -workdir D'.";
+
+/** The tool's own options, kept out of the method's. */
+struct TileOptions {
+  double tile_size = 0.0;
+  double halo = -1.0;
+  std::string workdir;
+  unsigned int threads = 0;
+  bool keep_workdir = false;
+
+  void
+  addTo (CommandLine& cl, bool planning)
+  {
+    cl.addOption (
+        "workdir",
+        workdir,
+        "work folder of the tiles (default: the output's name + .tiles, removed "
+        "at the end)");
+    cl.addOption ("threads", threads, "OpenMP threads per process (0: all cores)");
+    if (!planning)
+      return;
+    cl.addOption (
+        "tile_size", tile_size, "tile side in metres (0: about 2M points a tile)");
+    cl.addOption (
+        "halo",
+        halo,
+        "halo around each tile in metres (-1: from the inputs' density; a tile "
+        "widens itself where a neighbourhood reaches beyond it)");
+    cl.addSwitch ("keep_workdir", keep_workdir, "keep the work folder");
+  }
+
+  static std::vector<std::string>
+  names ()
+  {
+    return {"workdir", "threads", "tile_size", "halo", "keep_workdir"};
+  }
+};
+
+long
+peakMemoryMegabytes ()
+{
+  rusage usage{};
+  ::getrusage (RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024;
+}
+
+/** The method given as the first argument with its options, the tool's options and the
+ * positionals of a plan or a whole run. */
+int
+parsePlan (int argc,
+           char** argv,
+           bool whole_run,
+           std::unique_ptr<pcl_ext::apps::TileMethod>& method,
+           TileOptions& options,
+           std::vector<std::string>& inputs,
+           std::string& output,
+           std::vector<std::string>& method_arguments,
+           pcl_ext::apps::ResultField& field)
+{
+  std::string method_name;
+  CommandLine cl ("pcl_ext_tiles", kDescription);
+  cl.addPositional ("METHOD", method_name, pcl_ext::apps::kTileMethods);
+  cl.addPositionalList ("input", inputs, pcl_ext::apps::kInputFormats);
+  if (whole_run)
+    cl.addPositional ("output", output, pcl_ext::apps::kOutputFormats);
+  // The method's options can only be declared once it is known.
+  const int first = whole_run ? 1 : 2;
+  method = pcl_ext::apps::makeTileMethod (argc > first ? argv[first] : "");
+  if (method) {
+    method->addOptions (cl);
+    field = method->makeResultField();
+    field.addTo (cl);
+  }
+  options.addTo (cl, true);
+  if (const int code = cl.parse (argc - first + 1, argv + first - 1); code >= 0)
+    return code;
+  if (!method) {
+    std::cerr << "Error: unknown method '" << method_name << "' ("
+              << pcl_ext::apps::kTileMethods << ").\n";
+    return 1;
+  }
+  if (!method->checkOptions (cl))
+    return 1;
+  if (!(options.tile_size >= 0.0) || !(options.halo >= 0.0 || options.halo == -1.0)) {
+    std::cerr << "Error: -tile_size must be >= 0 and -halo >= 0 (or -1).\n";
+    return 1;
+  }
+  method_arguments = cl.getGivenOptions (TileOptions::names());
+  return -1;
+}
+
+int
+runAll (int argc, char** argv)
+{
+  const auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<pcl_ext::apps::TileMethod> method;
+  TileOptions options;
+  std::vector<std::string> inputs, arguments;
+  std::string output;
+  pcl_ext::apps::ResultField field ("", "", "");
+  if (const int code = parsePlan (
+          argc, argv, true, method, options, inputs, output, arguments, field);
+      code >= 0)
+    return code;
+  if (!field.checkOutput (output))
+    return 1;
+  const bool own_workdir = options.workdir.empty();
+  if (own_workdir)
+    options.workdir = output + ".tiles";
+  pcl_ext::tiling::TilePlan plan;
+  bool ok = pcl_ext::apps::planStep (argv[1],
+                                     arguments,
+                                     inputs,
+                                     options.tile_size,
+                                     options.halo,
+                                     options.workdir,
+                                     plan);
+  const std::size_t tiles = plan.getGrid().size();
+  for (std::size_t t = 0; ok && t < tiles; ++t)
+    ok = pcl_ext::apps::estimateStep (
+        plan, *method, options.workdir, t, options.threads);
+  ok = ok && pcl_ext::apps::reduceStep (plan, *method, options.workdir);
+  for (std::size_t t = 0; ok && t < tiles; ++t) {
+    ok = pcl_ext::apps::tileStep (plan, *method, options.workdir, t, options.threads);
+    const double seconds =
+        std::chrono::duration<double> (std::chrono::steady_clock::now() - start)
+            .count();
+    if (ok)
+      std::cout << "  " << t + 1 << " / " << tiles << " tiles, ETA "
+                << static_cast<long> (seconds / (t + 1) * (tiles - t - 1)) << " s\n";
+  }
+  ok = ok && pcl_ext::apps::mergeStep (plan, *method, field, options.workdir, output);
+  if (own_workdir && !options.keep_workdir) {
+    std::error_code ignored;
+    std::filesystem::remove_all (options.workdir, ignored);
+  }
+  const double seconds =
+      std::chrono::duration<double> (std::chrono::steady_clock::now() - start).count();
+  std::cout << (ok ? "Done: " : "Failed after ") << plan.getTotalPoints() << " points, "
+            << tiles << " tiles, " << seconds << " s, peak memory "
+            << peakMemoryMegabytes() << " MB\n";
+  return ok ? 0 : 1;
+}
+
+/** `estimate I`, `tile I` or `merge output`, each with -workdir. */
+int
+runStep (int argc, char** argv)
+{
+  const std::string step = argv[1];
+  std::string argument;
+  TileOptions options;
+  CommandLine cl ("pcl_ext_tiles " + step, kDescription);
+  cl.addPositional (
+      step == "merge" ? "output" : "I", argument, "output file or tile index");
+  options.addTo (cl, false);
+  if (const int code = cl.parse (argc - 1, argv + 1); code >= 0)
+    return code;
+  if (options.workdir.empty()) {
+    std::cerr << "Error: -workdir is required.\n";
+    return 1;
+  }
+  pcl_ext::tiling::TilePlan plan;
+  std::unique_ptr<pcl_ext::apps::TileMethod> method;
+  pcl_ext::apps::ResultField field ("", "", "");
+  if (!pcl_ext::apps::loadPlanAndMethod (options.workdir, plan, method, &field))
+    return 1;
+  if (step == "merge")
+    return field.checkOutput (argument) &&
+                   pcl_ext::apps::reduceStep (plan, *method, options.workdir) &&
+                   pcl_ext::apps::mergeStep (
+                       plan, *method, field, options.workdir, argument)
+               ? 0
+               : 1;
+  char* end = nullptr;
+  const unsigned long long tile = std::strtoull (argument.c_str(), &end, 10);
+  if (argument.empty() || *end != '\0' || tile >= plan.getGrid().size()) {
+    std::cerr << "Error: tile '" << argument << "' is not one of 0 .. "
+              << plan.getGrid().size() - 1 << ".\n";
+    return 1;
+  }
+  if (step == "estimate")
+    return pcl_ext::apps::estimateStep (
+               plan, *method, options.workdir, tile, options.threads)
+               ? 0
+               : 1;
+  return pcl_ext::apps::reduceStep (plan, *method, options.workdir) &&
+                 pcl_ext::apps::tileStep (
+                     plan, *method, options.workdir, tile, options.threads)
+             ? 0
+             : 1;
+}
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  const std::string first = argc > 1 ? argv[1] : "";
+  if (first == "estimate" || first == "tile" || first == "merge")
+    return runStep (argc, argv);
+  if (first == "plan") {
+    std::unique_ptr<pcl_ext::apps::TileMethod> method;
+    TileOptions options;
+    std::vector<std::string> inputs, arguments;
+    std::string unused;
+    pcl_ext::apps::ResultField field ("", "", "");
+    if (const int code = parsePlan (
+            argc, argv, false, method, options, inputs, unused, arguments, field);
+        code >= 0)
+      return code;
+    if (options.workdir.empty()) {
+      std::cerr << "Error: -workdir is required.\n";
+      return 1;
+    }
+    pcl_ext::tiling::TilePlan plan;
+    return pcl_ext::apps::planStep (argv[2],
+                                    arguments,
+                                    inputs,
+                                    options.tile_size,
+                                    options.halo,
+                                    options.workdir,
+                                    plan)
+               ? 0
+               : 1;
+  }
+  return runAll (argc, argv);
+}
