@@ -77,14 +77,15 @@ struct BatchScratch {
   float anchor[3] = {0.0f, 0.0f, 0.0f};
 };
 
-/** Squared distance (non-negative, so its bits order like the value) above, position
- * below: sorting the keys orders by distance, then by position. */
+/** Squared distance (non-negative, so its bits order like the value) above, the point's
+ * index in the cloud below: sorting the keys orders by distance, then by index, so that
+ * ties are broken the same way by any tree over the same points. */
 inline std::uint64_t
-rankKey (float sqr_dist, std::uint32_t pos)
+rankKey (float sqr_dist, pcl::index_t index)
 {
   std::uint32_t bits;
   std::memcpy (&bits, &sqr_dist, sizeof (bits));
-  return (static_cast<std::uint64_t> (bits) << 32) | pos;
+  return (static_cast<std::uint64_t> (bits) << 32) | static_cast<std::uint32_t> (index);
 }
 
 inline float
@@ -156,12 +157,16 @@ orderByShells (const std::vector<float>& xyz,
   gatherCoordinates (xyz, s);
 }
 
-/** The k candidates of \a s nearest to \a q by (squared distance, position), among
+/** The k candidates of \a s nearest to \a q by (squared distance, point index), among
  * those within \a sqr_limit, as keys in s.sorted[0 .. k). Returns false if fewer than k
  * lie within the limit. */
 bool
-rankCandidates (
-    const float* q, std::size_t m, std::size_t k, float sqr_limit, BatchScratch& s)
+rankCandidates (const float* q,
+                std::size_t m,
+                std::size_t k,
+                float sqr_limit,
+                const pcl::index_t* point_indices,
+                BatchScratch& s)
 {
   s.sqr_dist.resize (m);
   const float qx = q[0], qy = q[1], qz = q[2];
@@ -186,7 +191,7 @@ rankCandidates (
   const float scale = static_cast<float> (num_buckets) / sqr_limit;
   std::size_t kept = 0;
   for (std::size_t i = 0; i < m; ++i) {
-    keys[kept] = rankKey (d[i], positions[i]);
+    keys[kept] = rankKey (d[i], point_indices[positions[i]]);
     buckets[kept] = static_cast<std::uint8_t> (bucketOf (d[i], scale));
     kept += d[i] <= sqr_limit;
   }
@@ -339,9 +344,10 @@ KdTree3f::nearestKSearchOfPoints (std::size_t first,
       gatherCoordinates (xyz, s);
       m = s.candidates.size();
     }
-    if (rankCandidates (q, m, k, sqr_limit, s))
+    if (rankCandidates (q, m, k, sqr_limit, impl_->point_indices.data(), s))
       for (std::size_t j = 0; j < k; ++j) {
-        out_indices[j] = impl_->point_indices[static_cast<std::uint32_t> (s.sorted[j])];
+        out_indices[j] =
+            static_cast<pcl::index_t> (static_cast<std::uint32_t> (s.sorted[j]));
         out_sqr[j] = keyDistance (s.sorted[j]);
       }
     else // cannot happen with exact arithmetic; stay exact if rounding defeats the

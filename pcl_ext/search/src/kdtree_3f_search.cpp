@@ -4,6 +4,7 @@
 #include "kdtree_3f_impl.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -11,21 +12,30 @@ namespace pcl_ext {
 namespace search {
 namespace {
 /** nanoflann's sorted k-nearest result set, with an optional starting bound on the
- * distance.
+ * distance, ordering points by (squared distance, point index).
  *
  * nanoflann cannot prune until k candidates are found, so every query first walks whole
  * sibling subtrees. A caller that knows at least k points lie within some distance (for
  * instance from the previous, nearby query) passes it as \a bound, and pruning starts
  * at once. The result is the same: points beyond the bound cannot be among the k
  * nearest.
+ *
+ * Points at equal distance are ranked by their index in the cloud, whatever the order
+ * the tree visits them in: the k nearest are then the same for any tree over the same
+ * points (a tile of a cloud whose points keep their order, e.g.).
  */
 class BoundedKnnResultSet {
 public:
   BoundedKnnResultSet (std::uint32_t* positions,
                        float* dists,
                        std::size_t capacity,
-                       float bound)
-  : positions_ (positions), dists_ (dists), capacity_ (capacity), bound_ (bound)
+                       float bound,
+                       const pcl::index_t* point_indices)
+  : positions_ (positions)
+  , dists_ (dists)
+  , capacity_ (capacity)
+  , bound_ (bound)
+  , point_indices_ (point_indices)
   {}
 
   std::size_t
@@ -39,18 +49,25 @@ public:
     return count_ == capacity_;
   }
 
+  /** The distance below which a point is offered: just above the k-th, so that a point
+   * tied with it is offered too (nanoflann offers only points strictly closer). */
   float
   worstDist () const
   {
-    return count_ < capacity_ ? bound_ : std::min (bound_, dists_[capacity_ - 1]);
+    if (count_ < capacity_)
+      return bound_;
+    return std::min (
+        bound_,
+        std::nextafter (dists_[capacity_ - 1], std::numeric_limits<float>::infinity()));
   }
 
   bool
   addPoint (float dist, std::uint32_t pos)
   {
-    // Sorted insertion; equal distances keep the first found first.
+    if (count_ == capacity_ && !before (dist, pos, capacity_ - 1))
+      return true;
     std::size_t i = count_;
-    for (; i > 0 && dists_[i - 1] > dist; --i)
+    for (; i > 0 && before (dist, pos, i - 1); --i)
       if (i < capacity_) {
         dists_[i] = dists_[i - 1];
         positions_[i] = positions_[i - 1];
@@ -65,10 +82,19 @@ public:
   }
 
 private:
+  /** Whether (dist, pos) ranks before entry \a i. */
+  bool
+  before (float dist, std::uint32_t pos, std::size_t i) const
+  {
+    return dist < dists_[i] ||
+           (dist == dists_[i] && point_indices_[pos] < point_indices_[positions_[i]]);
+  }
+
   std::uint32_t* positions_;
   float* dists_;
   std::size_t capacity_;
   float bound_;
+  const pcl::index_t* point_indices_;
   std::size_t count_ = 0;
 };
 } // namespace
@@ -86,14 +112,18 @@ KdTree3f::nearestKSearch (const float* query,
   // nanoflann writes tree positions; map them to point indices in place.
   static_assert (sizeof (pcl::index_t) == sizeof (std::uint32_t), "index width");
   auto* positions = reinterpret_cast<std::uint32_t*> (indices);
-  BoundedKnnResultSet result (positions, sqr_distances, k, bound);
+  BoundedKnnResultSet result (
+      positions, sqr_distances, k, bound, impl_->point_indices.data());
   impl_->tree->findNeighbors (result, query, nanoflann::SearchParams());
   std::size_t found = result.size();
   if (found < k && bound < std::numeric_limits<float>::max()) {
     // The caller's bound was wrong (fewer than k points inside it): search again
     // without it.
-    BoundedKnnResultSet unbounded (
-        positions, sqr_distances, k, std::numeric_limits<float>::max());
+    BoundedKnnResultSet unbounded (positions,
+                                   sqr_distances,
+                                   k,
+                                   std::numeric_limits<float>::max(),
+                                   impl_->point_indices.data());
     impl_->tree->findNeighbors (unbounded, query, nanoflann::SearchParams());
     found = unbounded.size();
   }
