@@ -1,8 +1,15 @@
-# pcl_ext_tiles: a method tile by tile with halos, for clouds larger than memory.
+# pcl_ext_tiles: a method tile by tile with halos, for clouds larger than memory; with
+# Debian's OpenMPI the tiles are shared among the ranks of `mpirun -np N pcl_ext_tiles ...`.
 pcl_ext_add_app(tiles
   SOURCES
     src/tiles/tiles.cpp
     src/tiles/tile_steps.cpp
     src/tiles/tile_cloud.cpp
+    src/tiles/tile_scheduler.cpp
     src/tiles/classify_variance_tiles.cpp
   DEPENDS pcl_ext::classification pcl_ext::tiling pcl_ext_apps_common pcl_ext::io)
+find_package(MPI COMPONENTS CXX)
+if(MPI_CXX_FOUND)
+  target_link_libraries(pcl_ext_tiles PRIVATE MPI::MPI_CXX)
+  target_compile_definitions(pcl_ext_tiles PRIVATE PCL_EXT_HAVE_MPI)
+endif()

@@ -107,3 +107,13 @@ TEST (TileResults, NthValueOverAllTilesIsNthElementsAnswer)
   EXPECT_EQ (count, 0u);
   EXPECT_TRUE (std::isnan (value));
 }
+
+TEST (TileResults, TilesNotRunAreFound)
+{
+  const std::string dir = freshFolder ("tile_done");
+  ASSERT_TRUE (pcl_ext::tiling::markTileDone (dir, 1));
+  ASSERT_TRUE (pcl_ext::tiling::markTileDone (dir, 3));
+  EXPECT_EQ (pcl_ext::tiling::findTilesNotDone (dir, 5),
+             (std::vector<std::size_t>{0, 2, 4}));
+  EXPECT_TRUE (pcl_ext::tiling::findTilesNotDone (dir, 2).size() == 1u);
+}

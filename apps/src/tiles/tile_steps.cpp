@@ -163,7 +163,8 @@ bool
 loadPlanAndMethod (const std::string& workdir,
                    tiling::TilePlan& plan,
                    std::unique_ptr<TileMethod>& method,
-                   ResultField* result_field)
+                   CommandLine& cl,
+                   ResultField& result_field)
 {
   if (!tiling::loadTilePlan (planPath (workdir), plan))
     return false;
@@ -173,10 +174,9 @@ loadPlanAndMethod (const std::string& workdir,
               << "' is unknown.\n";
     return false;
   }
-  CommandLine cl ("pcl_ext_tiles", "The options of the plan.");
   method->addOptions (cl);
-  ResultField unused = method->makeResultField();
-  (result_field ? *result_field : unused).addTo (cl);
+  result_field = method->makeResultField();
+  result_field.addTo (cl);
   std::vector<std::string> args = splitArguments (plan.settings["arguments"]);
   args.insert (args.begin(), "pcl_ext_tiles");
   std::vector<const char*> argv;
@@ -254,6 +254,8 @@ tileStep (const tiling::TilePlan& plan,
   if (method.getKind() == tiling::MergedResults::Kind::Segments &&
       !tiling::saveHaloLabels (workdir, tile, halo))
     return false;
+  if (!tiling::markTileDone (workdir, tile))
+    return false;
   const double ms = timer.done (cloud.core_points);
   std::cout << "  " << cloud.indices.size() - cloud.core_points << " halo points"
             << (cloud.margin > plan.halo
@@ -272,6 +274,13 @@ mergeStep (const tiling::TilePlan& plan,
            const std::string& workdir,
            const std::string& output)
 {
+  const auto missing = tiling::findTilesNotDone (workdir, plan.getGrid().size());
+  if (!missing.empty()) {
+    std::cerr << "Error: " << missing.size() << " tile(s) of " << workdir
+              << " have not run (the first: tile " << missing.front()
+              << "); run them, then merge again.\n";
+    return false;
+  }
   StageTimer timer ("Merging into " + output);
   const bool segments = method.getKind() == tiling::MergedResults::Kind::Segments;
   try {

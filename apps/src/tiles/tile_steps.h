@@ -32,12 +32,14 @@ planStep (const std::string& method_name,
           tiling::TilePlan& plan);
 
 /** \brief The plan of \a workdir and its method with the options the plan was made
- * with. \return false (message printed) when either cannot be read */
+ * with, parsed by \a cl (which \a result_field reads: keep it as long). \return false
+ * (message printed) when either cannot be read */
 bool
 loadPlanAndMethod (const std::string& workdir,
                    tiling::TilePlan& plan,
                    std::unique_ptr<TileMethod>& method,
-                   ResultField* result_field = nullptr);
+                   CommandLine& cl,
+                   ResultField& result_field);
 
 /** \brief Run the estimate of \a tile (when the method needs one). */
 bool

@@ -2,6 +2,7 @@
  * pcl_ext_tiles: a method over a cloud larger than memory, tile by tile with halos,
  * with the result of the method's own tool on the whole cloud.
  */
+#include "tile_scheduler.h"
 #include "tile_steps.h"
 
 #include <pcl_ext/apps/command_line.h>
@@ -30,6 +31,7 @@ constexpr const char* kDescription =
 
 /** The tool's own options, kept out of the method's. */
 struct TileOptions {
+  std::string method;
   double tile_size = 0.0;
   double halo = -1.0;
   std::string workdir;
@@ -78,6 +80,7 @@ int
 parsePlan (int argc,
            char** argv,
            bool whole_run,
+           CommandLine& cl,
            std::unique_ptr<pcl_ext::apps::TileMethod>& method,
            TileOptions& options,
            std::vector<std::string>& inputs,
@@ -85,9 +88,7 @@ parsePlan (int argc,
            std::vector<std::string>& method_arguments,
            pcl_ext::apps::ResultField& field)
 {
-  std::string method_name;
-  CommandLine cl ("pcl_ext_tiles", kDescription);
-  cl.addPositional ("METHOD", method_name, pcl_ext::apps::kTileMethods);
+  cl.addPositional ("METHOD", options.method, pcl_ext::apps::kTileMethods);
   cl.addPositionalList ("input", inputs, pcl_ext::apps::kInputFormats);
   if (whole_run)
     cl.addPositional ("output", output, pcl_ext::apps::kOutputFormats);
@@ -103,7 +104,7 @@ parsePlan (int argc,
   if (const int code = cl.parse (argc - first + 1, argv + first - 1); code >= 0)
     return code;
   if (!method) {
-    std::cerr << "Error: unknown method '" << method_name << "' ("
+    std::cerr << "Error: unknown method '" << options.method << "' ("
               << pcl_ext::apps::kTileMethods << ").\n";
     return 1;
   }
@@ -118,16 +119,18 @@ parsePlan (int argc,
 }
 
 int
-runAll (int argc, char** argv)
+runAll (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
 {
   const auto start = std::chrono::steady_clock::now();
+  const bool leader = scheduler.getRank() == 0;
   std::unique_ptr<pcl_ext::apps::TileMethod> method;
   TileOptions options;
   std::vector<std::string> inputs, arguments;
   std::string output;
   pcl_ext::apps::ResultField field ("", "", "");
+  CommandLine cl ("pcl_ext_tiles", kDescription); // outlives field, which reads it
   if (const int code = parsePlan (
-          argc, argv, true, method, options, inputs, output, arguments, field);
+          argc, argv, true, cl, method, options, inputs, output, arguments, field);
       code >= 0)
     return code;
   if (!field.checkOutput (output))
@@ -136,37 +139,66 @@ runAll (int argc, char** argv)
   if (own_workdir)
     options.workdir = output + ".tiles";
   pcl_ext::tiling::TilePlan plan;
-  bool ok = pcl_ext::apps::planStep (argv[1],
-                                     arguments,
-                                     inputs,
-                                     options.tile_size,
-                                     options.halo,
-                                     options.workdir,
-                                     plan);
+  // Rank 0 plans; the others read its plan.
+  bool ok = !leader || pcl_ext::apps::planStep (options.method,
+                                                arguments,
+                                                inputs,
+                                                options.tile_size,
+                                                options.halo,
+                                                options.workdir,
+                                                plan);
+  ok = scheduler.allOk (ok) &&
+       (leader || pcl_ext::tiling::loadTilePlan (
+                      pcl_ext::apps::planPath (options.workdir), plan));
+  if (!scheduler.allOk (ok))
+    return 1;
   const std::size_t tiles = plan.getGrid().size();
-  for (std::size_t t = 0; ok && t < tiles; ++t)
-    ok = pcl_ext::apps::estimateStep (
-        plan, *method, options.workdir, t, options.threads);
-  ok = ok && pcl_ext::apps::reduceStep (plan, *method, options.workdir);
-  for (std::size_t t = 0; ok && t < tiles; ++t) {
-    ok = pcl_ext::apps::tileStep (plan, *method, options.workdir, t, options.threads);
+  std::size_t tile, done = 0;
+  if (method->needsEstimate()) {
+    scheduler.startPhase (tiles);
+    while (ok && scheduler.next (tile))
+      ok = pcl_ext::apps::estimateStep (
+          plan, *method, options.workdir, tile, options.threads);
+    ok = scheduler.allOk (ok);
+    ok = scheduler.allOk (
+        ok && (!leader || pcl_ext::apps::reduceStep (plan, *method, options.workdir)));
+    ok = ok && (leader || pcl_ext::tiling::loadTilePlan (
+                              pcl_ext::apps::planPath (options.workdir), plan));
+  }
+  scheduler.startPhase (tiles);
+  while (ok && scheduler.next (tile)) {
+    ok =
+        pcl_ext::apps::tileStep (plan, *method, options.workdir, tile, options.threads);
+    if (!ok) {
+      std::cerr << "Error: tile " << tile << " failed; the work folder "
+                << options.workdir << " is kept: run 'pcl_ext_tiles tile " << tile
+                << " -workdir " << options.workdir << "', then 'merge'.\n";
+      break;
+    }
+    ++done;
     const double seconds =
         std::chrono::duration<double> (std::chrono::steady_clock::now() - start)
             .count();
-    if (ok)
-      std::cout << "  " << t + 1 << " / " << tiles << " tiles, ETA "
-                << static_cast<long> (seconds / (t + 1) * (tiles - t - 1)) << " s\n";
+    if (scheduler.getSize() == 1)
+      std::cout << "  " << done << " / " << tiles << " tiles, ETA "
+                << static_cast<long> (seconds / done * (tiles - done)) << " s\n";
   }
-  ok = ok && pcl_ext::apps::mergeStep (plan, *method, field, options.workdir, output);
-  if (own_workdir && !options.keep_workdir) {
+  ok = scheduler.allOk (ok);
+  if (leader && ok)
+    ok = pcl_ext::apps::mergeStep (plan, *method, field, options.workdir, output);
+  ok = scheduler.allOk (ok);
+  if (leader && ok && own_workdir && !options.keep_workdir) {
     std::error_code ignored;
     std::filesystem::remove_all (options.workdir, ignored);
   }
   const double seconds =
       std::chrono::duration<double> (std::chrono::steady_clock::now() - start).count();
-  std::cout << (ok ? "Done: " : "Failed after ") << plan.getTotalPoints() << " points, "
-            << tiles << " tiles, " << seconds << " s, peak memory "
-            << peakMemoryMegabytes() << " MB\n";
+  std::cout << (scheduler.getSize() > 1
+                    ? "Rank " + std::to_string (scheduler.getRank()) + ": "
+                    : std::string())
+            << (ok ? "done: " : "failed after ") << done << " of " << tiles
+            << " tiles, " << plan.getTotalPoints() << " points, " << seconds
+            << " s, peak memory " << peakMemoryMegabytes() << " MB\n";
   return ok ? 0 : 1;
 }
 
@@ -190,11 +222,12 @@ runStep (int argc, char** argv)
   pcl_ext::tiling::TilePlan plan;
   std::unique_ptr<pcl_ext::apps::TileMethod> method;
   pcl_ext::apps::ResultField field ("", "", "");
-  if (!pcl_ext::apps::loadPlanAndMethod (options.workdir, plan, method, &field))
+  CommandLine plan_options ("pcl_ext_tiles", "The options of the plan.");
+  if (!pcl_ext::apps::loadPlanAndMethod (
+          options.workdir, plan, method, plan_options, field))
     return 1;
   if (step == "merge")
     return field.checkOutput (argument) &&
-                   pcl_ext::apps::reduceStep (plan, *method, options.workdir) &&
                    pcl_ext::apps::mergeStep (
                        plan, *method, field, options.workdir, argument)
                ? 0
@@ -222,6 +255,8 @@ runStep (int argc, char** argv)
 int
 main (int argc, char** argv)
 {
+  // Under mpirun every rank runs main; the steps are for one process each.
+  const auto scheduler = pcl_ext::apps::makeTileScheduler (argc, argv);
   const std::string first = argc > 1 ? argv[1] : "";
   if (first == "estimate" || first == "tile" || first == "merge")
     return runStep (argc, argv);
@@ -231,8 +266,9 @@ main (int argc, char** argv)
     std::vector<std::string> inputs, arguments;
     std::string unused;
     pcl_ext::apps::ResultField field ("", "", "");
+    CommandLine cl ("pcl_ext_tiles", kDescription);
     if (const int code = parsePlan (
-            argc, argv, false, method, options, inputs, unused, arguments, field);
+            argc, argv, false, cl, method, options, inputs, unused, arguments, field);
         code >= 0)
       return code;
     if (options.workdir.empty()) {
@@ -250,5 +286,5 @@ main (int argc, char** argv)
                ? 0
                : 1;
   }
-  return runAll (argc, argv);
+  return runAll (argc, argv, *scheduler);
 }

@@ -246,6 +246,26 @@ loadHaloLabels (const std::string& folder,
   return true;
 }
 bool
+markTileDone (const std::string& folder, std::size_t tile)
+{
+  return io::writeTextFile (folder + "/tile_" + std::to_string (tile) + ".done",
+                            "done\n");
+}
+
+std::vector<std::size_t>
+findTilesNotDone (const std::string& folder, std::size_t tiles)
+{
+  std::vector<std::size_t> missing;
+  struct stat st;
+  for (std::size_t t = 0; t < tiles; ++t) {
+    const std::string path = folder + "/tile_" + std::to_string (t) + ".done";
+    if (::stat (path.c_str(), &st) != 0)
+      missing.push_back (t);
+  }
+  return missing;
+}
+
+bool
 saveTileValues (const std::string& folder,
                 std::size_t tile,
                 const std::string& name,

@@ -66,6 +66,16 @@ bool
 loadHaloLabels (const std::string& folder,
                 std::size_t tile,
                 std::vector<HaloLabel>& labels);
+/** \brief Record that tile \a tile wrote all its results (`tile_<tile>.done`). \return
+ * false (PCL_ERROR) when it cannot be written */
+bool
+markTileDone (const std::string& folder, std::size_t tile);
+
+/** \brief The tiles among 0 .. \a tiles - 1 of \a folder that have not been marked
+ * done, ascending. */
+std::vector<std::size_t>
+findTilesNotDone (const std::string& folder, std::size_t tiles);
+
 /** \brief Save \a values (one per core point of tile \a tile, any order) as the tile's
  * `tile_<tile>.<name>` file: the material of a statistic of the whole cloud that a
  * method estimates before the tiles run (e.g. a median curvature). \return false
