@@ -333,7 +333,10 @@ public:
   /** \brief Curve fitting: select the polynomial by AICc, the small-sample corrected
    * AIC of Hurvich & Tsai (1989), rather than the paper's AIC. Default false (the
    * paper). A side holds about ten points, where plain AIC picks the cubic for noise
-   * and the cubic's slope follows the noise; AICc tends to AIC as the sides grow. Use
+   * and the cubic's slope follows the noise; AICc tends to AIC as the sides grow. Its
+   * correction is infinite where a model has as few as k + 1 points (k: its terms and
+   * the noise variance), so a model is only fitted to more: a side needs 6 points for
+   * a line (see fitPolynomialAic), and a point with a side of fewer is not judged. Use
    * with setTurnSignificance. */
   void
   setCorrectedAic (bool corrected)
@@ -368,7 +371,9 @@ public:
   }
 
   /** \brief Curve fitting: a side whose residual RMS exceeds this multiple of the
-   * stack's median residual is not one curve (a junction). Default 3; valid: > 0. */
+   * stack's median residual is not one curve (a junction). The RMS is over the fit's
+   * residual degrees of freedom (n - p for p fitted terms), an unbiased noise estimate.
+   * Default 3; valid: > 0. */
   void
   setResidualFactor (double factor)
   {
