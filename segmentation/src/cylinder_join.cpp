@@ -3,6 +3,7 @@
  */
 #include <pcl_ext/segmentation/cylinder_join.h>
 
+#include <pcl_ext/common/random.h>
 #include <pcl_ext/common/union_find.h>
 
 #include <algorithm>
@@ -32,10 +33,7 @@ facingEnd (const cylinders::Cylinder& c, const Eigen::Vector3d& target)
 std::uint64_t
 segmentSeed (std::uint64_t seed, std::size_t segment)
 {
-  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (segment + 1); // splitmix64
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
+  return splitMix64 (seed + 0x9E3779B97F4A7C15ull * segment);
 }
 } // namespace
 
