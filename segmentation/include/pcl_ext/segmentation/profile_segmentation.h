@@ -335,9 +335,8 @@ public:
    * paper). A side holds about ten points, where plain AIC picks the cubic for noise
    * and the cubic's slope follows the noise; AICc tends to AIC as the sides grow. Its
    * correction is infinite where a model has as few as k + 1 points (k: its terms and
-   * the noise variance), so a model is only fitted to more: a side needs 6 points for
-   * a line (see fitPolynomialAic), and a point with a side of fewer is not judged. Use
-   * with setTurnSignificance. */
+   * the noise variance): a parabola or a cubic is only fitted to more, and a side of 4
+   * or 5 points keeps the line (see fitPolynomialAic). Use with setTurnSignificance. */
   void
   setCorrectedAic (bool corrected)
   {

@@ -107,7 +107,7 @@ struct PolynomialFit {
   double residual_variance = 0.0;
   /** \brief n ln(rss / n) + 2 k, plus 2 k (k + 1) / (n - k - 1) when corrected (AICc),
    * with k = p + 1 parameters: the p fitted terms and the noise variance (Hurvich &
-   * Tsai, 1989). */
+   * Tsai, 1989); infinite for a line kept where AICc cannot be scored (n <= k + 1). */
   double aic = 0.0;
   /** \brief (Phi^T Phi)^-1 restricted to (a1, a2, a3) (0 beyond the degree): their
    * covariance is this times the noise variance of y. */
@@ -132,12 +132,13 @@ struct PolynomialFit {
  * lowest AIC. The t term absorbs the slant of a surface crossing the profile obliquely
  * (the profile has a width), so the residuals measure the curve, not the profile's
  * thickness. A model of p = d + 2 terms needs n >= p + 1 points (one residual degree
- * of freedom); with AICc it needs n > k + 1 = p + 2, as its correction is infinite at n
- * = k + 1: a line then needs 6 points, a cubic 8, and with 5 points or fewer nothing is
- * fitted (degree -1). \param[in] x, y, t sample coordinates (same length) \param[in]
- * scale a length used to condition the normal equations (e.g. the window) \param[in]
- * corrected use AICc, the small-sample correction of Hurvich & Tsai (1989, "Regression
- * and time series model selection in small samples"); false: the paper's plain AIC */
+ * of freedom). With AICc a parabola or a cubic also needs n > k + 1 = p + 2, as the
+ * correction is infinite at n = k + 1 (undefined below): a parabola needs 7 points, a
+ * cubic 8; with 4 or 5 points the line is kept, its AICc infinite. \param[in] x, y, t
+ * sample coordinates (same length) \param[in] scale a length used to condition the
+ * normal equations (e.g. the window) \param[in] corrected use AICc, the small-sample
+ * correction of Hurvich & Tsai (1989, "Regression and time series model selection in
+ * small samples"); false: the paper's plain AIC */
 PolynomialFit
 fitPolynomialAic (const std::vector<double>& x,
                   const std::vector<double>& y,
