@@ -37,7 +37,10 @@ namespace pcl_ext {
  * pieces are joined when they continue one another (cylinder_join::continues): parallel
  * axes, each passing through the other's facing end, radii where they face each other
  * within the allowed difference and a gap along the axis no longer than the maximum; or
- * the two legs of an elbow, axes meeting near both ends. A segment whose pieces all
+ * the two legs of an elbow, axes meeting near both ends. The pieces of a straight run
+ * are then refitted as one cylinder (or cone) over all their inliers: a piece alone is
+ * often a short strip seen from one side (a pipe's underside next to a support), whose
+ * radius its points fix poorly (docs/sithole_mapurisa.md). A segment whose pieces all
  * joined one group and cover at least the whole-segment fraction of it joins that group
  * whole; otherwise only the points on its pieces move, and the rest stays a segment.
  * Last, a segment in which no piece was found joins a group when most of its points lie
@@ -66,9 +69,11 @@ public:
 
   /** \brief A cylinder found in an input segment, with its inliers as cloud indices. */
   struct JoinedCylinder {
-    cylinders::Cylinder cylinder; ///< axis point, direction, radius, extent, inliers
-    std::size_t input_segment;    ///< index into the input segments
-    int output_segment; ///< index into the output of join(); -1 when not joined
+    /** \brief Axis point, direction, radius, extent, inliers; when joined in a
+     * straight run, the run's axis, radius and taper over the piece's extent. */
+    cylinders::Cylinder cylinder;
+    std::size_t input_segment; ///< index into the input segments
+    int output_segment;        ///< index into the output of join(); -1 when not joined
   };
 
   CylinderSegmentJoin() = default;
