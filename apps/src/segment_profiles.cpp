@@ -21,6 +21,7 @@
 #include <cstring>
 #include <iostream>
 #include <numeric>
+#include <sstream>
 
 namespace {
 using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
@@ -106,9 +107,10 @@ main (int argc, char** argv)
   double max_threshold_factor = 4.0;
   bool aicc = false, local_threshold = false, side_frames = false,
        join_cylinders = false;
-  double cylinder_tolerance = 0.015, cylinder_min_radius = 0.02,
-         cylinder_max_radius = 0.6;
-  double cylinder_max_gap = 2.0;
+  // Cylinder join lengths: negative follows the point spacing.
+  double cylinder_tolerance = -1.0, cylinder_min_radius = -1.0,
+         cylinder_max_radius = -1.0;
+  double cylinder_max_gap = -1.0, cylinder_patch = -1.0;
   int min_size = 1;
   pcl_ext::apps::CommandLine cl ("pcl_ext_segment_profiles",
                                  "Segments a cloud by intersecting profiles (Sithole & "
@@ -181,16 +183,30 @@ main (int argc, char** argv)
       "then join the segments that lie on one cylinder: the spans of a pipe cut at "
       "its supports, the legs of an elbow (pcl_ext::CylinderSegmentJoin); not in the "
       "paper");
-  cl.addOption ("cylinder_tolerance",
-                cylinder_tolerance,
-                "joining cylinders: inlier band around a cylinder's surface");
   cl.addOption (
-      "cylinder_min_radius", cylinder_min_radius, "joining cylinders: smallest radius");
+      "cylinder_tolerance",
+      cylinder_tolerance,
+      "joining cylinders: inlier band around a cylinder's surface (negative: 0.6 x "
+      "the average point spacing of the segments)");
   cl.addOption (
-      "cylinder_max_radius", cylinder_max_radius, "joining cylinders: largest radius");
+      "cylinder_min_radius",
+      cylinder_min_radius,
+      "joining cylinders: smallest radius (negative, with -cylinder_max_radius: "
+      "0.8 x the point spacing)");
+  cl.addOption (
+      "cylinder_max_radius",
+      cylinder_max_radius,
+      "joining cylinders: largest radius (negative, with -cylinder_min_radius: 24 "
+      "x the point spacing)");
   cl.addOption ("cylinder_max_gap",
                 cylinder_max_gap,
-                "joining cylinders: longest gap bridged along an axis or to an elbow");
+                "joining cylinders: longest gap bridged along an axis or to an elbow "
+                "(negative: 80 x the point spacing)");
+  cl.addOption (
+      "cylinder_patch",
+      cylinder_patch,
+      "joining cylinders: radius of the patch a cylinder hypothesis is drawn "
+      "from, at least twice the largest radius (negative: 24 x the point spacing)");
   cl.addOption ("min_size", min_size, "smallest segment kept");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption (
@@ -214,15 +230,17 @@ main (int argc, char** argv)
     std::cerr << "Error: -min_size must be at least 1.\n";
     return 1;
   }
+  const bool radii_from_spacing =
+      cylinder_min_radius < 0.0 && cylinder_max_radius < 0.0;
   if (join_cylinders &&
-      (!(cylinder_tolerance > 0.0) || !std::isfinite (cylinder_tolerance) ||
-       !(cylinder_min_radius > 0.0) || !(cylinder_max_radius >= cylinder_min_radius) ||
-       !std::isfinite (cylinder_max_radius) || !(cylinder_max_gap >= 0.0) ||
-       !std::isfinite (cylinder_max_gap))) {
-    std::cerr
-        << "Error: joining cylinders needs -cylinder_tolerance > 0, 0 < "
-           "-cylinder_min_radius <= -cylinder_max_radius and -cylinder_max_gap >= 0 "
-           "(all finite).\n";
+      (cylinder_tolerance == 0.0 || !std::isfinite (cylinder_tolerance) ||
+       !(radii_from_spacing ||
+         (cylinder_min_radius > 0.0 && cylinder_max_radius >= cylinder_min_radius)) ||
+       !std::isfinite (cylinder_max_radius) || !std::isfinite (cylinder_max_gap) ||
+       cylinder_patch == 0.0 || !std::isfinite (cylinder_patch))) {
+    std::cerr << "Error: joining cylinders needs -cylinder_tolerance and "
+                 "-cylinder_patch not 0, -cylinder_min_radius and -cylinder_max_radius "
+                 "both negative or 0 < min <= max, all finite.\n";
     return 1;
   }
   if (!result.checkOutput (output_path, {png_path, png_profiles_path}))
@@ -266,13 +284,19 @@ main (int argc, char** argv)
   }
   segment.done (cloud->size());
   std::size_t joined_cylinders = 0;
+  std::ostringstream join_settings;
   if (join_cylinders) {
     pcl_ext::CylinderSegmentJoin<pcl::PointXYZ> join;
     join.setInputCloud (cloud);
     join.setInputSegments (clusters);
-    join.setDistanceTolerance (cylinder_tolerance);
-    join.setRadiusLimits (cylinder_min_radius, cylinder_max_radius);
-    join.setMaxGap (cylinder_max_gap);
+    if (cylinder_tolerance > 0.0)
+      join.setDistanceTolerance (cylinder_tolerance);
+    if (!radii_from_spacing)
+      join.setRadiusLimits (cylinder_min_radius, cylinder_max_radius);
+    if (cylinder_max_gap >= 0.0)
+      join.setMaxGap (cylinder_max_gap);
+    if (cylinder_patch > 0.0)
+      join.setNeighbourhoodRadius (cylinder_patch);
     join.setNumberOfThreads (threads);
     pcl_ext::apps::StageTimer joining ("Joining cylinders");
     join.join (clusters);
@@ -283,6 +307,12 @@ main (int argc, char** argv)
     joining.done (cloud->size());
     for (const auto& c : join.getCylinders())
       joined_cylinders += c.output_segment >= 0;
+    const auto& used = join.getUsedParameters();
+    join_settings << " (spacing " << join.getUsedPointSpacing() << ", tolerance "
+                  << used.detection.distance_tolerance << ", radii "
+                  << used.detection.min_radius << " to " << used.detection.max_radius
+                  << ", gap " << used.max_gap << ", patch "
+                  << used.detection.neighbourhood_radius << ")";
   }
   std::size_t edges = 0;
   for (const auto& stack : seg.getStackEdges())
@@ -294,7 +324,7 @@ main (int argc, char** argv)
   if (method == Segmentation::ProfileMethod::CurveFitting)
     std::cout << ", " << seg.getBreakpoints().size() << " curve ends";
   if (join_cylinders)
-    std::cout << ", " << joined_cylinders << " cylinders joined";
+    std::cout << ", " << joined_cylinders << " cylinders joined" << join_settings.str();
   std::cout << "\n";
 
   pcl::PointCloud<pcl::Label> labels;

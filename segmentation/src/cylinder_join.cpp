@@ -3,10 +3,12 @@
  */
 #include <pcl_ext/segmentation/cylinder_join.h>
 
+#include <pcl_ext/common/random.h>
 #include <pcl_ext/common/union_find.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace pcl_ext {
@@ -32,10 +34,65 @@ facingEnd (const cylinders::Cylinder& c, const Eigen::Vector3d& target)
 std::uint64_t
 segmentSeed (std::uint64_t seed, std::size_t segment)
 {
-  std::uint64_t z = seed + 0x9E3779B97F4A7C15ull * (segment + 1); // splitmix64
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
+  return splitMix64 (seed + 0x9E3779B97F4A7C15ull * segment);
+}
+
+/** Refits each straight run (pieces joined as continuations along one axis, not
+ * through an elbow) as one cylinder, or cone, over all its pieces' inliers, and gives
+ * each piece the run's axis, radius and taper over its own extent. A piece alone is
+ * often a short strip seen from one side (the underside of a pipe next to a support),
+ * whose radius its own points fix poorly: the narrower the arc, the more the radius
+ * trades against the axis's position. All the run's points fix it. A run whose fit
+ * degenerates or leaves the radius or taper range keeps its pieces' own fits. */
+void
+refitStraightRuns (const std::vector<Eigen::Vector3d>& xyz,
+                   const JoinParameters& p,
+                   UnionFind& runs,
+                   std::vector<Piece>& pieces)
+{
+  const std::size_t n = pieces.size();
+  std::map<std::uint32_t, std::vector<std::uint32_t>> members; // root -> pieces
+  for (std::uint32_t k = 0; k < n; ++k)
+    members[runs.find (k)].push_back (k);
+  std::vector<std::uint32_t> subset;
+  for (const auto& [root, run] : members) {
+    if (run.size() < 2)
+      continue;
+    // Started from the piece with most inliers, the best fitted alone.
+    std::uint32_t largest = run.front();
+    subset.clear();
+    for (const auto k : run) {
+      const auto& inliers = pieces[k].cylinder.inliers;
+      subset.insert (subset.end(), inliers.begin(), inliers.end());
+      if (inliers.size() > pieces[largest].cylinder.inliers.size())
+        largest = k;
+    }
+    std::sort (subset.begin(), subset.end());
+    const cylinders::Cylinder& start = pieces[largest].cylinder;
+    Eigen::Vector3d point = start.point, axis = start.axis;
+    const bool cone = p.detection.max_taper > 0.0;
+    double radius = start.radius, taper = cone ? start.taper : 0.0;
+    if (!cylinders::refineCylinder (
+            xyz, subset, point, axis, radius, cone ? &taper : nullptr) ||
+        radius < p.detection.min_radius || radius > p.detection.max_radius ||
+        std::abs (taper) > p.detection.max_taper)
+      continue;
+    for (const auto k : run) {
+      cylinders::Cylinder& c = pieces[k].cylinder;
+      double t_min = std::numeric_limits<double>::infinity(), t_max = -t_min;
+      for (const auto i : c.inliers) {
+        const double t = (xyz[i] - point).dot (axis);
+        t_min = std::min (t_min, t);
+        t_max = std::max (t_max, t);
+      }
+      const double middle = 0.5 * (t_min + t_max);
+      c.point = point + middle * axis;
+      c.axis = axis;
+      c.radius = radius + taper * middle;
+      c.taper = taper;
+      c.half_length = 0.5 * (t_max - t_min);
+    }
+  }
 }
 } // namespace
 
@@ -148,13 +205,22 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
       result.pieces.push_back (std::move (piece));
     }
 
-  // Groups of pieces that continue one another.
+  // Groups of pieces that continue one another, and within them the straight runs
+  // (pieces joined along one axis), each refitted as one cylinder.
   const std::size_t n = result.pieces.size();
-  UnionFind sets (n);
+  const double parallel = std::cos (p.max_axis_angle);
+  UnionFind sets (n), runs (n);
   for (std::uint32_t a = 0; a < n; ++a)
-    for (std::uint32_t b = a + 1; b < n; ++b)
-      if (continues (result.pieces[a].cylinder, result.pieces[b].cylinder, p))
-        sets.unite (a, b);
+    for (std::uint32_t b = a + 1; b < n; ++b) {
+      const cylinders::Cylinder &ca = result.pieces[a].cylinder,
+                                &cb = result.pieces[b].cylinder;
+      if (!continues (ca, cb, p))
+        continue;
+      sets.unite (a, b);
+      if (std::abs (ca.axis.dot (cb.axis)) >= parallel)
+        runs.unite (a, b);
+    }
+  refitStraightRuns (xyz, p, runs, result.pieces);
   std::vector<std::uint32_t> group_size (n, 0);
   for (std::uint32_t k = 0; k < n; ++k)
     ++group_size[sets.find (k)];

@@ -2,6 +2,7 @@
  * pcl_ext: cylinders found in a set of points without normals.
  */
 #include <pcl_ext/common/covariance.h>
+#include <pcl_ext/common/random.h>
 #include <pcl_ext/segmentation/cylinders.h>
 #include <pcl_ext/search/kdtree_3f.h>
 
@@ -10,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 
 namespace pcl_ext {
 namespace cylinders {
@@ -124,7 +124,7 @@ drawHypothesis (const std::vector<Eigen::Vector3d>& points,
                 const std::vector<std::uint8_t>& is_alive,
                 std::uint32_t seed_point,
                 const DetectionParameters& p,
-                std::mt19937_64& rng,
+                RandomStream& rng,
                 pcl::Indices& found,
                 std::vector<float>& sqr_distances,
                 std::vector<std::uint32_t>& patch,
@@ -158,14 +158,13 @@ drawHypothesis (const std::vector<Eigen::Vector3d>& points,
     const Eigen::Vector3d w = points[j] - mean;
     return Eigen::Vector2d (w.dot (u), w.dot (v));
   };
-  std::uniform_int_distribution<std::size_t> pick (0, patch.size() - 1);
   Eigen::Vector2d centre;
   double radius;
-  if (!circleThrough (project (seed_point),
-                      project (patch[pick (rng)]),
-                      project (patch[pick (rng)]),
-                      centre,
-                      radius) ||
+  // Two draws, in this order (the arguments' evaluation order is unspecified).
+  const std::uint32_t second = patch[rng.index (patch.size())];
+  const std::uint32_t third = patch[rng.index (patch.size())];
+  if (!circleThrough (
+          project (seed_point), project (second), project (third), centre, radius) ||
       radius < p.min_radius || radius > p.max_radius)
     return false;
   const double tol = p.distance_tolerance;
@@ -334,7 +333,7 @@ detectCylinders (const std::vector<Eigen::Vector3d>& points,
   pcl::Indices found;
   std::vector<float> sqr_distances;
   std::vector<Hypothesis> hypotheses;
-  std::mt19937_64 rng (p.seed);
+  RandomStream rng (p.seed);
   unsigned int failures = 0;
   for (unsigned int round = 0;
        cylinders.size() < p.max_cylinders && failures < std::max (1u, p.max_failures) &&
@@ -347,13 +346,12 @@ detectCylinders (const std::vector<Eigen::Vector3d>& points,
     if (alive.size() < p.min_points)
       break;
     hypotheses.clear();
-    std::uniform_int_distribution<std::size_t> pick (0, alive.size() - 1);
     for (unsigned int k = 0; k < p.hypotheses; ++k) {
       Hypothesis h;
       if (drawHypothesis (points,
                           tree,
                           is_alive,
-                          alive[pick (rng)],
+                          alive[rng.index (alive.size())],
                           p,
                           rng,
                           found,

@@ -74,7 +74,14 @@ fitModel (const Gram& gram,
 }
 
 /** Fits the three models (degrees 1 to 3, each with the t term) and keeps the lowest
- * AIC (AICc when \a corrected). */
+ * AIC (AICc when \a corrected). A model of p fitted terms has k = p + 1 parameters:
+ * the terms and the noise variance (Hurvich & Tsai, 1989). Every model needs one
+ * residual degree of freedom (n >= p + 1) for its residual variance. AICc's
+ * correction 2 k (k + 1) / (n - k - 1) is infinite at n = k + 1 and undefined below:
+ * there a parabola or a cubic is refused (never scored as if the correction were 0,
+ * which favours the model that follows the points most closely), and the line, the
+ * simplest model and the one kept when no other can be scored, gets an infinite AICc.
+ */
 PolynomialFit
 selectModel (const Gram& gram, bool corrected)
 {
@@ -84,8 +91,11 @@ selectModel (const Gram& gram, bool corrected)
   PolynomialFit best;
   const double n = static_cast<double> (gram.n);
   for (int degree = 1; degree <= 3; ++degree) {
-    const int k = degree + 2;
-    if (gram.n < static_cast<std::size_t> (k + 1))
+    const int p = degree + 2;
+    const int k = p + 1;
+    const bool scored = n > k + 1; // AICc's correction is finite
+    if (gram.n < static_cast<std::size_t> (p + 1) ||
+        (corrected && !scored && degree > 1))
       break;
     Eigen::Vector3d terms;
     Eigen::Matrix3d covariance;
@@ -97,13 +107,16 @@ selectModel (const Gram& gram, bool corrected)
       continue;
     // Hurvich & Tsai's small-sample term: a side holds about ten points, where plain
     // AIC still picks the cubic for noise and the cubic's end slopes follow the noise.
-    const double aic = n * std::log (rss / n + 1e-12) + 2.0 * k +
-                       (corrected && n > k + 1 ? 2.0 * k * (k + 1) / (n - k - 1) : 0.0);
+    const double aic = !corrected ? n * std::log (rss / n + 1e-12) + 2.0 * k
+                       : scored   ? n * std::log (rss / n + 1e-12) + 2.0 * k +
+                                      2.0 * k * (k + 1) / (n - k - 1)
+                                : std::numeric_limits<double>::infinity();
     if (best.degree < 0 || aic < best.aic) {
       best.degree = degree;
       best.slope = terms[0];
       best.terms = terms;
       best.rss = rss;
+      best.residual_variance = rss / (n - p);
       best.aic = aic;
       best.unit_covariance = covariance;
     }
@@ -126,6 +139,7 @@ fitPolynomialAic (const std::vector<double>& x,
     gram.add (x[i] / scale, y[i] / scale, t[i] / scale);
   PolynomialFit fit = selectModel (gram, corrected);
   fit.rss *= scale * scale;
+  fit.residual_variance *= scale * scale;
   fit.terms[1] /= scale;
   fit.terms[2] /= scale * scale;
   // y and the terms scale together, so (Phi^T Phi)^-1 scales as the terms squared over
@@ -147,6 +161,7 @@ scoreCurveTurns (const ProfilePoints& profile,
   scores.evaluated.assign (n, 0);
   scores.turn.assign (n, 0.f);
   scores.rms.assign (n, 0.f);
+  scores.noise.assign (n, 0.f);
   scores.turn_sigma.assign (n, 0.f);
   const double window = parameters.window;
   const unsigned int min_side = std::max (parameters.min_side_points, 3u);
@@ -314,8 +329,19 @@ scoreCurveTurns (const ProfilePoints& profile,
         static_cast<float> (std::sqrt (std::max (turn_variance, 0.0)) / scale);
     scores.turn[i] =
         static_cast<float> (std::abs (offset + std::atan (sr) - std::atan (sl) - bend));
+    // Each side's residual variance over its residual degrees of freedom (n - p), not
+    // over n: at ten points a side and three terms, rss / n is 0.7 of the noise
+    // variance.
     scores.rms[i] = static_cast<float> (
-        scale * std::sqrt (std::max (left.rss / side[0].n, right.rss / side[1].n)));
+        scale * std::sqrt (std::max (left.residual_variance, right.residual_variance)));
+    // The larger of two variance estimates is biased upwards, its median over a stack
+    // by about 20 % at ten points a side: the noise of the significance test is the
+    // pooled estimate of both sides, median-corrected.
+    const double dof =
+        static_cast<double> (side[0].n + side[1].n) - left.degree - right.degree - 4.0;
+    const double median_ratio = std::pow (1.0 - 2.0 / (9.0 * dof), 3);
+    scores.noise[i] = static_cast<float> (
+        scale * std::sqrt ((left.rss + right.rss) / dof / median_ratio));
   }
 }
 } // namespace profiles

@@ -90,6 +90,7 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     scores.evaluated.assign (n, 0);
     scores.turn.assign (n, 0.f);
     scores.rms.assign (n, 0.f);
+    scores.noise.assign (n, 0.f);
     scores.turn_sigma.assign (n, 0.f);
   }
   CurveFitParameters fit;
@@ -211,6 +212,7 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
           out.turn[members[i]] = scores.turn[i];
           out.turn_sigma[members[i]] = scores.turn_sigma[i];
           out.rms[members[i]] = scores.rms[i];
+          out.noise[members[i]] = scores.noise[i];
         }
       }
       auto& edges = task_edges[k];
@@ -231,14 +233,17 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     // stack's noise. A sharp turn must also be more than turn_significance standard
     // errors: with the noise of a scan and about ten points a side, a 30 degree turn is
     // often the noise alone, and such false ends, dense enough, cut a surface apart.
-    // The stack's median residual is the noise: a fit's own residual is inflated
-    // exactly where a side straddles a crease.
+    // The stack's medians are the noise: a fit's own residual is inflated exactly
+    // where a side straddles a crease. A residual is compared with the median of the
+    // same statistic (the larger of two sides); the significance test takes the median
+    // of the pooled estimates, the noise sigma itself.
     result.breakpoints.assign (n, 0);
     for (const CurveScores& scores : stack_scores) {
-      const double noise = medianResidual (scores.evaluated, scores.rms);
-      const double tolerance =
-          std::max (parameters.residual_factor * noise, parameters.min_residual);
-      const double z = parameters.turn_significance * noise;
+      const double tolerance = std::max (
+          parameters.residual_factor * medianResidual (scores.evaluated, scores.rms),
+          parameters.min_residual);
+      const double z = parameters.turn_significance *
+                       medianResidual (scores.evaluated, scores.noise);
       for (std::size_t i = 0; i < n; ++i)
         if (scores.evaluated[i] && ((scores.turn[i] > parameters.max_turn &&
                                      scores.turn[i] > z * scores.turn_sigma[i]) ||

@@ -6,9 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
+#include <tuple>
 
 using namespace pcl_ext::profiles;
 
@@ -213,4 +215,147 @@ TEST (CurveFit, CornerPointsTurnSharply)
     if (scores.evaluated[i] && (scores.turn[i] > M_PI / 6 || scores.rms[i] > 3e-3f))
       ++flagged;
   EXPECT_GE (flagged, 3);
+}
+
+TEST (CurveFit, AiccRefusesModelsItCannotScore)
+{
+  // AICc = AIC + 2 k (k + 1) / (n - k - 1), k = fitted terms + 1 (the noise variance):
+  // infinite at n = k + 1, undefined below. A line (3 terms with t) is scored from 6
+  // points, a parabola from 7, a cubic from 8. Noisy samples, t spread across a profile
+  // 2 cm wide.
+  std::mt19937 rng (11);
+  std::normal_distribution<double> noise (0.0, 0.002);
+  std::uniform_real_distribution<double> across (0.0, 0.02);
+  const auto samples = [&] (int n, double cubic) {
+    std::vector<double> x, y, t;
+    for (int i = 0; i < n; ++i) {
+      x.push_back (-1.0 + 2.0 * i / (n - 1));
+      t.push_back (across (rng));
+      y.push_back (0.3 * x.back() + cubic * std::pow (x.back(), 3) + noise (rng));
+    }
+    return std::make_tuple (x, y, t);
+  };
+  for (int trial = 0; trial < 20; ++trial) {
+    // Six points: only the line can be scored.
+    const auto [x6, y6, t6] = samples (6, 0.0);
+    EXPECT_EQ (fitPolynomialAic (x6, y6, t6, 1.0, true).degree, 1) << trial;
+    // Five: no model can; the line, the simplest, is kept with an infinite AICc.
+    const auto [x5, y5, t5] = samples (5, 0.0);
+    const PolynomialFit five = fitPolynomialAic (x5, y5, t5, 1.0, true);
+    EXPECT_EQ (five.degree, 1) << trial;
+    EXPECT_TRUE (std::isinf (five.aic)) << trial;
+    // Seven points of a strong cubic: no cubic (it needs eight).
+    const auto [x7, y7, t7] = samples (7, 5.0);
+    const int degree = fitPolynomialAic (x7, y7, t7, 1.0, true).degree;
+    EXPECT_GE (degree, 1) << trial;
+    EXPECT_LE (degree, 2) << trial;
+    // Eight points of it: the cubic.
+    const auto [x8, y8, t8] = samples (8, 5.0);
+    EXPECT_EQ (fitPolynomialAic (x8, y8, t8, 1.0, true).degree, 3) << trial;
+  }
+}
+
+TEST (CurveFit, AicCountsTheNoiseVariance)
+{
+  // aic = n ln (rss / n) + 2 k (+ 2 k (k + 1) / (n - k - 1) for AICc) with k the fitted
+  // terms (degree + 2) and the noise variance; residual_variance = rss / (n - degree -
+  // 2).
+  std::mt19937 rng (3);
+  std::normal_distribution<double> noise (0.0, 0.01);
+  std::vector<double> x, y, t;
+  for (int i = 0; i < 15; ++i) {
+    x.push_back (-1.0 + 2.0 * i / 14.0);
+    t.push_back ((i % 4) * 0.05);
+    y.push_back (0.2 + 0.5 * x.back() - 0.7 * x.back() * x.back() + noise (rng));
+  }
+  const double n = 15.0;
+  for (const bool corrected : {false, true}) {
+    const PolynomialFit fit = fitPolynomialAic (x, y, t, 1.0, corrected);
+    ASSERT_GE (fit.degree, 1);
+    const double k = fit.degree + 3.0;
+    const double expected = n * std::log (fit.rss / n) + 2.0 * k +
+                            (corrected ? 2.0 * k * (k + 1.0) / (n - k - 1.0) : 0.0);
+    EXPECT_NEAR (fit.aic, expected, 1e-6) << corrected;
+    EXPECT_NEAR (fit.residual_variance, fit.rss / (n - fit.degree - 2.0), 1e-15);
+  }
+}
+
+TEST (CurveFit, ResidualRmsIsTheNoise)
+{
+  // Many short straight chains, one profile: each is clean to the left of its middle
+  // point and has Gaussian noise sigma across it from the middle on. At the middle the
+  // larger residual RMS is the noisy side's, eleven points fitted with three terms:
+  // rss / (n - p) estimates sigma^2 without bias, rss / n gives 8/11 of it.
+  const double sigma = 0.001;
+  std::mt19937 rng (7);
+  std::normal_distribution<double> noise (0.0, sigma);
+  std::uniform_real_distribution<double> across (0.0, 0.02);
+  ProfilePoints profile;
+  std::vector<std::uint32_t> middles;
+  const int chains = 400;
+  for (int c = 0; c < chains; ++c)
+    for (int i = -15; i <= 15; ++i) {
+      if (i == 0)
+        middles.push_back (static_cast<std::uint32_t> (profile.uv.size()));
+      profile.uv.emplace_back (static_cast<float> (c + 0.01 * i),
+                               static_cast<float> (i >= 0 ? noise (rng) : 0.0));
+      profile.t.push_back (static_cast<float> (across (rng)));
+    }
+  std::vector<LocalEdge> chain;
+  spanningTreeEdges (profile, 0.02, chain);
+  CurveFitParameters p;
+  p.threshold = 0.02;
+  p.window = 0.105;
+  p.tangent_radius = 0.04;
+  p.corrected_aic = true;
+  CurveScores scores;
+  scoreCurveTurns (profile, chain, p, scores);
+  double sum = 0.0;
+  for (const std::uint32_t i : middles) {
+    ASSERT_TRUE (scores.evaluated[i]);
+    sum += scores.rms[i] * scores.rms[i];
+  }
+  // The mean of 400 estimates, each of relative standard deviation 0.5 (8 degrees of
+  // freedom): within 0.1 of sigma^2 for an unbiased estimate.
+  EXPECT_NEAR (sum / chains / (sigma * sigma), 1.0, 0.1);
+}
+
+TEST (CurveFit, NoiseIsTheNoiseSigma)
+{
+  // Straight chains with Gaussian noise sigma across them: the median over the points
+  // of the pooled, median-corrected estimate is sigma; the larger of the two sides'
+  // RMS lies above it.
+  const double sigma = 0.001;
+  std::mt19937 rng (5);
+  std::normal_distribution<double> noise (0.0, sigma);
+  std::uniform_real_distribution<double> across (0.0, 0.02);
+  ProfilePoints profile;
+  for (int c = 0; c < 200; ++c)
+    for (int i = -15; i <= 15; ++i) {
+      profile.uv.emplace_back (static_cast<float> (c + 0.01 * i),
+                               static_cast<float> (noise (rng)));
+      profile.t.push_back (static_cast<float> (across (rng)));
+    }
+  std::vector<LocalEdge> chain;
+  spanningTreeEdges (profile, 0.02, chain);
+  CurveFitParameters p;
+  p.threshold = 0.02;
+  p.window = 0.105;
+  p.tangent_radius = 0.04;
+  p.corrected_aic = true;
+  CurveScores scores;
+  scoreCurveTurns (profile, chain, p, scores);
+  std::vector<float> pooled, larger;
+  for (std::size_t i = 0; i < profile.uv.size(); ++i)
+    if (scores.evaluated[i]) {
+      pooled.push_back (scores.noise[i]);
+      larger.push_back (scores.rms[i]);
+    }
+  ASSERT_GE (pooled.size(), 1000u);
+  const auto median = [] (std::vector<float> v) {
+    std::nth_element (v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  EXPECT_NEAR (median (pooled) / sigma, 1.0, 0.05);
+  EXPECT_GT (median (larger), median (pooled));
 }

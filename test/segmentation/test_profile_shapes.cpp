@@ -12,6 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <iomanip>
+#include <iostream>
+
 using namespace profile_test;
 using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
 
@@ -22,6 +25,15 @@ evaluate (const std::vector<pcl::PointIndices>& clusters, const LabelledCloud& s
   pcl_ext::SegmentationMetrics metrics;
   EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, scene.labels, metrics));
   return metrics;
+}
+
+/** Prints the figures the bounds below check. */
+void
+report (const std::string& name, const pcl_ext::SegmentationMetrics& m)
+{
+  std::cout << std::fixed << std::setprecision (3) << "  [ " << name
+            << " ] mean best IoU " << m.mean_best_iou << ", " << m.correct
+            << " correct, " << m.under_segmented << " under\n";
 }
 } // namespace
 
@@ -40,6 +52,7 @@ TEST (ProfileSegmentationShapes, NestedSpheresAreSeparate)
     std::vector<pcl::PointIndices> clusters;
     seg.extract (clusters);
     const auto m = evaluate (clusters, scene);
+    report ("nested spheres, method " + std::to_string (static_cast<int> (method)), m);
     EXPECT_GE (m.mean_best_iou, 0.99) << static_cast<int> (method);
     EXPECT_EQ (m.correct, 3u) << static_cast<int> (method);
   }
@@ -54,12 +67,14 @@ TEST (ProfileSegmentationShapes, CurveFittingSeparatesTouchingCoaxialSurfaces)
   // Proximity links across the creases: the three surfaces are one segment.
   seg.extract (clusters);
   const auto proximity = evaluate (clusters, scene);
+  report ("coaxial pipes, proximity", proximity);
   EXPECT_EQ (clusters.size(), 1u);
   EXPECT_EQ (proximity.under_segmented, 3u);
   // Curve fitting ends the curves at the creases.
   seg.setProfileSegmentation (Segmentation::ProfileMethod::CurveFitting);
   seg.extract (clusters);
   const auto curve = evaluate (clusters, scene);
+  report ("coaxial pipes, curve fitting", curve);
   EXPECT_GE (curve.mean_best_iou, 0.90);
   EXPECT_EQ (curve.correct, 3u);
   EXPECT_FALSE (seg.getBreakpoints().empty());

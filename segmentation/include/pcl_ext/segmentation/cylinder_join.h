@@ -35,8 +35,11 @@ constexpr std::uint32_t kNoSegment = std::numeric_limits<std::uint32_t>::max();
 struct Piece {
   std::uint32_t segment = 0; ///< the input segment it was found in
   std::uint32_t joined =
-      kNoSegment;               ///< output segment of its group; kNoSegment if alone
-  cylinders::Cylinder cylinder; ///< inliers as positions in the coordinates
+      kNoSegment; ///< output segment of its group; kNoSegment if alone
+  /** \brief Inliers as positions in the coordinates; a piece of a straight run of
+   * joined pieces has the run's axis, radius and taper (fitted to all the run's
+   * inliers), its point and half-length being its own extent along that axis. */
+  cylinders::Cylinder cylinder;
 };
 
 /** \brief The joined segmentation. */
@@ -61,7 +64,10 @@ continues (const cylinders::Cylinder& a,
            const JoinParameters& p);
 
 /** \brief Find the cylinders of every segment (in parallel; the result does not depend
- * on the thread count), join those that continue one another, and relabel: a segment
+ * on the thread count), join those that continue one another, refit each straight run
+ * of joined pieces as one cylinder (or cone) over all their inliers (the pieces then
+ * carry the run's axis, radius and taper over their own extent; a short strip seen from
+ * one side fixes its radius poorly), and relabel: a segment
  * whose pieces all joined one group, and cover at least the whole-segment fraction of
  * it, moves to that group whole; otherwise only its pieces' points move. \param[in] xyz
  * finite coordinates, best centred near the origin \param[in] segments positions in \a

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace pcl_ext {
@@ -36,14 +37,22 @@ namespace pcl_ext {
  * pieces are joined when they continue one another (cylinder_join::continues): parallel
  * axes, each passing through the other's facing end, radii where they face each other
  * within the allowed difference and a gap along the axis no longer than the maximum; or
- * the two legs of an elbow, axes meeting near both ends. A segment whose pieces all
+ * the two legs of an elbow, axes meeting near both ends. The pieces of a straight run
+ * are then refitted as one cylinder (or cone) over all their inliers: a piece alone is
+ * often a short strip seen from one side (a pipe's underside next to a support), whose
+ * radius its points fix poorly (docs/sithole_mapurisa.md). A segment whose pieces all
  * joined one group and cover at least the whole-segment fraction of it joins that group
  * whole; otherwise only the points on its pieces move, and the rest stays a segment.
  * Last, a segment in which no piece was found joins a group when most of its points lie
  * on one of the group's pieces (the fragments at a trunk's branch junctions).
  *
- * Lengths are in the cloud's units; the defaults suit TLS scans in metres (5 mm range
- * noise: the tolerance is three times it). Work is per segment and parallel (OpenMP);
+ * The lengths default to multiples of the average point spacing of the segments'
+ * points (profiles::estimatePointSpacing, or setPointSpacing), so that the join needs
+ * no setting in the cloud's units: the inlier band 0.6 spacings, radii from 0.8 to 24
+ * spacings, gaps up to 80 spacings, and hypotheses drawn from patches of 24 spacings
+ * (at 0.025 m, the spacing of the generated \c pipes scene: 0.015 m, 0.02 to 0.6 m,
+ * 2 m and 0.6 m). Each can be set in the cloud's units instead. Work is per segment
+ * and parallel (OpenMP);
  * the result does not depend on the number of threads, and the random draws are seeded
  * (setSeed). Points with non-finite coordinates are never fitted and go with most of
  * their segment.
@@ -60,9 +69,11 @@ public:
 
   /** \brief A cylinder found in an input segment, with its inliers as cloud indices. */
   struct JoinedCylinder {
-    cylinders::Cylinder cylinder; ///< axis point, direction, radius, extent, inliers
-    std::size_t input_segment;    ///< index into the input segments
-    int output_segment; ///< index into the output of join(); -1 when not joined
+    /** \brief Axis point, direction, radius, extent, inliers; when joined in a
+     * straight run, the run's axis, radius and taper over the piece's extent. */
+    cylinders::Cylinder cylinder;
+    std::size_t input_segment; ///< index into the input segments
+    int output_segment;        ///< index into the output of join(); -1 when not joined
   };
 
   CylinderSegmentJoin() = default;
@@ -79,45 +90,107 @@ public:
     return segments_;
   }
 
-  /** \brief Inlier band around a cylinder's surface. Default 0.015; valid: > 0. */
+  /** \brief Average point spacing the default lengths are multiples of. Default 0:
+   * estimated from the segments' points (profiles::estimatePointSpacing); pass the
+   * segmenter's (ProfileSegmentation::getUsedPointSpacing) to skip the estimate; valid:
+   * 0 or > 0. */
+  void
+  setPointSpacing (double spacing)
+  {
+    spacing_ = spacing;
+  }
+  double
+  getPointSpacing () const
+  {
+    return spacing_;
+  }
+
+  /** \brief Inlier band around a cylinder's surface, in the cloud's units (valid: >
+   * 0); unset by default: 0.6 point spacings (setDistanceToleranceFactor). */
   void
   setDistanceTolerance (double tolerance)
   {
-    parameters_.detection.distance_tolerance = tolerance;
+    tolerance_ = tolerance;
   }
+  /** \brief The tolerance set in the cloud's units; 0 when it follows the spacing. */
   double
   getDistanceTolerance () const
   {
-    return parameters_.detection.distance_tolerance;
+    return tolerance_.value_or (0.0);
+  }
+  /** \brief Inlier band in point spacings when no tolerance is set. Default 0.6 (three
+   * times the 5 mm range noise of the generated scenes at their 0.025 m). */
+  void
+  setDistanceToleranceFactor (double factor)
+  {
+    tolerance_factor_ = factor;
+    tolerance_.reset();
+  }
+  double
+  getDistanceToleranceFactor () const
+  {
+    return tolerance_factor_;
   }
 
-  /** \brief Radii of the cylinders looked for. Default [0.02, 0.6]; valid: 0 < min <=
-   * max. */
+  /** \brief Radii of the cylinders looked for, in the cloud's units (valid: 0 < min <=
+   * max); unset by default: 0.8 to 24 point spacings (setRadiusLimitFactors). */
   void
   setRadiusLimits (double min_radius, double max_radius)
   {
-    parameters_.detection.min_radius = min_radius;
-    parameters_.detection.max_radius = max_radius;
+    min_radius_ = min_radius;
+    max_radius_ = max_radius;
   }
+  /** \brief The radii set in the cloud's units; 0 when they follow the spacing. */
   void
   getRadiusLimits (double& min_radius, double& max_radius) const
   {
-    min_radius = parameters_.detection.min_radius;
-    max_radius = parameters_.detection.max_radius;
+    min_radius = min_radius_.value_or (0.0);
+    max_radius = max_radius_.value_or (0.0);
+  }
+  /** \brief Radii in point spacings when none are set. Default 0.8 and 24: a
+   * cylinder thinner than a spacing has too few points around it to be told from a
+   * line, and the largest is half the patch. */
+  void
+  setRadiusLimitFactors (double min_factor, double max_factor)
+  {
+    min_radius_factor_ = min_factor;
+    max_radius_factor_ = max_factor;
+    min_radius_.reset();
+    max_radius_.reset();
+  }
+  void
+  getRadiusLimitFactors (double& min_factor, double& max_factor) const
+  {
+    min_factor = min_radius_factor_;
+    max_factor = max_radius_factor_;
   }
 
   /** \brief Longest gap bridged between two pieces of a straight run, or from a leg's
-   * end to where the axes of an elbow meet. Default 2 (a support and the band of curve
-   * ends on either side of it); valid: >= 0. */
+   * end to where the axes of an elbow meet, in the cloud's units (valid: >= 0); unset
+   * by default: 80 point spacings (setMaxGapFactor). */
   void
   setMaxGap (double gap)
   {
-    parameters_.max_gap = gap;
+    max_gap_ = gap;
   }
+  /** \brief The gap set in the cloud's units; -1 when it follows the spacing. */
   double
   getMaxGap () const
   {
-    return parameters_.max_gap;
+    return max_gap_.value_or (-1.0);
+  }
+  /** \brief Longest gap in point spacings when none is set. Default 80 (a support and
+   * the band of curve ends on either side of it). */
+  void
+  setMaxGapFactor (double factor)
+  {
+    max_gap_factor_ = factor;
+    max_gap_.reset();
+  }
+  double
+  getMaxGapFactor () const
+  {
+    return max_gap_factor_;
   }
 
   /** \brief Largest angle between the axes of one straight run, in radians. Default 5
@@ -173,17 +246,32 @@ public:
     return parameters_.max_axis_offset;
   }
 
-  /** \brief Radius of the patch a cylinder hypothesis is drawn from. Default 0.6 (at
-   * least twice the largest radius: the patch must be longer than wide); valid: > 0. */
+  /** \brief Radius of the patch a cylinder hypothesis is drawn from, in the cloud's
+   * units (valid: > 0; at least twice the largest radius: the patch must be longer than
+   * wide); unset by default: 24 point spacings (setNeighbourhoodRadiusFactor). */
   void
   setNeighbourhoodRadius (double radius)
   {
-    parameters_.detection.neighbourhood_radius = radius;
+    neighbourhood_radius_ = radius;
   }
+  /** \brief The patch radius set in the cloud's units; 0 when it follows the spacing.
+   */
   double
   getNeighbourhoodRadius () const
   {
-    return parameters_.detection.neighbourhood_radius;
+    return neighbourhood_radius_.value_or (0.0);
+  }
+  /** \brief Patch radius in point spacings when none is set. Default 24. */
+  void
+  setNeighbourhoodRadiusFactor (double factor)
+  {
+    neighbourhood_factor_ = factor;
+    neighbourhood_radius_.reset();
+  }
+  double
+  getNeighbourhoodRadiusFactor () const
+  {
+    return neighbourhood_factor_;
   }
 
   /** \brief Hypotheses drawn per cylinder, and how many of the best are grown. Default
@@ -318,15 +406,41 @@ public:
     return cylinders_;
   }
 
+  /** \brief The point spacing and the lengths used by the last join(), in the cloud's
+   * units (the detection's and the join's settings as run). */
+  double
+  getUsedPointSpacing () const
+  {
+    return used_spacing_;
+  }
+  const cylinder_join::JoinParameters&
+  getUsedParameters () const
+  {
+    return used_;
+  }
+
 protected:
   using pcl::PCLBase<PointT>::input_;
   using pcl::PCLBase<PointT>::initCompute;
   using pcl::PCLBase<PointT>::deinitCompute;
 
+  /** \brief The lengths in the cloud's units: set ones, the others from the spacing.
+   * \return false when a length is needed and the spacing cannot be estimated */
+  bool
+  resolveLengths (const std::vector<Eigen::Vector3d>& xyz,
+                  cylinder_join::JoinParameters& p);
+
   std::vector<pcl::PointIndices> segments_;
   cylinder_join::JoinParameters parameters_;
+  double spacing_ = 0.0;
+  double tolerance_factor_ = 0.6, min_radius_factor_ = 0.8, max_radius_factor_ = 24.0,
+         max_gap_factor_ = 80.0, neighbourhood_factor_ = 24.0;
+  std::optional<double> tolerance_, min_radius_, max_radius_, max_gap_,
+      neighbourhood_radius_;
   unsigned int threads_ = 0;
   std::vector<JoinedCylinder> cylinders_;
+  double used_spacing_ = 0.0;
+  cylinder_join::JoinParameters used_;
 };
 } // namespace pcl_ext
 

@@ -44,7 +44,8 @@ struct DetectionParameters {
   double min_surface_fraction = 0.9; ///< see Cylinder::surface_fraction, in [0, 1]
   unsigned int max_cylinders = 8;    ///< per call
   unsigned int max_failures = 2;     ///< searches without a cylinder before giving up
-  std::uint64_t seed = 1;            ///< the random draws (same seed, same result)
+  std::uint64_t seed = 1; ///< the random draws (pcl_ext::RandomStream: same seed, same
+                          ///< result with every standard library)
 };
 
 /** \brief Check \a p; false when a value is out of range. */

@@ -333,8 +333,10 @@ public:
   /** \brief Curve fitting: select the polynomial by AICc, the small-sample corrected
    * AIC of Hurvich & Tsai (1989), rather than the paper's AIC. Default false (the
    * paper). A side holds about ten points, where plain AIC picks the cubic for noise
-   * and the cubic's slope follows the noise; AICc tends to AIC as the sides grow. Use
-   * with setTurnSignificance. */
+   * and the cubic's slope follows the noise; AICc tends to AIC as the sides grow. Its
+   * correction is infinite where a model has as few as k + 1 points (k: its terms and
+   * the noise variance): a parabola or a cubic is only fitted to more, and a side of 4
+   * or 5 points keeps the line (see fitPolynomialAic). Use with setTurnSignificance. */
   void
   setCorrectedAic (bool corrected)
   {
@@ -368,7 +370,9 @@ public:
   }
 
   /** \brief Curve fitting: a side whose residual RMS exceeds this multiple of the
-   * stack's median residual is not one curve (a junction). Default 3; valid: > 0. */
+   * stack's median residual is not one curve (a junction). The RMS is over the fit's
+   * residual degrees of freedom (n - p for p fitted terms), an unbiased noise estimate.
+   * Default 3; valid: > 0. */
   void
   setResidualFactor (double factor)
   {

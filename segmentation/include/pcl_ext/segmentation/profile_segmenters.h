@@ -84,7 +84,12 @@ struct CurveFitParameters {
 struct CurveScores {
   std::vector<std::uint8_t> evaluated; ///< 1 when both sides could be fitted
   std::vector<float> turn;             ///< angle between the two sides' normals (rad)
-  std::vector<float> rms;              ///< larger residual RMS of the two sides
+  std::vector<float> rms; ///< larger residual RMS of the two sides (over n - p each)
+  /** \brief The noise sigma the two sides' fits show together: their pooled residual
+   * variance (rss_l + rss_r) / (n_l - p_l + n_r - p_r) over the median of chi-square /
+   * dof at those degrees of freedom, (1 - 2 / (9 dof))^3 (Wilson & Hilferty, 1931), so
+   * that the median of this over the points of a smooth surface is the noise sigma. */
+  std::vector<float> noise;
   /** \brief Standard error of \a turn (rad) per metre of noise sigma, propagated to
    * first order from the two fits' coefficients: how much of the turn the noise alone
    * could make. */
@@ -97,8 +102,12 @@ struct PolynomialFit {
   double slope = 0.0; ///< dy/dx at x = 0
   Eigen::Vector3d terms = Eigen::Vector3d::Zero(); ///< a1, a2, a3 (0 beyond the degree)
   double rss = 0.0;                                ///< residual sum of squares
+  /** \brief rss / (n - p), p = degree + 2 fitted terms (the polynomial's and the t
+   * term): the unbiased estimate of the noise variance of y. */
+  double residual_variance = 0.0;
   /** \brief n ln(rss / n) + 2 k, plus 2 k (k + 1) / (n - k - 1) when corrected (AICc),
-   * with k the number of fitted terms (the degree + 2: the constant and the t term). */
+   * with k = p + 1 parameters: the p fitted terms and the noise variance (Hurvich &
+   * Tsai, 1989); infinite for a line kept where AICc cannot be scored (n <= k + 1). */
   double aic = 0.0;
   /** \brief (Phi^T Phi)^-1 restricted to (a1, a2, a3) (0 beyond the degree): their
    * covariance is this times the noise variance of y. */
@@ -122,10 +131,14 @@ struct PolynomialFit {
 /** \brief Fit y = a0 + a1 x + ... + ad x^d + c t for d = 1, 2, 3 and keep the model of
  * lowest AIC. The t term absorbs the slant of a surface crossing the profile obliquely
  * (the profile has a width), so the residuals measure the curve, not the profile's
- * thickness. \param[in] x, y, t sample coordinates (same length) \param[in] scale a
- * length used to condition the normal equations (e.g. the window) \param[in] corrected
- * use AICc, the small-sample correction of Hurvich & Tsai (1989, "Regression and time
- * series model selection in small samples"); false: the paper's plain AIC */
+ * thickness. A model of p = d + 2 terms needs n >= p + 1 points (one residual degree
+ * of freedom). With AICc a parabola or a cubic also needs n > k + 1 = p + 2, as the
+ * correction is infinite at n = k + 1 (undefined below): a parabola needs 7 points, a
+ * cubic 8; with 4 or 5 points the line is kept, its AICc infinite. \param[in] x, y, t
+ * sample coordinates (same length) \param[in] scale a length used to condition the
+ * normal equations (e.g. the window) \param[in] corrected use AICc, the small-sample
+ * correction of Hurvich & Tsai (1989, "Regression and time series model selection in
+ * small samples"); false: the paper's plain AIC */
 PolynomialFit
 fitPolynomialAic (const std::vector<double>& x,
                   const std::vector<double>& y,

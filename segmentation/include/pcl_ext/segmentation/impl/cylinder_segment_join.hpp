@@ -5,6 +5,7 @@
 
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/segmentation/cylinder_segment_join.h>
+#include <pcl_ext/segmentation/profile_stacks.h>
 
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
@@ -21,17 +22,14 @@ CylinderSegmentJoin<PointT>::join (std::vector<pcl::PointIndices>& segments)
   const char* name = "CylinderSegmentJoin::join";
   segments.clear();
   cylinders_.clear();
+  used_spacing_ = 0.0;
+  used_ = cylinder_join::JoinParameters();
   cylinder_join::JoinParameters p = parameters_;
   p.threads = resolveThreadCount (threads_);
-  if (!cylinder_join::validParameters (p)) {
-    PCL_ERROR (
-        "[pcl_ext::%s] Invalid parameters: need a distance tolerance > 0, 0 < minimum "
-        "radius <= maximum radius, a neighbourhood radius > 0, at least one "
-        "hypothesis, "
-        "a minimum cylinder size >= 3, shares in [0, 1] (radius difference below 1), "
-        "a maximum gap and axis offset >= 0, and 0 <= maximum axis angle < minimum "
-        "elbow angle <= pi/2.\n",
-        name);
+  if (!(spacing_ >= 0.0) || !std::isfinite (spacing_)) {
+    PCL_ERROR ("[pcl_ext::%s] Invalid point spacing %g: need 0 (estimated) or > 0.\n",
+               name,
+               spacing_);
     return;
   }
   if (!initCompute()) {
@@ -87,6 +85,27 @@ CylinderSegmentJoin<PointT>::join (std::vector<pcl::PointIndices>& segments)
   for (std::size_t i = 0; i < cloud_index.size(); ++i)
     xyz[i] =
         (*input_)[cloud_index[i]].getVector3fMap().template cast<double>() - centre;
+
+  if (!resolveLengths (xyz, p)) {
+    PCL_ERROR ("[pcl_ext::%s] The point spacing cannot be estimated (fewer than 7 "
+               "distinct points); set it, or the lengths.\n",
+               name);
+    deinitCompute();
+    return;
+  }
+  if (!cylinder_join::validParameters (p)) {
+    PCL_ERROR (
+        "[pcl_ext::%s] Invalid parameters: need a distance tolerance > 0, 0 < minimum "
+        "radius <= maximum radius, a neighbourhood radius > 0, at least one "
+        "hypothesis, "
+        "a minimum cylinder size >= 3, shares in [0, 1] (radius difference below 1), "
+        "a maximum gap and axis offset >= 0, and 0 <= maximum axis angle < minimum "
+        "elbow angle <= pi/2.\n",
+        name);
+    deinitCompute();
+    return;
+  }
+  used_ = p;
 
   cylinder_join::JoinResult result;
   if (!cylinder_join::joinCylinderSegments (xyz, by_position, p, result)) {
@@ -147,6 +166,32 @@ CylinderSegmentJoin<PointT>::join (std::vector<pcl::PointIndices>& segments)
          piece.joined == cylinder_join::kNoSegment ? -1 : rank[piece.joined]});
   }
   deinitCompute();
+}
+
+template <typename PointT>
+bool
+CylinderSegmentJoin<PointT>::resolveLengths (const std::vector<Eigen::Vector3d>& xyz,
+                                             cylinder_join::JoinParameters& p)
+{
+  used_spacing_ = spacing_;
+  const bool from_spacing = !tolerance_ || !min_radius_ || !max_radius_ || !max_gap_ ||
+                            !neighbourhood_radius_;
+  if (from_spacing && !(used_spacing_ > 0.0)) {
+    std::vector<Eigen::Vector3f> points (xyz.size());
+    for (std::size_t i = 0; i < xyz.size(); ++i)
+      points[i] = xyz[i].cast<float>();
+    used_spacing_ = profiles::estimatePointSpacing (points);
+    if (!(used_spacing_ > 0.0))
+      return false;
+  }
+  const double s = used_spacing_;
+  p.detection.distance_tolerance = tolerance_.value_or (tolerance_factor_ * s);
+  p.detection.min_radius = min_radius_.value_or (min_radius_factor_ * s);
+  p.detection.max_radius = max_radius_.value_or (max_radius_factor_ * s);
+  p.detection.neighbourhood_radius =
+      neighbourhood_radius_.value_or (neighbourhood_factor_ * s);
+  p.max_gap = max_gap_.value_or (max_gap_factor_ * s);
+  return true;
 }
 } // namespace pcl_ext
 

@@ -1,8 +1,9 @@
 /*
- * Tests of the simulator's counter-based random numbers: known SplitMix64 values,
- * seeded streams, uniform and Gaussian deviates.
+ * Tests of the library's counter-based random numbers (the simulator's and the
+ * segmentation's): known SplitMix64 values, seeded streams, uniform, index and Gaussian
+ * deviates, the same on every standard library.
  */
-#include <pcl_ext/simulation/random.h>
+#include <pcl_ext/common/random.h>
 
 #include <gtest/gtest.h>
 
@@ -12,9 +13,9 @@
 #include <set>
 #include <vector>
 
-using namespace pcl_ext::simulation;
+using namespace pcl_ext;
 
-TEST (SimulationRandom, GaussianMoments)
+TEST (Random, GaussianMoments)
 {
   RandomStream rng (123);
   double sum = 0, sum2 = 0;
@@ -28,7 +29,7 @@ TEST (SimulationRandom, GaussianMoments)
   EXPECT_NEAR (sum2 / n, 1.0, 0.01);
 }
 
-TEST (SimulationRandom, SplitMixKnownValues)
+TEST (Random, SplitMixKnownValues)
 {
   // The first outputs of SplitMix64 seeded with 0 (Steele, Lea & Flood's reference
   // generator): splitMix64 (k * golden gamma) is its output k + 1.
@@ -45,7 +46,7 @@ TEST (SimulationRandom, SplitMixKnownValues)
   EXPECT_EQ (hashCombine (1, 2), hashCombine (1, 2));
 }
 
-TEST (SimulationRandom, SeededStreamsRepeatAndDiffer)
+TEST (Random, SeededStreamsRepeatAndDiffer)
 {
   RandomStream a (42), b (42), c (43);
   std::vector<std::uint64_t> first;
@@ -64,7 +65,7 @@ TEST (SimulationRandom, SeededStreamsRepeatAndDiffer)
   EXPECT_EQ (d.next(), splitMix64 (state));
 }
 
-TEST (SimulationRandom, UniformsInTheUnitInterval)
+TEST (Random, UniformsInTheUnitInterval)
 {
   RandomStream rng (5);
   const int n = 100000;
@@ -86,4 +87,43 @@ TEST (SimulationRandom, UniformsInTheUnitInterval)
   // Gaussians are finite (the log never sees 0).
   for (int i = 0; i < n; ++i)
     ASSERT_TRUE (std::isfinite (rng.gaussian()));
+}
+
+TEST (Random, IndexIsTheStreamModuloTheBound)
+{
+  // For a small bound the rejected draws (below 2^64 mod n, here 6) never occur in
+  // practice: index (n) is the next 64 bits modulo n, fixed by SplitMix64 alone.
+  RandomStream a (9), b (9);
+  for (int i = 0; i < 1000; ++i)
+    EXPECT_EQ (a.index (10), b.next() % 10) << i;
+  EXPECT_EQ (a.index (0), 0u);
+  EXPECT_EQ (a.index (1), 0u);
+}
+
+TEST (Random, IndexIsUniformAndInRange)
+{
+  RandomStream rng (17);
+  const std::uint64_t n = 7;
+  const int draws = 70000;
+  std::vector<int> count (n, 0);
+  for (int i = 0; i < draws; ++i) {
+    const std::uint64_t k = rng.index (n);
+    ASSERT_LT (k, n);
+    ++count[k];
+  }
+  // Chi-square with 6 degrees of freedom: below 22.5 with probability 0.999.
+  double chi2 = 0.0;
+  for (const int c : count)
+    chi2 += (c - draws / 7.0) * (c - draws / 7.0) / (draws / 7.0);
+  EXPECT_LT (chi2, 22.5);
+  // A bound just above 2^63 rejects almost half the draws; the values stay in range
+  // and fall on both halves equally.
+  const std::uint64_t big = (std::uint64_t (1) << 63) + 1;
+  int upper = 0;
+  for (int i = 0; i < 10000; ++i) {
+    const std::uint64_t k = rng.index (big);
+    ASSERT_LT (k, big);
+    upper += k >= big / 2;
+  }
+  EXPECT_NEAR (upper / 10000.0, 0.5, 0.03);
 }
