@@ -1,7 +1,7 @@
 /*
  * pcl_ext_compare_segmenters run as a command on a small generated scene: the table's
- * numbers are the metrics library's numbers for the labels the tool wrote; bad usage
- * fails without output.
+ * numbers are the metrics library's numbers for the labels the tool wrote; a LAS input
+ * gives LAS labels in its frame; bad usage fails without output.
  */
 #include "../app_test.h"
 
@@ -10,9 +10,14 @@
 #include <pcl_ext/simulation/scene_io.h>
 #include <pcl_ext/simulation/scenes.h>
 #include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/io/point_file.h>
+
+#include <pcl/conversions.h>
+#include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -239,4 +244,53 @@ TEST_F (CompareSegmentersApp, BadUsageFailsWithoutOutput)
   EXPECT_EQ (run (""), 1);
   EXPECT_FALSE (fs::exists (csv));
   EXPECT_FALSE (fs::exists (path ("no_dir")));
+}
+
+TEST_F (CompareSegmentersApp, ReadsAndWritesLasInTheInputsFrame)
+{
+  // The scene as a georeferenced LAS file: coordinates far from 0, the truth an
+  // extra-bytes dimension of the same name.
+  pcl_ext::io::PointFile scene;
+  pcl_ext::io::loadPointFile (path ("cubes.pcd"), scene);
+  ASSERT_TRUE (pcl_ext::io::savePointFile (
+      path ("cubes.las"), scene.cloud, Eigen::Vector3d (512000.0, 5400000.0, 200.0)));
+  ASSERT_EQ (run (path ("cubes.las") +
+                  " -truth_field segment -methods euclidean -threads 2 -labels " +
+                  path ("labels.las")),
+             0)
+      << output_;
+  EXPECT_NE (output_.find ("mean IoU"), std::string::npos) << output_;
+
+  pcl_ext::io::PointFile in, out;
+  pcl_ext::io::loadPointFile (path ("cubes.las"), in);
+  pcl_ext::io::loadPointFile (path ("labels.las"), out);
+  ASSERT_TRUE (out.las.has_value());
+  EXPECT_EQ (out.las->header.offset, in.las->header.offset);
+  EXPECT_EQ (out.las->header.scale, in.las->header.scale);
+  EXPECT_EQ (out.origin, in.origin);
+  EXPECT_EQ (out.cloud.width * out.cloud.height, in.cloud.width * in.cloud.height);
+  std::vector<std::uint32_t> truth_in, truth_out;
+  ASSERT_TRUE (pcl_ext::io::getLabelField (in.cloud, "segment", truth_in));
+  ASSERT_TRUE (pcl_ext::io::getLabelField (out.cloud, "segment", truth_out));
+  EXPECT_EQ (truth_in, truth_out);
+  pcl::PointCloud<pcl::PointXYZ> a, b; // the same integers read the same way
+  pcl::fromPCLPointCloud2 (in.cloud, a);
+  pcl::fromPCLPointCloud2 (out.cloud, b);
+  ASSERT_EQ (a.size(), b.size());
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    moved += a[i].getVector3fMap() != b[i].getVector3fMap();
+  EXPECT_EQ (moved, 0u);
+  std::vector<std::uint32_t> euclidean;
+  ASSERT_TRUE (pcl_ext::io::getLabelField (out.cloud, "euclidean", euclidean));
+  EXPECT_GT (*std::max_element (euclidean.begin(), euclidean.end()), 1u);
+
+  // A labels file of a format that cannot be written is refused before any work.
+  EXPECT_EQ (
+      run (path ("cubes.las") + " -methods euclidean -labels " + path ("labels.laz")),
+      1);
+  EXPECT_NE (output_.find ("writing LAZ is not supported"), std::string::npos)
+      << output_;
+  EXPECT_EQ (output_.find ("Loading"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("labels.laz"));
 }

@@ -9,6 +9,8 @@
 
 #include <pcl_ext/segmentation/profile_stacks.h>
 #include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/apps/input.h>
+#include <pcl_ext/io/point_file.h>
 #include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/montage.h>
@@ -151,7 +153,9 @@ main (int argc, char** argv)
                    std::string (m.name.size() < 15 ? 15 - m.name.size() : 1, ' ') +
                    m.description;
   pcl_ext::apps::CommandLine cl ("pcl_ext_compare_segmenters", description);
-  cl.addPositional ("input.pcd", input_path, "input cloud (PCD or PLY)");
+  cl.addPositional ("input",
+                    input_path,
+                    std::string ("input cloud: ") + pcl_ext::apps::kInputFormats);
   cl.addOption (
       "truth_field",
       truth_field,
@@ -198,7 +202,9 @@ main (int argc, char** argv)
   cl.addOption ("csv", csv_path, "also write the table to this CSV file");
   cl.addOption ("labels",
                 labels_path,
-                "also write the input with one label field per method (0: no segment)");
+                std::string ("also write the input with one label field per method (0: "
+                             "no segment), in its frame: ") +
+                    pcl_ext::apps::kOutputFormats);
   cl.addOption (
       "png", png_path, "also render a montage of every result; needs an X display");
   cl.addOption ("tile_width", tile_width, "montage tile width in pixels");
@@ -251,13 +257,18 @@ main (int argc, char** argv)
     return 1;
   }
 #endif
+  std::string reason;
+  if (!labels_path.empty() && !pcl_ext::io::canWritePointFile (labels_path, &reason)) {
+    std::cerr << "Error: -labels " << reason << ".\n";
+    return 1;
+  }
   for (const auto* path : {&csv_path, &labels_path, &png_path})
     if (!path->empty() && !pcl_ext::io::checkWritable (*path))
       return 1;
 
-  pcl::PCLPointCloud2 blob;
+  pcl_ext::io::PointFile input;
   Comparison c;
-  if (!loadInput (input_path, truth_field, blob, c))
+  if (!loadInput (input_path, truth_field, input, c))
     return 1;
   if (spacing > 0.0)
     s.spacing = spacing;
@@ -311,7 +322,7 @@ main (int argc, char** argv)
       return 1;
     std::cout << "Wrote " << csv_path << "\n";
   }
-  if (!labels_path.empty() && !writeLabels (labels_path, blob, c, results))
+  if (!labels_path.empty() && !writeLabels (labels_path, input, c, results))
     return 1;
 #ifdef PCL_EXT_HAVE_VISUALIZATION
   if (!png_path.empty() &&

@@ -7,7 +7,6 @@
 
 #include <pcl_ext/evaluation/segmentation_metrics.h>
 #include <pcl_ext/io/cloud_fields.h>
-#include <pcl_ext/io/cloud_io.h>
 #include <pcl_ext/apps/command_line.h>
 
 #include <pcl/common/io.h>
@@ -25,12 +24,19 @@ namespace compare {
 bool
 loadInput (const std::string& path,
            const std::string& truth_field,
-           pcl::PCLPointCloud2& blob,
+           io::PointFile& file,
            Comparison& c)
 {
   pcl_ext::apps::StageTimer timer ("Loading " + path);
-  if (!pcl_ext::io::loadCloud (path, blob))
+  try {
+    io::loadPointFile (path, file);
+  }
+  catch (const io::ReadError& e) {
+    std::cout << std::endl;
+    std::cerr << "Error: " << e.what() << "\n";
     return false;
+  }
+  const pcl::PCLPointCloud2& blob = file.cloud;
   std::vector<std::uint32_t> truth;
   if (!truth_field.empty()) {
     std::string error;
@@ -187,7 +193,7 @@ runMethod (const SegmenterMethod& method,
 
 bool
 writeLabels (const std::string& path,
-             pcl::PCLPointCloud2& blob,
+             io::PointFile& file,
              const Comparison& c,
              const std::vector<MethodResult>& results)
 {
@@ -198,10 +204,10 @@ writeLabels (const std::string& path,
     std::vector<std::uint32_t> labels (c.file_points, 0);
     for (std::size_t i = 0; i < r.labels.size(); ++i)
       labels[c.source_index[i]] = r.labels[i];
-    if (!pcl_ext::io::setLabelField (blob, r.name, labels))
+    if (!pcl_ext::io::setLabelField (file.cloud, r.name, labels))
       return false;
   }
-  if (!pcl_ext::io::saveCloud (path, blob))
+  if (!pcl_ext::io::savePointFile (path, file.cloud, file.origin, &file))
     return false;
   timer.done (c.file_points);
   return true;

@@ -7,7 +7,7 @@
 #include "comparison_report.h"
 #include "segmenter_methods.h"
 
-#include <pcl/PCLPointCloud2.h>
+#include <pcl_ext/io/point_file.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -25,13 +25,14 @@ struct Comparison {
   std::vector<std::uint32_t> truth; ///< per finite point; empty without ground truth
 };
 
-/** \brief Load \a path, keep its finite points (with their colour when it has one) and,
+/** \brief Load \a path (any point file io::loadPointFile reads; the methods work on its
+ * local coordinates), keep its finite points (with their colour when it has one) and,
  * when \a truth_field is not empty, their ground truth. Prints an error and returns
  * false when the file or the field cannot be read or no point is finite. */
 bool
 loadInput (const std::string& path,
            const std::string& truth_field,
-           pcl::PCLPointCloud2& blob,
+           io::PointFile& file,
            Comparison& c);
 
 /** \brief Normals (pcl::NormalEstimationOMP, k nearest) in a child process, so that
@@ -51,10 +52,11 @@ runMethod (const SegmenterMethod& method,
            double timeout);
 
 /** \brief Save the input file with one uint32 field per method (its labels; 0 for
- * points that are not finite or in no segment). */
+ * points that are not finite or in no segment) with io::savePointFile, in the input's
+ * frame (and, to LAS, with its header; the labels become extra-bytes dimensions). */
 bool
 writeLabels (const std::string& path,
-             pcl::PCLPointCloud2& blob,
+             io::PointFile& file,
              const Comparison& c,
              const std::vector<MethodResult>& results);
 } // namespace compare

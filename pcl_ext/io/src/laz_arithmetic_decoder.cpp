@@ -123,22 +123,18 @@ LazArithmeticDecoder::init (const std::uint8_t* begin, const std::uint8_t* end)
 }
 
 std::uint32_t
-LazArithmeticDecoder::readBits (unsigned bits)
+LazArithmeticDecoder::readLongBits (unsigned bits)
 {
   if (bits == 0 || bits > 32)
     throw std::invalid_argument ("LazArithmeticDecoder::readBits: 1 to 32 bits");
-  if (bits > 19) {
-    const std::uint32_t low = readBits (16);
-    return (readBits (bits - 16) << 16) | low;
-  }
-  length_ >>= bits;
-  const std::uint32_t sym = value_ / length_;
-  value_ -= length_ * sym;
-  if (length_ < min_length)
-    renormalize();
-  if (sym >= (1u << bits))
-    throw LazDataError ("a raw value is out of its range");
-  return sym;
+  const std::uint32_t low = readBits (16);
+  return (readBits (bits - 16) << 16) | low;
+}
+
+void
+LazArithmeticDecoder::throwOutOfRange()
+{
+  throw LazDataError ("a raw value is out of its range");
 }
 
 void
@@ -181,16 +177,16 @@ LazIntegerDecompressor::LazIntegerDecompressor (std::uint32_t bits,
   m_corrector_.reserve (corr_bits_);
   for (std::uint32_t k = 1; k <= corr_bits_; ++k)
     m_corrector_.emplace_back (1u << (k <= bits_high_ ? k : bits_high_));
-  bits_stale_.assign (m_bits_.size(), false);
-  corrector_stale_.assign (m_corrector_.size(), false);
+  bits_stale_.assign (m_bits_.size(), 0);
+  corrector_stale_.assign (m_corrector_.size(), 0);
 }
 
 void
 LazIntegerDecompressor::reset()
 {
-  bits_stale_.assign (m_bits_.size(), true);
+  bits_stale_.assign (m_bits_.size(), 1);
   m_corrector0_.reset();
-  corrector_stale_.assign (m_corrector_.size(), true);
+  corrector_stale_.assign (m_corrector_.size(), 1);
   k_ = 0;
 }
 

@@ -55,7 +55,8 @@ bool
 savePointFile (const std::string& path,
                const pcl::PCLPointCloud2& cloud,
                const Eigen::Vector3d& origin,
-               const PointFile* like)
+               const PointFile* like,
+               bool ascii)
 {
   std::string reason;
   if (!canWritePointFile (path, &reason)) {
@@ -76,7 +77,7 @@ savePointFile (const std::string& path,
                                 pcl::getFieldIndex (cloud, "las_z") >= 0;
   const bool doubles = !origin.isZero() || (like && like->double_coordinates);
   if (!doubles && !has_las_integers)
-    return saveCloud (path, cloud);
+    return saveCloud (path, cloud, ascii);
   pcl::PCLPointCloud2 out;
   detail::rebuildCoordinates (cloud,
                               xyz,
@@ -85,7 +86,7 @@ savePointFile (const std::string& path,
                                       : pcl::PCLPointField::FLOAT32,
                               kLasIntegers,
                               out);
-  return saveCloud (path, out);
+  return saveCloud (path, out, ascii);
 }
 } // namespace io
 } // namespace pcl_ext

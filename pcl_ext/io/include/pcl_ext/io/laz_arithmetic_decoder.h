@@ -194,7 +194,19 @@ public:
 
   /** \brief Read \a bits (1 to 32) raw bits, uniformly distributed. */
   std::uint32_t
-  readBits (unsigned bits);
+  readBits (unsigned bits)
+  {
+    if (bits - 1u >= 19u) // 0, or more than 19 bits: checked and split in two
+      return readLongBits (bits);
+    length_ >>= bits;
+    const std::uint32_t sym = value_ / length_;
+    value_ -= length_ * sym;
+    if (length_ < min_length)
+      renormalize();
+    if (sym >> bits)
+      throwOutOfRange();
+    return sym;
+  }
 
   /** \brief Read 16 raw bits. */
   std::uint32_t
@@ -225,8 +237,14 @@ private:
     while ((length_ <<= 8) < min_length);
   }
 
+  std::uint32_t
+  readLongBits (unsigned bits);
+
   [[noreturn]] void
   throwPastEnd () const;
+
+  [[noreturn]] static void
+  throwOutOfRange ();
 
   const std::uint8_t* begin_ = nullptr;
   const std::uint8_t* next_ = nullptr;
@@ -310,11 +328,13 @@ private:
   /** The model \a i, reset first if reset() was called since its last use: a chunk
    * resets a few hundred models of which it often uses a few. */
   static LazSymbolModel&
-  fresh (std::vector<LazSymbolModel>& models, std::vector<bool>& stale, std::size_t i)
+  fresh (std::vector<LazSymbolModel>& models,
+         std::vector<std::uint8_t>& stale,
+         std::size_t i)
   {
     if (stale[i]) {
       models[i].reset();
-      stale[i] = false;
+      stale[i] = 0;
     }
     return models[i];
   }
@@ -327,7 +347,9 @@ private:
   std::vector<LazSymbolModel> m_bits_;
   LazBitModel m_corrector0_;
   std::vector<LazSymbolModel> m_corrector_; // index k - 1 for k = 1 ... corr_bits
-  std::vector<bool> bits_stale_, corrector_stale_;
+  // One byte a flag rather than std::vector<bool>: no bit masking on each decoded
+  // value.
+  std::vector<std::uint8_t> bits_stale_, corrector_stale_;
 };
 } // namespace io
 } // namespace pcl_ext

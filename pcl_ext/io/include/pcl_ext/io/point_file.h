@@ -119,6 +119,7 @@ canWritePointFile (const std::string& path, std::string* reason = nullptr);
  *   `las_x las_y las_z` are dropped (they only serve LAS output).
  *
  * \param[in] like the input the cloud came from (may be null)
+ * \param[in] ascii PCD / PLY output as text rather than binary (ignored for .las)
  * \return false (PCL_ERROR names the reason; nothing written) when the format cannot
  * be written (see canWritePointFile), the cloud has no x y z, or writing fails
  */
@@ -126,7 +127,8 @@ bool
 savePointFile (const std::string& path,
                const pcl::PCLPointCloud2& cloud,
                const Eigen::Vector3d& origin,
-               const PointFile* like = nullptr);
+               const PointFile* like = nullptr,
+               bool ascii = false);
 
 /** \brief \a cloud with x y z as FLOAT64 holding origin + x y z (the other fields as
  * they are, `las_x las_y las_z` dropped): what savePointFile writes to PCD / PLY. */
