@@ -58,10 +58,21 @@ estimateUpDirection (const std::vector<Plane>& planes,
   // Hypotheses: the near-vertical normals, and z itself (a levelled scan whose
   // horizontal planes are all small).
   std::vector<Eigen::Vector3d> hypotheses{Eigen::Vector3d::UnitZ()};
-  for (const auto& plane : planes)
-    if (plane.normal.allFinite() &&
-        std::abs (plane.normal.z()) >= std::cos (max_tilt_deg * kDegree))
-      hypotheses.push_back (plane.normal.z() < 0.0 ? -plane.normal : plane.normal);
+  // Also the common perpendicular of every two walls of different directions (a scan
+  // without a horizontal plane).
+  const double cos_tilt = std::cos (max_tilt_deg * kDegree);
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    const Eigen::Vector3d& a = planes[i].normal;
+    if (!a.allFinite())
+      continue;
+    if (std::abs (a.z()) >= cos_tilt)
+      hypotheses.push_back (a.z() < 0.0 ? -a : a);
+    for (std::size_t j = i + 1; j < planes.size(); ++j) {
+      const Eigen::Vector3d c = a.cross (planes[j].normal);
+      if (c.allFinite() && c.norm() > 0.5 && std::abs (c.z()) >= cos_tilt * c.norm())
+        hypotheses.push_back ((c.z() < 0.0 ? -c : c).normalized());
+    }
+  }
   for (const auto& u : hypotheses) {
     const double s = support (planes, u, tolerance, a, horizontal);
     if (s > best) {

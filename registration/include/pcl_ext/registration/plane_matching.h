@@ -16,9 +16,8 @@ namespace pcl_ext {
  */
 struct PlaneMatchingParameters {
   int k = 4; ///< initial pairs per combination, >= 3 (paper: k = 4, Table 3 also 3)
-  int scan_initial =
-      10;               ///< m: largest scan planes used to initiate, >= k (paper: 7-12)
-  int map_initial = 10; ///< n: largest map planes used to initiate, >= k (paper: 7-12)
+  int scan_initial = 10; ///< m: scan planes used to initiate, >= k (paper: 7-12)
+  int map_initial = 10;  ///< n: map planes used to initiate, >= k (paper: 7-12)
   bool vertical_constraint =
       true; ///< constraint 1: only near-vertical/horizontal planes
   bool orientation_constraint =
@@ -110,7 +109,8 @@ struct PlaneMatchingResult {
 
 /** \brief Plane matching by initiate and extend (Khoshelham & Gorte 2009, section 3.3).
  *
- * The m largest scan planes (by support) and the n largest map planes (by extent) form
+ * The first m scan planes and n map planes (walls first, see \a walls_first; or the
+ * largest, by support for the scan and by extent for the map, as the paper) form
  * all combinations of k pairs (eq. 13), pruned by the enabled constraints:
  * 1. near-vertical planes pair with vertical ones and near-horizontal with horizontal
  * ones, others are left out (|n_z| against \a vertical_tolerance_deg). The constraint

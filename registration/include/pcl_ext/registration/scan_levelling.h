@@ -16,7 +16,8 @@ namespace pcl_ext {
  *
  * Khoshelham & Gorte's constraint 1 (section 3.3) rests on a levelled scanner; a scan
  * tilted by a few degrees (an unlevelled tripod, a mobile or hand-held scan) breaks it.
- * Each plane normal within \a max_tilt_deg of the scan's z axis is a hypothesis; a
+ * Each plane normal within \a max_tilt_deg of the scan's z axis, and the common
+ * perpendicular of every two planes 30 degrees or more apart, is a hypothesis; a
  * hypothesis is scored by the supporting points of the planes it makes horizontal or
  * vertical within \a tolerance_deg. The best is refined: the up direction maximises
  * sum_h w (n . u)^2 + sum_v w (1 - (n . u)^2) over its horizontal (h) and vertical (v)
