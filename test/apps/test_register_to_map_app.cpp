@@ -137,13 +137,13 @@ TEST_F (RegisterToMapApp, GuessWithBoundsFindsTheSamePoseAsTheGlobalSearch)
 TEST_F (RegisterToMapApp, TiltedGeoreferencedScanWithDefaults)
 {
   // The building scanned with 2 and 1 degrees of tilt, its cloud and its map both at
-  // georeferenced coordinates (1e5 m, a float step of 3 cm): registered with the
-  // defaults, the output cloud and -transform_out in map coordinates, every input field
-  // kept.
+  // georeferenced coordinates (1e5 m, a float step of 3 cm; the map's floor at the
+  // default height, 0): registered with the defaults, the output cloud and
+  // -transform_out in map coordinates, every input field kept.
   const std::string command =
       std::string (PCL_EXT_GENERATE_SCENE_EXE) + " building '" + path ("g.pcd") +
       "' -points 30000 -seed 3 -threads 1 -pose 30,2,1,120000,487000,5 -offset "
-      "120010,487020,3 > /dev/null 2>&1";
+      "120010,487020,0 > /dev/null 2>&1";
   ASSERT_EQ (std::system (command.c_str()), 0);
   Eigen::Matrix4d truth;
   pcl_ext::io::loadTransform (path ("g.transform.txt"), truth);
