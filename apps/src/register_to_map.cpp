@@ -8,7 +8,7 @@
 #include <pcl_ext/io/transform_file.h>
 #include <pcl_ext/registration/plane_matching_registration.h>
 #include <pcl_ext/registration/roof_outline_plane_extraction.h>
-#include <pcl_ext/io/cloud_io.h>
+#include <pcl_ext/io/point_file.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
 #include <pcl_ext/io/file_output.h>
@@ -16,9 +16,11 @@
 #include <pcl_ext/visualization/offscreen_renderer.h>
 #endif
 
+#include <pcl/common/point_tests.h>
 #include <pcl/point_types.h>
 
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <iostream>
 #include <limits>
@@ -30,6 +32,7 @@ using Point = pcl::PointXYZ;
 // Tables 1-2: the distances of the matched scan planes' inliers to their map planes.
 pcl_ext::PlaneDistanceMetrics
 planeDistances (const pcl_ext::PlaneMatchingRegistration<Point, Point>& reg,
+                const pcl_ext::PlaneMatchingCandidate& candidate,
                 const pcl::PointCloud<Point>& scan)
 {
   std::vector<pcl::PointIndices> inliers;
@@ -39,15 +42,11 @@ planeDistances (const pcl_ext::PlaneMatchingRegistration<Point, Point>& reg,
   for (const auto& plane : reg.getTargetPlanes())
     coefficients.push_back (plane.coefficients());
   pcl::Correspondences matches;
-  for (const auto& pair : reg.getMatchingResult().matches)
+  for (const auto& pair : candidate.matches)
     matches.emplace_back (pair.scan, pair.map, 0.f);
   pcl_ext::PlaneDistanceMetrics metrics;
-  pcl_ext::computePlaneDistances (scan,
-                                  inliers,
-                                  coefficients,
-                                  matches,
-                                  reg.getFinalTransformationDouble(),
-                                  metrics);
+  pcl_ext::computePlaneDistances (
+      scan, inliers, coefficients, matches, candidate.estimate.transformation, metrics);
   return metrics;
 }
 
@@ -111,31 +110,131 @@ renderTopView (const pcl::PointCloud<Point>& scan,
   return true;
 }
 #endif
+
+// Refuses footprints that no footprint vertex puts within 1 km of the scan's points
+// (local frame: the scan's origin is subtracted from both): a wrong file or a wrong
+// coordinate system, which no registration can bridge.
+bool
+footprintNearScan (const std::vector<pcl_ext::io::Footprint>& footprints,
+                   const Eigen::Vector3d& origin,
+                   const pcl::PointCloud<Point>& scan)
+{
+  Eigen::AlignedBox2d box;
+  for (const auto& p : scan)
+    if (pcl::isXYZFinite (p))
+      box.extend (Eigen::Vector2d (p.x, p.y));
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& f : footprints)
+    for (const auto& polygon : f.polygons)
+      for (const auto& q : polygon.outer)
+        nearest = std::min (nearest, box.exteriorDistance (q - origin.head<2>()));
+  if (box.isEmpty() || nearest <= 1000.0)
+    return true;
+  std::cerr << "Error: the footprint is " << nearest
+            << " m from the scan's points (more than 1 km): not the same place or not "
+               "the same coordinate system.\n";
+  return false;
+}
+
+// Row by row, as PDAL's filters.transformation and CloudCompare read it.
+bool
+writeTransform (const std::string& path, const Eigen::Matrix4d& t)
+{
+  std::FILE* file = std::fopen (path.c_str(), "w");
+  if (!file) {
+    std::cerr << "Error: cannot write " << path << ".\n";
+    return false;
+  }
+  for (int r = 0; r < 4; ++r)
+    std::fprintf (
+        file, "%.17g %.17g %.17g %.17g\n", t (r, 0), t (r, 1), t (r, 2), t (r, 3));
+  return std::fclose (file) == 0;
+}
+
+// T.txt -> T_candidate_2.txt
+std::string
+candidatePath (const std::string& path, std::size_t rank)
+{
+  const std::size_t dot = path.find_last_of ('.');
+  const std::size_t slash = path.find_last_of ("/\\");
+  const bool has_extension =
+      dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  const std::string stem = has_extension ? path.substr (0, dot) : path;
+  return stem + "_candidate_" + std::to_string (rank) +
+         (has_extension ? path.substr (dot) : std::string());
+}
+
+// Rotation angle (radians) plus the translation difference over 100 m: ranks
+// candidates by their distance to a guess, rotation first.
+double
+poseDistance (const Eigen::Matrix4d& a, const Eigen::Matrix4d& b)
+{
+  const Eigen::Matrix3d r =
+      a.topLeftCorner<3, 3>().transpose() * b.topLeftCorner<3, 3>();
+  const double cosine = std::min (1.0, std::max (-1.0, 0.5 * (r.trace() - 1.0)));
+  return std::acos (cosine) +
+         (a.topRightCorner<3, 1>() - b.topRightCorner<3, 1>()).norm() / 100.0;
+}
+
+// x y z (FLOAT32, local) of every point moved by \a t; the other fields are kept.
+void
+transformXyz (const Eigen::Matrix4d& t, pcl::PCLPointCloud2& cloud)
+{
+  int offset[3] = {-1, -1, -1};
+  for (const auto& f : cloud.fields)
+    for (int c = 0; c < 3; ++c)
+      if (f.name == std::string (1, "xyz"[c]) &&
+          f.datatype == pcl::PCLPointField::FLOAT32)
+        offset[c] = static_cast<int> (f.offset);
+  if (offset[0] < 0 || offset[1] < 0 || offset[2] < 0)
+    return;
+  for (std::size_t i = 0; i < cloud.width * cloud.height; ++i) {
+    std::uint8_t* point = cloud.data.data() + i * cloud.point_step;
+    float v[3];
+    for (int c = 0; c < 3; ++c)
+      std::memcpy (&v[c], point + offset[c], sizeof (float));
+    const Eigen::Vector3d x =
+        t.topLeftCorner<3, 3>() * Eigen::Vector3d (v[0], v[1], v[2]) +
+        t.topRightCorner<3, 1>();
+    for (int c = 0; c < 3; ++c) {
+      const float value = static_cast<float> (x[c]);
+      std::memcpy (point + offset[c], &value, sizeof (float));
+    }
+  }
+}
 } // namespace
 
 int
 main (int argc, char** argv)
 {
   std::string input, footprint_path, output, png, png_before, no_constraint, id,
-      guess_path;
+      guess_path, transform_out;
   std::string walls = "sac", label_field = "label";
   int k = 4, m = 10, n = 10, max_planes = 30, min_inliers = 200;
   unsigned int threads = 0, ground_label = 2, building_label = 6;
   double threshold = 0.4, angle = 3.0, distance = 0.5, floor_height = 0.0;
   double max_rotation = std::numeric_limits<double>::infinity();
   double max_translation = std::numeric_limits<double>::infinity();
-  bool similarity = false, oriented = false;
+  bool similarity = false, oriented = false, levelled = false;
+  std::string initial = "walls";
   pcl_ext::apps::CommandLine cl (
       "pcl_ext_register_to_map",
       "Registers a building scan to its 2D footprint by plane matching "
-      "(Khoshelham & Gorte 2009). The output is in the map's local frame "
-      "(map coordinates minus the printed origin).");
+      "(Khoshelham & Gorte 2009). The output cloud and -transform_out are in map "
+      "coordinates.");
   cl.addPositional ("scan",
                     input,
                     std::string ("the building scan: ") + pcl_ext::apps::kInputFormats);
   cl.addPositional (
       "footprint.(wkt|geojson|txt)", footprint_path, "footprint polygon file");
-  cl.addPositional ("output.pcd", output, "the registered scan");
+  cl.addPositional ("output",
+                    output,
+                    "the registered scan in map coordinates, every input field kept: "
+                    ".las, .pcd or .ply");
+  cl.addOption ("transform_out",
+                transform_out,
+                "write the scan-to-map 4x4 transform (map coordinates, row by row) "
+                "to this file");
   cl.addOption ("k", k, "initial pairs per combination (paper: k)");
   cl.addOption ("m", m, "scan planes used to initiate (paper: m)");
   cl.addOption ("n", n, "map planes used to initiate (paper: n)");
@@ -150,6 +249,14 @@ main (int argc, char** argv)
       "angle", angle, "residual and extension tolerance on normals (degrees)");
   cl.addOption (
       "distance", distance, "residual and extension tolerance on plane offsets (m)");
+  cl.addSwitch ("levelled",
+                levelled,
+                "take the scan as levelled (the paper's assumption) instead of finding "
+                "its vertical from its planes");
+  cl.addOption ("initial",
+                initial,
+                "initial planes: walls (the ground, then the walls longest in plan) or "
+                "largest (the paper's choice, by size)");
   cl.addSwitch ("oriented",
                 oriented,
                 "use plane signs (scan normals to the scanner, walls outward)");
@@ -202,6 +309,10 @@ main (int argc, char** argv)
                  "no bound).\n";
     return 1;
   }
+  if (initial != "walls" && initial != "largest") {
+    std::cerr << "Error: unknown -initial '" << initial << "' (walls, largest).\n";
+    return 1;
+  }
   const bool roof_outline = walls == "roof_outline";
   if (!roof_outline && walls != "sac") {
     std::cerr << "Error: unknown -walls '" << walls << "' (sac, roof_outline).\n";
@@ -216,7 +327,7 @@ main (int argc, char** argv)
     std::cerr << "Error: -ground_label and -building_label must differ.\n";
     return 1;
   }
-  if (!pcl_ext::io::checkOutputsWritable (output, {png, png_before}))
+  if (!pcl_ext::io::checkOutputsWritable (output, {png, png_before, transform_out}))
     return 1;
   Eigen::Matrix4d guess = Eigen::Matrix4d::Identity();
   if (!guess_path.empty()) {
@@ -248,30 +359,18 @@ main (int argc, char** argv)
 
   pcl::PointCloud<Point>::Ptr scan (new pcl::PointCloud<Point>);
   pcl::PointCloud<pcl::Label>::Ptr labels (new pcl::PointCloud<pcl::Label>);
-  {
-    pcl_ext::io::PointFile point_file;
-    if (!pcl_ext::apps::loadInput (input, point_file, *scan))
-      return 1;
-    // The footprints are in the scan's coordinates: a georeferenced input would need
-    // them shifted by its local origin too.
-    if (!point_file.origin.isZero()) {
-      std::cerr
-          << "Error: " << input
-          << " is georeferenced (coordinates beyond 8192 m); "
-             "pcl_ext_register_to_map takes local coordinates, as its footprints.\n";
+  pcl_ext::io::PointFile point_file;
+  if (!pcl_ext::apps::loadInput (input, point_file, *scan))
+    return 1;
+  if (roof_outline) {
+    std::vector<std::uint32_t> values;
+    std::string error;
+    if (!pcl_ext::io::getLabelField (point_file.cloud, label_field, values, &error)) {
+      std::cerr << "Error: " << input << ": " << error << " (-label_field).\n";
       return 1;
     }
-    const pcl::PCLPointCloud2& file = point_file.cloud;
-    if (roof_outline) {
-      std::vector<std::uint32_t> values;
-      std::string error;
-      if (!pcl_ext::io::getLabelField (file, label_field, values, &error)) {
-        std::cerr << "Error: " << input << ": " << error << " (-label_field).\n";
-        return 1;
-      }
-      for (const auto v : values)
-        labels->push_back (pcl::Label{v});
-    }
+    for (const auto v : values)
+      labels->push_back (pcl::Label{v});
   }
   std::vector<pcl_ext::io::Footprint> footprints;
   try {
@@ -295,6 +394,11 @@ main (int argc, char** argv)
   }
   pcl_ext::MapPlaneParameters map_parameters;
   map_parameters.floor_height = floor_height;
+  // A georeferenced scan is loaded relative to its origin: the footprints are shifted
+  // by the same origin, so that both are in one local frame.
+  map_parameters.origin = point_file.origin;
+  if (!footprintNearScan (footprints, point_file.origin, *scan))
+    return 1;
   if (!reg.setFootprints (footprints, map_parameters))
     return 1;
 
@@ -320,12 +424,19 @@ main (int argc, char** argv)
   reg.setSimilarity (similarity);
   reg.setTolerances (angle, distance);
   reg.setOrientedNormals (oriented);
+  reg.setEstimateVertical (!levelled);
+  {
+    pcl_ext::PlaneMatchingParameters p = reg.getMatchingParameters();
+    p.walls_first = initial == "walls";
+    reg.setMatchingParameters (p);
+  }
   reg.setNumberOfThreads (threads);
   reg.setInputSource (scan);
 
   // The guess is in map coordinates; the registration works in the map's local frame.
   Eigen::Matrix4d local_guess = guess;
-  local_guess.topRightCorner<3, 1>() -= reg.getLocalOrigin();
+  local_guess.topRightCorner<3, 1>() +=
+      guess.topLeftCorner<3, 3>() * point_file.origin - reg.getLocalOrigin();
   if (!guess_path.empty() || std::isfinite (max_rotation) ||
       std::isfinite (max_translation))
     std::printf ("Search within %g deg and %g m of the guess%s\n",
@@ -364,35 +475,90 @@ main (int argc, char** argv)
     std::cerr << "Error: the registration did not converge (see the messages above).\n";
     return 1;
   }
-  const Eigen::Matrix4d& t = reg.getFinalTransformationDouble();
+  // Scan file to map coordinates: file - scan origin, the local transform, + map
+  // origin.
+  auto toMap = [&] (const Eigen::Matrix4d& local) {
+    Eigen::Matrix4d to_map = local;
+    to_map.topRightCorner<3, 1>() +=
+        reg.getLocalOrigin() - local.topLeftCorner<3, 3>() * point_file.origin;
+    return to_map;
+  };
+  // A symmetric footprint: every pose supported as well as the best, ranked; the guess
+  // picks among them when given.
+  const auto& candidates = result.candidates;
+  std::size_t chosen = 0;
+  if (!guess_path.empty())
+    for (std::size_t c = 1; c < candidates.size(); ++c)
+      if (poseDistance (candidates[c].estimate.transformation, local_guess) <
+          poseDistance (candidates[chosen].estimate.transformation, local_guess))
+        chosen = c;
+  if (candidates.size() > 1) {
+    std::cerr << "Warning: " << candidates.size()
+              << " poses fit the footprint equally well (a symmetric footprint); "
+              << (guess_path.empty() ? "the first is written"
+                                     : "the one nearest the guess is written")
+              << (transform_out.empty() ? "" : ", all of them next to -transform_out")
+              << ".\n";
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      const Eigen::Matrix4d m = toMap (candidates[c].estimate.transformation);
+      std::printf ("Candidate %zu (%zu pairs)%s:\n",
+                   c + 1,
+                   candidates[c].matches.size(),
+                   c == chosen ? ", chosen" : "");
+      for (int r = 0; r < 3; ++r)
+        std::printf (
+            "  %12.6f %12.6f %12.6f %14.4f\n", m (r, 0), m (r, 1), m (r, 2), m (r, 3));
+      if (!transform_out.empty() &&
+          !writeTransform (candidatePath (transform_out, c + 1), m))
+        return 1;
+    }
+  }
+  const pcl_ext::PlaneMatchingCandidate fallback{0, result.matches, result.estimate};
+  const pcl_ext::PlaneMatchingCandidate& pick =
+      candidates.empty() ? fallback : candidates[chosen];
+  const Eigen::Matrix4d t = pick.estimate.transformation;
   std::printf ("Transformation (scan to map - origin):\n");
   for (int r = 0; r < 4; ++r)
     std::printf (
         "  %12.6f %12.6f %12.6f %12.4f\n", t (r, 0), t (r, 1), t (r, 2), t (r, 3));
   std::printf (
       "Match set (%zu pairs): scan plane -> map plane [angle deg, distance m]\n",
-      result.matches.size());
-  for (std::size_t i = 0; i < result.matches.size(); ++i) {
-    const auto& pair = result.matches[i];
+      pick.matches.size());
+  const auto& residuals = pick.estimate;
+  for (std::size_t i = 0; i < pick.matches.size(); ++i) {
+    const auto& pair = pick.matches[i];
     const auto& map = reg.getMapPlanes()[pair.map];
+    const bool known =
+        i < residuals.angle_residuals.size() && i < residuals.distance_residuals.size();
     std::printf ("  %3d (%6zu pts) -> %3d (%s) [%.2f, %.3f]\n",
                  pair.scan,
                  reg.getSourcePlanes()[pair.scan].size,
                  pair.map,
                  map.isFloor() ? "floor"
                                : ("wall, edge " + std::to_string (map.edge)).c_str(),
-                 result.estimate.angle_residuals[i] * 180.0 / M_PI,
-                 result.estimate.distance_residuals[i]);
+                 known ? residuals.angle_residuals[i] * 180.0 / M_PI : NAN,
+                 known ? residuals.distance_residuals[i] : NAN);
   }
-  const pcl_ext::PlaneDistanceMetrics d = planeDistances (reg, *scan);
+  const pcl_ext::PlaneDistanceMetrics d = planeDistances (reg, pick, *scan);
   std::printf ("Plane distances (Tables 1-2): mean %.3f m, max %.3f m, rms %.3f m over "
                "%zu points\n",
                d.mean,
                d.max,
                d.rms,
                d.points);
-  if (!pcl_ext::io::saveCloud (output, registered))
+  // Scan file to map coordinates: file - scan origin, the local transform, + map
+  // origin.
+  Eigen::Matrix4d to_map = t;
+  to_map.topRightCorner<3, 1>() +=
+      reg.getLocalOrigin() - t.topLeftCorner<3, 3>() * point_file.origin;
+  if (!transform_out.empty() && !writeTransform (transform_out, to_map))
     return 1;
+  transformXyz (t, point_file.cloud);
+  if (!pcl_ext::io::savePointFile (
+          output, point_file.cloud, reg.getLocalOrigin(), &point_file)) {
+    std::cerr << "Error: could not write " << output << ".\n";
+    return 1;
+  }
 #ifdef PCL_EXT_HAVE_VISUALIZATION
   pcl_ext::visualization::RenderOptions options;
   options.view_direction = Eigen::Vector3d (0, 0, -1);

@@ -74,6 +74,10 @@ checkPlaneMatchingParameters (const PlaneMatchingParameters& p)
   else if (!(p.max_translation_from_guess > 0.0))
     bad =
         "the translation bound around the guess must be positive (infinity: no bound)";
+  else if (p.ambiguity_pairs < 0)
+    bad = "the ambiguity tolerance must be >= 0 pairs";
+  else if (!(p.ambiguity_support >= 0.0 && p.ambiguity_support <= 1.0))
+    bad = "the ambiguity support ratio must be in [0, 1]";
   else if (p.min_matches < 0)
     bad = "the minimum number of matches must be >= 0";
   else if (!(p.min_conditioning > 0.0 && p.min_conditioning < 1.0))
@@ -134,7 +138,10 @@ matchPlanes (const std::vector<Plane>& scan,
   }
 
   Candidate best;
+  std::vector<Candidate> alternatives;
   for (auto& w : workers) {
+    alternatives.insert (
+        alternatives.end(), w.alternatives.begin(), w.alternatives.end());
     stats.orientation += w.stats.orientation;
     stats.degenerate += w.stats.degenerate;
     stats.residual += w.stats.residual;
@@ -156,6 +163,23 @@ matchPlanes (const std::vector<Plane>& scan,
   }
   result.matches = best.matches;
   result.estimate = best.estimate;
+  // Poses the map cannot tell apart: the best of each distinct pose, best first.
+  std::sort (alternatives.begin(), alternatives.end(), plane_matching::better);
+  result.candidates.push_back ({best.support, best.matches, best.estimate});
+  std::vector<Eigen::Matrix4d> poses{best.estimate.transformation};
+  for (const auto& a : alternatives) {
+    if (!a.valid ||
+        a.matches.size() + static_cast<std::size_t> (parameters.ambiguity_pairs) <
+            best.matches.size())
+      continue;
+    bool seen = false;
+    for (const auto& pose : poses)
+      seen = seen || plane_matching::samePose (pose, a.estimate.transformation);
+    if (seen)
+      continue;
+    poses.push_back (a.estimate.transformation);
+    result.candidates.push_back ({a.support, a.matches, a.estimate});
+  }
   if (best.matches.size() < needed) {
     PCL_ERROR (
         "[pcl_ext::matchPlanes] The best match set has %zu pairs, fewer than the %zu "

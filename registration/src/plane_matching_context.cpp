@@ -119,8 +119,38 @@ boundAroundGuess (Context& c, const Eigen::Matrix4d& guess)
   return map_within_reach;
 }
 
-// The initial planes: the largest, among the near-vertical/horizontal ones under
-// constraint 1.
+// Walls first (beyond the paper, PlaneMatchingParameters::walls_first): the largest
+// horizontal plane (ground, floor: the one that fixes the height), then the vertical
+// planes longest in plan (those a footprint edge can match: interior walls and clutter
+// are short), then the other planes largest first.
+std::vector<int>
+wallsFirst (const std::vector<Plane>& planes, double tolerance_deg)
+{
+  const std::vector<int> by_size = bySize (planes);
+  std::vector<int> order, walls, rest;
+  for (const int i : by_size) {
+    const int cls = classify (planes[i].normal, tolerance_deg);
+    if (cls == Horizontal && order.empty())
+      order.push_back (i);
+    else if (cls == Vertical)
+      walls.push_back (i);
+    else
+      rest.push_back (i);
+  }
+  auto plan_length = [&] (int i) {
+    const auto& e = planes[i].extent;
+    return e.isEmpty() ? 0.0 : Eigen::Vector2d (e.sizes().x(), e.sizes().y()).norm();
+  };
+  std::stable_sort (walls.begin(), walls.end(), [&] (int a, int b) {
+    return plan_length (a) > plan_length (b);
+  });
+  order.insert (order.end(), walls.begin(), walls.end());
+  order.insert (order.end(), rest.begin(), rest.end());
+  return order;
+}
+
+// The initial planes: the largest (or walls first), among the near-vertical/horizontal
+// ones under constraint 1.
 void
 chooseInitialPlanes (const std::vector<Plane>& planes,
                      const PlaneMatchingParameters& p,
@@ -129,7 +159,9 @@ chooseInitialPlanes (const std::vector<Plane>& planes,
                      std::vector<int>& classes,
                      const std::vector<char>* allowed)
 {
-  for (const int i : bySize (planes)) {
+  const std::vector<int> order =
+      p.walls_first ? wallsFirst (planes, p.vertical_tolerance_deg) : bySize (planes);
+  for (const int i : order) {
     const int cls = classify (planes[i].normal, p.vertical_tolerance_deg);
     if (p.vertical_constraint && cls == Other)
       continue;

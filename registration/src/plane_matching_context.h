@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -53,6 +54,18 @@ extentsOverlap (const Eigen::AlignedBox3d& a,
          (b.min().array() - m.array() <= a.max().array()).all();
 }
 
+/** \brief Whether two transforms are one pose: within 1 degree and 1 m (a candidate
+ * pose of an ambiguous map is farther from the others). */
+inline bool
+samePose (const Eigen::Matrix4d& a, const Eigen::Matrix4d& b)
+{
+  const Eigen::Matrix3d r =
+      a.topLeftCorner<3, 3>().transpose() * b.topLeftCorner<3, 3>();
+  const double cosine = std::min (1.0, std::max (-1.0, 0.5 * (r.trace() - 1.0)));
+  return std::acos (cosine) < 3.14159265358979323846 / 180.0 &&
+         (a.topRightCorner<3, 1>() - b.topRightCorner<3, 1>()).norm() < 1.0;
+}
+
 /** \brief A match set of section 3.3: one initial combination, extended. */
 struct Candidate {
   bool valid = false;
@@ -63,8 +76,9 @@ struct Candidate {
 };
 
 /** \brief The best-first total order of match sets: valid first, then more matches,
- * then less residual norm, then earlier in the enumeration (so the thread count does
- * not matter). */
+ * then more support (the inliers of the matched scan planes: the ground rather than a
+ * ceiling seen through the windows for the floor), then less residual norm, then
+ * earlier in the enumeration (so the thread count does not matter). */
 inline bool
 better (const Candidate& a, const Candidate& b)
 {
@@ -72,6 +86,8 @@ better (const Candidate& a, const Candidate& b)
     return a.valid && !b.valid;
   if (a.matches.size() != b.matches.size())
     return a.matches.size() > b.matches.size();
+  if (a.support != b.support)
+    return a.support > b.support;
   if (a.estimate.residual_norm != b.estimate.residual_norm)
     return a.estimate.residual_norm < b.estimate.residual_norm;
   return a.order < b.order;

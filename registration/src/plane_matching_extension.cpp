@@ -102,6 +102,8 @@ Worker::extend (std::uint64_t order)
   candidate.order = order;
   candidate.estimate = current;
   candidate.matches = pairs_;
+  for (const auto& pair : pairs_)
+    candidate.support += c_.scan[pair.scan].size;
   if (better (candidate, best)) {
     // Per-pair residuals for the report: only for a new best.
     scan_ptr_.clear();
@@ -115,10 +117,25 @@ Worker::extend (std::uint64_t order)
     estimate (
         signs_.data(), static_cast<int> (pairs_.size()), candidate.estimate, true);
   }
-  for (const auto& pair : pairs_)
-    candidate.support += c_.scan[pair.scan].size;
+  keepAlternative (candidate);
   if (better (candidate, best))
     best = std::move (candidate);
+}
+
+void
+Worker::keepAlternative (const Candidate& candidate)
+{
+  // Only match sets that can be within ambiguity_pairs of the best are kept.
+  const std::size_t most = std::max (best.matches.size(), candidate.matches.size());
+  if (candidate.matches.size() + static_cast<std::size_t> (c_.p.ambiguity_pairs) < most)
+    return;
+  for (auto& other : alternatives)
+    if (samePose (other.estimate.transformation, candidate.estimate.transformation)) {
+      if (better (candidate, other))
+        other = candidate;
+      return;
+    }
+  alternatives.push_back (candidate);
 }
 } // namespace plane_matching
 } // namespace pcl_ext

@@ -34,6 +34,8 @@ public:
 
   PlaneMatchingStatistics stats;
   Candidate best;
+  /** \brief The best match set of every distinct pose seen (see keepAlternative). */
+  std::vector<Candidate> alternatives;
 
 private:
   double
@@ -93,6 +95,10 @@ private:
   /** \brief Extension of an accepted hypothesis (plane_matching_extension.cpp). */
   void
   extend (std::uint64_t order);
+  /** \brief Keeps \a candidate among the alternatives unless one of the same pose is
+   * better (plane_matching_extension.cpp). */
+  void
+  keepAlternative (const Candidate& candidate);
 
   struct Subset {
     int index[4];

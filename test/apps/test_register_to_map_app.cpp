@@ -7,7 +7,10 @@
 
 #include "../registration/roof_outline_scene.h"
 
+#include <pcl_ext/io/point_file.h>
 #include <pcl_ext/io/transform_file.h>
+
+#include <pcl/conversions.h>
 
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
@@ -49,39 +52,33 @@ protected:
       out << t (r, 0) << " " << t (r, 1) << " " << t (r, 2) << " " << t (r, 3) << "\n";
   }
 
-  // The local origin the tool printed.
-  Eigen::Vector3d
-  printedOrigin () const
-  {
-    Eigen::Vector3d origin = Eigen::Vector3d::Constant (std::nan (""));
-    const auto at = output_.find ("local origin (");
-    if (at != std::string::npos)
-      std::sscanf (output_.c_str() + at,
-                   "local origin (%lf, %lf, %lf)",
-                   &origin.x(),
-                   &origin.y(),
-                   &origin.z());
-    return origin;
-  }
-
-  // Largest distance between a registered point (plus the origin) and where \a truth
-  // puts the input point.
+  // Largest distance between a registered point (in map coordinates: the file's
+  // coordinates, its origin added back) and where \a truth puts the input point.
   double
   largestError (const std::string& input,
                 const std::string& registered,
                 const Eigen::Matrix4d& truth) const
   {
+    pcl_ext::io::PointFile in_file, out_file;
     pcl::PointCloud<pcl::PointXYZ> in, out;
-    if (pcl::io::loadPCDFile (path (input), in) != 0 ||
-        pcl::io::loadPCDFile (path (registered), out) != 0 || in.size() != out.size())
+    try {
+      pcl_ext::io::loadPointFile (path (input), in_file);
+      pcl_ext::io::loadPointFile (path (registered), out_file);
+    }
+    catch (const std::exception&) {
       return std::numeric_limits<double>::infinity();
-    const Eigen::Vector3d origin = printedOrigin();
+    }
+    pcl::fromPCLPointCloud2 (in_file.cloud, in);
+    pcl::fromPCLPointCloud2 (out_file.cloud, out);
+    if (in.size() != out.size())
+      return std::numeric_limits<double>::infinity();
     double worst = 0.0;
     for (std::size_t i = 0; i < in.size(); ++i) {
-      const Eigen::Vector3d expected =
-          (truth * in[i].getVector4fMap().cast<double>()).head<3>();
+      const Eigen::Vector3d x = in[i].getVector3fMap().cast<double>() + in_file.origin;
+      const Eigen::Vector3d expected = (truth * x.homogeneous()).head<3>();
       worst = std::max (
-          worst, (out[i].getVector3fMap().cast<double>() + origin - expected).norm());
+          worst,
+          (out[i].getVector3fMap().cast<double>() + out_file.origin - expected).norm());
     }
     return worst;
   }
@@ -135,6 +132,38 @@ TEST_F (RegisterToMapApp, GuessWithBoundsFindsTheSamePoseAsTheGlobalSearch)
       << output_;
   EXPECT_NE (output_.find ("did not converge"), std::string::npos) << output_;
   EXPECT_FALSE (exists ("far.pcd"));
+}
+
+TEST_F (RegisterToMapApp, TiltedGeoreferencedScanWithDefaults)
+{
+  // The building scanned with 2 and 1 degrees of tilt, its cloud and its map both at
+  // georeferenced coordinates (1e5 m, a float step of 3 cm; the map's floor at the
+  // default height, 0): registered with the defaults, the output cloud and
+  // -transform_out in map coordinates, every input field kept.
+  const std::string command =
+      std::string (PCL_EXT_GENERATE_SCENE_EXE) + " building '" + path ("g.pcd") +
+      "' -points 30000 -seed 3 -threads 1 -pose 30,2,1,120000,487000,5 -offset "
+      "120010,487020,0 > /dev/null 2>&1";
+  ASSERT_EQ (std::system (command.c_str()), 0);
+  Eigen::Matrix4d truth;
+  pcl_ext::io::loadTransform (path ("g.transform.txt"), truth);
+  ASSERT_EQ (run (path ("g.pcd") + " " + path ("g.footprint.wkt") + " " +
+                  path ("g_out.pcd") + " -threads 1 -transform_out " + path ("T.txt")),
+             0)
+      << output_;
+  EXPECT_LT (largestError ("g.pcd", "g_out.pcd", truth), 0.1) << output_;
+  Eigen::Matrix4d written;
+  pcl_ext::io::loadTransform (path ("T.txt"), written);
+  const Eigen::Matrix3d r =
+      written.topLeftCorner<3, 3>().transpose() * truth.topLeftCorner<3, 3>();
+  EXPECT_LT (std::acos (std::min (1.0, 0.5 * (r.trace() - 1.0))) * 180.0 / M_PI, 0.2);
+  const Eigen::Vector3d centre (120030.0, 487035.0, 8.0); // in the footprint
+  const Eigen::Vector3d x = (truth.inverse() * centre.homogeneous()).head<3>();
+  EXPECT_LT (((written * x.homogeneous()).head<3>() - centre).norm(), 0.1);
+  pcl_ext::io::PointFile out;
+  pcl_ext::io::loadPointFile (path ("g_out.pcd"), out);
+  for (const char* field : {"segment", "object", "class", "label"})
+    EXPECT_GE (pcl::getFieldIndex (out.cloud, field), 0) << field;
 }
 
 TEST_F (RegisterToMapApp, RoofOutlineWallsRegisterAClassifiedAirborneCloud)

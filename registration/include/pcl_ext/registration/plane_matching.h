@@ -16,15 +16,20 @@ namespace pcl_ext {
  */
 struct PlaneMatchingParameters {
   int k = 4; ///< initial pairs per combination, >= 3 (paper: k = 4, Table 3 also 3)
-  int scan_initial =
-      10;               ///< m: largest scan planes used to initiate, >= k (paper: 7-12)
-  int map_initial = 10; ///< n: largest map planes used to initiate, >= k (paper: 7-12)
+  int scan_initial = 10; ///< m: scan planes used to initiate, >= k (paper: 7-12)
+  int map_initial = 10;  ///< n: map planes used to initiate, >= k (paper: 7-12)
   bool vertical_constraint =
       true; ///< constraint 1: only near-vertical/horizontal planes
   bool orientation_constraint =
       true; ///< constraint 2: relative orientation of the normals
   bool residual_constraint =
       true; ///< constraint 3: transformation residual of the k pairs
+  /** \brief Beyond the paper: the initial planes are chosen for matching, not by size:
+   * the largest horizontal plane (it fixes the height), then the vertical planes
+   * longest in plan (the walls a footprint edge can match), then the others largest
+   * first. false: the largest planes (the paper's choice), where ground, roof and
+   * superfluous planes crowd out the walls at small m and n. */
+  bool walls_first = true;
   double vertical_tolerance_deg = 10.0; ///< constraint 1 tolerance, (0, 45) degrees
   double orientation_tolerance_deg =
       5.0; ///< constraint 2: angle difference, (0, 90) degrees
@@ -52,6 +57,15 @@ struct PlaneMatchingParameters {
   double max_rotation_from_guess_deg = std::numeric_limits<double>::infinity();
   double max_translation_from_guess =
       std::numeric_limits<double>::infinity(); ///< metres
+  /** \brief Beyond the paper: a symmetric footprint has several equally good poses.
+   * Every match set of another pose (more than 1 degree or 1 m from those before it)
+   * with at most \a ambiguity_pairs fewer matches than the best and at least \a
+   * ambiguity_support times its support (the inliers of its matched scan planes) is
+   * reported in PlaneMatchingResult::candidates; >= 0, default 0 (as many matches as
+   * the best), and [0, 1], default 0.5 (a ceiling seen through the windows in the
+   * floor's place has a fraction of the ground's support). */
+  int ambiguity_pairs = 0;
+  double ambiguity_support = 0.5;
   int min_matches = 0;            ///< least final matches to converge; 0 = k
   double min_conditioning = 1e-2; ///< degeneracy threshold of the normals, (0, 1)
   PlaneTransformationModel model = PlaneTransformationModel::Rigid;
@@ -74,17 +88,29 @@ struct PlaneMatchingStatistics {
   double seconds = 0.0;          ///< wall time of the search and estimation
 };
 
+/** \brief A match set and its transform. */
+struct PlaneMatchingCandidate {
+  std::size_t support = 0; ///< inliers of the matched scan planes
+  std::vector<PlanePair> matches;
+  PlaneTransformationResult estimate;
+};
+
 /** \brief Result of matchPlanes. */
 struct PlaneMatchingResult {
   bool converged = false;
   std::vector<PlanePair> matches;     ///< the best match set, initial pairs first
   PlaneTransformationResult estimate; ///< transform and residuals of the best match set
+  /** \brief The best match set first, then those of other poses supported nearly as
+   * well (PlaneMatchingParameters::ambiguity_pairs), best first: more than one means
+   * the map cannot tell these poses apart (a symmetric footprint). */
+  std::vector<PlaneMatchingCandidate> candidates;
   PlaneMatchingStatistics statistics;
 };
 
 /** \brief Plane matching by initiate and extend (Khoshelham & Gorte 2009, section 3.3).
  *
- * The m largest scan planes (by support) and the n largest map planes (by extent) form
+ * The first m scan planes and n map planes (walls first, see \a walls_first; or the
+ * largest, by support for the scan and by extent for the map, as the paper) form
  * all combinations of k pairs (eq. 13), pruned by the enabled constraints:
  * 1. near-vertical planes pair with vertical ones and near-horizontal with horizontal
  * ones, others are left out (|n_z| against \a vertical_tolerance_deg). The constraint
@@ -110,11 +136,12 @@ struct PlaneMatchingResult {
  * Each surviving combination is extended: every other scan plane (all of them, largest
  * first) is transformed to the map and paired with the most similar unused map plane;
  * the pair is kept if the transform re-estimated with it keeps every residual within
- * the tolerances. Passes repeat until nothing is added. Best = most matches, then least
- * residual norm, then first in enumeration order (so the result does not depend on the
- * thread count). With one floor in the map, the ground and a ceiling seen through the
- * windows give match sets of equal size: oriented normals (scanner side: the ceiling
- * faces down) tell them apart.
+ * the tolerances. Passes repeat until nothing is added. Best = most matches, then most
+ * support (inliers of the matched scan planes), then least residual norm, then first in
+ * enumeration order (so the result does not depend on the thread count). With one floor
+ * in the map, the ground and a ceiling seen through the windows give match sets of
+ * equal size: the support (the ground has far more points) tells them apart, as do
+ * oriented normals (the ceiling faces down).
  *
  * Bounds around a guess (beyond the paper, off by default): with \a
  * max_rotation_from_guess_deg or \a max_translation_from_guess finite, an estimate

@@ -268,6 +268,28 @@ public:
   {
     return parameters_.max_translation_from_guess;
   }
+  /** \brief Beyond the paper: estimate the scan's vertical direction from its planes
+   * (estimateUpDirection) and level the scan planes before the search, so that
+   * constraint 1 holds for a scan tilted by up to 20 degrees; default on. Registering
+   * to a map only (scan to scan, both clouds are taken as they are). The final
+   * transform includes the levelling. */
+  void
+  setEstimateVertical (bool on)
+  {
+    estimate_vertical_ = on;
+  }
+  bool
+  getEstimateVertical () const
+  {
+    return estimate_vertical_;
+  }
+  /** \brief The up direction found by the last align() in the scan frame ((0, 0, 1)
+   * when not estimated). */
+  const Eigen::Vector3d&
+  getSourceUp () const
+  {
+    return source_up_;
+  }
   /** \brief Threads of the search, 0 = all cores (default); the result does not depend
    * on it. */
   void
@@ -356,6 +378,8 @@ private:
       held_back_indices_; // indices out of range of the source, see setIndices
   Eigen::Matrix4d final_double_ = Eigen::Matrix4d::Identity();
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
+  bool estimate_vertical_ = true;
+  Eigen::Vector3d source_up_ = Eigen::Vector3d::UnitZ();
 };
 } // namespace pcl_ext
 

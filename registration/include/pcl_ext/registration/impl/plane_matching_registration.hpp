@@ -6,6 +6,7 @@
 #include <pcl_ext/common/indices.h>
 #include <pcl_ext/registration/impl/plane_extraction.hpp>
 #include <pcl_ext/registration/plane_matching_registration.h>
+#include <pcl_ext/registration/scan_levelling.h>
 
 #include <pcl/common/io.h>
 #include <pcl/common/point_tests.h>
@@ -273,11 +274,25 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (
     return;
   }
 
-  const std::vector<Plane> scan (source_planes_.begin(), source_planes_.end());
-  if (!matchPlanes (
-          scan, target_planes_, parameters_, result_, guess.template cast<double>()))
+  // A scan that is not levelled is levelled from its planes (map only: the map is).
+  source_up_ = Eigen::Vector3d::UnitZ();
+  std::vector<Plane> scan (source_planes_.begin(), source_planes_.end());
+  if (has_map_ && estimate_vertical_)
+    estimateUpDirection (scan, source_up_);
+  const Eigen::Matrix4d level = levellingTransform (source_up_);
+  for (auto& plane : scan)
+    plane = transformPlane (plane, level);
+  const Eigen::Matrix4d level_inverse = level.inverse();
+  if (!matchPlanes (scan,
+                    target_planes_,
+                    parameters_,
+                    result_,
+                    guess.template cast<double>() * level_inverse))
     return;
 
+  result_.estimate.transformation = result_.estimate.transformation * level;
+  for (auto& candidate : result_.candidates)
+    candidate.estimate.transformation = candidate.estimate.transformation * level;
   final_double_ = result_.estimate.transformation;
   final_transformation_ = transformation_ = final_double_.cast<float>();
   // pcl::Registration::align filled output with the indexed points.

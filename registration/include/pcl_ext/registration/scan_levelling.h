@@ -1,0 +1,43 @@
+/*
+ * pcl_ext: the vertical direction of a building scan from its planes, for scans that
+ * are not levelled (Khoshelham & Gorte 2009 assume a levelled scanner).
+ */
+#pragma once
+
+#include <pcl_ext/common/plane.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace pcl_ext {
+/** \brief The up direction of a scan from its planes: horizontal planes (ground,
+ * floors, roofs, ceilings) have it as normal and walls are perpendicular to it.
+ *
+ * Khoshelham & Gorte's constraint 1 (section 3.3) rests on a levelled scanner; a scan
+ * tilted by a few degrees (an unlevelled tripod, a mobile or hand-held scan) breaks it.
+ * Each plane normal within \a max_tilt_deg of the scan's z axis, and the common
+ * perpendicular of every two planes 30 degrees or more apart, is a hypothesis; a
+ * hypothesis is scored by the supporting points of the planes it makes horizontal or
+ * vertical within \a tolerance_deg. The best is refined: the up direction maximises
+ * sum_h w (n . u)^2 + sum_v w (1 - (n . u)^2) over its horizontal (h) and vertical (v)
+ * planes, w their sizes (the largest eigenvector of sum_h w n n^T + sum_v w (I - n
+ * n^T)), twice, re-classifying the planes in between. Without a horizontal plane, the
+ * walls' common perpendicular is the same eigenvector.
+ * \param[in] planes the scan planes (normals, sizes)
+ * \param[out] up unit up direction in the scan frame, z >= 0; (0, 0, 1) when false
+ * \param[in] max_tilt_deg largest tilt of the scan's z axis considered, (0, 90)
+ * \param[in] tolerance_deg how far from horizontal or vertical a plane may be to
+ * count, (0, 45)
+ * \return false (no PCL_ERROR: the caller keeps z) when no plane supports a direction
+ * or the walls do not span two horizontal directions without a horizontal plane */
+bool
+estimateUpDirection (const std::vector<Plane>& planes,
+                     Eigen::Vector3d& up,
+                     double max_tilt_deg = 20.0,
+                     double tolerance_deg = 2.0);
+
+/** \brief The smallest rotation taking \a up to (0, 0, 1), as a 4 x 4 transform. */
+Eigen::Matrix4d
+levellingTransform (const Eigen::Vector3d& up);
+} // namespace pcl_ext

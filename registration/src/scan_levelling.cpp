@@ -1,0 +1,113 @@
+/*
+ * pcl_ext: the vertical direction of a scan from its planes.
+ */
+#include <pcl_ext/registration/scan_levelling.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace pcl_ext {
+namespace {
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+// The planes \a u makes horizontal or vertical within the tolerance: their sizes
+// summed, and the normal matrix whose largest eigenvector refines u.
+double
+support (const std::vector<Plane>& planes,
+         const Eigen::Vector3d& u,
+         double tolerance,
+         Eigen::Matrix3d& a,
+         int& horizontal)
+{
+  a.setZero();
+  horizontal = 0;
+  double total = 0.0;
+  for (const auto& plane : planes) {
+    if (!plane.normal.allFinite())
+      continue;
+    const double w = static_cast<double> (std::max<std::size_t> (plane.size, 1));
+    const double c = std::abs (plane.normal.dot (u));
+    if (c >= std::cos (tolerance)) {
+      a += w * plane.normal * plane.normal.transpose();
+      ++horizontal;
+    }
+    else if (c <= std::sin (tolerance))
+      a += w * (Eigen::Matrix3d::Identity() - plane.normal * plane.normal.transpose());
+    else
+      continue;
+    total += w;
+  }
+  return total;
+}
+} // namespace
+
+bool
+estimateUpDirection (const std::vector<Plane>& planes,
+                     Eigen::Vector3d& up,
+                     double max_tilt_deg,
+                     double tolerance_deg)
+{
+  up = Eigen::Vector3d::UnitZ();
+  const double tolerance = tolerance_deg * kDegree;
+  double best = 0.0;
+  Eigen::Vector3d chosen = Eigen::Vector3d::UnitZ();
+  Eigen::Matrix3d a;
+  int horizontal = 0;
+  // Hypotheses: the near-vertical normals, and z itself (a levelled scan whose
+  // horizontal planes are all small).
+  std::vector<Eigen::Vector3d> hypotheses{Eigen::Vector3d::UnitZ()};
+  // Also the common perpendicular of every two walls of different directions (a scan
+  // without a horizontal plane).
+  const double cos_tilt = std::cos (max_tilt_deg * kDegree);
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    const Eigen::Vector3d& a = planes[i].normal;
+    if (!a.allFinite())
+      continue;
+    if (std::abs (a.z()) >= cos_tilt)
+      hypotheses.push_back (a.z() < 0.0 ? -a : a);
+    for (std::size_t j = i + 1; j < planes.size(); ++j) {
+      const Eigen::Vector3d c = a.cross (planes[j].normal);
+      if (c.allFinite() && c.norm() > 0.5 && std::abs (c.z()) >= cos_tilt * c.norm())
+        hypotheses.push_back ((c.z() < 0.0 ? -c : c).normalized());
+    }
+  }
+  for (const auto& u : hypotheses) {
+    const double s = support (planes, u, tolerance, a, horizontal);
+    if (s > best) {
+      best = s;
+      chosen = u;
+    }
+  }
+  if (!(best > 0.0))
+    return false;
+  for (int pass = 0; pass < 2; ++pass) {
+    support (planes, chosen, tolerance, a, horizontal);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (a);
+    const Eigen::Vector3d values = solver.eigenvalues();
+    // Without a horizontal plane, walls of one direction leave the up direction free
+    // about their normal: the two largest eigenvalues are equal.
+    if (horizontal == 0 && !(values (2) - values (1) > 1e-3 * values (2)))
+      return false;
+    Eigen::Vector3d u = solver.eigenvectors().col (2);
+    if (u.z() < 0.0)
+      u = -u;
+    if (std::acos (std::min (1.0, u.z())) > max_tilt_deg * kDegree)
+      return false;
+    chosen = u;
+  }
+  up = chosen.normalized();
+  return true;
+}
+
+Eigen::Matrix4d
+levellingTransform (const Eigen::Vector3d& up)
+{
+  Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+  t.topLeftCorner<3, 3>() =
+      Eigen::Quaterniond::FromTwoVectors (up.normalized(), Eigen::Vector3d::UnitZ())
+          .toRotationMatrix();
+  return t;
+}
+} // namespace pcl_ext
