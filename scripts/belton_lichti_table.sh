@@ -11,7 +11,9 @@
 # PCL: pcl::NormalEstimation + pcl::RegionGrowing through pcl_ext_compare_segmenters
 # (k = 30 for both, smoothness 3 degrees, curvature threshold 1.0, segments of 50 points).
 # The mOSD frames are read from $PCL_EXT_SHARED_DATA_DIR/mosd_object_segmentation when
-# the folder exists (truth field 'label').
+# the folder exists (truth field 'label'). PCL_FROM=<an earlier table of this script>
+# takes the PCL column from it instead of running PCL again (the scenes are the same for
+# a seed, and the PCL pipeline does not change with pcl_ext).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
@@ -23,6 +25,7 @@ families="${FAMILIES:-indoor building pipes street}"
 threads="${THREADS:-1}"
 mosd_dir="${PCL_EXT_SHARED_DATA_DIR:-}/mosd_object_segmentation"
 
+family="" name=""
 for app in generate_scene segment_variance evaluate compare_segmenters; do
   if [ ! -x "$apps/pcl_ext_$app" ]; then
     echo "Missing $apps/pcl_ext_$app: build it first" \
@@ -46,13 +49,19 @@ ours() {
 # Mean best IoU of pcl::RegionGrowing as the issue's baseline sets it.
 theirs() {
   local cloud="$1" truth_field="$2"
+  if [ -n "${PCL_FROM:-}" ]; then
+    awk -F' *[|] *' -v f="$family" -v s="$name" '$2 == f && $3 == s {print $5}' \
+      "$PCL_FROM"
+    return
+  fi
   "$apps/pcl_ext_compare_segmenters" "$cloud" -truth_field "$truth_field" \
     -methods region_growing -k 30 -angle 3 -curvature 1.0 -min_size 50 \
     -threads "$threads" | awk '$1 == "region_growing" {print $5}'
 }
 
 row() {
-  local family="$1" name="$2" cloud="$3" truth_field="$4" a b
+  family="$1" name="$2"
+  local cloud="$3" truth_field="$4" a b
   a="$(ours "$cloud" "$truth_field")"
   b="$(theirs "$cloud" "$truth_field")"
   awk -v f="$family" -v s="$name" -v a="$a" -v b="$b" \
