@@ -17,14 +17,14 @@ namespace apps {
  * additions), with the defaults of LocalVarianceClassification. */
 struct VarianceClassificationOptions {
   double curvature_threshold = 0.0;
-  double curvature_factor = 1.0;
+  double curvature_factor = 3.0;
   double variance_threshold = 1e-4;
   double confidence = 0.95;
   double noise_sigma = 0.0;
   double crease_angle = 0.0; ///< degrees
   bool boundary_band = false;
   double boundary_band_fraction = 1.0;
-  std::string preset;   ///< "paper": the paper's settings (setPaperSettings)
+  std::string preset;   ///< "paper" or "derived" (setPaperSettings, setDerivedSettings)
   bool verbose = false; ///< print the values estimated from the cloud and used
   bool noise_given = false;
   bool given_factor = false;
@@ -32,10 +32,13 @@ struct VarianceClassificationOptions {
   void
   addTo (apps::CommandLine& cl)
   {
-    cl.addOption ("preset",
-                  preset,
-                  "'paper': the paper's settings (no noise removed, no section 4 "
-                  "re-integration); the other options still override them");
+    cl.addOption (
+        "preset",
+        preset,
+        "'paper': the paper's settings (the defaults); 'derived': the noise "
+        "estimated from the cloud and removed, the curvature threshold at the "
+        "median curvature and, when segmenting, section 4's re-integration; the "
+        "other options still override them");
     cl.addSwitch ("v",
                   verbose,
                   "print the noise and spacing estimated from the cloud and the "
@@ -55,8 +58,8 @@ struct VarianceClassificationOptions {
     cl.addOption (
         "noise_sigma",
         noise_sigma,
-        "the noise sigma about the surfaces, removed from eq. 4-6 (not given: "
-        "estimated from the cloud; 0: the paper's)");
+        "the noise sigma about the surfaces, removed from eq. 4-6 (0: the paper's; "
+        "-preset derived estimates it from the cloud)");
     cl.addSwitch ("boundary_band",
                   boundary_band,
                   "also label boundary the surface points next to one eq. 6 finds");
@@ -77,8 +80,8 @@ struct VarianceClassificationOptions {
   {
     noise_given = cl.given ("noise_sigma");
     given_factor = cl.given ("curvature_factor");
-    if (!preset.empty() && preset != "paper") {
-      std::cerr << "Error: -preset must be 'paper'.\n";
+    if (!preset.empty() && preset != "paper" && preset != "derived") {
+      std::cerr << "Error: -preset must be 'paper' or 'derived'.\n";
       return false;
     }
     if (!(crease_angle >= 0.0 && crease_angle <= 90.0)) {
@@ -99,8 +102,10 @@ struct VarianceClassificationOptions {
   {
     if (preset == "paper")
       classifier.setPaperSettings();
+    else if (preset == "derived")
+      classifier.setDerivedSettings();
     classifier.setCurvatureThreshold (curvature_threshold);
-    if (preset != "paper" || given_factor)
+    if (preset != "derived" || given_factor)
       classifier.setCurvatureThresholdFactor (curvature_factor);
     classifier.setVarianceThreshold (variance_threshold);
     classifier.setConfidence (confidence);

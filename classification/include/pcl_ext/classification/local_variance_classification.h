@@ -41,12 +41,12 @@ namespace pcl_ext {
  * without a valid neighbourhood (non-finite, fewer than 3 neighbours, coincident or
  * collinear neighbours, fewer than 3 valid curvatures for eq. 5) are 0, "unknown".
  *
- * The noise about the surfaces is estimated from the cloud and removed from eq. 4-6 by
- * default (setNoiseEstimation, setNoiseStandardDeviation; see
- * pcl_ext::estimateNoiseAndSpacing); a cloud whose noise cannot be estimated gets the
- * paper's eq. 4-6 with a PCL_WARN. setPaperSettings() restores every value of the
- * paper. Options beyond the paper, off by default: boundary labels over a band of the
- * neighbourhood
+ * setDerivedSettings() estimates the noise about the surfaces from the cloud and
+ * removes it from eq. 4-6 (setNoiseEstimation; see pcl_ext::estimateNoiseAndSpacing; a
+ * cloud whose noise cannot be estimated gets the paper's eq. 4-6 with a PCL_WARN) and
+ * sets the curvature threshold at the median kappa; setPaperSettings() restores every
+ * value of the paper. Options beyond the paper, off by default: boundary labels over a
+ * band of the neighbourhood
  * (setBoundaryBand, setBoundaryBandFraction), edges required to bend the normals
  * (setCreaseAngle) and the k neighbours capped at a radius (setMaxRadius). Together
  * (noise removed, band fraction 0.6, crease angle 70 degrees) they meet the surface,
@@ -57,9 +57,9 @@ namespace pcl_ext {
  * pcl_ext::ChiSquaredBoundaryEstimation, setScaleByNeighbourhoodSize); with indices,
  * eq. 5 averages over the neighbours that are among the indices (only their kappa is
  * computed); the curvature threshold, which the paper leaves to the user, is derived
- * from the data by default (setCurvatureThreshold); the noise about the surfaces,
- * estimated from the cloud, is removed from the smallest eigenvalue before eq. 4-5
- * (setNoiseEstimation).
+ * from the data by default (setCurvatureThreshold); optionally the noise about the
+ * surfaces, given or estimated from the cloud, is removed from the smallest eigenvalue
+ * before eq. 4-5 (setNoiseStandardDeviation, setNoiseEstimation; off by default).
  *
  * \code
  * pcl_ext::LocalVarianceClassification<pcl::PointXYZ> lvc;
@@ -107,6 +107,18 @@ public:
     scale_by_size_ = true;
   }
 
+  /** \brief The paper's settings with what the method needs estimated from the cloud:
+   * the noise about the surfaces estimated and removed from eq. 4-6
+   * (setNoiseEstimation) and the curvature threshold at the median kappa (factor 1).
+   * docs/belton_lichti.md has what they give on scenes they were not chosen on. */
+  void
+  setDerivedSettings ()
+  {
+    setPaperSettings();
+    curvature_factor_ = 1.0;
+    estimate_noise_ = true;
+  }
+
   /** \brief Curvature threshold (the cheap test of section 2.2, on kappa of eq. 4).
    * Valid: >= 0. Default 0: derived from the data as factor * median(kappa)
    * (setCurvatureThresholdFactor). Most points of a TLS scene lie on smooth surfaces,
@@ -130,10 +142,10 @@ public:
   }
 
   /** \brief Multiple of the median kappa used when the curvature threshold is 0.
-   * Default 1 (the paper's preset, setPaperSettings: 3); valid: > 0. The median kappa
-   * is that of a smooth surface; on a range camera's frames (a few millimetres between
-   * points) the crease points of boxes lie below 3 times it, are never re-checked by
-   * eq. 5, and boxes and table grow into one segment. */
+   * Default 3; valid: > 0. On a range camera's frames (a few millimetres between
+   * points) the crease points of boxes lie below 3 times the median, are never
+   * re-checked by eq. 5, and boxes and table grow into one segment: setDerivedSettings
+   * uses 1. */
   void
   setCurvatureThresholdFactor (double factor)
   {
@@ -170,8 +182,8 @@ public:
   /** \brief Range noise standard deviation sigma of the scanner, in the cloud's units,
    * removed from the smallest eigenvalue before eq. 4-5: kappa = l0' / (l0' + l1 + l2)
    * with l0' = max(l0 - sigma^2, 0). Default: estimated from the cloud
-   * (setNoiseEstimation); setting a value turns the estimate off, and 0 gives the
-   * paper's eq. 4 exactly. Valid: finite, >= 0.
+   * (setNoiseEstimation), or 0 (the default): the paper's eq. 4 exactly. Setting a
+   * value turns the estimate off. Valid: finite, >= 0.
    *
    * Why: range noise adds up to sigma^2 (its component along the normal) to l0 of every
    * neighbourhood, so a plane has kappa ~= sigma^2 / (l1 + l2), which depends on the
@@ -214,7 +226,8 @@ public:
 
   /** \brief Estimate the noise sigma of setNoiseStandardDeviation from the cloud
    * (pcl_ext::estimateNoiseAndSpacing over a sample of up to 20,000 of the
-   * neighbourhoods). Default true; setNoiseStandardDeviation turns it off. When the
+   * neighbourhoods). Default false (setDerivedSettings turns it on);
+   * setNoiseStandardDeviation turns it off. When the
    * cloud does not let it estimate the noise, classify() says why (PCL_WARN) and
    * removes none: the paper's eq. 4-6. Noise above kMaxNoiseToSpacing point spacings
    * (a range camera's, where the spacing is about the noise) is not removed either: a
@@ -416,11 +429,11 @@ protected:
   widestNormalCosine (const Row& nn, const Eigen::Vector3f& own) const;
 
   double curvature_threshold_ = 0.0;
-  double curvature_factor_ = 1.0;
+  double curvature_factor_ = 3.0;
   double curvature_threshold_used_ = 0.0;
   double variance_threshold_ = 1e-4;
   double noise_sigma_ = 0.0;
-  bool estimate_noise_ = true;
+  bool estimate_noise_ = false;
   double noise_sigma_used_ = 0.0;
   NoiseEstimate noise_estimate_;
   bool boundary_band_ = false;
