@@ -6,8 +6,10 @@
 #   scripts/belton_lichti_table.sh                 # indoor, building, pipes, street at
 #                                                  # seeds 4-10, and the mOSD learn frames
 #   SEEDS="4 5" FAMILIES="indoor pipes" scripts/belton_lichti_table.sh
+#   SEGMENT_OPTIONS="-preset derived" scripts/belton_lichti_table.sh
 #
-# pcl_ext: `pcl_ext_segment_variance in out` with no option (scored by pcl_ext_evaluate).
+# pcl_ext: `pcl_ext_segment_variance in out $SEGMENT_OPTIONS` (none: the defaults), scored
+# by pcl_ext_evaluate.
 # PCL: pcl::NormalEstimation + pcl::RegionGrowing through pcl_ext_compare_segmenters
 # (k = 30 for both, smoothness 3 degrees, curvature threshold 1.0, segments of 50 points).
 # The mOSD frames are read from $PCL_EXT_SHARED_DATA_DIR/mosd_object_segmentation when
@@ -40,8 +42,9 @@ trap 'rm -rf "$work"' EXIT
 # Mean best IoU of pcl_ext_segment_variance with its defaults.
 ours() {
   local cloud="$1" truth_field="$2"
+  # shellcheck disable=SC2086 # the options are words
   "$apps/pcl_ext_segment_variance" "$cloud" "$work/out.pcd" -output_field result \
-    -threads "$threads" >"$work/ours.log" 2>&1
+    -threads "$threads" ${SEGMENT_OPTIONS:-} >"$work/ours.log" 2>&1
   "$apps/pcl_ext_evaluate" "$work/out.pcd" "$cloud" -segments -field result \
     -truth_field "$truth_field" -rows 0 | awk '/^ *mean best IoU/ {print $4}'
 }
