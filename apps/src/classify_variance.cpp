@@ -59,7 +59,7 @@ main (int argc, char** argv)
                 "green boundary); needs an X display");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (!options.valid())
+  if (!options.valid (cl))
     return 1;
   if (!result.checkOutput (output_path, {png_path}))
     return 1;
@@ -88,6 +88,7 @@ main (int argc, char** argv)
     return 1;
   }
   classify.done (labels.size());
+  options.report (classifier);
   std::size_t counts[pcl_ext::kNumPointClasses] = {};
   for (const auto& l : labels)
     ++counts[std::min<std::size_t> (l.label, pcl_ext::kNumPointClasses - 1)];

@@ -35,7 +35,7 @@ main (int argc, char** argv)
   int k = 50, min_size = 50;
   double max_distance = 0.0, max_distance_factor = 3.0, parallel_angle = 10.0;
   double max_radius = 0.0;
-  bool reintegrate = false;
+  bool reintegrate = false, keep_out = false;
   pcl_ext::apps::VarianceClassificationOptions options;
   unsigned int threads = 0;
   pcl_ext::apps::CommandLine cl ("pcl_ext_segment_variance",
@@ -74,7 +74,11 @@ main (int argc, char** argv)
       "reintegrate",
       reintegrate,
       "put edge and boundary points into the segment whose local plane they fit "
-      "(section 4) before writing the output");
+      "(section 4) before writing the output (on with -preset derived)");
+  cl.addSwitch ("no_reintegrate",
+                keep_out,
+                "with -preset derived: leave the edge and boundary points out of the "
+                "segments (section 3 alone)");
   cl.addOption (
       "parallel_angle",
       parallel_angle,
@@ -86,7 +90,7 @@ main (int argc, char** argv)
       "png", png_path, "also render the segments to this PNG; needs an X display");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (!options.valid())
+  if (!options.valid (cl))
     return 1;
   if (k < 3) {
     std::cerr << "Error: -k must be at least 3.\n";
@@ -112,6 +116,14 @@ main (int argc, char** argv)
     std::cerr << "Error: -parallel_angle must lie between 0 and 90 degrees.\n";
     return 1;
   }
+  if (reintegrate && keep_out) {
+    std::cerr << "Error: give -reintegrate or -no_reintegrate, not both.\n";
+    return 1;
+  }
+  // Section 4's re-integration with -preset derived: it keeps in the segments the
+  // crease and border bands the classification leaves out (docs/belton_lichti.md has
+  // the figures).
+  reintegrate = reintegrate || (!keep_out && options.preset == "derived");
   const bool intersect = !intersections_path.empty() || reintegrate;
   if (!result.checkOutput (output_path, {png_path, intersections_path}))
     return 1;
@@ -160,6 +172,7 @@ main (int argc, char** argv)
     return 1;
   }
   segment.done (cloud->size());
+  options.report (classifier);
   pcl::PointCloud<pcl::Label> labels;
   rg.getSegmentLabels (labels);
   std::size_t segmented = 0, classes[pcl_ext::kNumPointClasses] = {};

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 
 namespace pcl_ext {
 namespace apps {
@@ -23,10 +24,25 @@ struct VarianceClassificationOptions {
   double crease_angle = 0.0; ///< degrees
   bool boundary_band = false;
   double boundary_band_fraction = 1.0;
+  std::string preset;   ///< "paper" or "derived" (setPaperSettings, setDerivedSettings)
+  bool verbose = false; ///< print the values estimated from the cloud and used
+  bool noise_given = false;
+  bool given_factor = false;
 
   void
   addTo (apps::CommandLine& cl)
   {
+    cl.addOption (
+        "preset",
+        preset,
+        "'paper': the paper's settings (the defaults); 'derived': the noise "
+        "estimated from the cloud and removed, the curvature threshold at the "
+        "median curvature and, when segmenting, section 4's re-integration; the "
+        "other options still override them");
+    cl.addSwitch ("v",
+                  verbose,
+                  "print the noise and spacing estimated from the cloud and the "
+                  "thresholds used");
     cl.addOption ("curvature_threshold",
                   curvature_threshold,
                   "curvature (eq. 4) threshold; 0: factor * median curvature");
@@ -42,7 +58,8 @@ struct VarianceClassificationOptions {
     cl.addOption (
         "noise_sigma",
         noise_sigma,
-        "the scanner's range noise sigma, removed from eq. 4-6 (0: the paper's)");
+        "the noise sigma about the surfaces, removed from eq. 4-6 (0: the paper's; "
+        "-preset derived estimates it from the cloud)");
     cl.addSwitch ("boundary_band",
                   boundary_band,
                   "also label boundary the surface points next to one eq. 6 finds");
@@ -59,8 +76,14 @@ struct VarianceClassificationOptions {
   /** \brief The checks the classes cannot make for the app (units of the command line);
    * prints the error. The classes check the rest. */
   bool
-  valid () const
+  valid (const apps::CommandLine& cl)
   {
+    noise_given = cl.given ("noise_sigma");
+    given_factor = cl.given ("curvature_factor");
+    if (!preset.empty() && preset != "paper" && preset != "derived") {
+      std::cerr << "Error: -preset must be 'paper' or 'derived'.\n";
+      return false;
+    }
     if (!(crease_angle >= 0.0 && crease_angle <= 90.0)) {
       std::cerr << "Error: -crease_angle must lie between 0 and 90 degrees.\n";
       return false;
@@ -77,14 +100,49 @@ struct VarianceClassificationOptions {
   void
   applyTo (Classifier& classifier) const
   {
+    if (preset == "paper")
+      classifier.setPaperSettings();
+    else if (preset == "derived")
+      classifier.setDerivedSettings();
     classifier.setCurvatureThreshold (curvature_threshold);
-    classifier.setCurvatureThresholdFactor (curvature_factor);
+    if (preset != "derived" || given_factor)
+      classifier.setCurvatureThresholdFactor (curvature_factor);
     classifier.setVarianceThreshold (variance_threshold);
     classifier.setConfidence (confidence);
-    classifier.setNoiseStandardDeviation (noise_sigma);
+    if (noise_given)
+      classifier.setNoiseStandardDeviation (noise_sigma);
     classifier.setBoundaryBand (boundary_band);
     classifier.setBoundaryBandFraction (boundary_band_fraction);
     classifier.setCreaseAngle (crease_angle * M_PI / 180.0);
+  }
+
+  /** \brief With -v: what the last classify() estimated from the cloud and used. */
+  template <typename Classifier>
+  void
+  report (const Classifier& classifier) const
+  {
+    if (!verbose)
+      return;
+    const auto precision = std::cout.precision (4);
+    const auto& e = classifier.getNoiseEstimate();
+    if (e.valid)
+      std::cout << "Estimated from the cloud: noise sigma " << e.sigma
+                << ", point spacing " << e.spacing << " (from " << e.used
+                << " of the flattest neighbourhoods, median curvature "
+                << e.flat_curvature << ")"
+                << (classifier.getNoiseStandardDeviationUsed() == 0.0 && e.sigma > 0.0
+                        ? "; noise above 0.2 spacings: not removed"
+                        : "")
+                << "\n";
+    else if (classifier.getNoiseEstimation())
+      std::cout << "The noise could not be estimated (" << e.reason
+                << "): none removed, the paper's eq. 4-6\n";
+    std::cout << "Used: noise sigma " << classifier.getNoiseStandardDeviationUsed()
+              << (noise_given ? " (given)" : "") << ", curvature threshold "
+              << classifier.getCurvatureThresholdUsed() << ", variance threshold "
+              << classifier.getVarianceThreshold() << ", confidence "
+              << classifier.getConfidence() << "\n";
+    std::cout.precision (precision);
   }
 };
 } // namespace apps

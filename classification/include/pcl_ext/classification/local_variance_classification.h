@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <pcl_ext/common/noise_estimation.h>
 #include <pcl_ext/search/neighbourhood_options.h>
 #include <pcl_ext/point_types.h>
 
@@ -40,8 +41,12 @@ namespace pcl_ext {
  * without a valid neighbourhood (non-finite, fewer than 3 neighbours, coincident or
  * collinear neighbours, fewer than 3 valid curvatures for eq. 5) are 0, "unknown".
  *
- * Options beyond the paper, off by default: the scanner's range noise removed from eq.
- * 4-6 (setNoiseStandardDeviation), boundary labels over a band of the neighbourhood
+ * setDerivedSettings() estimates the noise about the surfaces from the cloud and
+ * removes it from eq. 4-6 (setNoiseEstimation; see pcl_ext::estimateNoiseAndSpacing; a
+ * cloud whose noise cannot be estimated gets the paper's eq. 4-6 with a PCL_WARN) and
+ * sets the curvature threshold at the median kappa; setPaperSettings() restores every
+ * value of the paper. Options beyond the paper, off by default: boundary labels over a
+ * band of the neighbourhood
  * (setBoundaryBand, setBoundaryBandFraction), edges required to bend the normals
  * (setCreaseAngle) and the k neighbours capped at a radius (setMaxRadius). Together
  * (noise removed, band fraction 0.6, crease angle 70 degrees) they meet the surface,
@@ -52,9 +57,9 @@ namespace pcl_ext {
  * pcl_ext::ChiSquaredBoundaryEstimation, setScaleByNeighbourhoodSize); with indices,
  * eq. 5 averages over the neighbours that are among the indices (only their kappa is
  * computed); the curvature threshold, which the paper leaves to the user, is derived
- * from the data by default (setCurvatureThreshold); optionally the scanner's range
- * noise is removed from the smallest eigenvalue before eq. 4-5
- * (setNoiseStandardDeviation, off by default).
+ * from the data by default (setCurvatureThreshold); optionally the noise about the
+ * surfaces, given or estimated from the cloud, is removed from the smallest eigenvalue
+ * before eq. 4-5 (setNoiseStandardDeviation, setNoiseEstimation; off by default).
  *
  * \code
  * pcl_ext::LocalVarianceClassification<pcl::PointXYZ> lvc;
@@ -84,6 +89,36 @@ public:
 
   LocalVarianceClassification() = default;
 
+  /** \brief The paper's settings: no noise removed (nor estimated), the variance
+   * tolerance 1e-4, the curvature threshold 3 times the median kappa, confidence 0.95,
+   * eq. 6 scaled by the neighbourhood size, no boundary band, no crease angle. */
+  void
+  setPaperSettings ()
+  {
+    curvature_threshold_ = 0.0;
+    curvature_factor_ = 3.0;
+    variance_threshold_ = 1e-4;
+    noise_sigma_ = 0.0;
+    estimate_noise_ = false;
+    boundary_band_ = false;
+    boundary_band_fraction_ = 1.0;
+    crease_angle_ = 0.0;
+    confidence_ = 0.95;
+    scale_by_size_ = true;
+  }
+
+  /** \brief The paper's settings with what the method needs estimated from the cloud:
+   * the noise about the surfaces estimated and removed from eq. 4-6
+   * (setNoiseEstimation) and the curvature threshold at the median kappa (factor 1).
+   * docs/belton_lichti.md has what they give on scenes they were not chosen on. */
+  void
+  setDerivedSettings ()
+  {
+    setPaperSettings();
+    curvature_factor_ = 1.0;
+    estimate_noise_ = true;
+  }
+
   /** \brief Curvature threshold (the cheap test of section 2.2, on kappa of eq. 4).
    * Valid: >= 0. Default 0: derived from the data as factor * median(kappa)
    * (setCurvatureThresholdFactor). Most points of a TLS scene lie on smooth surfaces,
@@ -107,7 +142,10 @@ public:
   }
 
   /** \brief Multiple of the median kappa used when the curvature threshold is 0.
-   * Default 3; valid: > 0. */
+   * Default 3; valid: > 0. On a range camera's frames (a few millimetres between
+   * points) the crease points of boxes lie below 3 times the median, are never
+   * re-checked by eq. 5, and boxes and table grow into one segment: setDerivedSettings
+   * uses 1. */
   void
   setCurvatureThresholdFactor (double factor)
   {
@@ -153,8 +191,9 @@ public:
 
   /** \brief Range noise standard deviation sigma of the scanner, in the cloud's units,
    * removed from the smallest eigenvalue before eq. 4-5: kappa = l0' / (l0' + l1 + l2)
-   * with l0' = max(l0 - sigma^2, 0). Default 0: the paper's eq. 4 exactly. Valid:
-   * finite, >= 0.
+   * with l0' = max(l0 - sigma^2, 0). Default: estimated from the cloud
+   * (setNoiseEstimation), or 0 (the default): the paper's eq. 4 exactly. Setting a
+   * value turns the estimate off. Valid: finite, >= 0.
    *
    * Why: range noise adds up to sigma^2 (its component along the normal) to l0 of every
    * neighbourhood, so a plane has kappa ~= sigma^2 / (l1 + l2), which depends on the
@@ -182,12 +221,54 @@ public:
   setNoiseStandardDeviation (double sigma)
   {
     noise_sigma_ = sigma;
+    estimate_noise_ = false;
   }
 
   double
   getNoiseStandardDeviation () const
   {
     return noise_sigma_;
+  }
+
+  /** \brief Noise above this many point spacings is estimated but not removed
+   * (setNoiseEstimation). */
+  static constexpr double kMaxNoiseToSpacing = 0.2;
+
+  /** \brief Estimate the noise sigma of setNoiseStandardDeviation from the cloud
+   * (pcl_ext::estimateNoiseAndSpacing over a sample of up to 20,000 of the
+   * neighbourhoods). Default false (setDerivedSettings turns it on);
+   * setNoiseStandardDeviation turns it off. When the
+   * cloud does not let it estimate the noise, classify() says why (PCL_WARN) and
+   * removes none: the paper's eq. 4-6. Noise above kMaxNoiseToSpacing point spacings
+   * (a range camera's, where the spacing is about the noise) is not removed either: a
+   * crease then shows in l0 by about as much as the noise, and removing the one
+   * removes the other. */
+  void
+  setNoiseEstimation (bool estimate)
+  {
+    estimate_noise_ = estimate;
+  }
+
+  bool
+  getNoiseEstimation () const
+  {
+    return estimate_noise_;
+  }
+
+  /** \brief The noise sigma the last classify() removed (estimated or set). */
+  double
+  getNoiseStandardDeviationUsed () const
+  {
+    return noise_sigma_used_;
+  }
+
+  /** \brief The last classify()'s estimate of the noise and the point spacing (not
+   * valid when the noise was set, or when it could not be estimated: see its reason).
+   */
+  const NoiseEstimate&
+  getNoiseEstimate () const
+  {
+    return noise_estimate_;
   }
 
   /** \brief Smallest crease an edge must show, as the angle between normals, in
@@ -347,6 +428,11 @@ protected:
   double
   deriveCurvatureThreshold () const;
 
+  /** \brief setNoiseEstimation: estimates the noise from a sample of the rows. */
+  template <bool dense>
+  void
+  estimateNoise (const Neighbourhoods<PointT>& nb);
+
   /** \brief setCreaseAngle: cosine of the widest angle between two normals of a row. */
   template <typename Row>
   float
@@ -357,6 +443,9 @@ protected:
   double curvature_threshold_used_ = 0.0;
   double variance_threshold_ = 1e-4;
   double noise_sigma_ = 0.0;
+  bool estimate_noise_ = false;
+  double noise_sigma_used_ = 0.0;
+  NoiseEstimate noise_estimate_;
   bool boundary_band_ = false;
   double boundary_band_fraction_ = 1.0;
   double crease_angle_ = 0.0;

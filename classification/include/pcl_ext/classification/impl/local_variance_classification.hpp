@@ -83,7 +83,7 @@ pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (
   const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size());
   const bool boundary = (tests_ & BOUNDARY_TEST) != 0;
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  const double noise_variance = noise_sigma_ * noise_sigma_;
+  const double noise_variance = noise_sigma_used_ * noise_sigma_used_;
 #pragma omp parallel for num_threads(resolveThreadCount(threads_))                     \
     schedule(dynamic, 256) default(none)                                               \
         shared(nb, rows, boundary, nan, noise_variance)
@@ -113,6 +113,62 @@ pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (
                                    scale_by_size_,
                                    noise_variance))
                              : 0.f;
+  }
+}
+
+template <typename PointT>
+template <bool dense>
+void
+pcl_ext::LocalVarianceClassification<PointT>::estimateNoise (
+    const Neighbourhoods<PointT>& nb)
+{
+  // An even sample of the rows: the estimate takes medians, which a few thousand
+  // neighbourhoods fix well, and the covariances are computed again in pass 1.
+  constexpr std::size_t kSample = 20000;
+  const std::size_t rows = indices_->size();
+  const std::size_t stride = std::max<std::size_t> (1, rows / kSample);
+  const std::ptrdiff_t samples =
+      static_cast<std::ptrdiff_t> ((rows + stride - 1) / stride);
+  std::vector<NeighbourhoodSpread> spreads (static_cast<std::size_t> (samples));
+#pragma omp parallel for num_threads(resolveThreadCount(threads_))                     \
+    schedule(dynamic, 256) default(none) shared(nb, stride, samples, spreads)
+  for (std::ptrdiff_t i = 0; i < samples; ++i) {
+    const std::size_t r = static_cast<std::size_t> (i) * stride;
+    if (!dense && !pcl::isFinite ((*input_)[(*indices_)[r]]))
+      continue;
+    const auto nn = nb[r];
+    LocalCovariance local;
+    if (!computeNeighbourhoodCovariance (*input_, nn.begin(), nn.end(), local))
+      continue;
+    spreads[static_cast<std::size_t> (i)].values = local.eigen.values;
+    spreads[static_cast<std::size_t> (i)].size = local.size;
+  }
+  noise_estimate_ = estimateNoiseAndSpacing (spreads);
+  if (noise_estimate_.valid &&
+      noise_estimate_.sigma > kMaxNoiseToSpacing * noise_estimate_.spacing) {
+    // Noise near the spacing (a range camera, not a scanner): the few-centimetre
+    // neighbourhoods that see a crease see it through the noise, and removing the noise
+    // from l0 removes the crease with it.
+    noise_sigma_used_ = 0.0;
+    PCL_DEBUG ("[pcl_ext::LocalVarianceClassification::classify] Estimated noise sigma "
+               "%g is above %g point spacings (%g): none removed.\n",
+               noise_estimate_.sigma,
+               kMaxNoiseToSpacing,
+               noise_estimate_.spacing);
+  }
+  else if (noise_estimate_.valid) {
+    noise_sigma_used_ = noise_estimate_.sigma;
+    PCL_DEBUG ("[pcl_ext::LocalVarianceClassification::classify] Estimated noise sigma "
+               "%g, point spacing %g (from %zu neighbourhoods).\n",
+               noise_estimate_.sigma,
+               noise_estimate_.spacing,
+               noise_estimate_.used);
+  }
+  else {
+    noise_sigma_used_ = 0.0;
+    PCL_WARN ("[pcl_ext::LocalVarianceClassification::classify] The noise cannot be "
+              "estimated: %s; none is removed (the paper's eq. 4-6).\n",
+              noise_estimate_.reason.c_str());
   }
 }
 
@@ -291,6 +347,14 @@ pcl_ext::LocalVarianceClassification<PointT>::classify (
     normals_.assign (input_->size(), Eigen::Vector3f::Zero());
   else
     normals_.clear();
+  noise_estimate_ = NoiseEstimate();
+  noise_sigma_used_ = noise_sigma_;
+  if (estimate_noise_) {
+    if (input_->is_dense)
+      estimateNoise<true> (*nb);
+    else
+      estimateNoise<false> (*nb);
+  }
   if (input_->is_dense)
     computeCovariances<true> (*nb);
   else
