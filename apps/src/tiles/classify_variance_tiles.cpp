@@ -34,7 +34,7 @@ public:
   }
 
   bool
-  checkOptions (const CommandLine&) const override
+  checkOptions (const CommandLine& cl) override
   {
     if (k_ < 3 && radius_ <= 0.0) {
       std::cerr << "Error: -k must be at least 3.\n";
@@ -44,7 +44,20 @@ public:
       std::cerr << "Error: -radius and -max_radius must be >= 0.\n";
       return false;
     }
-    return options_.valid();
+    if (!options_.valid (cl))
+      return false;
+    pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
+    options_.applyTo (classifier);
+    if (classifier.getNoiseEstimation()) {
+      // Each tile would estimate its own noise, and the tiles would differ from the
+      // whole cloud's classification.
+      std::cerr << "Error: pcl_ext_tiles cannot estimate the noise of the whole cloud "
+                   "yet: give -noise_sigma with -preset derived (the value "
+                   "pcl_ext_classify_variance -v prints on a part of the cloud).\n";
+      return false;
+    }
+    curvature_factor_ = classifier.getCurvatureThresholdFactor();
+    return true;
   }
 
   ResultField
@@ -119,7 +132,7 @@ public:
       return false;
     // As LocalVarianceClassification derives it: factor * median over every point.
     const double threshold =
-        count == 0 ? 0.0 : options_.curvature_factor * static_cast<double> (median);
+        count == 0 ? 0.0 : curvature_factor_ * static_cast<double> (median);
     std::ostringstream text;
     text.precision (17);
     text << threshold;
@@ -182,6 +195,7 @@ private:
 
   int k_ = 50;
   double radius_ = 0.0, max_radius_ = 0.0;
+  double curvature_factor_ = 3.0; ///< the classifier's, after the options
   VarianceClassificationOptions options_;
 };
 } // namespace

@@ -34,7 +34,7 @@ public:
 
   /** \brief Check the options (message printed when they are not valid). */
   virtual bool
-  checkOptions (const CommandLine& cl) const = 0;
+  checkOptions (const CommandLine& cl) = 0;
 
   /** \brief Where the result goes in the output (the field of the method's tool). */
   virtual ResultField
