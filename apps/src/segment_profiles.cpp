@@ -5,6 +5,7 @@
  * for points in no segment).
  */
 #include <pcl_ext/segmentation/cylinder_segment_join.h>
+#include <pcl_ext/segmentation/profile_auto.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
@@ -99,14 +100,14 @@ int
 main (int argc, char** argv)
 {
   std::string input_path, output_path, png_path, png_profiles_path;
-  std::string method_name = "proximity", distribution = "hemisphere";
+  std::string method_name = "auto", distribution = "hemisphere";
   unsigned int stacks = 4, threads = 0, neighbours = 4;
   double width = 0.0, width_factor = 1.5, threshold = 0.0, threshold_factor = 3.0;
   double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0,
          turn_significance = 0.0;
   double max_threshold_factor = 4.0;
   bool aicc = false, local_threshold = false, side_frames = false,
-       join_cylinders = false;
+       join_cylinders = false, verbose = false;
   // Cylinder join lengths: negative follows the point spacing.
   double cylinder_tolerance = -1.0, cylinder_min_radius = -1.0,
          cylinder_max_radius = -1.0;
@@ -134,7 +135,11 @@ main (int argc, char** argv)
       "width_factor",
       width_factor,
       "profile width as a multiple of the spacing (curve fitting, noisy scans: 2.5)");
-  cl.addOption ("method", method_name, "profile segmenter: proximity, mst or curve");
+  cl.addOption ("method",
+                method_name,
+                "profile segmenter: proximity, mst or curve; auto: chosen from the "
+                "cloud's noise and density variation (see -v), with the join, side "
+                "frames and local thresholds; the options given still apply");
   cl.addOption ("threshold",
                 threshold,
                 "proximity threshold (0: threshold_factor * average point spacing)");
@@ -209,6 +214,10 @@ main (int argc, char** argv)
       "from, at least twice the largest radius (negative: 24 x the point spacing)");
   cl.addOption ("min_size", min_size, "smallest segment kept");
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
+  cl.addSwitch ("v",
+                verbose,
+                "print the cloud's spacing, noise and spacing variation and the "
+                "configuration chosen from them (-method auto)");
   cl.addOption (
       "png", png_path, "also render the segments to this PNG; needs an X display");
   cl.addOption ("png_profiles",
@@ -216,10 +225,11 @@ main (int argc, char** argv)
                 "also render the first stack's profiles and chains to this PNG");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  Segmentation::ProfileMethod method;
-  if (!parseMethod (method_name, method)) {
-    std::cerr << "Error: -method must be proximity, mst or curve (got '" << method_name
-              << "').\n";
+  Segmentation::ProfileMethod method = Segmentation::ProfileMethod::Proximity;
+  const bool automatic = method_name == "auto";
+  if (!automatic && !parseMethod (method_name, method)) {
+    std::cerr << "Error: -method must be auto, proximity, mst or curve (got '"
+              << method_name << "').\n";
     return 1;
   }
   if (distribution != "hemisphere" && distribution != "horizontal") {
@@ -232,7 +242,7 @@ main (int argc, char** argv)
   }
   const bool radii_from_spacing =
       cylinder_min_radius < 0.0 && cylinder_max_radius < 0.0;
-  if (join_cylinders &&
+  if ((join_cylinders || automatic) &&
       (cylinder_tolerance == 0.0 || !std::isfinite (cylinder_tolerance) ||
        !(radii_from_spacing ||
          (cylinder_min_radius > 0.0 && cylinder_max_radius >= cylinder_min_radius)) ||
@@ -260,29 +270,69 @@ main (int argc, char** argv)
           ? Segmentation::StackDistribution::Hemisphere
           : Segmentation::StackDistribution::HorizontalHalfCircle);
   seg.setProfileWidth (width);
-  seg.setProfileWidthFactor (width_factor);
   seg.setDistanceThreshold (threshold);
   seg.setDistanceThresholdFactor (threshold_factor);
-  seg.setProfileSegmentation (method);
-  seg.setLocalThreshold (local_threshold);
   seg.setMaxThresholdFactor (max_threshold_factor);
   seg.setProximityNeighbours (neighbours);
   seg.setMaxTurnAngle (max_turn_deg * M_PI / 180.0);
   seg.setCurveWindow (window);
   seg.setResidualFactor (residual_factor);
-  seg.setTurnSignificance (turn_significance);
-  seg.setCorrectedAic (aicc);
-  seg.setSideFrames (side_frames);
   seg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
   seg.setNumberOfThreads (threads);
   std::vector<pcl::PointIndices> clusters;
-  pcl_ext::apps::StageTimer segment ("Segmenting");
-  seg.extract (clusters);
-  if (clusters.empty()) {
-    std::cerr << "Error: segmentation failed (see the message above).\n";
+  const auto segment = [&] {
+    seg.setProfileWidthFactor (width_factor);
+    seg.setProfileSegmentation (method);
+    seg.setLocalThreshold (local_threshold);
+    seg.setTurnSignificance (turn_significance);
+    seg.setCorrectedAic (aicc);
+    seg.setSideFrames (side_frames);
+    pcl_ext::apps::StageTimer timer ("Segmenting");
+    seg.extract (clusters);
+    if (clusters.empty()) {
+      std::cerr << "Error: segmentation failed (see the message above).\n";
+      return false;
+    }
+    timer.done (cloud->size());
+    return true;
+  };
+  // -method auto: proximity chaining first; the configuration is then chosen from the
+  // cloud's statistics and how much of it that first run left in one segment. The
+  // options given on the command line keep their values.
+  if (!segment())
     return 1;
+  if (automatic) {
+    std::vector<Eigen::Vector3f> xyz;
+    xyz.reserve (cloud->size());
+    for (const auto& p : *cloud)
+      if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
+        xyz.push_back (p.getVector3fMap());
+    const auto statistics = pcl_ext::profiles::estimateCloudStatistics (xyz);
+    const double share = xyz.empty()
+                             ? 0.0
+                             : static_cast<double> (clusters[0].indices.size()) /
+                                   static_cast<double> (xyz.size());
+    const auto chosen = pcl_ext::profiles::chooseConfiguration (statistics, share);
+    if (verbose)
+      std::cout << pcl_ext::profiles::describeConfiguration (statistics, share, chosen)
+                << "\n";
+    const bool rerun =
+        chosen.curve_fitting || (chosen.local_threshold && !local_threshold);
+    if (chosen.curve_fitting)
+      method = Segmentation::ProfileMethod::CurveFitting;
+    if (chosen.noisy) {
+      aicc = true;
+      if (!cl.given ("turn_significance"))
+        turn_significance = 3.0;
+      if (!cl.given ("width_factor"))
+        width_factor = 2.5;
+    }
+    side_frames = side_frames || chosen.side_frames;
+    local_threshold = local_threshold || chosen.local_threshold;
+    join_cylinders = join_cylinders || chosen.join_cylinders;
+    if (rerun && !segment())
+      return 1;
   }
-  segment.done (cloud->size());
   std::size_t joined_cylinders = 0;
   std::ostringstream join_settings;
   if (join_cylinders) {
