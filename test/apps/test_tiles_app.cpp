@@ -1,8 +1,8 @@
 /*
  * pcl_ext_tiles run as a command: a georeferenced scene classified tile by tile, in one
- * command, in steps and shared among MPI ranks, gives pcl_ext_classify_variance's output
- * point for point, for any tile size, order of the tiles and number of ranks; bad input
- * is refused without output.
+ * command, in steps and shared among MPI ranks, gives pcl_ext_classify_variance's
+ * output point for point, for any tile size, order of the tiles and number of ranks;
+ * bad input is refused without output.
  */
 #include "../app_test.h"
 
