@@ -47,7 +47,13 @@ bruteForce (const pcl_ext::search::KdTree3f& tree, std::size_t q, std::size_t k)
     const float dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
     all.emplace_back (dx * dx + dy * dy + dz * dz, pos);
   }
-  std::partial_sort (all.begin(), all.begin() + k, all.end());
+  // Equal distances in the order of the points' indices, as the searches rank them.
+  std::partial_sort (
+      all.begin(), all.begin() + k, all.end(), [&tree] (const auto& u, const auto& v) {
+        return u.first < v.first ||
+               (u.first == v.first &&
+                tree.pointIndex (u.second) < tree.pointIndex (v.second));
+      });
   all.resize (k);
   return all;
 }
@@ -82,7 +88,7 @@ TEST (KdTree3f, LeavesCoverEveryPositionOnceInOrder)
   EXPECT_EQ (next, tree.size());
 }
 
-TEST (KdTree3f, SearchOfLeavesIsExactWithTiesInPositionOrder)
+TEST (KdTree3f, SearchOfLeavesIsExactWithTiesInPointIndexOrder)
 {
   const auto& tree = mixedTree();
   for (const std::size_t k : {1u, 2u, 16u, 50u}) {
@@ -109,6 +115,25 @@ TEST (KdTree3f, SearchOfLeavesIsExactWithTiesInPositionOrder)
     }
     if (k > 1) // the duplicates and the lattice give equal distances within a row
       EXPECT_GT (ties, 0u) << "k " << k;
+  }
+}
+
+TEST (KdTree3f, SingleSearchRanksTiesByPointIndexToo)
+{
+  // The duplicates and the lattice of the mixed cloud put ties at the k-th neighbour:
+  // the one query at a time must keep the same ones as the search of leaves.
+  const auto& tree = mixedTree();
+  const std::size_t k = 16;
+  std::vector<pcl::index_t> indices (k);
+  std::vector<float> d2 (k);
+  for (std::size_t pos = 0; pos < tree.size(); ++pos) {
+    ASSERT_EQ (tree.nearestKSearch (tree.point (pos), k, indices.data(), d2.data()), k);
+    const auto truth = bruteForce (tree, pos, k);
+    for (std::size_t j = 0; j < k; ++j) {
+      ASSERT_EQ (d2[j], truth[j].first) << "point " << pos;
+      ASSERT_EQ (indices[j], tree.pointIndex (truth[j].second))
+          << "point " << pos << " rank " << j;
+    }
   }
 }
 
