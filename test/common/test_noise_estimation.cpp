@@ -3,11 +3,11 @@
  */
 #include <pcl_ext/common/covariance.h>
 #include <pcl_ext/common/noise_estimation.h>
+#include <pcl_ext/common/random.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 namespace {
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
@@ -17,12 +17,12 @@ using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 Cloud
 noisyGrid (int n, double s, double sigma, int fold, unsigned seed)
 {
-  std::mt19937 rng (seed);
-  std::normal_distribution<double> noise (0.0, sigma);
+  pcl_ext::RandomStream rng (
+      seed); // the project's generator: the same on every library
   Cloud cloud;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      const double e = noise (rng);
+      const double e = sigma * rng.gaussian();
       if (fold > 0 && i >= fold)
         cloud.push_back (pcl::PointXYZ (static_cast<float> (fold * s + e),
                                         static_cast<float> (j * s),
