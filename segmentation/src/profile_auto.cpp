@@ -4,6 +4,8 @@
  */
 #include <pcl_ext/segmentation/profile_auto.h>
 
+#include "sampled_neighbours.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -41,75 +43,35 @@ estimateCloudStatistics (const std::vector<Eigen::Vector3f>& xyz, std::size_t sa
   const std::size_t n = xyz.size();
   if (n <= kNoiseNeighbours || samples == 0)
     return result;
-  Eigen::Vector3f lo = xyz[0], hi = xyz[0];
-  for (const auto& p : xyz) {
-    lo = lo.cwiseMin (p);
-    hi = hi.cwiseMax (p);
-  }
-  int axis = 0;
-  (hi - lo).maxCoeff (&axis);
-  std::vector<std::pair<float, std::uint32_t>> sorted (n);
-  for (std::size_t i = 0; i < n; ++i)
-    sorted[i] = {xyz[i][axis], static_cast<std::uint32_t> (i)};
-  std::sort (sorted.begin(), sorted.end());
-
-  // The sweep of estimatePointSpacing, keeping the k nearest points themselves.
-  const std::size_t max_steps = 8192;
-  const std::size_t k = kNoiseNeighbours;
-  const std::size_t m = std::min (samples, n);
   std::vector<double> spacings, noises;
-  std::vector<std::pair<float, std::uint32_t>> nearest; // (squared distance, point)
-  for (std::size_t s = 0; s < m; ++s) {
-    const std::size_t r = s * n / m;
-    const Eigen::Vector3f& p = xyz[sorted[r].second];
-    const float c = sorted[r].first;
-    nearest.clear();
-    const auto bound = [&] {
-      return nearest.size() < k ? std::numeric_limits<float>::infinity()
-                                : nearest.back().first;
-    };
-    const auto visit = [&] (std::size_t q) {
-      const float d2 = (xyz[sorted[q].second] - p).squaredNorm();
-      if (d2 > 0.f && d2 < bound()) {
-        const std::pair<float, std::uint32_t> entry (d2, sorted[q].second);
-        nearest.insert (std::upper_bound (nearest.begin(), nearest.end(), entry),
-                        entry);
-        if (nearest.size() > k)
-          nearest.pop_back();
-      }
-    };
-    for (std::size_t q = r + 1, steps = 0; q < n && steps < max_steps; ++q, ++steps) {
-      const float dc = sorted[q].first - c;
-      if (dc * dc >= bound())
-        break;
-      visit (q);
-    }
-    for (std::size_t q = r, steps = 0; q-- > 0 && steps < max_steps; ++steps) {
-      const float dc = c - sorted[q].first;
-      if (dc * dc >= bound())
-        break;
-      visit (q);
-    }
-    if (nearest.size() < k)
-      continue;
-    spacings.push_back (
-        std::sqrt (static_cast<double> (nearest[kSpacingNeighbour - 1].first) * M_PI /
-                   kSpacingNeighbour));
-    // The plane of the point and its neighbours, relative to the point (precision).
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (const auto& e : nearest)
-      mean += (xyz[e.second] - p).cast<double>();
-    mean /= static_cast<double> (k + 1);
-    Eigen::Matrix3d covariance = mean * mean.transpose(); // the point itself, at 0
-    for (const auto& e : nearest) {
-      const Eigen::Vector3d d = (xyz[e.second] - p).cast<double>() - mean;
-      covariance += d * d.transpose();
-    }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (
-        covariance, Eigen::EigenvaluesOnly);
-    const double dof = static_cast<double> (k + 1 - 3);
-    noises.push_back (std::sqrt (std::max (0.0, solver.eigenvalues()[0]) / dof));
-  }
+  detail::forEachSampledNeighbourhood (
+      xyz,
+      samples,
+      kNoiseNeighbours,
+      [&] (std::uint32_t point,
+           const std::vector<std::pair<float, std::uint32_t>>& nearest) {
+        if (nearest.size() < kNoiseNeighbours)
+          return;
+        const std::size_t k = nearest.size();
+        spacings.push_back (
+            std::sqrt (static_cast<double> (nearest[kSpacingNeighbour - 1].first) *
+                       M_PI / kSpacingNeighbour));
+        // The plane of the point and its neighbours, relative to the point (precision).
+        const Eigen::Vector3f& p = xyz[point];
+        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+        for (const auto& e : nearest)
+          mean += (xyz[e.second] - p).cast<double>();
+        mean /= static_cast<double> (k + 1);
+        Eigen::Matrix3d covariance = mean * mean.transpose(); // the point itself, at 0
+        for (const auto& e : nearest) {
+          const Eigen::Vector3d d = (xyz[e.second] - p).cast<double>() - mean;
+          covariance += d * d.transpose();
+        }
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (
+            covariance, Eigen::EigenvaluesOnly);
+        const double dof = static_cast<double> (k + 1 - 3);
+        noises.push_back (std::sqrt (std::max (0.0, solver.eigenvalues()[0]) / dof));
+      });
   if (spacings.empty())
     return result;
   double sum = 0.0;

@@ -3,6 +3,8 @@
  */
 #include <pcl_ext/segmentation/profile_stacks.h>
 
+#include "sampled_neighbours.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -90,65 +92,17 @@ makeStackNormals (unsigned int count, StackDistribution distribution)
 double
 estimatePointSpacing (const std::vector<Eigen::Vector3f>& xyz, std::size_t samples)
 {
-  const std::size_t n = xyz.size();
-  if (n < 2 || samples == 0)
-    return 0.0;
-  Eigen::Vector3f lo = xyz[0], hi = xyz[0];
-  for (const auto& p : xyz) {
-    lo = lo.cwiseMin (p);
-    hi = hi.cwiseMax (p);
-  }
-  int axis = 0;
-  (hi - lo).maxCoeff (&axis);
-  std::vector<std::pair<float, std::uint32_t>> sorted (n);
-  for (std::size_t i = 0; i < n; ++i)
-    sorted[i] = {xyz[i][axis], static_cast<std::uint32_t> (i)};
-  std::sort (sorted.begin(), sorted.end());
-
-  // The sweep stops once the coordinate gap alone exceeds the best distance; the step
-  // cap only matters for pathological clouds (everything at one coordinate), where it
-  // gives an upper bound instead of a quadratic run time.
-  const std::size_t max_steps = 8192;
   constexpr std::size_t k = 6;
-  const std::size_t m = std::min (samples, n);
   double sum = 0.0;
   std::size_t found = 0;
-  std::vector<float> nearest; // the k smallest squared distances, ascending
-  for (std::size_t s = 0; s < m; ++s) {
-    const std::size_t r = s * n / m;
-    const Eigen::Vector3f& p = xyz[sorted[r].second];
-    const float c = sorted[r].first;
-    nearest.clear();
-    const auto bound = [&] {
-      return nearest.size() < k ? std::numeric_limits<float>::infinity()
-                                : nearest.back();
-    };
-    const auto visit = [&] (std::size_t q) {
-      const float d2 = (xyz[sorted[q].second] - p).squaredNorm();
-      if (d2 > 0.f && d2 < bound()) {
-        nearest.insert (std::upper_bound (nearest.begin(), nearest.end(), d2), d2);
-        if (nearest.size() > k)
-          nearest.pop_back();
-      }
-    };
-    for (std::size_t q = r + 1, steps = 0; q < n && steps < max_steps; ++q, ++steps) {
-      const float dc = sorted[q].first - c;
-      if (dc * dc >= bound())
-        break;
-      visit (q);
-    }
-    for (std::size_t q = r, steps = 0; q-- > 0 && steps < max_steps; ++steps) {
-      const float dc = c - sorted[q].first;
-      if (dc * dc >= bound())
-        break;
-      visit (q);
-    }
-    if (nearest.size() == k) {
-      // k points within r on a surface: pi r^2 / k of surface per point.
-      sum += std::sqrt (static_cast<double> (nearest.back()) * M_PI / k);
-      ++found;
-    }
-  }
+  detail::forEachSampledNeighbourhood (
+      xyz, samples, k, [&] (std::uint32_t, const auto& nearest) {
+        if (nearest.size() == k) {
+          // k points within r on a surface: pi r^2 / k of surface per point.
+          sum += std::sqrt (static_cast<double> (nearest.back().first) * M_PI / k);
+          ++found;
+        }
+      });
   return found ? sum / static_cast<double> (found) : 0.0;
 }
 
