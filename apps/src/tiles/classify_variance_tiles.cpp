@@ -89,6 +89,14 @@ public:
     return reach;
   }
 
+  NeighbourhoodReach
+  getEstimateReach () const override
+  {
+    NeighbourhoodReach reach = getReach();
+    reach.hops = 1; // kappa (eq. 4) reads the point's own neighbourhood only
+    return reach;
+  }
+
   bool
   needsEstimate () const override
   {

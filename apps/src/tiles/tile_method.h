@@ -48,6 +48,13 @@ public:
   virtual NeighbourhoodReach
   getReach () const = 0;
 
+  /** \brief The neighbourhoods estimate() reaches through (default: those of run()). */
+  virtual NeighbourhoodReach
+  getEstimateReach () const
+  {
+    return getReach();
+  }
+
   /** \brief Whether the method estimates something from the whole cloud (then
    * estimate() runs on every tile, and reduce() once, before run()). */
   virtual bool

@@ -201,7 +201,7 @@ estimateStep (const tiling::TilePlan& plan,
     return true;
   TileCloud cloud;
   method.setNumberOfThreads (threads);
-  if (!loadTileCloud (plan, workdir, tile, method.getReach(), threads, cloud))
+  if (!loadTileCloud (plan, workdir, tile, method.getEstimateReach(), threads, cloud))
     return false;
   std::map<std::string, std::vector<float>> values;
   if (!method.estimate (cloud, values))

@@ -25,20 +25,23 @@ MergedResults::open (const TilePlan& plan, const std::string& folder, Kind kind)
   next_index_ = 0;
   failed_ = false;
   if (kind_ == Kind::Segments) {
-    // Join first: the owners' labels of every halo point, read in batches per tile.
+    // Join first: the owners' labels of every halo point, read a tile at a time.
     std::vector<HaloLabel> halo;
     std::vector<std::uint64_t> indices;
     std::vector<std::uint32_t> owner_labels;
     for (std::size_t t = 0; t < grid_.size(); ++t) {
       if (!loadHaloLabels (folder_, t, halo))
         return false;
-      for (const auto& h : halo) {
-        if (!TileResults::read (folder_, h.index, 1, owner_labels))
-          return false;
-        if (owner_labels[0] != TileResults::kNoResult)
-          merge_.join (SegmentMerge::key (h.owner, owner_labels[0]),
-                       SegmentMerge::key (static_cast<std::uint32_t> (t), h.label));
-      }
+      indices.resize (halo.size());
+      for (std::size_t i = 0; i < halo.size(); ++i)
+        indices[i] = halo[i].index;
+      if (!TileResults::readAt (folder_, indices, owner_labels))
+        return false;
+      for (std::size_t i = 0; i < halo.size(); ++i)
+        if (owner_labels[i] != TileResults::kNoResult)
+          merge_.join (
+              SegmentMerge::key (halo[i].owner, owner_labels[i]),
+              SegmentMerge::key (static_cast<std::uint32_t> (t), halo[i].label));
     }
   }
   return true;

@@ -171,6 +171,28 @@ TileResults::write (const std::string& folder,
 }
 
 bool
+TileResults::readAt (const std::string& folder,
+                     const std::vector<std::uint64_t>& indices,
+                     std::vector<std::uint32_t>& values)
+{
+  const std::string path = pathIn (folder);
+  values.resize (indices.size());
+  std::ifstream in (path, std::ios::binary);
+  for (std::size_t i = 0; i < indices.size() && in; ++i) {
+    in.seekg (static_cast<std::streamoff> (indices[i] * sizeof (std::uint32_t)));
+    in.read (reinterpret_cast<char*> (&values[i]), sizeof (std::uint32_t));
+  }
+  if (!in) {
+    PCL_ERROR ("[pcl_ext::tiling::TileResults] cannot read %s (missing or shorter than "
+               "the plan's points).\n",
+               path.c_str());
+    values.clear();
+    return false;
+  }
+  return true;
+}
+
+bool
 TileResults::read (const std::string& folder,
                    std::uint64_t first,
                    std::size_t count,

@@ -36,6 +36,13 @@ public:
          const std::vector<std::uint64_t>& indices,
          const std::vector<std::uint32_t>& values);
 
+  /** \brief Read the results of the points \a indices (any order) into \a values, the
+   * file opened once. \return false (PCL_ERROR) when the file is missing or shorter */
+  static bool
+  readAt (const std::string& folder,
+          const std::vector<std::uint64_t>& indices,
+          std::vector<std::uint32_t>& values);
+
   /** \brief Read the results of the points [first, first + count) into \a values.
    * \return false (PCL_ERROR) when the file is missing or shorter */
   static bool
