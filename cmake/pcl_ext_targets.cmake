@@ -74,4 +74,5 @@ function(pcl_ext_install_package)
     ${PROJECT_BINARY_DIR}/pcl_extConfig.cmake
     ${PROJECT_BINARY_DIR}/pcl_extConfigVersion.cmake
     DESTINATION ${PCL_EXT_CMAKE_INSTALL_DIR})
+  install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/pcl_ext)
 endfunction()

@@ -150,6 +150,10 @@ CommandLine::parse (int argc, const char* const* argv)
       printHelp();
       return 0;
     }
+    if (arg == "-version" || arg == "--version") {
+      std::cout << program_ << " (pcl_ext) " << PCL_EXT_VERSION << std::endl;
+      return 0;
+    }
     // A dash followed by a letter is an option; "-1.5" is a (negative) value.
     const bool is_option =
         arg.size() > 1 && arg[0] == '-' &&
@@ -297,6 +301,8 @@ CommandLine::printHelp() const
   }
   std::cout << "  " << std::left << std::setw (26) << "-h"
             << "print this help and exit\n";
+  std::cout << "  " << std::left << std::setw (26) << "--version"
+            << "print the version of pcl_ext and exit\n";
 }
 
 StageTimer::StageTimer (const std::string& what)
