@@ -97,12 +97,10 @@ configure (Registration& reg, const SampledScan& s)
 {
   reg.setMapPlanes (s.map);
   const std::vector<pcl::PointIndices> planes = s.planes;
-  reg.setPlaneExtractor ([planes] (const Cloud::ConstPtr&,
-                                   const pcl::IndicesConstPtr&,
-                                   std::vector<pcl::PointIndices>& out) {
-    out = planes;
-    return true;
-  });
+  reg.setPlaneExtractor (
+      [planes] (const Cloud::ConstPtr&,
+                const pcl::IndicesConstPtr&,
+                std::vector<pcl::PointIndices>& out) { out = planes; });
 }
 
 Eigen::Vector3d

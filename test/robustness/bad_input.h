@@ -55,7 +55,7 @@ enum class Bad {
 /** The name of each column (the cases follow its order). */
 extern const std::map<Bad, const char*> kBadNames;
 
-enum class Expect { Refused, Computed, Degenerate, Ran };
+enum class Expect { Refused, Computed, Degenerate, NoneFound, Ran };
 
 /** What a subject is given. */
 struct Input {

@@ -23,12 +23,14 @@ void
 addRegistrationSubjects (std::vector<Subject>& s)
 {
   // Parameter: the inlier distance (> 0). Too few points for a plane, or none on a
-  // plane, is no plane (extract() succeeds with none). At the micrometre scale PCL's
-  // plane model rejects every sample (its collinearity test has a fixed absolute
+  // plane, or points on a line, is no plane (and no error). At the micrometre scale
+  // PCL's plane model rejects every sample (its collinearity test has a fixed absolute
   // threshold), so no plane is found there either.
   s.push_back ({"SACPlaneExtraction",
                 kCloudInputs,
-                {{Bad::OnePoint, Expect::Degenerate}, {Bad::Tiny, Expect::Degenerate}},
+                {{Bad::OnePoint, Expect::NoneFound},
+                 {Bad::Collinear, Expect::NoneFound},
+                 {Bad::Tiny, Expect::NoneFound}},
                 [] (const Input& in) {
                   SACPlaneExtraction<Point> sac;
                   sac.setInputCloud (in.cloud);
@@ -39,14 +41,8 @@ addRegistrationSubjects (std::vector<Subject>& s)
                     sac.setDistanceThreshold (std::numeric_limits<double>::quiet_NaN());
                   sac.setMinInliers (20);
                   std::vector<pcl::PointIndices> planes;
-                  const bool ok = sac.extract (planes);
-                  Outcome o = segments (in, planes);
-                  o.produced = ok;
-                  if (ok && planes.empty()) {
-                    o.size = indicesOf (in).size();
-                    o.no_result.assign (o.size, 1);
-                  }
-                  return o;
+                  sac.extract (planes);
+                  return segments (in, planes);
                 }});
 
   // The box as a classified airborne cloud: its floor is ground, the rest building
@@ -57,7 +53,9 @@ addRegistrationSubjects (std::vector<Subject>& s)
   s.push_back (
       {"RoofOutlinePlaneExtraction",
        kCloudInputs,
-       {{Bad::Coplanar, Expect::Refused}, {Bad::Tiny, Expect::Degenerate}},
+       {{Bad::Coplanar, Expect::Refused},
+        {Bad::Collinear, Expect::NoneFound},
+        {Bad::Tiny, Expect::NoneFound}},
        [] (const Input& in) {
          float floor = std::numeric_limits<float>::infinity();
          for (const auto& p : *in.cloud)
@@ -80,14 +78,8 @@ addRegistrationSubjects (std::vector<Subject>& s)
          if (in.nan_param)
            walls.setOutlineBand (std::numeric_limits<double>::quiet_NaN());
          std::vector<pcl::PointIndices> planes;
-         const bool ok = walls.extract (planes);
-         Outcome o = segments (in, planes);
-         o.produced = ok;
-         if (ok && planes.empty()) {
-           o.size = indicesOf (in).size();
-           o.no_result.assign (o.size, 1);
-         }
-         return o;
+         walls.extract (planes);
+         return segments (in, planes);
        }});
 
   // Registration of the cloud to an H-shaped footprint; parameter: the angle tolerance.

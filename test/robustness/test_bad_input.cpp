@@ -12,6 +12,8 @@
  * one;
  * - Degenerate: as Computed, but every point may get "no result" (collinear points have
  * no tangent plane);
+ * - NoneFound: empty output without a PCL_ERROR from pcl_ext: a segmenter that finds
+ *   nothing to segment (no plane among too few points) has not failed;
  * - Ran: registration only: align() returns, converged or not, with a finite
  * transformation.
  *
@@ -112,6 +114,12 @@ TEST_P (Matrix, Run)
       EXPECT_GT (results, 0u) << "no point got a result";
     break;
   }
+  case Expect::NoneFound:
+    EXPECT_FALSE (o.produced);
+    EXPECT_EQ (o.size, 0u);
+    EXPECT_EQ (log.find ("[pcl_ext::"), std::string::npos)
+        << "reported as an error: " << log;
+    break;
   case Expect::Ran:
     EXPECT_TRUE (o.finite_transform);
     break;

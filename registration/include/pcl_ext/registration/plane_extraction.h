@@ -44,19 +44,20 @@ fitScanPlanes (const pcl::PointCloud<PointT>& cloud,
                std::vector<ScanPlane>& planes);
 
 /** \brief A plane extractor: inlier sets of the planes of a cloud, as indices of that
- * cloud, taken among the given indices only (all points when the pointer is null; this
- * is how PlaneMatchingRegistration passes its setIndices). Any segmenter fits (the
- * Belton & Lichti region growing, a range-image segmentation as in the paper, ...).
- * Passing the whole cloud with indices, rather than a copy of the indexed points, keeps
- * per-point inputs of the extractor (labels, viewpoints) aligned with the cloud. */
+ * cloud, taken among the given indices only (none, after a PCL_ERROR, on bad input)
+ * (all points when the pointer is null; this is how PlaneMatchingRegistration passes
+ * its setIndices). Any segmenter fits (the Belton & Lichti region growing, a
+ * range-image segmentation as in the paper, ...). Passing the whole cloud with indices,
+ * rather than a copy of the indexed points, keeps per-point inputs of the extractor
+ * (labels, viewpoints) aligned with the cloud. */
 template <typename PointT>
 using PlaneExtractor =
-    std::function<bool (const typename pcl::PointCloud<PointT>::ConstPtr&,
+    std::function<void (const typename pcl::PointCloud<PointT>::ConstPtr&,
                         const pcl::IndicesConstPtr&,
                         std::vector<pcl::PointIndices>&)>;
 
 /** \brief A plane extraction class as a PlaneExtractor: a copy of \a extraction, run on
- * the cloud and indices it is given. \a Extraction is a pcl::PCLBase<PointT> with bool
+ * the cloud and indices it is given. \a Extraction is a pcl::PCLBase<PointT> with void
  * extract (std::vector<pcl::PointIndices>&), as SACPlaneExtraction and
  * RoofOutlinePlaneExtraction. */
 template <typename PointT, typename Extraction>
@@ -71,7 +72,7 @@ makePlaneExtractor (const Extraction& extraction)
     // initCompute).
     copy.setIndices (indices ? pcl::make_shared<pcl::Indices> (*indices)
                              : pcl::IndicesPtr());
-    return copy.extract (planes);
+    copy.extract (planes);
   };
 }
 
@@ -137,9 +138,9 @@ public:
 
   /** \brief Inlier sets of the planes, largest first; none when fewer than the minimum
    * of inliers lie on any plane (e.g. too few points). Non-finite points are never
-   * inliers. \return false (PCL_ERROR, no planes) on bad parameters, no input, an index
-   * out of range or no finite point */
-  bool
+   * inliers. No planes, after a PCL_ERROR, on bad parameters, no input, an index out of
+   * range or no finite point. */
+  void
   extract (std::vector<pcl::PointIndices>& planes);
 
   /** \brief As a PlaneExtractor for PlaneMatchingRegistration. */

@@ -263,11 +263,11 @@ public:
 
   /** \brief Inlier sets: the ground plane first (when there is one), then the walls,
    * building by building, sorted indices. No wall when no building has an outline
-   * (nothing of another label around it, or too few points). \return false (PCL_ERROR,
-   * no planes) on bad parameters, no input, no labels or a label count unlike the point
+   * (nothing of another label around it, or too few points). No planes, after a
+   * PCL_ERROR, on bad parameters, no input, no labels or a label count unlike the point
    * count, an index out of range, no finite point or no finite point of the building
-   * label */
-  bool
+   * label. */
+  void
   extract (std::vector<pcl::PointIndices>& planes);
 
   /** \brief As a PlaneExtractor for PlaneMatchingRegistration. The labels go with it;

@@ -102,7 +102,7 @@ fitScanPlanes (const pcl::PointCloud<PointT>& cloud,
 }
 
 template <typename PointT>
-bool
+void
 SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
 {
   planes.clear();
@@ -111,11 +111,11 @@ SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
     PCL_ERROR (
         "[pcl_ext::SACPlaneExtraction::extract] Invalid parameters: distance threshold "
         "must be > 0, minimum inliers >= 3, maximum planes and iterations >= 1.\n");
-    return false;
+    return;
   }
   if (!this->initCompute()) {
     PCL_ERROR ("[pcl_ext::SACPlaneExtraction::extract] No input cloud.\n");
-    return false;
+    return;
   }
   // Finite points only: RANSAC would happily sample NaN. Sorted and unique, as the
   // removal of each plane's inliers below needs.
@@ -123,7 +123,7 @@ SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
   if (!indicesInRange (
           *indices_, input_->size(), "[pcl_ext::SACPlaneExtraction::extract]")) {
     this->deinitCompute();
-    return false;
+    return;
   }
   for (const auto i : *indices_) {
     const PointT& p = (*input_)[i];
@@ -134,7 +134,7 @@ SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
     PCL_ERROR (
         "[pcl_ext::SACPlaneExtraction::extract] The input has no finite point.\n");
     this->deinitCompute();
-    return false;
+    return;
   }
   std::sort (remaining->begin(), remaining->end());
   remaining->erase (std::unique (remaining->begin(), remaining->end()),
@@ -187,7 +187,6 @@ SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
     planes.push_back (std::move (inliers));
   }
   this->deinitCompute();
-  return true;
 }
 
 template <typename PointT>

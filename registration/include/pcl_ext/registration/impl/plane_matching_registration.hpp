@@ -205,9 +205,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::extractSourcePlaneSets (
   // setIndices: the extractor takes its planes among the indexed points; its sets index
   // the input, which the viewpoints and the plane fits use. An extractor that answers
   // with an index outside the cloud is refused.
-  if (!source_extractor_ (
-          input_, fake_indices_ ? pcl::IndicesConstPtr() : indices_, sets))
-    return false;
+  source_extractor_ (input_, fake_indices_ ? pcl::IndicesConstPtr() : indices_, sets);
   for (const auto& set : sets)
     if (!indicesInRange (
             set.indices,
@@ -258,8 +256,9 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (
     target_planes_.assign (map_planes_.begin(), map_planes_.end());
   else {
     std::vector<pcl::PointIndices> sets;
+    if (target_extractor_)
+      target_extractor_ (target_, pcl::IndicesConstPtr(), sets);
     if (!target_extractor_ ||
-        !target_extractor_ (target_, pcl::IndicesConstPtr(), sets) ||
         !fitScanPlanes (*target_, sets, target_viewpoints_, target_scan_planes_)) {
       PCL_ERROR ("[pcl_ext::%s::align] Plane extraction failed on the target.\n",
                  reg_name_.c_str());

@@ -132,15 +132,15 @@ RoofOutlinePlaneExtraction<PointT>::checkParameters() const
 }
 
 template <typename PointT>
-bool
+void
 RoofOutlinePlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
 {
   planes.clear();
   if (!checkParameters())
-    return false;
+    return;
   if (!this->initCompute()) {
     PCL_ERROR ("[pcl_ext::RoofOutlinePlaneExtraction::extract] No input cloud.\n");
-    return false;
+    return;
   }
   if (!labels_ || labels_->size() != input_->size()) {
     PCL_ERROR ("[pcl_ext::RoofOutlinePlaneExtraction::extract] %zu labels for %zu "
@@ -149,7 +149,7 @@ RoofOutlinePlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& pla
                labels_ ? labels_->size() : std::size_t (0),
                input_->size());
     this->deinitCompute();
-    return false;
+    return;
   }
 
   // Sort the points: ground, building (with their 2D positions), and everything else,
@@ -163,7 +163,7 @@ RoofOutlinePlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& pla
                        input_->size(),
                        "[pcl_ext::RoofOutlinePlaneExtraction::extract]")) {
     this->deinitCompute();
-    return false;
+    return;
   }
   for (const auto i : *indices_) {
     const PointT& p = (*input_)[i];
@@ -189,7 +189,7 @@ RoofOutlinePlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& pla
                  "the building label %u.\n",
                  building_label_);
     this->deinitCompute();
-    return false;
+    return;
   }
 
   if (extract_ground_ && ground.size() >= 3) {
@@ -208,7 +208,7 @@ RoofOutlinePlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& pla
   if (others->empty()) // all roof: no outline has anything beyond
   {
     this->deinitCompute();
-    return true;
+    return;
   }
 
   // Buildings: connected in 2D.
@@ -303,7 +303,6 @@ RoofOutlinePlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& pla
     }
   }
   this->deinitCompute();
-  return true;
 }
 
 template <typename PointT>
