@@ -28,12 +28,6 @@ struct Layer {
   double point_size = 0.0;
 };
 
-/** \brief One line of a legend: what a colour means. */
-struct LegendEntry {
-  std::string name;
-  Colour colour;
-};
-
 /** \brief A colour bar: which values a scalar colour map's colours stand for. No bar is
  * drawn while \a name is empty. */
 struct ColourBar {
