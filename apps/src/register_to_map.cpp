@@ -11,6 +11,7 @@
 #include <pcl_ext/io/point_file.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
+#include <pcl_ext/apps/picture_options.h>
 #include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/footprint_view.h>

@@ -67,8 +67,13 @@ runCrfStep (DemoContext& context)
   using namespace visualization;
   std::vector<LegendEntry> legend;
   const auto& names = model.getClassNames();
+  // The scene's names of its labels where it has them, else the model's.
   for (const auto& [id, name] : names)
-    legend.push_back ({name, colourByLabel ({id}).front()});
+    legend.push_back (
+        {id < test_scene.label_names.size() && !test_scene.label_names[id].empty()
+             ? test_scene.label_names[id]
+             : name,
+         colourByLabel ({id}).front()});
   return context.render ({{"street: ground truth",
                            {{makeColouredCloud (*test.xyz, colourByLabel (truth))}},
                            legend},

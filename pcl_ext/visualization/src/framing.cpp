@@ -7,6 +7,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <set>
 #include <utility>
@@ -165,6 +166,35 @@ frameRobustly (const std::vector<Eigen::Vector3d>& points,
     x[i] = points[i].dot (r);
     y[i] = points[i].dot (v);
     depth[i] = points[i].dot (f);
+  }
+  // Sparse parts (far rings of a scanner's ground, stray returns) do not count: only
+  // the points of picture cells holding at least a tenth of the median occupied cell's
+  // count, on a 48 x 48 grid over the percentile box.
+  {
+    const auto [ax0, ax1] = percentiles (x);
+    const auto [ay0, ay1] = percentiles (y);
+    const double cell = std::max (std::max (ax1 - ax0, ay1 - ay0) / 48.0, 1e-12);
+    std::map<std::pair<long, long>, std::size_t> count;
+    const auto key = [&] (std::size_t i) {
+      return std::make_pair (std::lround (std::floor ((x[i] - ax0) / cell)),
+                             std::lround (std::floor ((y[i] - ay0) / cell)));
+    };
+    for (std::size_t i = 0; i < x.size(); ++i)
+      ++count[key (i)];
+    std::vector<double> counts;
+    for (const auto& [k, c] : count)
+      counts.push_back (double (c));
+    const double least = 0.1 * quantile (counts, 0.5);
+    std::vector<double> dense_x, dense_y;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (double (count[key (i)]) >= least) {
+        dense_x.push_back (x[i]);
+        dense_y.push_back (y[i]);
+      }
+    if (dense_x.size() * 2 >= x.size()) {
+      x.swap (dense_x);
+      y.swap (dense_y);
+    }
   }
   const auto [px0, px1] = percentiles (x);
   const auto [py0, py1] = percentiles (y);

@@ -54,12 +54,15 @@ viewDirection (const std::vector<Eigen::Vector3d>& points,
 /** \brief Frames \a points seen along \a direction (camera up \a up, made orthogonal to
  * it) in a frame of aspect \a aspect (width / height).
  *
- * The frame holds the robust bounds of the points projected on the picture plane: per
- * axis, the 1st to 99th percentile, widened to take in every point within half the
- * larger of the two axes' percentile ranges (the subject's own tails: a mast on a
- * plate), so that a few far, sparse points do not shrink the subject; they fall outside
- * the frame instead. A \a margin (a fraction of the frame on each side) keeps the
- * subject off the edges. Empty \a points give the default Framing. */
+ * The frame holds the robust bounds of the points projected on the picture plane.
+ * Sparse parts do not count (far rings of a scanner's ground, stray returns): on a 48 x
+ * 48 grid over the 1st to 99th percentile box, the points of cells holding less than a
+ * tenth of the median occupied cell's count are left out (unless that leaves out half
+ * of the points). Of the rest, per axis, the 1st to 99th percentile is taken, widened
+ * to take in every point within half the larger of the two axes' percentile ranges (the
+ * subject's own tails: a mast on a plate). A \a margin (a fraction of the frame on each
+ * side) keeps the subject off the edges. Points outside fall outside the picture. Empty
+ * \a points give the default Framing. */
 Framing
 frameRobustly (const std::vector<Eigen::Vector3d>& points,
                const Eigen::Vector3d& direction,
