@@ -86,8 +86,10 @@ TEST (Framing, FarSparsePointsDoNotShrinkTheSubject)
   std::vector<Eigen::Vector3d> points;
   addGrid (points, 101, 51, 0.1, 0.0); // 10 x 5
   const std::size_t subject = points.size();
-  for (int i = 0; i < 30; ++i) // 0.6 % of the points, 100 away
+  for (int i = 0; i < 20; ++i) { // 0.8 % of the points, far away
     points.emplace_back (100.0 + i, -80.0, 5.0);
+    points.emplace_back (60.0 + i, 2.0, 5.0); // level with the subject, far to its side
+  }
   const Framing framing = frameRobustly (
       points, -Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY(), 4.0 / 3.0, 0.05);
   // The 10 wide subject fills the width but the margins: 10 / 0.9.

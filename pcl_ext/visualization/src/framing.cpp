@@ -7,9 +7,11 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <cmath>
 #include <set>
+#include <tuple>
 #include <utility>
 
 namespace pcl_ext {
@@ -44,18 +46,24 @@ percentiles (std::vector<double> values)
   return {lo, hi};
 }
 
-/** [lo, hi] widened to the farthest of \a values within \a reach beyond it. */
-std::pair<double, double>
-widened (const std::vector<double>& values, double lo, double hi, double reach)
+/** The box [x0, x1] x [y0, y1] widened to take in every point (x, y) within \a reach of
+ * it on both axes. */
+std::array<double, 4>
+widened (const std::vector<double>& x,
+         const std::vector<double>& y,
+         const std::array<double, 4>& box,
+         double reach)
 {
-  double low = lo, high = hi;
-  for (const double v : values) {
-    if (v < low && v >= lo - reach)
-      low = v;
-    if (v > high && v <= hi + reach)
-      high = v;
-  }
-  return {low, high};
+  std::array<double, 4> out = box;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (x[i] >= box[0] - reach && x[i] <= box[1] + reach && y[i] >= box[2] - reach &&
+        y[i] <= box[3] + reach) {
+      out[0] = std::min (out[0], x[i]);
+      out[1] = std::max (out[1], x[i]);
+      out[2] = std::min (out[2], y[i]);
+      out[3] = std::max (out[3], y[i]);
+    }
+  return out;
 }
 } // namespace
 
@@ -167,9 +175,10 @@ frameRobustly (const std::vector<Eigen::Vector3d>& points,
     y[i] = points[i].dot (v);
     depth[i] = points[i].dot (f);
   }
+  double px0, px1, py0, py1;
   // Sparse parts (far rings of a scanner's ground, stray returns) do not count: only
-  // the points of picture cells holding at least a tenth of the median occupied cell's
-  // count, on a 48 x 48 grid over the percentile box.
+  // the points of picture cells holding at least a tenth of the count of the median
+  // point's cell, on a 48 x 48 grid over the percentile box.
   {
     const auto [ax0, ax1] = percentiles (x);
     const auto [ay0, ay1] = percentiles (y);
@@ -181,9 +190,11 @@ frameRobustly (const std::vector<Eigen::Vector3d>& points,
     };
     for (std::size_t i = 0; i < x.size(); ++i)
       ++count[key (i)];
-    std::vector<double> counts;
-    for (const auto& [k, c] : count)
-      counts.push_back (double (c));
+    // The count of the median point's cell: the density most points lie at, whatever
+    // the number of sparse cells.
+    std::vector<double> counts (x.size());
+    for (std::size_t i = 0; i < x.size(); ++i)
+      counts[i] = double (count[key (i)]);
     const double least = 0.1 * quantile (counts, 0.5);
     std::vector<double> dense_x, dense_y;
     for (std::size_t i = 0; i < x.size(); ++i)
@@ -191,16 +202,15 @@ frameRobustly (const std::vector<Eigen::Vector3d>& points,
         dense_x.push_back (x[i]);
         dense_y.push_back (y[i]);
       }
-    if (dense_x.size() * 2 >= x.size()) {
-      x.swap (dense_x);
-      y.swap (dense_y);
+    if (dense_x.size() * 2 < x.size()) {
+      dense_x = x;
+      dense_y = y;
     }
+    std::tie (px0, px1) = percentiles (dense_x);
+    std::tie (py0, py1) = percentiles (dense_y);
   }
-  const auto [px0, px1] = percentiles (x);
-  const auto [py0, py1] = percentiles (y);
   const double reach = 0.5 * std::max (px1 - px0, py1 - py0);
-  const auto [x0, x1] = widened (x, px0, px1, reach);
-  const auto [y0, y1] = widened (y, py0, py1, reach);
+  const auto [x0, x1, y0, y1] = widened (x, y, {px0, px1, py0, py1}, reach);
   const double m = std::clamp (margin, 0.0, 0.45);
   const double scale = std::max ({std::abs (x0), std::abs (x1), std::abs (y0), 1e-3});
   double half_width = std::max (0.5 * (x1 - x0), 1e-6 * scale) / (1.0 - 2.0 * m);
@@ -275,7 +285,10 @@ estimateCeilingHeight (const std::vector<Eigen::Vector3d>& points,
     else
       ++below;
   }
-  if (top.size() * 5 < all.size() * 3 || below * 5 < points.size())
+  // A ceiling stands above rooms: the height range is at least a twentieth of the
+  // horizontal one (not a flat layer drawn over another, as in a map).
+  if (top.size() * 5 < all.size() * 3 || below * 5 < points.size() ||
+      hi - lo < 0.05 * std::max (a1 - a0, b1 - b0))
     return kNone;
   return clip;
 }

@@ -54,15 +54,16 @@ viewDirection (const std::vector<Eigen::Vector3d>& points,
 /** \brief Frames \a points seen along \a direction (camera up \a up, made orthogonal to
  * it) in a frame of aspect \a aspect (width / height).
  *
- * The frame holds the robust bounds of the points projected on the picture plane.
- * Sparse parts do not count (far rings of a scanner's ground, stray returns): on a 48 x
- * 48 grid over the 1st to 99th percentile box, the points of cells holding less than a
- * tenth of the median occupied cell's count are left out (unless that leaves out half
- * of the points). Of the rest, per axis, the 1st to 99th percentile is taken, widened
- * to take in every point within half the larger of the two axes' percentile ranges (the
- * subject's own tails: a mast on a plate). A \a margin (a fraction of the frame on each
- * side) keeps the subject off the edges. Points outside fall outside the picture. Empty
- * \a points give the default Framing. */
+ * The frame holds the robust bounds of the points projected on the picture plane: the
+ * 1st to 99th percentile per axis of the points of the dense parts, widened to take in
+ * every point within half the larger of the two percentile ranges of that box (the
+ * subject's own thin or sparse parts: a mast on a plate, the near ground of a scan).
+ * The dense parts are the points of the cells of a 48 x 48 grid over the 1st to 99th
+ * percentile box of all points that hold at least a tenth of the count of the median
+ * point's cell (all points when that would leave out half of them), so that far, sparse
+ * parts (the far rings of a scanner's ground, stray returns) do not shrink the subject:
+ * they fall outside the frame. A \a margin (a fraction of the frame on each side) keeps
+ * the subject off the edges. Empty \a points give the default Framing. */
 Framing
 frameRobustly (const std::vector<Eigen::Vector3d>& points,
                const Eigen::Vector3d& direction,
@@ -75,7 +76,8 @@ frameRobustly (const std::vector<Eigen::Vector3d>& points,
  *
  * A ceiling is a thin layer of points at the top of the height range (in its upper
  * fifth) that covers most (at least three fifths) of the cloud's horizontal footprint,
- * so that any view from above would show only it. Heights are binned in 64 bins; the
+ * so that any view from above would show only it, in a cloud whose height range is at
+ * least a twentieth of its horizontal extent. Heights are binned in 64 bins; the
  * layer is the highest bin holding at least four times the median bin's count. */
 double
 estimateCeilingHeight (const std::vector<Eigen::Vector3d>& points,
