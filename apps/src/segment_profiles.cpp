@@ -88,6 +88,17 @@ renderProfiles (const pcl::PointCloud<pcl::PointXYZ>& cloud,
       cloud, pcl_ext::visualization::colourByLabel (by_chain))});
   options.width = 1600;
   options.height = 800;
+  // Seen edge-on, the profiles (slabs across phi) are clean stripes: with -view auto,
+  // look as steeply down as a direction orthogonal to phi allows.
+  if (options.view == pcl_ext::visualization::ViewKind::Auto) {
+    const Eigen::Vector3d n = phi.cast<double>().normalized();
+    Eigen::Vector3d down = -(options.up - options.up.dot (n) * n);
+    if (down.norm() < 1e-6) // phi vertical: any horizontal direction is orthogonal
+      down = n.cross (Eigen::Vector3d::UnitX()).norm() > 1e-6
+                 ? Eigen::Vector3d (n.cross (Eigen::Vector3d::UnitX()))
+                 : Eigen::Vector3d (n.cross (Eigen::Vector3d::UnitY()));
+    options.view_direction = down.normalized();
+  }
   return pcl_ext::visualization::renderToPng ({profiles, chains}, path, options);
 }
 #endif
