@@ -64,7 +64,8 @@ makeFootprintView (const std::string& title,
       colours[i] = {150, 150, 150};
   view.layers.push_back ({makeColouredCloud (walls, colours)});
   if (!footprint.empty()) {
-    // The outline a little above the points, drawn over them in the top view.
+    // The outline a little above the points, drawn over them in the top view, one pixel
+    // wide so that the colours of the points on it show on both sides.
     pcl::PointCloud<pcl::PointXYZ> outline;
     double length = 0.0;
     for (const auto& [a, b] : footprint)
@@ -80,7 +81,7 @@ makeFootprintView (const std::string& title,
     view.layers.push_back (
         {makeColouredCloud (outline,
                             std::vector<Colour> (outline.size(), Colour{0, 0, 0})),
-         2.0});
+         1.0});
     view.legend.push_back ({"footprint", {0, 0, 0}});
     view.colour_bar = {
         "distance to footprint", 0.0f, float (max_residual), ColourMap::Jet};
