@@ -540,7 +540,7 @@ main (int argc, char** argv)
   pcl_ext::visualization::parseViewKind (picture.view, options.view);
   if (options.view == pcl_ext::visualization::ViewKind::Auto)
     options.view = pcl_ext::visualization::ViewKind::Top;
-  options.max_height = picture.max_z;
+  picture.maxHeight (options.max_height);
   options.width = 1000;
   options.height = 900;
   for (const auto& [path, before] :

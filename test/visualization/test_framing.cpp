@@ -143,24 +143,19 @@ TEST (Framing, SpacingOfAGrid)
   EXPECT_TRUE (std::isnan (estimateSpacing ({Eigen::Vector3d::Zero()})));
 }
 
-TEST (Framing, SideViewsLookFromTheScannersSide)
+TEST (Framing, SideViewsLookFromTheSensorsSide)
 {
-  // A street 20 long (x) and 8 wide, its rows crowding near y = 0 as a scan's rings
-  // crowd near the scanner: the camera stands on that side and looks towards +y.
+  // A street 20 long (x) and 8 wide.
   std::vector<Eigen::Vector3d> points;
-  for (int r = 0; r < 40; ++r)
-    for (int i = 0; i <= 200; ++i)
-      points.emplace_back (0.1 * i, 8.0 * (r / 40.0) * (r / 40.0), 0.0);
+  addGrid (points, 201, 81, 0.1, 0.0);
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
-  const Eigen::Vector3d nan = Eigen::Vector3d::Constant (std::nan (""));
-  EXPECT_GT (viewDirection (points, ViewKind::Side, up, nan).y(), 0.99);
-  EXPECT_GT (viewDirection (points, ViewKind::Oblique, up, nan).y(), 0.5);
-  // Mirrored, the camera moves to the other side.
-  for (auto& p : points)
-    p.y() = -p.y();
-  EXPECT_LT (viewDirection (points, ViewKind::Side, up, nan).y(), -0.99);
-  // A known sensor decides: at y = +30, the camera looks towards -y.
-  EXPECT_LT (
-      viewDirection (points, ViewKind::Side, up, Eigen::Vector3d (10.0, 30.0, 1.0)).y(),
-      -0.99);
+  // A sensor at y = -30 puts the camera on its side, looking towards +y; at y = +30,
+  // towards -y.
+  for (const double y : {-30.0, 30.0}) {
+    const Eigen::Vector3d sensor (10.0, y, 1.0);
+    EXPECT_GT (viewDirection (points, ViewKind::Side, up, sensor).y() * -y,
+               0.99 * 30.0);
+    EXPECT_GT (viewDirection (points, ViewKind::Oblique, up, sensor).y() * -y,
+               0.5 * 30.0);
+  }
 }

@@ -138,24 +138,14 @@ viewDirection (const std::vector<Eigen::Vector3d>& points,
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver (spread);
   const Eigen::Vector2d minor = solver.eigenvectors().col (0);
   Eigen::Vector3d across = minor.x() * a + minor.y() * b;
-  // From the scanner's side: the sensor's when it is known, else the side where the
-  // points are densest (a scan's points crowd near the scanner, so their mean lies off
-  // the middle of their extent towards it); a fixed side when neither tells.
+  // From the sensor's side when it is known, else from a fixed side (so that the same
+  // cloud is always seen from the same side).
   Eigen::Vector3d reference = Eigen::Vector3d (-1.0, -1.4, 0.0);
-  if (!points.empty()) {
-    Eigen::Vector3d mean3 = Eigen::Vector3d::Zero();
-    double lo = std::numeric_limits<double>::max(), hi = -lo;
-    for (const auto& p : points) {
-      mean3 += p;
-      lo = std::min (lo, p.dot (across));
-      hi = std::max (hi, p.dot (across));
-    }
-    mean3 /= double (points.size());
-    const double middle = 0.5 * (lo + hi), offset = mean3.dot (across) - middle;
-    if (sensor_known)
-      reference = mean3 - sensor;
-    else if (std::abs (offset) > 0.05 * (hi - lo))
-      reference = -offset * across;
+  if (sensor_known && !points.empty()) {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto& p : points)
+      mean += p;
+    reference = mean / double (points.size()) - sensor;
   }
   if (across.dot (reference) < 0.0)
     across = -across;

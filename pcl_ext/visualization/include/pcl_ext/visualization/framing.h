@@ -44,9 +44,8 @@ struct Framing {
  * scene's up direction (unit length) and \a sensor the scanner's position (NaN when
  * unknown; Sensor then falls back to Oblique). Side and Oblique look across the longer
  * axis of the points' horizontal spread, so a long building is seen along its length,
- * from the scanner's side: the sensor's when it is known, else the side the points'
- * mean lies on (by more than 5 % of their extent across; a scan's points crowd near its
- * scanner), else a fixed side. Sensor looks from the sensor at the points' median. */
+ * from the sensor's side when it is known, else from a fixed side. Sensor looks from
+ * the sensor at the points' median. */
 Eigen::Vector3d
 viewDirection (const std::vector<Eigen::Vector3d>& points,
                ViewKind kind,
