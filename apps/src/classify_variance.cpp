@@ -18,6 +18,8 @@
 #include <pcl/common/io.h>
 #include <pcl/conversions.h>
 
+#include <pcl_ext/apps/picture_options.h>
+
 #include <cstring>
 #include <cmath>
 #include <iostream>
@@ -55,10 +57,14 @@ main (int argc, char** argv)
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png",
                 png_path,
-                "also render the labels to this PNG (blue surface, red edge, "
-                "green boundary); needs an X display");
+                "also render the classes to this PNG, with a legend; needs an X "
+                "display");
+  pcl_ext::apps::PictureOptions picture;
+  picture.addTo (cl);
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
+  if (!picture.valid())
+    return 1;
   if (!options.valid (cl))
     return 1;
   if (!result.checkOutput (output_path, {png_path}))
@@ -108,12 +114,12 @@ main (int argc, char** argv)
 #ifdef PCL_EXT_HAVE_VISUALIZATION
     pcl_ext::apps::StageTimer render ("Rendering " + png_path);
     pcl_ext::visualization::View view;
-    view.title = "Belton & Lichti: surface (blue), edge (red), boundary (green)";
-    view.layers.push_back (
-        {pcl_ext::visualization::makeColouredCloud (
-             *cloud, pcl_ext::visualization::colourByClass (classes)),
-         2.0});
-    if (!pcl_ext::visualization::renderToPng ({view}, png_path))
+    view.title = "Belton & Lichti: local variance classes";
+    view.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
+        *cloud, pcl_ext::visualization::colourByClass (classes))});
+    view.legend = pcl_ext::visualization::classLegend();
+    if (!pcl_ext::visualization::renderToPng (
+            {view}, png_path, picture.renderOptions (*cloud)))
       return 1;
     render.done (labels.size());
 #else

@@ -10,6 +10,7 @@
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
 #include <pcl_ext/apps/output.h>
+#include <pcl_ext/apps/picture_options.h>
 #include <pcl_ext/io/cloud_fields.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
@@ -106,8 +107,12 @@ main (int argc, char** argv)
   result.addTo (cl);
   cl.addSwitch (
       "truth", truth, "the input's labels are ground truth: print the metrics");
+  pcl_ext::apps::PictureOptions picture;
+  picture.addTo (cl);
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
+  if (!picture.valid())
+    return 1;
   if (!result.checkOutput (output, {png}))
     return 1;
   pcl_ext::MultiscaleCrfModel model;
@@ -188,16 +193,22 @@ main (int argc, char** argv)
   if (!png.empty()) {
 #ifdef PCL_EXT_HAVE_VISUALIZATION
     using namespace pcl_ext::visualization;
+    // One legend line per class of the model.
+    std::vector<LegendEntry> legend;
+    const auto& names = model.getClassNames();
+    for (const auto& [id, name] : names)
+      legend.push_back ({name, colourByLabel ({id}).front()});
+    legend.push_back ({"unclassified", colourByLabel ({0u}).front()});
     std::vector<View> views;
     if (truth)
       views.push_back (
           {"ground truth",
-           {{makeColouredCloud (*cloud.input.xyz, colourByLabel (truth_labels)),
-             2.0}}});
-    views.push_back (
-        {"multi-scale CRF",
-         {{makeColouredCloud (*cloud.input.xyz, colourByLabel (labels)), 2.0}}});
-    if (!renderToPng (views, png))
+           {{makeColouredCloud (*cloud.input.xyz, colourByLabel (truth_labels))}},
+           legend});
+    views.push_back ({"multi-scale CRF (Lim & Suter)",
+                      {{makeColouredCloud (*cloud.input.xyz, colourByLabel (labels))}},
+                      legend});
+    if (!renderToPng (views, png, picture.renderOptions (*cloud.input.xyz)))
       return 1;
 #else
     std::cerr << "pcl_ext_crf_classify: built without rendering; -png ignored\n";

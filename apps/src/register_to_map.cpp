@@ -11,8 +11,10 @@
 #include <pcl_ext/io/point_file.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
+#include <pcl_ext/apps/picture_options.h>
 #include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
+#include <pcl_ext/visualization/footprint_view.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
 #endif
 
@@ -51,63 +53,32 @@ planeDistances (const pcl_ext::PlaneMatchingRegistration<Point, Point>& reg,
 }
 
 #ifdef PCL_EXT_HAVE_VISUALIZATION
-// Top view (figures 3 and 5): footprint outline in black, scan in grey, matched planes
-// in colour.
-bool
+// Top view (figures 3 and 5): the scan's wall points (inliers of its vertical planes)
+// moved by \a transform, coloured by their distance to the footprint drawn over them.
+pcl_ext::visualization::View
 renderTopView (const pcl::PointCloud<Point>& scan,
                const std::vector<pcl_ext::ScanPlane>& planes,
-               const pcl_ext::PlaneMatchingResult& result,
                const Eigen::Matrix4d& transform,
                const std::vector<pcl_ext::MapPlane>& map,
-               const std::string& title,
-               pcl_ext::visualization::View& view)
+               const std::string& title)
 {
-  pcl::PointCloud<pcl::PointXYZRGB>::Ptr outline (
-      new pcl::PointCloud<pcl::PointXYZRGB>);
-  for (const auto& wall : map) {
-    if (wall.isFloor())
+  pcl_ext::visualization::FootprintSegments footprint;
+  for (const auto& wall : map)
+    if (!wall.isFloor())
+      footprint.emplace_back (wall.start, wall.end);
+  std::vector<Eigen::Vector3d> walls;
+  for (const auto& plane : planes) {
+    // Walls are vertical in the scan as in the map (the registration is about z only
+    // up to a small tilt).
+    const Eigen::Vector3d n = transform.topLeftCorner<3, 3>() * plane.normal;
+    if (!(std::abs (n.z()) < 0.3))
       continue;
-    const int steps = std::max (2, static_cast<int> (wall.length() / 0.1));
-    for (int i = 0; i <= steps; ++i) {
-      const Eigen::Vector2d q =
-          wall.start + (wall.end - wall.start) * (double (i) / steps);
-      pcl::PointXYZRGB p (std::uint8_t (0), std::uint8_t (0), std::uint8_t (0));
-      p.x = static_cast<float> (q.x());
-      p.y = static_cast<float> (q.y());
-      p.z =
-          0.05f; // a flat top view: a perspective camera would magnify anything higher
-      outline->push_back (p);
-    }
+    for (const auto i : plane.inliers.indices)
+      walls.push_back (
+          (transform * Eigen::Vector4d (scan[i].x, scan[i].y, scan[i].z, 1.0))
+              .head<3>());
   }
-  std::vector<int> colour (scan.size(), -1);
-  for (std::size_t m = 0; m < result.matches.size(); ++m)
-    if (map[result.matches[m].map].isFloor() == false) // the floor would cover the view
-      for (const auto i : planes[result.matches[m].scan].inliers.indices)
-        colour[i] = static_cast<int> (m);
-  static const std::uint8_t palette[8][3] = {{228, 26, 28},
-                                             {55, 126, 184},
-                                             {77, 175, 74},
-                                             {152, 78, 163},
-                                             {255, 127, 0},
-                                             {166, 86, 40},
-                                             {247, 129, 191},
-                                             {0, 150, 150}};
-  pcl::PointCloud<pcl::PointXYZRGB>::Ptr moved (new pcl::PointCloud<pcl::PointXYZRGB>);
-  for (std::size_t i = 0; i < scan.size(); ++i) {
-    const Eigen::Vector4d q =
-        transform * Eigen::Vector4d (scan[i].x, scan[i].y, scan[i].z, 1.0);
-    const std::uint8_t* c = colour[i] < 0 ? nullptr : palette[colour[i] % 8];
-    pcl::PointXYZRGB p (std::uint8_t (c ? c[0] : 170),
-                        std::uint8_t (c ? c[1] : 170),
-                        std::uint8_t (c ? c[2] : 170));
-    p.x = static_cast<float> (q.x());
-    p.y = static_cast<float> (q.y());
-    p.z = 0.f;
-    moved->push_back (p);
-  }
-  view.title = title;
-  view.layers = {{moved, 1.0}, {outline, 2.0}};
-  return true;
+  return pcl_ext::visualization::makeFootprintView (title, walls, footprint);
 }
 #endif
 
@@ -295,8 +266,12 @@ main (int argc, char** argv)
   cl.addOption ("threads", threads, "threads of the search (0 = all cores)");
   cl.addOption ("png", png, "top view of the registered scan over the footprint");
   cl.addOption ("png_before", png_before, "top view before registration");
+  pcl_ext::apps::PictureOptions picture;
+  picture.addTo (cl);
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
+  if (!picture.valid())
+    return 1;
 
   // Bad values are refused before anything is read or written.
   if (!(max_rotation > 0.0)) {
@@ -561,21 +536,24 @@ main (int argc, char** argv)
   }
 #ifdef PCL_EXT_HAVE_VISUALIZATION
   pcl_ext::visualization::RenderOptions options;
-  options.view_direction = Eigen::Vector3d (0, 0, -1);
-  options.up = Eigen::Vector3d::UnitY();
-  options.zoom_out = 1.6;
+  options.view = pcl_ext::visualization::ViewKind::Top; // -view auto: the top view
+  pcl_ext::visualization::parseViewKind (picture.view, options.view);
+  if (options.view == pcl_ext::visualization::ViewKind::Auto)
+    options.view = pcl_ext::visualization::ViewKind::Top;
+  picture.maxHeight (options.max_height);
+  options.width = 1000;
+  options.height = 900;
   for (const auto& [path, before] :
        {std::make_pair (png, false), std::make_pair (png_before, true)}) {
     if (path.empty())
       continue;
-    pcl_ext::visualization::View view;
-    renderTopView (*scan,
-                   reg.getSourcePlanes(),
-                   result,
-                   before ? Eigen::Matrix4d::Identity() : t,
-                   reg.getMapPlanes(),
-                   before ? "before registration" : "registered to the footprint",
-                   view);
+    const pcl_ext::visualization::View view =
+        renderTopView (*scan,
+                       reg.getSourcePlanes(),
+                       before ? Eigen::Matrix4d::Identity() : t,
+                       reg.getMapPlanes(),
+                       before ? "wall points before registration, over the footprint"
+                              : "wall points registered to the footprint");
     if (!pcl_ext::visualization::renderToPng ({view}, path, options))
       return 1;
   }

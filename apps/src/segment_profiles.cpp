@@ -10,6 +10,7 @@
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
 #include <pcl_ext/apps/output.h>
+#include <pcl_ext/apps/picture_options.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
@@ -47,7 +48,8 @@ parseMethod (const std::string& name, Segmentation::ProfileMethod& method)
 bool
 renderProfiles (const pcl::PointCloud<pcl::PointXYZ>& cloud,
                 const Segmentation& seg,
-                const std::string& path)
+                const std::string& path,
+                pcl_ext::visualization::RenderOptions options)
 {
   const std::vector<int> profile = seg.getProfileOfPoints (0);
   if (profile.size() != cloud.size() || seg.getStackEdges().empty())
@@ -79,18 +81,24 @@ renderProfiles (const pcl::PointCloud<pcl::PointXYZ>& cloud,
                  phi.z(),
                  seg.getUsedProfileWidth());
   profiles.title = title;
-  profiles.layers.push_back (
-      {pcl_ext::visualization::makeColouredCloud (
-           cloud, pcl_ext::visualization::colourByLabel (by_profile)),
-       2.0});
+  profiles.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
+      cloud, pcl_ext::visualization::colourByLabel (by_profile))});
   chains.title = "Stack 1: chains after profile segmentation";
-  chains.layers.push_back (
-      {pcl_ext::visualization::makeColouredCloud (
-           cloud, pcl_ext::visualization::colourByLabel (by_chain)),
-       2.0});
-  pcl_ext::visualization::RenderOptions options;
+  chains.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
+      cloud, pcl_ext::visualization::colourByLabel (by_chain))});
   options.width = 1600;
   options.height = 800;
+  // Seen edge-on, the profiles (slabs across phi) are clean stripes: with -view auto,
+  // look as steeply down as a direction orthogonal to phi allows.
+  if (options.view == pcl_ext::visualization::ViewKind::Auto) {
+    const Eigen::Vector3d n = phi.cast<double>().normalized();
+    Eigen::Vector3d down = -(options.up - options.up.dot (n) * n);
+    if (down.norm() < 1e-6) // phi vertical: any horizontal direction is orthogonal
+      down = n.cross (Eigen::Vector3d::UnitX()).norm() > 1e-6
+                 ? Eigen::Vector3d (n.cross (Eigen::Vector3d::UnitX()))
+                 : Eigen::Vector3d (n.cross (Eigen::Vector3d::UnitY()));
+    options.view_direction = down.normalized();
+  }
   return pcl_ext::visualization::renderToPng ({profiles, chains}, path, options);
 }
 #endif
@@ -223,8 +231,12 @@ main (int argc, char** argv)
   cl.addOption ("png_profiles",
                 png_profiles_path,
                 "also render the first stack's profiles and chains to this PNG");
+  pcl_ext::apps::PictureOptions picture;
+  picture.addTo (cl);
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
+  if (!picture.valid())
+    return 1;
   Segmentation::ProfileMethod method = Segmentation::ProfileMethod::Proximity;
   const bool automatic = method_name == "auto";
   if (!automatic && !parseMethod (method_name, method)) {
@@ -403,15 +415,18 @@ main (int argc, char** argv)
       view.title = "Sithole & Mapurisa: " + std::to_string (clusters.size()) +
                    " segments (" + method_name + ")";
       view.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
-                                  *cloud, pcl_ext::visualization::colourByLabel (ids)),
-                              2.0});
-      if (!pcl_ext::visualization::renderToPng ({view}, png_path))
+          *cloud, pcl_ext::visualization::colourByLabel (ids))});
+      view.legend.push_back (
+          {"unsegmented", pcl_ext::visualization::colourByLabel ({0u}).front()});
+      if (!pcl_ext::visualization::renderToPng (
+              {view}, png_path, picture.renderOptions (*cloud)))
         return 1;
       render.done (labels.size());
     }
     if (!png_profiles_path.empty()) {
       pcl_ext::apps::StageTimer render ("Rendering " + png_profiles_path);
-      if (!renderProfiles (*cloud, seg, png_profiles_path))
+      if (!renderProfiles (
+              *cloud, seg, png_profiles_path, picture.renderOptions (*cloud)))
         return 1;
       render.done (labels.size());
     }

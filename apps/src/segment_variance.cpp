@@ -16,6 +16,7 @@
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
 #include <pcl_ext/apps/output.h>
+#include <pcl_ext/apps/picture_options.h>
 #include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 #include <pcl_ext/visualization/colour_maps.h>
@@ -88,8 +89,12 @@ main (int argc, char** argv)
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption (
       "png", png_path, "also render the segments to this PNG; needs an X display");
+  pcl_ext::apps::PictureOptions picture;
+  picture.addTo (cl);
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
+  if (!picture.valid())
+    return 1;
   if (!options.valid (cl))
     return 1;
   if (k < 3) {
@@ -236,11 +241,12 @@ main (int argc, char** argv)
     pcl_ext::apps::StageTimer render ("Rendering " + png_path);
     pcl_ext::visualization::View view;
     view.title = "Belton & Lichti: " + std::to_string (clusters.size()) + " segments";
-    if (!intersections.empty())
-      view.title += ", local intersections in black";
     view.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
-                                *cloud, pcl_ext::visualization::colourByLabel (ids)),
-                            2.0});
+        *cloud, pcl_ext::visualization::colourByLabel (ids))});
+    view.legend.push_back (
+        {"unsegmented", pcl_ext::visualization::colourByLabel ({0u}).front()});
+    if (!intersections.empty())
+      view.legend.push_back ({"local intersection", {0, 0, 0}});
     // Intersection points in black, larger, on top of the segments.
     if (!intersections.empty())
       view.layers.push_back (
@@ -249,7 +255,8 @@ main (int argc, char** argv)
                std::vector<pcl_ext::visualization::Colour> (
                    intersections.size(), pcl_ext::visualization::Colour{0, 0, 0})),
            4.0});
-    if (!pcl_ext::visualization::renderToPng ({view}, png_path))
+    if (!pcl_ext::visualization::renderToPng (
+            {view}, png_path, picture.renderOptions (*cloud)))
       return 1;
     render.done (ids.size());
 #else

@@ -140,6 +140,12 @@ TEST_F (SegmentVarianceApp, RendersThePng)
              720);
   png.seekg (0, std::ios::end);
   EXPECT_GT (png.tellg(), 20000); // more than a blank image compresses to
+  // Every view and the height clip are accepted.
+  for (const char* view : {"top", "side", "oblique", "sensor"})
+    EXPECT_EQ (run (path ("cube.pcd") + " " + path ("out.pcd") + " -png " +
+                    path ("out.png") + " -png_max_z none -view " + view),
+               0)
+        << view << ": " << output_;
 }
 
 TEST_F (SegmentVarianceApp, BadUsageAndInputFailWithoutOutput)
@@ -158,6 +164,10 @@ TEST_F (SegmentVarianceApp, BadUsageAndInputFailWithoutOutput)
   EXPECT_EQ (run (io + " -variance_threshold -1"), 1);
   EXPECT_EQ (run (io + " -k"), 1);
   EXPECT_EQ (run (io + " -bogus 3"), 1);
+  EXPECT_EQ (run (io + " -view below"), 1);
+  EXPECT_NE (output_.find ("-view must be"), std::string::npos) << output_;
+  EXPECT_EQ (run (io + " -png_max_z high"), 1);
+  EXPECT_NE (output_.find ("-png_max_z must be"), std::string::npos) << output_;
   EXPECT_FALSE (exists ("out.pcd"));
   EXPECT_EQ (run (path ("missing.pcd") + " " + path ("out.pcd")), 1);
   EXPECT_FALSE (exists ("out.pcd"));

@@ -114,3 +114,17 @@ TEST (Montage, LabelViewColoursTheCloudByLabel)
   ASSERT_EQ (empty.layers.size(), 1u);
   EXPECT_TRUE (empty.layers[0].cloud->empty());
 }
+
+TEST (Montage, SegmentsTakeTheLabelOfTheTruthTheyOverlapMost)
+{
+  using pcl_ext::visualization::matchLabelsToReference;
+  // Truth: 1 1 1 1 2 2 2 0 3 3. Result: 7 7 7 5 5 5 5 0 9 4.
+  const std::vector<std::uint32_t> truth = {1, 1, 1, 1, 2, 2, 2, 0, 3, 3};
+  const std::vector<std::uint32_t> result = {7, 7, 7, 5, 5, 5, 5, 0, 9, 4};
+  const auto matched = matchLabelsToReference (result, truth);
+  // 7 overlaps 1 by 3, 5 overlaps 2 by 3 (and 1 by 1, already taken), 9 and 4 overlap 3
+  // by one each: 4 (the smaller label) takes it, 9 gets a new label above the truth's.
+  const std::vector<std::uint32_t> expected = {1, 1, 1, 2, 2, 2, 2, 0, 4, 3};
+  EXPECT_EQ (matched, expected);
+  EXPECT_EQ (matchLabelsToReference ({1, 2}, {1}), (std::vector<std::uint32_t>{1, 2}));
+}

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <fstream>
 #include <unistd.h>
+#include <limits>
 
 TEST (OffscreenRenderer, WritesPngOfRequestedSizeShowingTheCloud)
 {
@@ -122,5 +123,170 @@ TEST (OffscreenRenderer, LongTitlesStayInsideTheirPanel)
     }
   EXPECT_GT (title, 100u);
   EXPECT_EQ (right_margin, 0u);
+  std::remove (path.c_str());
+}
+
+namespace {
+using namespace pcl_ext::visualization;
+
+/** A long box's surface (8 x 2 x 3, spacing about 0.05) in one colour. */
+pcl::PointCloud<pcl::PointXYZ>
+boxCloud ()
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  const double step = 0.05;
+  for (double a = 0; a <= 8.0; a += step)
+    for (double b = 0; b <= 3.0; b += step) {
+      cloud.push_back (pcl::PointXYZ (a, 0.0, b));
+      cloud.push_back (pcl::PointXYZ (a, 2.0, b));
+    }
+  for (double a = 0; a <= 2.0; a += step)
+    for (double b = 0; b <= 3.0; b += step) {
+      cloud.push_back (pcl::PointXYZ (0.0, a, b));
+      cloud.push_back (pcl::PointXYZ (8.0, a, b));
+    }
+  for (double a = 0; a <= 8.0; a += step)
+    for (double b = 0; b <= 2.0; b += step)
+      cloud.push_back (pcl::PointXYZ (a, b, 0.0));
+  return cloud;
+}
+
+View
+oneColour (const pcl::PointCloud<pcl::PointXYZ>& cloud, Colour colour)
+{
+  View view;
+  view.layers.push_back (
+      {makeColouredCloud (cloud, std::vector<Colour> (cloud.size(), colour))});
+  return view;
+}
+} // namespace
+
+TEST (OffscreenRenderer, EveryViewFramesTheSubjectDespiteFarOutliers)
+{
+  ASSERT_TRUE (displayAvailable());
+  // The box in blue; 40 far points (0.4 %) in red, as a few far returns of a scan.
+  auto box = boxCloud();
+  pcl::PointCloud<pcl::PointXYZ> far;
+  for (int i = 0; i < 40; ++i)
+    far.push_back (pcl::PointXYZ (60.0 + i, -50.0 + 2.0 * i, 10.0 + (i % 5)));
+  View view = oneColour (box, {40, 60, 220});
+  view.title = "box";
+  view.layers.push_back (oneColour (far, {230, 20, 20}).layers.front());
+  for (const ViewKind kind :
+       {ViewKind::Auto, ViewKind::Top, ViewKind::Side, ViewKind::Oblique}) {
+    RenderOptions options;
+    options.width = 400;
+    options.height = 300;
+    options.view = kind;
+    const std::string path = temporaryPng ("framed_" + viewKindName (kind));
+    ASSERT_TRUE (renderToPng ({view}, path, options));
+    const Picture picture = readPicture (path);
+    ASSERT_EQ (picture.width, 400);
+    SCOPED_TRACE (viewKindName (kind));
+    expectFramed (
+        pixelBox (picture, near (40, 60, 220, 60), 0, 0, 400, 300), 0, 0, 400, 300);
+    std::remove (path.c_str());
+  }
+}
+
+TEST (OffscreenRenderer, SensorViewLooksFromTheSensorAtAScene)
+{
+  ASSERT_TRUE (displayAvailable());
+  // A depth camera's image: a table top (y = 0.3, below the camera) seen from the
+  // origin, an organised cloud in the camera's frame (y down). Its top must face the
+  // camera's up.
+  pcl::PointCloud<pcl::PointXYZ> table;
+  for (int r = 0; r < 40; ++r)
+    for (int c = 0; c < 60; ++c)
+      table.push_back (pcl::PointXYZ (-0.6 + 0.02 * c, 0.3, 1.0 + 0.02 * r));
+  table.width = 60;
+  table.height = 40;
+  RenderOptions options;
+  setSceneFrame (table, options);
+  EXPECT_NEAR (options.up.y(), -1.0, 1e-9);
+  EXPECT_TRUE (options.sensor.isZero());
+  options.width = 320;
+  options.height = 240;
+  const std::string path = temporaryPng ("sensor");
+  ASSERT_TRUE (renderToPng ({oneColour (table, {40, 60, 220})}, path, options));
+  const Picture picture = readPicture (path);
+  expectFramed (
+      pixelBox (picture, near (40, 60, 220, 60), 0, 0, 320, 240), 0, 0, 320, 240);
+  std::remove (path.c_str());
+}
+
+TEST (OffscreenRenderer, CeilingLeftOutByDefaultAndKeptOnRequest)
+{
+  ASSERT_TRUE (displayAvailable());
+  // A room: the box's floor and walls in blue, a ceiling at z = 3 in red.
+  const auto walls = boxCloud();
+  pcl::PointCloud<pcl::PointXYZ> ceiling;
+  for (double a = 0; a <= 8.0; a += 0.05)
+    for (double b = 0; b <= 2.0; b += 0.05)
+      ceiling.push_back (pcl::PointXYZ (a, b, 3.0));
+  View room = oneColour (walls, {40, 60, 220});
+  room.layers.push_back (oneColour (ceiling, {230, 20, 20}).layers.front());
+  RenderOptions options;
+  options.width = 400;
+  options.height = 300;
+  const std::string path = temporaryPng ("ceiling");
+  ASSERT_TRUE (renderToPng ({room}, path, options));
+  const auto red = near (230, 20, 20, 40);
+  EXPECT_EQ (pixelBox (readPicture (path), red, 0, 0, 400, 300).count, 0u);
+  expectFramed (pixelBox (readPicture (path), near (40, 60, 220, 60), 0, 0, 400, 300),
+                0,
+                0,
+                400,
+                300);
+  options.max_height = std::numeric_limits<double>::infinity();
+  ASSERT_TRUE (renderToPng ({room}, path, options));
+  EXPECT_GT (pixelBox (readPicture (path), red, 0, 0, 400, 300).count, 1000u);
+  std::remove (path.c_str());
+}
+
+TEST (OffscreenRenderer, LegendAndColourBarBesideTheSubject)
+{
+  ASSERT_TRUE (displayAvailable());
+  const auto cloud = sphereCloud (20000);
+  std::vector<float> height;
+  for (const auto& p : cloud)
+    height.push_back (p.z);
+  View view;
+  view.title = "height";
+  view.layers.push_back (
+      {makeColouredCloud (cloud, colourByScalar (height, ColourMap::Jet))});
+  view.legend = {{"edge", {225, 30, 30}}, {"unsegmented", {170, 170, 170}}};
+  view.colour_bar = {"height (m)", -1.0f, 1.0f, ColourMap::Grey};
+  RenderOptions options;
+  options.width = 640;
+  options.height = 400;
+  const std::string path = temporaryPng ("legend");
+  ASSERT_TRUE (renderToPng ({view}, path, options));
+  const Picture picture = readPicture (path);
+  // The legend column is at the right: the swatches' exact colours and the grey bar's
+  // dark and light ends are there; the sphere (no grey in Jet) is left of it.
+  const int column = 640 - 640 * 2 / 5;
+  EXPECT_GT (
+      pixelBox (picture, near (225, 30, 30, 4), column, 0, 640 - column, 400).count,
+      50u);
+  EXPECT_GT (
+      pixelBox (picture, near (170, 170, 170, 4), column, 0, 640 - column, 400).count,
+      50u);
+  EXPECT_GT (
+      pixelBox (picture, near (20, 20, 20, 12), column, 0, 640 - column, 400).count,
+      20u);
+  EXPECT_GT (
+      pixelBox (picture, near (235, 235, 235, 12), column, 0, 640 - column, 400).count,
+      20u);
+  const auto sphere = [] (const std::uint8_t* p) {
+    const int hi = std::max ({p[0], p[1], p[2]}), lo = std::min ({p[0], p[1], p[2]});
+    return hi - lo > 60; // Jet's saturated colours, not text, grey or background
+  };
+  const PixelBox subject = pixelBox (picture, sphere, 0, 0, 640, 400);
+  expectFramed (subject, 0, 0, 640, 400);
+  // The swatch's red is in Jet too: the subject must stay left of the legend's text.
+  const PixelBox text = pixelBox (
+      picture, near (0, 0, 0, 60), subject.x1 + 1, 0, 640 - subject.x1 - 1, 400);
+  EXPECT_GT (text.count, 30u);
   std::remove (path.c_str());
 }

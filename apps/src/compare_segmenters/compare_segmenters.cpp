@@ -10,6 +10,7 @@
 #include <pcl_ext/segmentation/profile_stacks.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
+#include <pcl_ext/apps/picture_options.h>
 #include <pcl_ext/io/point_file.h>
 #include <pcl_ext/io/file_output.h>
 #ifdef PCL_EXT_HAVE_VISUALIZATION
@@ -77,22 +78,17 @@ renderMontage (const std::string& path,
                const std::vector<MethodResult>& results,
                int tile_width,
                int tile_height,
-               double max_z)
+               const pcl_ext::apps::PictureOptions& picture)
 {
   namespace vis = pcl_ext::visualization;
   pcl_ext::apps::StageTimer timer ("Rendering " + path);
-  std::vector<std::size_t> shown;
-  pcl::PointCloud<pcl::PointXYZ> cloud;
-  for (std::size_t i = 0; i < c.input.cloud->size(); ++i)
-    if ((*c.input.cloud)[i].z <= max_z) {
-      shown.push_back (i);
-      cloud.push_back ((*c.input.cloud)[i]);
-    }
-  const auto pick = [&shown] (const std::vector<std::uint32_t>& labels) {
-    std::vector<std::uint32_t> picked (shown.size());
-    for (std::size_t j = 0; j < shown.size(); ++j)
-      picked[j] = labels[shown[j]];
-    return picked;
+  const pcl::PointCloud<pcl::PointXYZ>& cloud = *c.input.cloud;
+  // With a truth, every result's segments take the colour of the truth segment they
+  // overlap most, so that the tiles compare at a glance.
+  const auto pick = [&c] (const std::vector<std::uint32_t>& labels) {
+    return c.truth.empty()
+               ? labels
+               : pcl_ext::visualization::matchLabelsToReference (labels, c.truth);
   };
   std::vector<vis::View> views;
   const bool with_truth = !c.truth.empty();
@@ -102,18 +98,21 @@ renderMontage (const std::string& path,
     views.push_back (vis::makeLabelView (
         "ground truth: " + std::to_string (distinct.size()) + " segments",
         cloud,
-        pick (c.truth)));
+        c.truth));
   }
   for (const auto& r : results)
     if (r.ok)
       views.push_back (
           vis::makeLabelView (tileTitle (r, with_truth), cloud, pick (r.labels)));
-  vis::RenderOptions options =
+  vis::RenderOptions options = picture.renderOptions (cloud);
+  const vis::RenderOptions montage =
       vis::makeMontageOptions (views.size(), tile_width, tile_height);
-  if (c.organised) {
-    options.view_direction = Eigen::Vector3d::UnitZ();
+  options.width = montage.width;
+  options.height = montage.height;
+  options.columns = montage.columns;
+  if (c.organised) { // a depth camera's image (before its NaN were dropped)
     options.up = -Eigen::Vector3d::UnitY();
-    options.zoom_out = 1.9;
+    options.sensor = Eigen::Vector3d::Zero();
   }
   if (!vis::renderToPng (views, path, options))
     return false;
@@ -132,7 +131,7 @@ main (int argc, char** argv)
   SegmenterSettings s;
   double spacing = 0.0, timeout = 0.0;
   int tile_width = 520, tile_height = 400;
-  double png_max_z = std::numeric_limits<double>::infinity();
+  pcl_ext::apps::PictureOptions picture;
   std::string description = "Runs pcl_ext's segmenters and stock PCL segmenters on the "
                             "same cloud (finite points) and "
                             "prints one table: segments, mean and point-weighted best "
@@ -209,12 +208,11 @@ main (int argc, char** argv)
       "png", png_path, "also render a montage of every result; needs an X display");
   cl.addOption ("tile_width", tile_width, "montage tile width in pixels");
   cl.addOption ("tile_height", tile_height, "montage tile height in pixels");
-  cl.addOption (
-      "png_max_z",
-      png_max_z,
-      "montage only: leave out points above this z (e.g. a ceiling hiding a room)");
+  picture.addTo (cl);
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
+  if (!picture.valid())
+    return 1;
 
   std::vector<SegmenterMethod> methods;
   if (!selectMethods (methods_list, all, methods))
@@ -242,8 +240,6 @@ main (int argc, char** argv)
     bad = "-max_planes must be at least 1";
   else if (!(std::isfinite (timeout) && timeout >= 0.0))
     bad = "-timeout must be 0 or positive";
-  else if (std::isnan (png_max_z))
-    bad = "-png_max_z must be a number";
   else if (tile_width < 64 || tile_height < 64 || tile_width > 4096 ||
            tile_height > 4096)
     bad = "-tile_width and -tile_height must be in [64, 4096]";
@@ -326,7 +322,7 @@ main (int argc, char** argv)
     return 1;
 #ifdef PCL_EXT_HAVE_VISUALIZATION
   if (!png_path.empty() &&
-      !renderMontage (png_path, c, results, tile_width, tile_height, png_max_z))
+      !renderMontage (png_path, c, results, tile_width, tile_height, picture))
     return 1;
 #endif
   if (!ok) {

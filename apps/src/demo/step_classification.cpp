@@ -77,13 +77,14 @@ runClassificationStep (DemoContext& context)
   RenderOptions options;
   options.width = 1600;
   options.height = 700;
-  bool ok = context.render (
-      {{"indoor: ground-truth classes",
-        {{makeColouredCloud (*cloud, colourByClass (truth)), 1.5}}},
-       {"indoor: Belton & Lichti (surface, edge, boundary)",
-        {{makeColouredCloud (*cloud, colourByClass (predicted)), 1.5}}}},
-      "classification_indoor.png",
-      options);
+  bool ok = context.render ({{"indoor: ground-truth classes",
+                              {{makeColouredCloud (*cloud, colourByClass (truth))}},
+                              classLegend()},
+                             {"indoor: Belton & Lichti",
+                              {{makeColouredCloud (*cloud, colourByClass (predicted))}},
+                              classLegend()}},
+                            "classification_indoor.png",
+                            options);
 
   // A real indoor scan, when available.
   if (context.shared_data_dir.empty())
@@ -102,11 +103,11 @@ runClassificationStep (DemoContext& context)
   RenderOptions room_options;
   room_options.width = 1200;
   room_options.height = 800;
-  return context.render (
-             {{"room_scan1.pcd: Belton & Lichti classification",
-               {{makeColouredCloud (*real, colourByClass (predicted)), 1.0}}}},
-             "classification_room_scan1.png",
-             room_options) &&
+  return context.render ({{"room_scan1.pcd: Belton & Lichti classification",
+                           {{makeColouredCloud (*real, colourByClass (predicted))}},
+                           classLegend()}},
+                         "classification_room_scan1.png",
+                         room_options) &&
          ok;
 }
 } // namespace demo

@@ -65,11 +65,22 @@ runCrfStep (DemoContext& context)
       metrics.macro_f1);
   context.summary << line;
   using namespace visualization;
-  return context.render (
-      {{"ground truth", {{makeColouredCloud (*test.xyz, colourByLabel (truth)), 2.0}}},
-       {"multi-scale CRF",
-        {{makeColouredCloud (*test.xyz, colourByLabel (labels)), 2.0}}}},
-      "crf_street.png");
+  std::vector<LegendEntry> legend;
+  const auto& names = model.getClassNames();
+  // The scene's names of its labels where it has them, else the model's.
+  for (const auto& [id, name] : names)
+    legend.push_back (
+        {id < test_scene.label_names.size() && !test_scene.label_names[id].empty()
+             ? test_scene.label_names[id]
+             : name,
+         colourByLabel ({id}).front()});
+  return context.render ({{"street: ground truth",
+                           {{makeColouredCloud (*test.xyz, colourByLabel (truth))}},
+                           legend},
+                          {"street: multi-scale CRF (Lim & Suter)",
+                           {{makeColouredCloud (*test.xyz, colourByLabel (labels))}},
+                           legend}},
+                         "crf_street.png");
 }
 } // namespace demo
 } // namespace pcl_ext

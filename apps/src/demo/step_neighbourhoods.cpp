@@ -55,13 +55,27 @@ runNeighbourhoodsStep (DemoContext& context)
                   << ": neighbourhoods " << search_ms << " ms, covariance + eigen "
                   << features_ms << " ms\n";
   using namespace visualization;
+  // The colour bar's range: colourByScalar's own (2nd to 98th percentile).
+  std::vector<float> finite;
+  for (const float v : variance)
+    if (std::isfinite (v))
+      finite.push_back (v);
+  float lo = 0.0f, hi = 1.0f / 3.0f;
+  if (!finite.empty()) {
+    std::sort (finite.begin(), finite.end());
+    lo = finite[finite.size() * 2 / 100];
+    hi = std::max (finite[finite.size() * 98 / 100], lo + 1e-6f);
+  }
   RenderOptions options;
   options.width = 1200;
   options.height = 800;
   return context.render (
       {{"indoor: surface variance l0 / (l0 + l1 + l2), k = " +
             std::to_string (context.k),
-        {{makeColouredCloud (*cloud, colourByScalar (variance)), 1.5}}}},
+        {{makeColouredCloud (*cloud,
+                             colourByScalar (variance, ColourMap::Viridis, lo, hi))}},
+        {},
+        {"surface variance", lo, hi, ColourMap::Viridis}}},
       "indoor_surface_variance.png",
       options);
 }

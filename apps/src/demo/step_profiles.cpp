@@ -11,6 +11,7 @@
 #include <pcl_ext/segmentation/profile_segmentation.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
+#include <pcl_ext/visualization/montage.h>
 
 #include <pcl/common/io.h>
 
@@ -187,9 +188,12 @@ runProfilesStep (DemoContext& context)
     ok =
         context.render (
             {{name + ": ground truth (" + (run.surfaces ? "surfaces" : "objects") + ")",
-              {{makeColouredCloud (*cloud, colourByLabel (truth)), 1.5}}},
+              {{makeColouredCloud (*cloud, colourByLabel (truth))}},
+              {{"unsegmented", colourByLabel ({0u}).front()}}},
              {name + ": " + run.settings + ", " + title_metric + " " + iou,
-              {{makeColouredCloud (*cloud, colourByLabel (labels)), 1.5}}}},
+              {{makeColouredCloud (
+                  *cloud, colourByLabel (matchLabelsToReference (labels, truth)))}},
+              {{"unsegmented", colourByLabel ({0u}).front()}}}},
             "profiles_" + name + ".png",
             options) &&
         ok;

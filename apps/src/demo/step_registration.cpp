@@ -9,6 +9,7 @@
 #include <pcl_ext/registration/plane_matching_registration.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
+#include <pcl_ext/visualization/footprint_view.h>
 
 #include <pcl/common/io.h>
 #include <pcl/common/transforms.h>
@@ -106,35 +107,29 @@ runRegistrationStep (DemoContext& context)
                   << " m; plane distances mean " << d.mean << " m, max " << d.max
                   << " m\n";
 
-  // Top view: the registered scan over the footprint outline.
-  pcl::PointCloud<pcl::PointXYZ> in_map;
-  pcl::transformPointCloud (*scan, in_map, scan_to_map);
-  pcl::PointCloud<pcl::PointXYZ> outline;
-  const auto& ring = scene->footprint;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Eigen::Vector2d a = ring[i], b = ring[(i + 1) % ring.size()];
-    const int steps = std::max (2, static_cast<int> ((b - a).norm() / 0.05));
-    for (int s = 0; s <= steps; ++s) {
-      const Eigen::Vector2d p = a + (b - a) * (double (s) / steps);
-      outline.push_back (pcl::PointXYZ (p.x(), p.y(), parameters.building_height));
-    }
+  // Top view: the registered scan's wall points (inliers of its vertical planes),
+  // coloured by their distance to the footprint drawn over them.
+  std::vector<Eigen::Vector3d> walls;
+  for (const auto& plane : reg.getSourcePlanes()) {
+    const Eigen::Vector3d n = scan_to_map.topLeftCorner<3, 3>() * plane.normal;
+    if (!(std::abs (n.z()) < 0.3))
+      continue;
+    for (const auto i : plane.inliers.indices)
+      walls.push_back ((scan_to_map *
+                        Eigen::Vector4d ((*scan)[i].x, (*scan)[i].y, (*scan)[i].z, 1.0))
+                           .head<3>());
   }
-  std::vector<float> height;
-  for (const auto& p : in_map)
-    height.push_back (p.z);
-  using namespace visualization;
-  RenderOptions options;
+  visualization::FootprintSegments outline;
+  const auto& ring = scene->footprint;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    outline.emplace_back (ring[i], ring[(i + 1) % ring.size()]);
+  visualization::RenderOptions options;
   options.width = 1000;
-  options.height = 1000;
-  options.view_direction = Eigen::Vector3d (0, 0, -1);
-  options.up = Eigen::Vector3d::UnitY();
-  options.zoom_out = 1.6;
+  options.height = 900;
+  options.view = visualization::ViewKind::Top;
   return context.render (
-      {{"building registered to its footprint (black, drawn at roof height)",
-        {{makeColouredCloud (in_map, colourByScalar (height)), 1.0},
-         {makeColouredCloud (outline,
-                             std::vector<Colour> (outline.size(), Colour{0, 0, 0})),
-          3.0}}}},
+      {visualization::makeFootprintView (
+          "building: wall points registered to the footprint", walls, outline)},
       "registration_building.png",
       options);
 }

@@ -26,10 +26,12 @@ runScenesStep (DemoContext& context)
     }
     using namespace visualization;
     std::vector<View> views = {
-        {name + ": segments",
-         {{makeColouredCloud (scene->cloud, colourByLabel (segments)), 1.5}}},
-        {name + ": classes (surface, edge, boundary)",
-         {{makeColouredCloud (scene->cloud, colourByClass (classes)), 1.5}}}};
+        {name + ": segments (ground truth)",
+         {{makeColouredCloud (scene->cloud, colourByLabel (segments))}},
+         {{"unsegmented", colourByLabel ({0u}).front()}}},
+        {name + ": classes (ground truth)",
+         {{makeColouredCloud (scene->cloud, colourByClass (classes))}},
+         classLegend()}};
     RenderOptions options;
     options.width = 1600;
     options.height = 700;

@@ -13,6 +13,7 @@
 #include <pcl_ext/io/cloud_io.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
+#include <pcl_ext/visualization/montage.h>
 
 #include <pcl/common/io.h>
 
@@ -157,11 +158,14 @@ runVarianceSegmentationStep (DemoContext& context)
   std::snprintf (iou, sizeof (iou), "%.3f", metrics.mean_best_iou);
   bool ok = context.render (
       {{"indoor: true surfaces",
-        {{makeColouredCloud (*cloud, colourByLabel (truth)), 1.5}}},
-       {std::string ("indoor: Belton & Lichti region growing, mean best IoU ") + iou +
-            ", local intersections in black",
-        {{makeColouredCloud (*cloud, colourByLabel (predicted)), 1.5},
-         intersectionLayer (intersections)}}},
+        {{makeColouredCloud (*cloud, colourByLabel (truth))}},
+        {{"unsegmented", colourByLabel ({0u}).front()}}},
+       {std::string ("indoor: Belton & Lichti region growing, mean best IoU ") + iou,
+        {{makeColouredCloud (
+             *cloud, colourByLabel (matchLabelsToReference (predicted, truth)))},
+         intersectionLayer (intersections)},
+        {{"unsegmented", colourByLabel ({0u}).front()},
+         {"local intersection", {0, 0, 0}}}}},
       "variance_segmentation_indoor.png",
       options);
 
@@ -182,10 +186,11 @@ runVarianceSegmentationStep (DemoContext& context)
   RenderOptions room_options;
   room_options.width = 1200;
   room_options.height = 800;
-  return context.render ({{"room_scan1.pcd: Belton & Lichti region growing, local "
-                           "intersections in black",
-                           {{makeColouredCloud (*real, colourByLabel (predicted)), 1.0},
-                            intersectionLayer (intersections)}}},
+  return context.render ({{"room_scan1.pcd: Belton & Lichti region growing",
+                           {{makeColouredCloud (*real, colourByLabel (predicted))},
+                            intersectionLayer (intersections)},
+                           {{"unsegmented", colourByLabel ({0u}).front()},
+                            {"local intersection", {0, 0, 0}}}}},
                          "variance_segmentation_room_scan1.png",
                          room_options) &&
          ok;

@@ -94,6 +94,22 @@ colourByClass (const std::vector<std::uint32_t>& classes)
   return out;
 }
 
+std::vector<LegendEntry>
+classLegend ()
+{
+  std::vector<LegendEntry> legend;
+  const char* names[] = {"surface", "edge", "boundary", "unknown"};
+  const std::vector<std::uint32_t> classes = {
+      static_cast<std::uint32_t> (PointClass::Surface),
+      static_cast<std::uint32_t> (PointClass::Edge),
+      static_cast<std::uint32_t> (PointClass::Boundary),
+      0u};
+  const std::vector<Colour> colours = colourByClass (classes);
+  for (std::size_t i = 0; i < classes.size(); ++i)
+    legend.push_back ({names[i], colours[i]});
+  return legend;
+}
+
 std::vector<Colour>
 colourByScalar (const std::vector<float>& values, ColourMap map, float min, float max)
 {

@@ -7,6 +7,7 @@
 #include <pcl/point_types.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace pcl_ext {
@@ -29,6 +30,16 @@ enum class ColourMap {
  * grey. */
 std::vector<Colour>
 colourByLabel (const std::vector<std::uint32_t>& labels);
+
+/** \brief One line of a legend: what a colour means. */
+struct LegendEntry {
+  std::string name;
+  Colour colour;
+};
+
+/** \brief The legend of colourByClass: surface, edge, boundary and unknown. */
+std::vector<LegendEntry>
+classLegend ();
 
 /** \brief Fixed colours for pcl_ext::PointClass values, as in Belton & Lichti's
  * figures: surface blue, edge red, boundary green, unknown grey. */
