@@ -164,6 +164,12 @@ protected:
       EXPECT_GT (fs::file_size (path (out)), 0u) << out;
       if (isPointFile (out))
         checkPoints (tool, path (out));
+      if (out.size() > 4 && out.compare (out.size() - 4, 4, ".png") == 0) {
+        std::ifstream png (path (out), std::ios::binary);
+        char signature[8] = {};
+        png.read (signature, sizeof (signature));
+        EXPECT_EQ (std::string (signature + 1, 3), "PNG") << out;
+      }
     }
   }
 
