@@ -298,8 +298,8 @@ main (int argc, char** argv)
   cl.addOption ("floor", floor_height, "floor height in map coordinates (m)");
   cl.addOption ("id", id, "use only the footprint with this id (default: all)");
   cl.addOption ("threads", threads, "threads of the search (0 = all cores)");
-  cl.addOption ("png", png, "PNG: top view of the registered scan over the footprint");
-  cl.addOption ("png_before", png_before, "PNG: top view before registration");
+  cl.addOption ("png", png, "top view of the registered scan over the footprint");
+  cl.addOption ("png_before", png_before, "top view before registration");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
 
