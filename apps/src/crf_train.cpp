@@ -4,6 +4,7 @@
 #include "crf/crf_inputs.h"
 
 #include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/apps/input.h>
 #include <pcl_ext/io/file_output.h>
 
 #include <pcl/console/print.h>
@@ -28,11 +29,13 @@ main (int argc, char** argv)
   bool no_balance = false;
   pcl_ext::apps::CommandLine cl (
       "pcl_ext_crf_train",
-      "Trains the multi-scale CRF over adaptive super-voxels (Lim & Suter 2008) on "
-      "labelled "
-      "clouds: PCD/PLY with a 'label' field, or Oakland .xyz_label_conf files with "
-      "-classes.\n"
-      "Usage: pcl_ext_crf_train -o model.txt [options] train1 [train2 ...]");
+      std::string ("Trains the multi-scale CRF over adaptive super-voxels (Lim & Suter "
+                   "2008) on labelled clouds and writes the model (text) to -o.\n"
+                   "Inputs: ") +
+          pcl_ext::apps::kInputFormats +
+          " with a 'label' field (class ids), or Oakland .xyz_label_conf files with "
+          "-classes.\n"
+          "Usage: pcl_ext_crf_train -o model.txt [options] train1 [train2 ...]");
   cl.addOption ("o", output, "the model file to write (required)");
   cl.addOption (
       "classes", classes_file, "class file: 'id name : source labels' per line");

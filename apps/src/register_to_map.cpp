@@ -18,6 +18,7 @@
 #include <pcl_ext/visualization/offscreen_renderer.h>
 #endif
 
+#include <pcl/common/io.h>
 #include <pcl/common/point_tests.h>
 #include <pcl/point_types.h>
 
@@ -180,7 +181,7 @@ main (int argc, char** argv)
 {
   std::string input, footprint_path, output, png, png_before, no_constraint, id,
       guess_path, transform_out;
-  std::string walls = "sac", label_field = "label";
+  std::string walls = "sac", label_field;
   int k = 4, m = 10, n = 10, max_planes = 30, min_inliers = 200;
   unsigned int threads = 0, ground_label = 2, building_label = 6;
   double threshold = 0.4, angle = 3.0, distance = 0.5, floor_height = 0.0;
@@ -196,8 +197,9 @@ main (int argc, char** argv)
   cl.addPositional ("scan",
                     input,
                     std::string ("the building scan: ") + pcl_ext::apps::kInputFormats);
-  cl.addPositional (
-      "footprint.(wkt|geojson|txt)", footprint_path, "footprint polygon file");
+  cl.addPositional ("footprint.(wkt|geojson|txt)",
+                    footprint_path,
+                    "footprint polygons: WKT, GeoJSON or text (told by content)");
   cl.addPositional ("output",
                     output,
                     "the registered scan in map coordinates, every input field kept: "
@@ -252,7 +254,10 @@ main (int argc, char** argv)
       "roof_outline (a "
       "classified airborne cloud: ground plane and walls along the building outlines)");
   cl.addOption (
-      "label_field", label_field, "roof_outline: the field holding the point classes");
+      "label_field",
+      label_field,
+      "roof_outline: the field holding the point classes (default: 'label', or the LAS "
+      "'classification' when there is no 'label')");
   cl.addOption (
       "ground_label", ground_label, "roof_outline: class of ground points (LAS: 2)");
   cl.addOption ("building_label",
@@ -340,6 +345,10 @@ main (int argc, char** argv)
   if (roof_outline) {
     std::vector<std::uint32_t> values;
     std::string error;
+    if (label_field.empty())
+      label_field = pcl::getFieldIndex (point_file.cloud, "label") >= 0
+                        ? "label"
+                        : "classification";
     if (!pcl_ext::io::getLabelField (point_file.cloud, label_field, values, &error)) {
       std::cerr << "Error: " << input << ": " << error << " (-label_field).\n";
       return 1;
