@@ -17,9 +17,10 @@
 #include <pcl_ext/visualization/offscreen_renderer.h>
 #endif
 
+#include <algorithm>
 #include <cstdio>
-#include <map>
 #include <iostream>
+#include <map>
 
 namespace {
 void
@@ -73,12 +74,34 @@ asprsCodes (const std::map<std::uint32_t, std::string>& names)
               << ": written as 1 (unclassified) in Classification\n";
   return codes;
 }
+
+/** The points of each class of the model (and those left unlabelled, non-finite). */
+void
+printClassCounts (const std::vector<std::uint32_t>& labels,
+                  const std::map<std::uint32_t, std::string>& names)
+{
+  std::map<std::uint32_t, std::size_t> counts;
+  for (const auto l : labels)
+    ++counts[l];
+  const double total = static_cast<double> (std::max<std::size_t> (1, labels.size()));
+  std::printf ("%-6s %-14s %10s %8s\n", "id", "class", "points", "share");
+  for (const auto& [id, name] : names) {
+    const std::size_t n = counts.count (id) ? counts[id] : 0;
+    std::printf ("%-6u %-14s %10zu %7.2f%%\n", id, name.c_str(), n, 100.0 * n / total);
+  }
+  if (counts.count (0))
+    std::printf ("%-6u %-14s %10zu %7.2f%%\n",
+                 0u,
+                 "(none)",
+                 counts[0],
+                 100.0 * counts[0] / total);
+}
 } // namespace
 
 int
 main (int argc, char** argv)
 {
-  std::string model_path, input, output, png, classes_file;
+  std::string model_path, input, output, png, classes_file, probability_field;
   bool truth = false;
   unsigned int threads = 0;
   pcl_ext::apps::CommandLine cl (
@@ -104,6 +127,10 @@ main (int argc, char** argv)
   cl.addOption (
       "classes", classes_file, "class file mapping the input's labels (Oakland)");
   cl.addOption ("threads", threads, "threads (0: all cores)");
+  cl.addOption ("probability_field",
+                probability_field,
+                "also write each point's probability of its class (float, 0 for "
+                "non-finite points) into this field; empty: not written");
   result.addTo (cl);
   cl.addSwitch (
       "truth", truth, "the input's labels are ground truth: print the metrics");
@@ -147,6 +174,12 @@ main (int argc, char** argv)
   }
   if (!result.checkInput (cloud.file, input))
     return 1;
+  if (!probability_field.empty() && probability_field == result.name()) {
+    std::cerr << "pcl_ext_crf_classify: -probability_field must differ from the class "
+                 "field '"
+              << result.name() << "'\n";
+    return 1;
+  }
   if (truth && cloud.labels.empty()) {
     std::cerr << "pcl_ext_crf_classify: -truth needs a labelled input\n";
     return 1;
@@ -173,6 +206,18 @@ main (int argc, char** argv)
   pcl::PCLPointCloud2 classified = cloud.file.cloud;
   if (!result.attach (classified, labels))
     return 1;
+  if (!probability_field.empty()) {
+    std::vector<float> winning (labels.size(), 0.f);
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      if (labels[i] != 0)
+        winning[i] = probabilities.row (static_cast<Eigen::Index> (i)).maxCoeff();
+    if (!pcl_ext::io::setFloatField (classified, probability_field, winning)) {
+      std::cerr << "pcl_ext_crf_classify: cannot write the field '" << probability_field
+                << "'\n";
+      return 1;
+    }
+  }
+  printClassCounts (labels, model.getClassNames());
   if (result.asprs()) {
     const auto codes = asprsCodes (model.getClassNames());
     std::vector<std::uint32_t> asprs (labels.size(), 1);

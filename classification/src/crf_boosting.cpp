@@ -105,6 +105,9 @@ loadBooster (const std::vector<char>& model, Booster& b, std::string& error)
                   error);
 }
 
+/** At most this many cross-fitting folds (each trains two boosters). */
+constexpr int kMaxFolds = 3;
+
 const char kBase64[] =
     "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 } // namespace
@@ -310,9 +313,14 @@ trainBoostedNodes (Graph& graph,
                    std::string& error)
 {
   const std::size_t N = graph.size(), S = graph.num_supervoxels;
-  const int clouds = node_cloud.empty()
-                         ? 1
-                         : *std::max_element (node_cloud.begin(), node_cloud.end()) + 1;
+  // Cross-fitting folds: the clouds in at most kMaxFolds groups (cloud k in group k mod
+  // kMaxFolds); none without edges to fit, whose training never reads graph.phi.
+  const int clouds =
+      node_cloud.empty() || settings.mode == CrfMode::NodeOnly
+          ? 1
+          : std::min (kMaxFolds,
+                      *std::max_element (node_cloud.begin(), node_cloud.end()) + 1);
+  auto fold_of = [&] (std::size_t n) { return node_cloud[n] % clouds; };
   graph.phi.resize (static_cast<Eigen::Index> (N), static_cast<Eigen::Index> (classes));
   boosters = Boosters();
   for (int type = 0; type < 2; ++type) {
@@ -330,10 +338,10 @@ trainBoostedNodes (Graph& graph,
     for (int k = 0; k < clouds; ++k) {
       std::vector<std::size_t> nodes, others;
       for (std::size_t n = first; n < last; ++n)
-        if (clouds == 1 || node_cloud[n] == k)
+        if (clouds == 1 || fold_of (n) == k)
           nodes.push_back (n);
       for (const std::size_t n : rows)
-        if (clouds > 1 && node_cloud[n] != k)
+        if (clouds > 1 && fold_of (n) != k)
           others.push_back (n);
       std::vector<char> fold;
       if (!others.empty() && !trainBooster (graph.z,

@@ -45,7 +45,77 @@ pickLocalPoints (const Supervoxel& sv,
     out.push_back (pool[j]);
   }
 }
+
+/** The columns of saliencyFeatureNames(features) averaged over a super-voxel's
+ * neighbourhood: the shape, angle, height and dimension features, not the radius,
+ * colour, intensity, density or extents. */
+std::vector<std::size_t>
+neighbourMeanColumns (const SaliencyFeatureOptions& features)
+{
+  static const char* const kAveraged[] = {"clutterness",
+                                          "surfaceness",
+                                          "curveness",
+                                          "normal_angle",
+                                          "tangent_angle",
+                                          "height",
+                                          "linearity",
+                                          "planarity",
+                                          "scattering",
+                                          "dimension"};
+  const std::vector<std::string> names = saliencyFeatureNames (features);
+  std::vector<std::size_t> columns;
+  for (std::size_t d = 0; d < names.size(); ++d) {
+    const std::string base = names[d].substr (0, names[d].find ('@'));
+    for (const char* a : kAveraged)
+      if (base == a)
+        columns.push_back (d);
+  }
+  return columns;
+}
+
+/** Appends to \a raw the means of neighbourMeanColumns over each super-voxel and its
+ * regional neighbours (the rows of the S super-voxel nodes); the local point node S + j
+ * takes those of its super-voxel \a owner[j]. */
+void
+appendNeighbourMeans (const SupervoxelSet& supervoxels,
+                      const std::vector<std::uint32_t>& owner,
+                      const CrfSettings& settings,
+                      Eigen::MatrixXf& raw)
+{
+  const std::size_t S = supervoxels.size();
+  const std::vector<std::size_t> columns = neighbourMeanColumns (settings.features);
+  const Eigen::Index D = raw.cols(), M = static_cast<Eigen::Index> (columns.size());
+  Eigen::MatrixXf out (raw.rows(), D + M);
+  out.leftCols (D) = raw;
+  for (std::size_t v = 0; v < S; ++v) {
+    const auto& adj = supervoxels.adjacency[v];
+    for (Eigen::Index k = 0; k < M; ++k) {
+      const Eigen::Index d = static_cast<Eigen::Index> (columns[k]);
+      double sum = raw (static_cast<Eigen::Index> (v), d);
+      for (const auto o : adj)
+        sum += raw (static_cast<Eigen::Index> (o), d);
+      out (static_cast<Eigen::Index> (v), D + k) =
+          static_cast<float> (sum / static_cast<double> (adj.size() + 1));
+    }
+  }
+  for (std::size_t j = 0; j < owner.size(); ++j)
+    out.row (static_cast<Eigen::Index> (S + j)).tail (M) =
+        out.row (static_cast<Eigen::Index> (owner[j])).tail (M);
+  raw = std::move (out);
+}
 } // namespace
+
+std::vector<std::string>
+crfFeatureNames (const SaliencyFeatureOptions& features)
+{
+  std::vector<std::string> names = saliencyFeatureNames (features);
+  if (features.scales.empty())
+    return names;
+  const std::vector<std::size_t> columns = neighbourMeanColumns (features);
+  for (const std::size_t d : columns)
+    names.push_back ("neighbours_" + names[d]);
+  return names;
+}
 
 bool
 buildGraph (const CrfInput& input,
@@ -84,8 +154,10 @@ buildGraph (const CrfInput& input,
     graph.node_point.push_back (supervoxels.supervoxels[v].seed);
     radii.push_back (supervoxels.supervoxels[v].radius);
   }
+  std::vector<std::uint32_t> owner; // the super-voxel of each local point node
   for (std::size_t v = 0; v < S; ++v)
     for (const auto i : picked[v]) {
+      owner.push_back (static_cast<std::uint32_t> (v));
       graph.edge_a.push_back (static_cast<std::uint32_t> (v));
       graph.edge_b.push_back (static_cast<std::uint32_t> (graph.node_point.size()));
       graph.edge_regional.push_back (0);
@@ -118,6 +190,8 @@ buildGraph (const CrfInput& input,
                                 raw,
                                 settings.threads))
     return false;
+  if (!settings.features.scales.empty())
+    appendNeighbourMeans (supervoxels, owner, settings, raw);
   if (settings.mode == CrfMode::MultiscaleCrf)
     for (std::size_t v = 0; v < S; ++v)
       for (const auto k : supervoxels.adjacency[v]) {

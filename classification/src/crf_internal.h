@@ -91,8 +91,15 @@ struct Graph {
   }
 };
 
-/** Super-voxels, local points, raw features and edges of one cloud (mode decides
- * which). */
+/** The names of the CRF's feature columns: saliencyFeatureNames(features), and with
+ * the multi-scale features, the means of the shape, angle, height and dimension
+ * features over each super-voxel and its regional neighbours ("neighbours_" and the
+ * name; after CGAL's Cluster_mean_of_feature). */
+std::vector<std::string>
+crfFeatureNames (const SaliencyFeatureOptions& features);
+
+/** Super-voxels, local points, raw features (crfFeatureNames) and edges of one cloud
+ * (mode decides which). */
 bool
 buildGraph (const CrfInput& input,
             const CrfSettings& settings,
@@ -209,10 +216,11 @@ decodeBase64 (const std::string& text, std::vector<char>& bytes);
 /** Stage 1 with boosted trees: one booster for the super-voxel nodes and one for the
  * local points (when the graph has any), each on its labelled nodes of positive
  * weight; graph.phi becomes their log class probabilities. With several training
- * clouds, graph.phi of each cloud's nodes comes from boosters trained on the other
- * clouds (cross-fitting), so that the edges (stage 2) and the edge scale (stage 3) are
- * fitted against node potentials as confident as on unseen data, not as on the data
- * the trees were fitted to. */
+ * clouds and edges to fit, graph.phi of each cloud's nodes comes from boosters trained
+ * on the other clouds (cross-fitting; the clouds in at most 3 folds, cloud k in fold k
+ * mod 3), so that the edges (stage 2) and the edge scale (stage 3) are fitted against
+ * node potentials as confident as on unseen data, not as on the data the trees were
+ * fitted to. NodeOnly: graph.phi from the boosters kept (no cross-fitting). */
 bool
 trainBoostedNodes (Graph& graph,
                    const std::vector<double>& node_weights,

@@ -432,7 +432,7 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
         graph, node_weights, context, C, settings, true, theta, converged, value);
   }
   Weights w;
-  w.feature_names = saliencyFeatureNames (settings.features);
+  w.feature_names = crf::crfFeatureNames (settings.features);
   w.mean = mean;
   w.scale = scale;
   w.expansion = settings.node_expansion;

@@ -434,7 +434,7 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
     options.intensity =
         std::find (w.feature_names.begin(), w.feature_names.end(), "intensity") !=
         w.feature_names.end();
-    if (w.feature_names != saliencyFeatureNames (options))
+    if (w.feature_names != crf::crfFeatureNames (options))
       return rd.fail (
           "the model's features are not the saliency feature set of this build "
           "(a model from another feature set?)");

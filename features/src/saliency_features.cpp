@@ -238,6 +238,8 @@ saliencyFeatureNames (const SaliencyFeatureOptions& options)
   for (const float r : options.scales)
     for (const char* name : kScaleFeatures)
       names.push_back (name + featureScaleSuffix (r));
+  for (std::size_t k = 1; k < options.scales.size(); ++k)
+    names.push_back ("dimension" + featureScaleSuffix (options.scales[k]));
   return names;
 }
 
@@ -321,6 +323,7 @@ computeSaliencyFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
       // One search at the largest radius; the smaller ones are its subsets.
       const Eigen::Vector3f pv = p.getVector3fMap();
       tree.radiusSearch (p.data, options.scales.back(), wide, wide_d2);
+      const Eigen::Index first_scale = col;
       for (const float R : options.scales) {
         at.clear();
         const float R2 = R * R;
@@ -347,6 +350,17 @@ computeSaliencyFeatures (const pcl::PointCloud<pcl::PointXYZ>& cloud,
         out (col + 9) = top;
         out (col + 10) = bottom;
         col += static_cast<Eigen::Index> (kNumScaleFeatures);
+      }
+      // The dimension between consecutive radii: how the number of neighbours grows
+      // with the radius (1 along a wire or a pole, 2 on a plane, 3 in a crown).
+      for (std::size_t k = 1; k < options.scales.size(); ++k) {
+        const Eigen::Index at_k =
+            first_scale + static_cast<Eigen::Index> (k * kNumScaleFeatures + 8);
+        const Eigen::Index at_prev =
+            at_k - static_cast<Eigen::Index> (kNumScaleFeatures);
+        out (col++) =
+            (out (at_k) - out (at_prev)) /
+            static_cast<float> (std::log (options.scales[k] / options.scales[k - 1]));
       }
     }
   }

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -422,4 +423,40 @@ TEST (MultiscaleCrf, NodeModels)
     EXPECT_FALSE (m.parseModel (text, name)) << name;
     EXPECT_FALSE (m.isTrained()) << name;
   }
+}
+
+// The multi-scale features with the neighbourhood means and boosted trees, trained on
+// two clouds (the node potentials of the edge training cross-fitted between them): the
+// same model and labels for one and two threads.
+TEST (MultiscaleCrf, MultiScaleBoostedDeterministicForAnyThreadCount)
+{
+  MultiscaleCrfModel one, two;
+  pcl_ext::CrfSettings settings;
+  settings.node_model = pcl_ext::CrfNodeModel::BoostedTrees;
+  settings.features.scales = pcl_ext::defaultFeatureScales();
+  settings.boost_rounds = 50;
+  settings.threads = 1;
+  one.setSettings (settings);
+  settings.threads = 2;
+  two.setSettings (settings);
+  ASSERT_TRUE (one.train ({street (1).input, street (3).input},
+                          {street (1).labels, street (3).labels}));
+  ASSERT_TRUE (two.train ({street (1).input, street (3).input},
+                          {street (1).labels, street (3).labels}));
+  EXPECT_EQ (one.toText(), two.toText());
+  const auto names = one.getFeatureNames();
+  for (const char* name :
+       {"dimension@2", "neighbours_height", "neighbours_linearity@0.5"})
+    EXPECT_NE (std::find (names.begin(), names.end(), name), names.end()) << name;
+  std::vector<std::uint32_t> la, lb;
+  Eigen::MatrixXf pa, pb;
+  ASSERT_TRUE (one.classify (street (2).input, la, pa));
+  ASSERT_TRUE (two.classify (street (2).input, lb, pb));
+  EXPECT_EQ (la, lb);
+  EXPECT_TRUE (pa == pb);
+  pcl_ext::ClassificationMetrics metrics;
+  EXPECT_GE (accuracy (one, street (2), &metrics), 0.95);
+  MultiscaleCrfModel loaded;
+  ASSERT_TRUE (loaded.parseModel (one.toText(), "round trip"));
+  EXPECT_EQ (loaded.getFeatureNames(), names);
 }

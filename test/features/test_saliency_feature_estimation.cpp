@@ -198,7 +198,7 @@ TEST (SaliencyFeatures, MultiScaleFeaturesTellPolesWiresAndGround)
   const auto& names = est.getFeatureNames();
   ASSERT_EQ (f.rows(), 3);
   ASSERT_EQ (f.cols(), static_cast<Eigen::Index> (names.size()));
-  ASSERT_EQ (names.size(), 7u + 3u * 11u);
+  ASSERT_EQ (names.size(), 7u + 3u * 11u + 2u);
   auto col = [&] (const std::string& name) {
     const auto it = std::find (names.begin(), names.end(), name);
     EXPECT_NE (it, names.end()) << name;
@@ -225,6 +225,13 @@ TEST (SaliencyFeatures, MultiScaleFeaturesTellPolesWiresAndGround)
   EXPECT_NEAR (f (1, col ("bottom_below@2")), 2.f, 0.011f);
   // The density is the count within R: 101 wire points within 0.5 m at 1 cm.
   EXPECT_NEAR (f (2, col ("log_density@0.5")), std::log (101.f), 0.02f);
+  // The dimension between scales: 1 along the wire (101, 201, 401 points within 0.5,
+  // 1 and 2 m), 2 on the ground, 1 up the pole until the 2 m sphere reaches the ground.
+  EXPECT_NEAR (f (2, col ("dimension@1")), 1.f, 0.02f);
+  EXPECT_NEAR (f (2, col ("dimension@2")), 1.f, 0.02f);
+  EXPECT_NEAR (f (0, col ("dimension@1")), 2.f, 0.1f);
+  EXPECT_NEAR (f (0, col ("dimension@2")), 2.f, 0.1f);
+  EXPECT_NEAR (f (1, col ("dimension@1")), 1.f, 0.02f);
   // Scales not ascending are refused.
   est.setFeatureScales ({1.f, 0.5f});
   est.compute (f);

@@ -41,14 +41,15 @@ TEST (SaliencyFeatures, NamesScalesAndGroundEstimates)
   options.colour = options.intensity = true;
   options.scales = {0.25f, 2.f};
   const auto names = pcl_ext::saliencyFeatureNames (options);
-  ASSERT_EQ (names.size(), 7u + 4u + 2u * 11u);
+  ASSERT_EQ (names.size(), 7u + 4u + 2u * 11u + 1u);
   EXPECT_EQ (names[7], "red");
   EXPECT_EQ (names[9], "blue");
   EXPECT_EQ (names[10], "intensity");
   EXPECT_EQ (names[11], "clutterness@0.25");
   EXPECT_EQ (names[21], "bottom_below@0.25");
   EXPECT_EQ (names[22], "clutterness@2");
-  EXPECT_EQ (names.back(), "bottom_below@2");
+  EXPECT_EQ (names[32], "bottom_below@2");
+  EXPECT_EQ (names.back(), "dimension@2");
 
   EXPECT_EQ (pcl_ext::defaultFeatureScales(), (std::vector<float>{0.5f, 1.f, 2.f}));
   EXPECT_EQ (pcl_ext::featureScaleSuffix (0.5f), "@0.5");

@@ -3,6 +3,7 @@
  */
 #include <pcl_ext/io/cloud_fields.h>
 
+#include <pcl/common/io.h>
 #include <pcl/conversions.h>
 #include <pcl/point_types.h>
 
@@ -81,4 +82,43 @@ TEST (CloudFields, WritesLabel)
   EXPECT_FLOAT_EQ (back[2].x, 2.f);
   EXPECT_FLOAT_EQ (back[2].z, 3.f);
   EXPECT_FALSE (pcl_ext::io::setLabelField (blob, "label", {1}));
+}
+
+TEST (CloudFields, WritesFloat)
+{
+  pcl::PointCloud<pcl::PointXYZL> typed;
+  for (int i = 0; i < 3; ++i) {
+    pcl::PointXYZL p;
+    p.x = static_cast<float> (i);
+    p.y = p.z = 1.f;
+    p.label = static_cast<std::uint32_t> (4 + i);
+    typed.push_back (p);
+  }
+  pcl::PCLPointCloud2 blob;
+  pcl::toPCLPointCloud2 (typed, blob);
+  // Appended as float32, the other fields kept.
+  ASSERT_TRUE (pcl_ext::io::setFloatField (blob, "probability", {0.25f, 0.5f, 1.f}));
+  pcl::PointCloud<pcl::PointXYZI> as_intensity;
+  const int f = pcl::getFieldIndex (blob, "probability");
+  ASSERT_GE (f, 0);
+  EXPECT_EQ (blob.fields[f].datatype, pcl::PCLPointField::FLOAT32);
+  blob.fields[f].name = "intensity";
+  pcl::fromPCLPointCloud2 (blob, as_intensity);
+  EXPECT_FLOAT_EQ (as_intensity[0].intensity, 0.25f);
+  EXPECT_FLOAT_EQ (as_intensity[2].intensity, 1.f);
+  blob.fields[f].name = "probability";
+  std::vector<std::uint32_t> labels;
+  ASSERT_TRUE (pcl_ext::io::getLabelField (blob, "label", labels));
+  EXPECT_EQ (labels, (std::vector<std::uint32_t>{4, 5, 6}));
+  // Overwritten in place; a uint32 field of that name is replaced by a float one.
+  ASSERT_TRUE (pcl_ext::io::setFloatField (blob, "probability", {0.75f, 0.f, 0.5f}));
+  ASSERT_TRUE (pcl_ext::io::setFloatField (blob, "label", {2.f, 3.f, 4.f}));
+  ASSERT_TRUE (pcl_ext::io::getLabelField (blob, "label", labels));
+  EXPECT_EQ (labels, (std::vector<std::uint32_t>{2, 3, 4}));
+  EXPECT_EQ (blob.fields[pcl::getFieldIndex (blob, "label")].datatype,
+             pcl::PCLPointField::FLOAT32);
+  pcl::PointCloud<pcl::PointXYZ> xyz;
+  pcl::fromPCLPointCloud2 (blob, xyz);
+  EXPECT_FLOAT_EQ (xyz[2].x, 2.f);
+  EXPECT_FALSE (pcl_ext::io::setFloatField (blob, "probability", {1.f}));
 }

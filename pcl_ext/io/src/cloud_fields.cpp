@@ -110,24 +110,30 @@ getLabelField (const pcl::PCLPointCloud2& cloud,
   return true;
 }
 
+namespace {
+/** Writes 4-byte values into field \a name of type \a datatype (UINT32 or FLOAT32):
+ * in place when it already is one such value, otherwise replacing it (or, when absent,
+ * appending it) and repacking the points. */
+template <typename T>
 bool
-setLabelField (pcl::PCLPointCloud2& cloud,
-               const std::string& name,
-               const std::vector<std::uint32_t>& labels)
+setScalarField (pcl::PCLPointCloud2& cloud,
+                const std::string& name,
+                std::uint8_t datatype,
+                const std::vector<T>& values)
 {
+  static_assert (sizeof (T) == 4, "4-byte fields only");
   const std::size_t n = static_cast<std::size_t> (cloud.width) * cloud.height;
-  if (labels.size() != n)
+  if (values.size() != n)
     return false;
   const int f = pcl::getFieldIndex (cloud, name);
-  if (f >= 0 && cloud.fields[f].datatype == pcl::PCLPointField::UINT32 &&
-      cloud.fields[f].count == 1) {
+  if (f >= 0 && cloud.fields[f].datatype == datatype && cloud.fields[f].count == 1) {
     for (std::size_t i = 0; i < n; ++i)
       std::memcpy (cloud.data.data() + i * cloud.point_step + cloud.fields[f].offset,
-                   &labels[i],
+                   &values[i],
                    4);
     return true;
   }
-  // Repack: every other field keeps its bytes, the label goes last as one uint32.
+  // Repack: every other field keeps its bytes, the new one goes last.
   std::vector<pcl::PCLPointField> fields;
   std::vector<std::uint32_t> old_offsets;
   std::uint32_t step = 0;
@@ -141,11 +147,11 @@ setLabelField (pcl::PCLPointCloud2& cloud,
                                         std::max<std::uint32_t> (field.count, 1));
     fields.push_back (field);
   }
-  pcl::PCLPointField label;
-  label.name = name;
-  label.offset = step;
-  label.datatype = pcl::PCLPointField::UINT32;
-  label.count = 1;
+  pcl::PCLPointField added;
+  added.name = name;
+  added.offset = step;
+  added.datatype = datatype;
+  added.count = 1;
   step += 4;
   std::vector<std::uint8_t> data (n * step);
   for (std::size_t i = 0; i < n; ++i) {
@@ -156,14 +162,31 @@ setLabelField (pcl::PCLPointCloud2& cloud,
                    src + old_offsets[k],
                    typeSize (fields[k].datatype) *
                        std::max<std::uint32_t> (fields[k].count, 1));
-    std::memcpy (dst + label.offset, &labels[i], 4);
+    std::memcpy (dst + added.offset, &values[i], 4);
   }
-  fields.push_back (label);
+  fields.push_back (added);
   cloud.fields = std::move (fields);
   cloud.point_step = step;
   cloud.row_step = step * cloud.width;
   cloud.data = std::move (data);
   return true;
+}
+} // namespace
+
+bool
+setLabelField (pcl::PCLPointCloud2& cloud,
+               const std::string& name,
+               const std::vector<std::uint32_t>& labels)
+{
+  return setScalarField (cloud, name, pcl::PCLPointField::UINT32, labels);
+}
+
+bool
+setFloatField (pcl::PCLPointCloud2& cloud,
+               const std::string& name,
+               const std::vector<float>& values)
+{
+  return setScalarField (cloud, name, pcl::PCLPointField::FLOAT32, values);
 }
 } // namespace io
 } // namespace pcl_ext

@@ -174,8 +174,10 @@ struct CrfStatistics {
  *
  * Features: those of computeSaliencyFeatures, the paper's single-scale set by default,
  * the multi-scale features at fixed radii (e.g. 0.5, 1 and 2 m) added on request
- * (CrfSettings::features; see there). The model file stores the feature set, and a
- * model of another set is refused.
+ * (CrfSettings::features; see there); with the multi-scale features, the means of the
+ * shape, angle, height and dimension features over each super-voxel and its regional
+ * neighbours are added (pcl_ext addition, after CGAL's Cluster_mean_of_feature). The
+ * model file stores the feature set, and a model of another set is refused.
  *
  * Node model (CrfSettings::node_model, pcl_ext addition): the paper's logistic
  * regression by default, or gradient-boosted trees (XGBoost), one booster for the
@@ -301,7 +303,8 @@ public:
     return names_;
   }
 
-  /** \brief Feature names of the trained model (see saliencyFeatureNames). */
+  /** \brief Feature names of the trained model (saliencyFeatureNames, then with the
+   * multi-scale features the neighbourhood means, "neighbours_" and the name). */
   std::vector<std::string>
   getFeatureNames () const;
 

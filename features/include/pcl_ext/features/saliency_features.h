@@ -133,7 +133,8 @@ validFeatureScales (const std::vector<float>& scales);
  * height, log_radius, then red green blue and intensity when asked for, then for each
  * fixed radius R of options.scales the eleven multi-scale features named with the
  * suffix "@R": clutterness, surfaceness, curveness, linearity, planarity, scattering,
- * normal_angle, tangent_angle, log_density, top_above, bottom_below. */
+ * normal_angle, tangent_angle, log_density, top_above, bottom_below; then for each
+ * radius but the first, "dimension@R". */
 std::vector<std::string>
 saliencyFeatureNames (const SaliencyFeatureOptions& options);
 
@@ -157,9 +158,12 @@ saliencyFeatureNames (const SaliencyFeatureOptions& options);
  * on the point density as the logs of eq. 12 do; the normal and tangent angles at R;
  * log_density = log of the number of points within R; top_above and bottom_below, the
  * height of the highest neighbour above the centre and of the centre above the lowest
- * (a wire has nothing under it within R, a pole has its own points above and below). A
- * single region radius cannot see a pole's length or a wire's isolation: the
- * super-voxels of thin structures are small.
+ * (a wire has nothing under it within R, a pole has its own points above and below);
+ * for each radius R_k but the first, dimension = (log n(R_k) - log n(R_k-1)) / log(R_k
+ * / R_k-1), how the number of neighbours n grows with the radius (1 along a line, 2 on
+ * a plane, 3 in a volume: the density ratio between scales, normalised). A single
+ * region radius cannot see a pole's length or a wire's isolation: the super-voxels of
+ * thin structures are small.
  *
  * \param[in] tree a KdTree3f over the finite points of \a cloud (point indices as
  * given) \param[in] colours normalised RGB per point (empty unless options.colour)

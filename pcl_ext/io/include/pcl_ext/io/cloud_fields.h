@@ -39,5 +39,15 @@ bool
 setLabelField (pcl::PCLPointCloud2& cloud,
                const std::string& name,
                const std::vector<std::uint32_t>& labels);
+
+/** \brief Write \a values into a float32 field \a name (a score or a probability per
+ * point), as setLabelField writes labels: in place when the field already is a single
+ * float32, otherwise replacing or appending it. \return false when values.size ()
+ * differs from the number of points
+ */
+bool
+setFloatField (pcl::PCLPointCloud2& cloud,
+               const std::string& name,
+               const std::vector<float>& values);
 } // namespace io
 } // namespace pcl_ext
