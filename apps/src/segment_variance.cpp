@@ -74,11 +74,11 @@ main (int argc, char** argv)
       "reintegrate",
       reintegrate,
       "put edge and boundary points into the segment whose local plane they fit "
-      "(section 4) before writing the output (the default; off with -preset paper)");
+      "(section 4) before writing the output (on with -preset derived)");
   cl.addSwitch ("no_reintegrate",
                 keep_out,
-                "leave the edge and boundary points out of the segments (section 3 "
-                "alone)");
+                "with -preset derived: leave the edge and boundary points out of the "
+                "segments (section 3 alone)");
   cl.addOption (
       "parallel_angle",
       parallel_angle,
@@ -120,10 +120,10 @@ main (int argc, char** argv)
     std::cerr << "Error: give -reintegrate or -no_reintegrate, not both.\n";
     return 1;
   }
-  // Section 4's re-integration by default (not with -preset paper): it keeps in the
-  // segments the crease and border bands the classification leaves out
-  // (docs/belton_lichti.md has the figures).
-  reintegrate = reintegrate || (!keep_out && options.preset != "paper");
+  // Section 4's re-integration with -preset derived: it keeps in the segments the
+  // crease and border bands the classification leaves out (docs/belton_lichti.md has
+  // the figures).
+  reintegrate = reintegrate || (!keep_out && options.preset == "derived");
   const bool intersect = !intersections_path.empty() || reintegrate;
   if (!result.checkOutput (output_path, {png_path, intersections_path}))
     return 1;

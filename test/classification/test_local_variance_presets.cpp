@@ -41,30 +41,24 @@ TEST (LocalVarianceClassificationPresets, DerivedSettingsEstimateTheNoiseAndSpac
   EXPECT_FALSE (c.getNoiseEstimate().valid);
 }
 
-TEST (LocalVarianceClassificationPresets, DerivedSettingsAreTheDefaults)
+TEST (LocalVarianceClassificationPresets, PaperSettingsAreTheDefaults)
 {
   const auto cube = pcl_ext::test::makeCube (1.0, 0.02, 0.002);
-  Classifier defaults, derived;
-  for (Classifier* c : {&defaults, &derived}) {
+  Classifier defaults, paper;
+  for (Classifier* c : {&defaults, &paper}) {
     c->setInputCloud (cube.cloud);
     c->setKSearch (50);
   }
-  derived.setPaperSettings();
-  EXPECT_FALSE (derived.getNoiseEstimation());
-  EXPECT_EQ (derived.getNoiseStandardDeviation(), 0.0);
-  EXPECT_EQ (derived.getCurvatureThresholdFactor(), 3.0);
-  EXPECT_EQ (derived.getVarianceThreshold(), 1e-4);
-  EXPECT_EQ (derived.getRelativeVarianceThreshold(), 0.0);
-  EXPECT_FALSE (derived.getSamplingVariance());
-  EXPECT_EQ (derived.getConfidence(), 0.95);
-  derived.setDerivedSettings();
-  EXPECT_TRUE (derived.getNoiseEstimation());
-  EXPECT_EQ (derived.getCurvatureThresholdFactor(), 1.0);
-  EXPECT_EQ (derived.getRelativeVarianceThreshold(), 0.5);
-  EXPECT_TRUE (derived.getSamplingVariance());
+  paper.setDerivedSettings();
+  paper.setPaperSettings();
+  EXPECT_FALSE (paper.getNoiseEstimation());
+  EXPECT_EQ (paper.getNoiseStandardDeviation(), 0.0);
+  EXPECT_EQ (paper.getCurvatureThresholdFactor(), 3.0);
+  EXPECT_EQ (paper.getVarianceThreshold(), 1e-4);
+  EXPECT_EQ (paper.getConfidence(), 0.95);
   Labels a, b;
   defaults.classify (a);
-  derived.classify (b);
+  paper.classify (b);
   ASSERT_EQ (a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i)
     ASSERT_EQ (a[i].label, b[i].label) << i;

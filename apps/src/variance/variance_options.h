@@ -9,19 +9,16 @@
 
 #include <cmath>
 #include <iostream>
-#include <set>
 #include <string>
 
 namespace pcl_ext {
 namespace apps {
 /** \brief Options of the local variance classification (eqs. 4-6 and pcl_ext's
- * additions), with the defaults of LocalVarianceClassification (setDerivedSettings).
- * Only the options given on the command line are handed over, after the preset. */
+ * additions), with the defaults of LocalVarianceClassification. */
 struct VarianceClassificationOptions {
   double curvature_threshold = 0.0;
-  double curvature_factor = 1.0;
+  double curvature_factor = 3.0;
   double variance_threshold = 1e-4;
-  double relative_variance = 0.5;
   double confidence = 0.95;
   double noise_sigma = 0.0;
   double crease_angle = 0.0; ///< degrees
@@ -30,7 +27,7 @@ struct VarianceClassificationOptions {
   std::string preset;   ///< "paper" or "derived" (setPaperSettings, setDerivedSettings)
   bool verbose = false; ///< print the values estimated from the cloud and used
   bool noise_given = false;
-  std::set<std::string> given; ///< the options given on the command line
+  bool given_factor = false;
 
   void
   addTo (apps::CommandLine& cl)
@@ -38,11 +35,10 @@ struct VarianceClassificationOptions {
     cl.addOption (
         "preset",
         preset,
-        "'derived' (the defaults): the noise estimated from the cloud and removed, "
-        "the curvature threshold at the median curvature, eq. 5's tolerance also "
-        "relative to the curvature, eq. 6 allowing for the sampling and, when "
-        "segmenting, section 4's re-integration; 'paper': the paper's settings; "
-        "the other options still override them");
+        "'paper': the paper's settings (the defaults); 'derived': the noise "
+        "estimated from the cloud and removed, the curvature threshold at the "
+        "median curvature and, when segmenting, section 4's re-integration; the "
+        "other options still override them");
     cl.addSwitch ("v",
                   verbose,
                   "print the noise and spacing estimated from the cloud and the "
@@ -52,23 +48,18 @@ struct VarianceClassificationOptions {
                   "curvature (eq. 4) threshold; 0: factor * median curvature");
     cl.addOption ("curvature_factor",
                   curvature_factor,
-                  "multiple of the median curvature when the threshold is 0 (-preset "
-                  "paper: 3)");
+                  "multiple of the median curvature when the threshold is 0");
     cl.addOption ("variance_threshold",
                   variance_threshold,
                   "variance of curvature tolerance (eq. 5)");
-    cl.addOption ("relative_variance",
-                  relative_variance,
-                  "an edge's standard deviation of curvature must also exceed this "
-                  "share of its mean curvature (0: off; -preset paper: 0)");
     cl.addOption ("confidence",
                   confidence,
                   "confidence of the chi-squared boundary test (eq. 6)");
     cl.addOption (
         "noise_sigma",
         noise_sigma,
-        "the noise sigma about the surfaces, removed from eq. 4-6 (not given: "
-        "estimated from the cloud; -preset paper: 0)");
+        "the noise sigma about the surfaces, removed from eq. 4-6 (0: the paper's; "
+        "-preset derived estimates it from the cloud)");
     cl.addSwitch ("boundary_band",
                   boundary_band,
                   "also label boundary the surface points next to one eq. 6 finds");
@@ -88,16 +79,7 @@ struct VarianceClassificationOptions {
   valid (const apps::CommandLine& cl)
   {
     noise_given = cl.given ("noise_sigma");
-    for (const char* name : {"curvature_threshold",
-                             "curvature_factor",
-                             "variance_threshold",
-                             "relative_variance",
-                             "confidence",
-                             "boundary_band",
-                             "boundary_band_fraction",
-                             "crease_angle"})
-      if (cl.given (name))
-        given.insert (name);
+    given_factor = cl.given ("curvature_factor");
     if (!preset.empty() && preset != "paper" && preset != "derived") {
       std::cerr << "Error: -preset must be 'paper' or 'derived'.\n";
       return false;
@@ -113,35 +95,25 @@ struct VarianceClassificationOptions {
     return true;
   }
 
-  /** \brief Hands the preset, then the options given, to a
-   * LocalVarianceClassification. */
+  /** \brief Hands the options to a LocalVarianceClassification. */
   template <typename Classifier>
   void
   applyTo (Classifier& classifier) const
   {
     if (preset == "paper")
       classifier.setPaperSettings();
-    else
+    else if (preset == "derived")
       classifier.setDerivedSettings();
-    const auto has = [this] (const char* name) { return given.count (name) > 0; };
-    if (has ("curvature_threshold"))
-      classifier.setCurvatureThreshold (curvature_threshold);
-    if (has ("curvature_factor"))
+    classifier.setCurvatureThreshold (curvature_threshold);
+    if (preset != "derived" || given_factor)
       classifier.setCurvatureThresholdFactor (curvature_factor);
-    if (has ("variance_threshold"))
-      classifier.setVarianceThreshold (variance_threshold);
-    if (has ("relative_variance"))
-      classifier.setRelativeVarianceThreshold (relative_variance);
-    if (has ("confidence"))
-      classifier.setConfidence (confidence);
+    classifier.setVarianceThreshold (variance_threshold);
+    classifier.setConfidence (confidence);
     if (noise_given)
       classifier.setNoiseStandardDeviation (noise_sigma);
-    if (has ("boundary_band"))
-      classifier.setBoundaryBand (boundary_band);
-    if (has ("boundary_band_fraction"))
-      classifier.setBoundaryBandFraction (boundary_band_fraction);
-    if (has ("crease_angle"))
-      classifier.setCreaseAngle (crease_angle * M_PI / 180.0);
+    classifier.setBoundaryBand (boundary_band);
+    classifier.setBoundaryBandFraction (boundary_band_fraction);
+    classifier.setCreaseAngle (crease_angle * M_PI / 180.0);
   }
 
   /** \brief With -v: what the last classify() estimated from the cloud and used. */
@@ -168,8 +140,7 @@ struct VarianceClassificationOptions {
     std::cout << "Used: noise sigma " << classifier.getNoiseStandardDeviationUsed()
               << (noise_given ? " (given)" : "") << ", curvature threshold "
               << classifier.getCurvatureThresholdUsed() << ", variance threshold "
-              << classifier.getVarianceThreshold() << " (relative "
-              << classifier.getRelativeVarianceThreshold() << "), confidence "
+              << classifier.getVarianceThreshold() << ", confidence "
               << classifier.getConfidence() << "\n";
     std::cout.precision (precision);
   }

@@ -41,26 +41,25 @@ namespace pcl_ext {
  * without a valid neighbourhood (non-finite, fewer than 3 neighbours, coincident or
  * collinear neighbours, fewer than 3 valid curvatures for eq. 5) are 0, "unknown".
  *
- * The defaults (setDerivedSettings) take what the tests need from the cloud: the noise
- * about the surfaces is estimated and removed from eq. 4-6 (setNoiseEstimation; see
- * pcl_ext::estimateNoiseAndSpacing; a cloud whose noise cannot be estimated gets the
- * paper's eq. 4-6 with a PCL_WARN), the curvature threshold is the median kappa, eq.
- * 5's tolerance is also relative to the curvature level of the neighbourhood
- * (setRelativeVarianceThreshold) and eq. 6 allows for the sampling of the neighbourhood
- * (setSamplingVariance). setPaperSettings() restores every value of the paper. Options
- * beyond the paper, off by default: boundary labels over a band of the neighbourhood
+ * setDerivedSettings() estimates the noise about the surfaces from the cloud and
+ * removes it from eq. 4-6 (setNoiseEstimation; see pcl_ext::estimateNoiseAndSpacing; a
+ * cloud whose noise cannot be estimated gets the paper's eq. 4-6 with a PCL_WARN) and
+ * sets the curvature threshold at the median kappa; setPaperSettings() restores every
+ * value of the paper. Options beyond the paper, off by default: boundary labels over a
+ * band of the neighbourhood
  * (setBoundaryBand, setBoundaryBandFraction), edges required to bend the normals
- * (setCreaseAngle) and the k neighbours capped at a radius (setMaxRadius)
- * (docs/belton_lichti.md has the figures).
+ * (setCreaseAngle) and the k neighbours capped at a radius (setMaxRadius). Together
+ * (noise removed, band fraction 0.6, crease angle 70 degrees) they meet the surface,
+ * edge and boundary goals on the generated scenes (docs/belton_lichti.md has the
+ * figures).
  *
  * Departures from the text: eq. 6 is scaled by the neighbourhood size (see
  * pcl_ext::ChiSquaredBoundaryEstimation, setScaleByNeighbourhoodSize); with indices,
  * eq. 5 averages over the neighbours that are among the indices (only their kappa is
  * computed); the curvature threshold, which the paper leaves to the user, is derived
- * from the data (setCurvatureThreshold); the noise about the surfaces, estimated from
- * the cloud or given, is removed from the smallest eigenvalue before eq. 4-5
- * (setNoiseStandardDeviation, setNoiseEstimation); eq. 5's tolerance is also relative
- * (setRelativeVarianceThreshold); eq. 6 allows for the sampling (setSamplingVariance).
+ * from the data by default (setCurvatureThreshold); optionally the noise about the
+ * surfaces, given or estimated from the cloud, is removed from the smallest eigenvalue
+ * before eq. 4-5 (setNoiseStandardDeviation, setNoiseEstimation; off by default).
  *
  * \code
  * pcl_ext::LocalVarianceClassification<pcl::PointXYZ> lvc;
@@ -91,19 +90,16 @@ public:
   LocalVarianceClassification() = default;
 
   /** \brief The paper's settings: no noise removed (nor estimated), the variance
-   * tolerance 1e-4 alone, the curvature threshold 3 times the median kappa, confidence
-   * 0.95, eq. 6 scaled by the neighbourhood size and without the sampling term, no
-   * boundary band, no crease angle. */
+   * tolerance 1e-4, the curvature threshold 3 times the median kappa, confidence 0.95,
+   * eq. 6 scaled by the neighbourhood size, no boundary band, no crease angle. */
   void
   setPaperSettings ()
   {
     curvature_threshold_ = 0.0;
     curvature_factor_ = 3.0;
     variance_threshold_ = 1e-4;
-    relative_variance_ = 0.0;
     noise_sigma_ = 0.0;
     estimate_noise_ = false;
-    sampling_variance_ = false;
     boundary_band_ = false;
     boundary_band_fraction_ = 1.0;
     crease_angle_ = 0.0;
@@ -111,21 +107,16 @@ public:
     scale_by_size_ = true;
   }
 
-  /** \brief The defaults: the paper's settings with what the method needs estimated
-   * from the cloud: the noise about the surfaces estimated and removed from eq. 4-6
-   * (setNoiseEstimation), the curvature threshold at the median kappa (factor 1), eq.
-   * 5's tolerance also relative to the curvature level (setRelativeVarianceThreshold
-   * 0.5) and the sampling of each neighbourhood in eq. 6 (setSamplingVariance).
-   * docs/belton_lichti.md gives the reason for each and what they give on scenes they
-   * were not chosen on. */
+  /** \brief The paper's settings with what the method needs estimated from the cloud:
+   * the noise about the surfaces estimated and removed from eq. 4-6
+   * (setNoiseEstimation) and the curvature threshold at the median kappa (factor 1).
+   * docs/belton_lichti.md has what they give on scenes they were not chosen on. */
   void
   setDerivedSettings ()
   {
     setPaperSettings();
     curvature_factor_ = 1.0;
-    relative_variance_ = 0.5;
     estimate_noise_ = true;
-    sampling_variance_ = true;
   }
 
   /** \brief Curvature threshold (the cheap test of section 2.2, on kappa of eq. 4).
@@ -151,10 +142,10 @@ public:
   }
 
   /** \brief Multiple of the median kappa used when the curvature threshold is 0.
-   * Default 1 (the paper's settings: 3); valid: > 0. On a range camera's frames (a
-   * few millimetres between points) the crease points of boxes lie below 3 times the
-   * median, are never re-checked by eq. 5, and boxes and table grow into one segment;
-   * with the noise removed (the default) the median is the smooth surfaces' level. */
+   * Default 3; valid: > 0. On a range camera's frames (a few millimetres between
+   * points) the crease points of boxes lie below 3 times the median, are never
+   * re-checked by eq. 5, and boxes and table grow into one segment: setDerivedSettings
+   * uses 1. */
   void
   setCurvatureThresholdFactor (double factor)
   {
@@ -198,34 +189,10 @@ public:
     return variance_threshold_;
   }
 
-  /** \brief Eq. 5's tolerance relative to the curvature level: a point whose var(kappa)
-   * exceeds the variance threshold is an edge only when the standard deviation of kappa
-   * over its neighbourhood also exceeds this ratio of their mean kappa. Default 0.5; 0:
-   * off, the paper's absolute tolerance alone (setPaperSettings); valid: >= 0.
-   *
-   * Why: the paper's tolerance is a value for its data's curvature level. On a surface
-   * of constant curvature (a pipe) kappa is high everywhere and changes with the shape
-   * of the neighbourhood (next to a silhouette or a shadow) by more than 1e-4 in
-   * variance, though by a fraction of its level; across a crease kappa rises from the
-   * faces' level to its peak, a spread of the order of its mean. The ratio keeps
-   * section 2.2's distinction (figure 1: smooth curved surfaces are surface) at every
-   * level. */
-  void
-  setRelativeVarianceThreshold (double ratio)
-  {
-    relative_variance_ = ratio;
-  }
-
-  double
-  getRelativeVarianceThreshold () const
-  {
-    return relative_variance_;
-  }
-
   /** \brief Range noise standard deviation sigma of the scanner, in the cloud's units,
    * removed from the smallest eigenvalue before eq. 4-5: kappa = l0' / (l0' + l1 + l2)
    * with l0' = max(l0 - sigma^2, 0). Default: estimated from the cloud
-   * (setNoiseEstimation); 0 without the estimate: the paper's eq. 4 exactly. Setting a
+   * (setNoiseEstimation), or 0 (the default): the paper's eq. 4 exactly. Setting a
    * value turns the estimate off. Valid: finite, >= 0.
    *
    * Why: range noise adds up to sigma^2 (its component along the normal) to l0 of every
@@ -269,7 +236,7 @@ public:
 
   /** \brief Estimate the noise sigma of setNoiseStandardDeviation from the cloud
    * (pcl_ext::estimateNoiseAndSpacing over a sample of up to 20,000 of the
-   * neighbourhoods). Default true (setPaperSettings turns it off);
+   * neighbourhoods). Default false (setDerivedSettings turns it on);
    * setNoiseStandardDeviation turns it off. When the
    * cloud does not let it estimate the noise, classify() says why (PCL_WARN) and
    * removes none: the paper's eq. 4-6. Noise above kMaxNoiseToSpacing point spacings
@@ -336,31 +303,6 @@ public:
   getCreaseAngle () const
   {
     return crease_angle_;
-  }
-
-  /** \brief Add the sampling of each neighbourhood to the spread eq. 6 compares the
-   * index point's offset with: u^2 and v^2 are compared with l1 / n + s^2 / 6 and l2 /
-   * n + s^2 / 6 (plus the noise sigma^2), s the neighbourhood's own point spacing,
-   * s^2 = 2 pi (l1 + l2) / n (a uniform disc of n points). Default true; false: the
-   * paper's eq. 6 (setPaperSettings).
-   *
-   * Why: even inside a surface the centroid of the k nearest points of a discrete
-   * sampling is off the index point by a fraction of a spacing, from two sources of
-   * about s^2 / 12 per axis each (a uniform offset within one spacing): where the point
-   * falls between its neighbours, and which points at the rim are among the k nearest.
-   * Eq. 6 scaled by n reads that as a border wherever the sampling is uneven: scan
-   * lines seen at a grazing angle, the density gradient across a pipe. At a border the
-   * offset is about half the neighbourhood's radius, many spacings. */
-  void
-  setSamplingVariance (bool sampling)
-  {
-    sampling_variance_ = sampling;
-  }
-
-  bool
-  getSamplingVariance () const
-  {
-    return sampling_variance_;
   }
 
   /** \brief Confidence level of the boundary test (alpha of chi2_2(alpha), eq. 6).
@@ -491,25 +433,17 @@ protected:
   void
   estimateNoise (const Neighbourhoods<PointT>& nb);
 
-  /** \brief setRelativeVarianceThreshold: the mean kappa over a row. */
-  template <typename Row>
-  double
-  meanCurvature (const Row& nn) const;
-
   /** \brief setCreaseAngle: cosine of the widest angle between two normals of a row. */
   template <typename Row>
   float
   widestNormalCosine (const Row& nn, const Eigen::Vector3f& own) const;
 
-  // The defaults are those of setDerivedSettings.
   double curvature_threshold_ = 0.0;
-  double curvature_factor_ = 1.0;
+  double curvature_factor_ = 3.0;
   double curvature_threshold_used_ = 0.0;
   double variance_threshold_ = 1e-4;
-  double relative_variance_ = 0.5;
   double noise_sigma_ = 0.0;
-  bool estimate_noise_ = true;
-  bool sampling_variance_ = true;
+  bool estimate_noise_ = false;
   double noise_sigma_used_ = 0.0;
   NoiseEstimate noise_estimate_;
   bool boundary_band_ = false;

@@ -47,12 +47,6 @@ pcl_ext::LocalVarianceClassification<PointT>::checkParameters() const
                variance_threshold_);
     return false;
   }
-  if (!(relative_variance_ >= 0.0) || !std::isfinite (relative_variance_)) {
-    PCL_ERROR ("%s relative variance threshold = %g; it must be finite and >= 0.\n",
-               name,
-               relative_variance_);
-    return false;
-  }
   if (!(noise_sigma_ >= 0.0) || !std::isfinite (noise_sigma_)) {
     PCL_ERROR ("%s noise standard deviation = %g; it must be finite and >= 0.\n",
                name,
@@ -90,10 +84,9 @@ pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (
   const bool boundary = (tests_ & BOUNDARY_TEST) != 0;
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const double noise_variance = noise_sigma_used_ * noise_sigma_used_;
-  const double sampling = sampling_variance_ ? 1.0 : 0.0;
 #pragma omp parallel for num_threads(resolveThreadCount(threads_))                     \
     schedule(dynamic, 256) default(none)                                               \
-        shared(nb, rows, boundary, nan, noise_variance, sampling)
+        shared(nb, rows, boundary, nan, noise_variance)
   for (std::ptrdiff_t r = 0; r < rows; ++r) {
     const pcl::index_t idx = (*indices_)[r];
     const PointT& p = (*input_)[idx];
@@ -114,15 +107,11 @@ pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (
     kappa_[idx] = static_cast<float> (surfaceVariance (values));
     if (!normals_.empty())
       normals_[idx] = local.eigen.vectors.col (0).template cast<float>();
-    // setSamplingVariance: 2 s^2 / 12 of the neighbourhood's own spacing s, s^2 = 2 pi
-    // (l1 + l2) / n (a uniform disc of n points).
-    const double spread =
-        M_PI * (values[1] + values[2]) / (3.0 * static_cast<double> (local.size));
     statistic_[r] = boundary ? static_cast<float> (centroidOffsetStatistic (
                                    Eigen::Vector3d (p.x, p.y, p.z),
                                    local,
                                    scale_by_size_,
-                                   noise_variance + sampling * spread))
+                                   noise_variance))
                              : 0.f;
   }
 }
@@ -201,21 +190,6 @@ pcl_ext::LocalVarianceClassification<PointT>::deriveCurvatureThreshold() const
 
 template <typename PointT>
 template <typename Row>
-double
-pcl_ext::LocalVarianceClassification<PointT>::meanCurvature (const Row& nn) const
-{
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (const auto j : nn)
-    if (std::isfinite (kappa_[j])) {
-      sum += kappa_[j];
-      ++count;
-    }
-  return count > 0 ? sum / static_cast<double> (count) : 0.0;
-}
-
-template <typename PointT>
-template <typename Row>
 float
 pcl_ext::LocalVarianceClassification<PointT>::widestNormalCosine (
     const Row& nn, const Eigen::Vector3f& own) const
@@ -253,7 +227,6 @@ pcl_ext::LocalVarianceClassification<PointT>::label (
   const double quantile = boundary ? chiSquaredQuantile2 (confidence_) : 0.0;
   const float* const kappa = kappa_.data();
   const float min_cosine = static_cast<float> (std::cos (crease_angle_));
-  const double relative = relative_variance_;
 #pragma omp parallel for num_threads(resolveThreadCount(threads_))                     \
     schedule(dynamic, 1024) default(none) shared(nb,                                   \
                                                  labels,                               \
@@ -264,8 +237,7 @@ pcl_ext::LocalVarianceClassification<PointT>::label (
                                                  threshold,                            \
                                                  quantile,                             \
                                                  kappa,                                \
-                                                 min_cosine,                           \
-                                                 relative)
+                                                 min_cosine)
   for (std::ptrdiff_t r = 0; r < rows; ++r) {
     auto& out = labels[r].label;
     const float k = kappa[(*indices_)[r]];
@@ -289,13 +261,6 @@ pcl_ext::LocalVarianceClassification<PointT>::label (
         continue;
       }
       edge = var > variance_threshold_;
-      // setRelativeVarianceThreshold: the spread of kappa must also be a share of its
-      // level (a pipe's kappa varies by a fraction of its level, a crease's by about
-      // its mean).
-      if (edge && relative > 0.0) {
-        const double mean = meanCurvature (nn);
-        edge = var > relative * relative * mean * mean;
-      }
       // setCreaseAngle: an edge must bend the normals across its neighbourhood. The
       // widest angle between two of its normals, found from the normal farthest from
       // the point's own (on a crease the point's own normal is a blend of the two
