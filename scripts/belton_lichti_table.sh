@@ -10,8 +10,10 @@
 #
 # pcl_ext: `pcl_ext_segment_variance in out $SEGMENT_OPTIONS` (none: the defaults), scored
 # by pcl_ext_evaluate.
-# PCL: pcl::NormalEstimation + pcl::RegionGrowing through pcl_ext_compare_segmenters
-# (k = 30 for both, smoothness 3 degrees, curvature threshold 1.0, segments of 50 points).
+# PCL: pcl::NormalEstimationOMP + pcl::RegionGrowing through pcl_ext_compare_segmenters,
+# set as PCL's region growing tutorial sets them: normals of the 50 nearest neighbours,
+# growing over the 30 nearest, smoothness 3 degrees, curvature threshold 1.0, segments of
+# at least 50 points.
 # The mOSD frames are read from $PCL_EXT_SHARED_DATA_DIR/mosd_object_segmentation when
 # the folder exists (truth field 'label'). PCL_FROM=<an earlier table of this script>
 # takes the PCL column from it instead of running PCL again (the scenes are the same for
@@ -58,7 +60,7 @@ theirs() {
     return
   fi
   "$apps/pcl_ext_compare_segmenters" "$cloud" -truth_field "$truth_field" \
-    -methods region_growing -k 30 -angle 3 -curvature 1.0 -min_size 50 \
+    -methods region_growing -normal_k 50 -k 30 -angle 3 -curvature 1.0 -min_size 50 \
     -threads "$threads" | awk '$1 == "region_growing" {print $5}'
 }
 

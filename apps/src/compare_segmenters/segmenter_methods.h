@@ -29,6 +29,7 @@ struct SegmenterInput {
 struct SegmenterSettings {
   double spacing = 0.0;     ///< s, the mean point spacing (m)
   int k = 30;               ///< neighbours of the normals and of pcl::RegionGrowing
+  int normal_k = 0;         ///< neighbours of the normals when not k (0: k)
   unsigned int threads = 0; ///< 0: all cores (methods that run in parallel)
   int min_size = 50; ///< smallest segment kept, where a method has this parameter
   double tolerance =
