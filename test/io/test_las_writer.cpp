@@ -409,9 +409,14 @@ TEST (LasWriter, Refusals)
   EXPECT_TRUE (pcl_ext::io::saveLas (
       pathOf ("shifted.las"), blob, Eigen::Vector3d (1e6, 0, 0), &like));
   EXPECT_EQ (load (pathOf ("shifted.las")).info.header.max.x(), 4e6);
-  xyz[1].x = std::nanf ("");
+  xyz[1].x =
+      std::nanf (""); // an organised cloud's missing point: a message that says so
   pcl::toPCLPointCloud2 (xyz, blob);
+  ::testing::internal::CaptureStderr();
   EXPECT_FALSE (pcl_ext::io::saveLas (path, blob, Eigen::Vector3d::Zero()));
+  const std::string nan_error = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE (nan_error.find ("coordinate x is not a number"), std::string::npos)
+      << nan_error;
   xyz[1].x = 0.0f;
   pcl::toPCLPointCloud2 (xyz, blob);
   EXPECT_FALSE (

@@ -6,8 +6,8 @@
 #include "las_bytes.h"
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace pcl_ext {
@@ -345,6 +345,13 @@ RecordEncoder::encode (const std::uint8_t* point,
         put (record + 4 * a, i);
         continue;
       }
+    }
+    if (!std::isfinite (v)) {
+      error =
+          std::string ("coordinate ") + "xyz"[a] +
+          " is not a number: LAS has no missing points (an organised cloud keeps them "
+          "as NaN); write .pcd or .ply, or drop the non-finite points";
+      return false;
     }
     const double r = std::round ((v + origin_minus_offset_[a]) / scale_[a]);
     if (!(r >= -2147483648.0 && r <= 2147483647.0)) {
