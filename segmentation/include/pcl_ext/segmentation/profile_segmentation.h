@@ -73,10 +73,9 @@ namespace pcl_ext {
  * (setLocalThreshold: a TLS scan is sparser far from the scanner) and curve fits along
  * each side's own axis (setSideFrames: tight smooth bends such as a thin trunk cut
  * obliquely).
- * - The class keeps the paper's defaults; profiles::estimateCloudStatistics and
- * profiles::chooseConfiguration (profile_auto.h) choose these options from the cloud's
- * noise, density variation and a first proximity run, as pcl_ext_segment_profiles does
- * by default.
+ * - The class keeps the paper's defaults; AutoProfileSegmentation chooses these
+ * options from the cloud's noise, density variation and a first proximity run
+ * (profile_auto.h), as pcl_ext_segment_profiles does by default.
  * - Points with non-finite coordinates are never segmented, whatever \c is_dense says.
  * - Curve fitting cuts a pipe where it rests on a support and a thin trunk where
  * branches leave it; CylinderSegmentJoin, a step after the segmentation, joins such
@@ -426,8 +425,9 @@ public:
 
   /** \brief Segment the cloud (the indices, if set).
    * \param[out] clusters one PointIndices per segment, largest first; empty on error
-   * (with a PCL_ERROR). */
-  void
+   * (with a PCL_ERROR). Virtual as in pcl::RegionGrowing: AutoProfileSegmentation
+   * chooses the configuration first. */
+  virtual void
   extract (std::vector<pcl::PointIndices>& clusters);
 
   /** \brief The input cloud coloured by segment (unsegmented points white), as
