@@ -35,6 +35,8 @@ parseMethod (const std::string& name, Segmentation::ProfileMethod& method)
     method = Segmentation::ProfileMethod::MinimumSpanningTree;
   else if (name == "curve")
     method = Segmentation::ProfileMethod::CurveFitting;
+  else if (name == "crust")
+    method = Segmentation::ProfileMethod::CurveReconstruction;
   else
     return false;
   return true;
@@ -141,11 +143,13 @@ main (int argc, char** argv)
       "width_factor",
       width_factor,
       "profile width as a multiple of the spacing (curve fitting, noisy scans: 2.5)");
-  cl.addOption ("method",
-                method_name,
-                "profile segmenter: proximity, mst or curve; auto: chosen from the "
-                "cloud's noise and density variation (see -v), with the join, side "
-                "frames and local thresholds; the options given still apply");
+  cl.addOption (
+      "method",
+      method_name,
+      "profile segmenter: proximity, mst, curve or crust (curve reconstruction, "
+      "section 5.2); auto: chosen from the "
+      "cloud's noise and density variation (see -v), with the join, side "
+      "frames and local thresholds; the options given still apply");
   cl.addOption ("threshold",
                 threshold,
                 "proximity threshold (0: threshold_factor * average point spacing)");
@@ -238,7 +242,7 @@ main (int argc, char** argv)
   Segmentation::ProfileMethod method = Segmentation::ProfileMethod::Proximity;
   const bool automatic = method_name == "auto";
   if (!automatic && !parseMethod (method_name, method)) {
-    std::cerr << "Error: -method must be auto, proximity, mst or curve (got '"
+    std::cerr << "Error: -method must be auto, proximity, mst, curve or crust (got '"
               << method_name << "').\n";
     return 1;
   }

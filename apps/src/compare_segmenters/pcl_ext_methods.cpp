@@ -195,6 +195,12 @@ pclExtMethods ()
        "tolerance * "
        "s, min_size",
        profileRunner (ProfileMethod::CurveFitting)},
+      {"crust",
+       "pcl_ext",
+       false,
+       "pcl_ext::ProfileSegmentation, curve reconstruction (nearest-neighbour crust) "
+       "cut at tolerance * s; min_size",
+       profileRunner (ProfileMethod::CurveReconstruction)},
       {"adaptive_sv",
        "pcl_ext",
        false,

@@ -30,8 +30,10 @@ namespace pcl_ext {
  * profile segmenter (section 4.1, figure 8): proximity chaining (4.1.1), a minimum
  * spanning tree cut at the proximity threshold (section 3), or curve fitting with model
  * selection by the Akaike information criterion and splits where the unit normal turns
- * sharply (4.1.2, figure 9). The union of the edges of all profiles of all stacks is a
- * graph G(V, E); its connected components are the segments (section 3, figure 5).
+ * sharply (4.1.2, figure 9), or the curve reconstruction the paper uses for its nested
+ * spheres (section 5.2; profiles::crustEdges). The union of the edges of all profiles
+ * of all stacks is a graph G(V, E); its connected components are the segments (section
+ * 3, figure 5).
  *
  * Nothing searches neighbours over the whole cloud: each stack is a bucket sort of the
  * points by their coordinate along the stack normal, and each profile is segmented on
@@ -259,7 +261,8 @@ public:
     return spacing_;
   }
 
-  /** \brief The profile segmenter. Default Proximity. */
+  /** \brief The profile segmenter. Default Proximity; CurveReconstruction links each
+   * point to its nearest and half neighbours (profiles::crustEdges). */
   void
   setProfileSegmentation (ProfileMethod method)
   {
