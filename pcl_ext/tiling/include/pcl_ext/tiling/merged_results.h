@@ -31,6 +31,24 @@ class MergedResults {
 public:
   enum class Kind { PerPoint, Segments };
 
+  /** \brief For segments: number them largest first (ties by first point), as pcl_ext's
+   * segmenters do, and drop those of fewer than \a min_size points, counted over the
+   * whole cloud (the tiles' segment sizes joined); call before open(). Default:
+   * numbered by first point, none dropped. */
+  void
+  setSegmentsBySize (std::uint64_t min_size)
+  {
+    by_size_ = true;
+    min_size_ = min_size;
+  }
+
+  /** \brief After open() with setSegmentsBySize: the number of segments kept. */
+  std::uint32_t
+  getNumberOfSegments () const
+  {
+    return merge_.getNumberOfSegments();
+  }
+
   /** \brief Prepare to read the results of \a plan in \a folder. \return false
    * (PCL_ERROR names it) when a tile was not run (its halo labels are missing) or a
    * file is broken \throw io::ReadError naming an input that cannot be read */
@@ -64,6 +82,8 @@ private:
   std::size_t input_ = 0;
   std::uint64_t next_index_ = 0;
   bool failed_ = false;
+  bool by_size_ = false;
+  std::uint64_t min_size_ = 1;
 };
 } // namespace tiling
 } // namespace pcl_ext
