@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <sys/stat.h>
@@ -177,9 +178,10 @@ planStep (const std::string& method_name,
   }
   timer.done (plan.getTotalPoints());
   const tiling::TileGrid grid = plan.getGrid();
-  std::cout << grid.size() << " tiles (" << grid.getColumns() << " x " << grid.getRows()
-            << ") of " << plan.tile_size << " m, halo " << plan.halo << " m, in "
-            << workdir << "\n";
+  // Six digits whatever a timer left (StageTimer leaves the precision at 0).
+  std::cout << std::setprecision (6) << grid.size() << " tiles (" << grid.getColumns()
+            << " x " << grid.getRows() << ") of " << plan.tile_size << " m, halo "
+            << plan.halo << " m, in " << workdir << "\n";
   return true;
 }
 

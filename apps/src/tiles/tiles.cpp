@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <sys/resource.h>
 
@@ -198,8 +199,9 @@ runAll (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
                     ? "Rank " + std::to_string (scheduler.getRank()) + ": "
                     : std::string())
             << (ok ? "done: " : "failed after ") << done << " of " << tiles
-            << " tiles, " << plan.getTotalPoints() << " points, " << seconds
-            << " s, peak memory " << peakMemoryMegabytes() << " MB\n";
+            << " tiles, " << plan.getTotalPoints() << " points, " << std::fixed
+            << std::setprecision (1) << seconds << " s, peak memory "
+            << peakMemoryMegabytes() << " MB\n";
   return ok ? 0 : 1;
 }
 
