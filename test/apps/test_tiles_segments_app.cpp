@@ -3,7 +3,8 @@
  * tile, in one command, in steps and shared among MPI ranks, give the segments of
  * pcl_ext_segment_variance on the whole cloud (the same partition of the points, and
  * the same ids: largest first); a wall across four tiles' corner is one segment; a tile
- * that owns no point changes nothing.
+ * that owns no point, a tile of one point and points without coordinates change
+ * nothing.
  */
 #include "../app_test.h"
 
@@ -13,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -23,7 +25,7 @@
 #include <vector>
 
 namespace {
-/** A LAS output's points (x, y relative to the file's origin) and segment ids. */
+/** An output's points (x, y relative to the file's origin) and segment ids. */
 struct Segments {
   std::vector<float> x, y, z;
   std::vector<std::uint32_t> ids;
@@ -195,6 +197,42 @@ TEST_F (TilesSegmentsApp, ATileThatOwnsNoPointChangesNothing)
   ASSERT_EQ (runTiled ("t2.las", "-tile_size 2"), 0) << output_;
   EXPECT_NE (output_.find (": 0 points]"), std::string::npos) << output_;
   expectSameAsWhole ("t2.las");
+}
+
+TEST_F (TilesSegmentsApp, ATileOfOnePointAndPointsWithoutCoordinates)
+{
+  // Two floor patches with a 20 cm step between them, a point alone in a 3 m tile of
+  // its own, and points with NaN coordinates (in no tile): segmented tile by tile as
+  // whole (PCD: LAS has no point without coordinates).
+  std::vector<std::string> points;
+  for (int i = 0; i <= 60; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const double x = 0.1 * i, y = 0.1 * j;
+      const double z = (x > 3.2 ? 0.2 : 0.0) + 0.002 * std::sin (7.0 * x + 3.0 * y);
+      points.push_back (std::to_string (x) + " " + std::to_string (y) + " " +
+                        std::to_string (z));
+      if ((i * 41 + j) % 500 == 0)
+        points.push_back ("nan nan nan");
+    }
+  points.push_back ("10.5 1.5 0.0"); // tile [9, 12) x [0, 3): this point alone
+  std::ofstream pcd (path ("scene.pcd"));
+  pcd << "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH "
+      << points.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS "
+      << points.size() << "\nDATA ascii\n";
+  for (const auto& p : points)
+    pcd << p << "\n";
+  pcd.close();
+  const std::string whole = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " '" +
+                            path ("scene.pcd") + "' '" + path ("whole.pcd") +
+                            "' -output_field seg > '" + path ("whole.log") + "' 2>&1";
+  ASSERT_EQ (std::system (whole.c_str()), 0);
+  whole_ = readSegments (path ("whole.pcd"));
+  ASSERT_EQ (whole_.ids.size(), points.size());
+  ASSERT_EQ (runTiled ("t3.pcd", "-tile_size 3"), 0) << output_;
+  EXPECT_NE (output_.find (": 1 points]"), std::string::npos) << output_;
+  expectSameAsWhole ("t3.pcd");
+  const std::set<std::uint32_t> ids (whole_.ids.begin(), whole_.ids.end());
+  EXPECT_GE (ids.size(), 3u); // the two patches and the unsegmented points
 }
 
 #ifdef PCL_EXT_MPIEXEC
