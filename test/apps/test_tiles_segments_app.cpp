@@ -239,13 +239,16 @@ TEST_F (TilesSegmentsApp, ATileOfOnePointAndPointsWithoutCoordinates)
 TEST_F (TilesSegmentsApp, MpiRanksGiveTheSameSegments)
 {
   makeScene ("indoor");
-  const std::string command =
-      std::string (PCL_EXT_MPIEXEC) + " --allow-run-as-root --oversubscribe -np 2 " +
-      PCL_EXT_TILES_EXE + " segment_variance '" + path ("scene.pcd") + "' '" +
-      path ("mpi.las") + "' -output_field seg -tile_size 3 -threads 1 > '" +
-      path ("mpi.log") + "' 2>&1";
-  ASSERT_EQ (std::system (command.c_str()), 0);
-  expectSameAsWhole ("mpi.las");
+  for (const int ranks : {2, 4}) {
+    const std::string out = "mpi" + std::to_string (ranks) + ".las";
+    const std::string command =
+        std::string (PCL_EXT_MPIEXEC) + " --allow-run-as-root --oversubscribe -np " +
+        std::to_string (ranks) + " " + PCL_EXT_TILES_EXE + " segment_variance '" +
+        path ("scene.pcd") + "' '" + path (out) +
+        "' -output_field seg -tile_size 3 -threads 1 > '" + path ("mpi.log") + "' 2>&1";
+    ASSERT_EQ (std::system (command.c_str()), 0) << ranks << " ranks";
+    expectSameAsWhole (out);
+  }
 }
 #endif
 
