@@ -20,16 +20,12 @@ using pcl_ext::apps::CommandLine;
 
 constexpr const char* kDescription =
     "Runs a method over clouds of any size tile by tile: each tile reads only its "
-    "points "
-    "and a halo around them, and the output is what the method's own tool gives on the "
-    "whole cloud (the same classes point by point; the same segments, numbered by "
-    "their "
-    "first point). Methods: classify_variance and segment_variance (the options of "
-    "pcl_ext_classify_variance and pcl_ext_segment_variance). Steps for scheduler "
-    "array jobs: 'plan METHOD input... "
-    "-workdir D', then 'estimate I -workdir D' and 'tile I -workdir D' for every tile "
-    "I, "
-    "then 'merge output -workdir D'.";
+    "points and a halo around them, and the output is what the method's own tool "
+    "gives on the whole cloud (the same classes point by point; the same segments "
+    "with the same ids). Methods: classify_variance and segment_variance (the options "
+    "of pcl_ext_classify_variance and pcl_ext_segment_variance). Steps for scheduler "
+    "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D' and "
+    "'tile I -workdir D' for every tile I, then 'merge output -workdir D'.";
 
 /** The tool's own options, kept out of the method's. */
 struct TileOptions {

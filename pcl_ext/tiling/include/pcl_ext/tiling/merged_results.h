@@ -23,8 +23,9 @@ namespace tiling {
  * For per-point results (classes) a point's result is what its owner tile wrote
  * (TileResults; kNoResult for a point no tile holds: not finite). For segments the
  * owners' labels are joined across the halos first (SegmentMerge over every tile's
- * halo labels), then numbered 0, 1, ... in the order of the segments' first points;
- * SegmentMerge::kNoSegment for a point in no segment. Either way the values depend
+ * halo labels), then numbered 0, 1, ... in the order of the segments' first points
+ * (or largest first, setSegmentsBySize); SegmentMerge::kNoSegment for a point in no
+ * segment. Either way the values depend
  * neither on the tile size, nor on the order or the number of the processes that ran
  * the tiles. */
 class MergedResults {
