@@ -69,7 +69,8 @@ if [ "$mode" = "--fuzz" ]; then
   exit "$status"
 fi
 
-cmake_args=(-DCMAKE_BUILD_TYPE="$build_type")
+# Tests and benchmarks on: the folder may have been configured without them (scripts/build.sh).
+cmake_args=(-DCMAKE_BUILD_TYPE="$build_type" -DPCL_EXT_BUILD_TESTS=ON -DPCL_EXT_BUILD_BENCHMARKS=ON)
 build_dir="${BUILD_DIR:-$root/build}"
 timeout=900
 if [ "$mode" != default ]; then
