@@ -1,0 +1,111 @@
+/*
+ * pcl_ext_register_to_map with its defaults on a real airborne tile (label "data";
+ * skipped without the data folder, PCL_EXT_SHARED_DATA_DIR): AHN3 tile 2397_9705 and
+ * every BGT building footprint of the data set, both in RD New, so that the true
+ * cloud-to-map transform is the identity. The labelled cloud is moved by a known rigid
+ * transform and given to the tool with the footprint file and nothing else: the wall
+ * source, the footprints near the scan, m and n and the floor height all come from the
+ * data (Khoshelham & Gorte 2009, with airborne data).
+ */
+#include "../app_test.h"
+
+#include <pcl_ext/evaluation/registration_metrics.h>
+#include <pcl_ext/io/transform_file.h>
+
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Geometry>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace {
+const std::string kDir =
+    std::string (PCL_EXT_SHARED_DATA_DIR) + "/amsterdam_ahn3_bgt_footprints";
+
+class RegisterToMapAhn : public pcl_ext::test::AppTest {
+protected:
+  RegisterToMapAhn() : AppTest (PCL_EXT_REGISTER_TO_MAP_EXE) {}
+};
+
+// The BGT polygons of the data set's CSV (one JSON list of [x, y] per row), moved to
+// the tile's local frame, as text footprints: "id n x1 y1 ... xn yn".
+bool
+writeFootprints (const std::string& csv,
+                 const Eigen::Vector2d& origin,
+                 const std::string& path)
+{
+  std::ifstream in (csv);
+  std::ofstream out (path);
+  std::string line;
+  int id = 0;
+  const std::regex number ("-?[0-9]+(\\.[0-9]+)?");
+  while (std::getline (in, line)) {
+    const auto open = line.find ("[[");
+    const auto close = line.find ("]]");
+    if (open == std::string::npos || close == std::string::npos)
+      continue;
+    const std::string list = line.substr (open, close - open);
+    std::vector<double> values;
+    for (std::sregex_iterator i (list.begin(), list.end(), number), end; i != end; ++i)
+      values.push_back (std::stod (i->str()));
+    out << id++ << " " << values.size() / 2 << std::setprecision (12);
+    for (std::size_t v = 0; v + 1 < values.size(); v += 2)
+      out << " " << values[v] - origin.x() << " " << values[v + 1] - origin.y();
+    out << "\n";
+  }
+  return id > 0 && bool (out);
+}
+} // namespace
+
+// The perturbation (3 degrees of yaw, 1 of tilt, (2, -1.5, 0.3) m) puts the cloud's
+// centre 3.16 degrees and 1.04 m off: doing nothing fails both bounds.
+TEST_F (RegisterToMapAhn, Tile2397_9705WithTheDefaults)
+{
+  const std::string cloud_path = kDir + "/ahn_2397_9705.pcd";
+  const std::string csv = kDir + "/bgt_buildings_demo.csv";
+  if (!std::filesystem::exists (cloud_path) || !std::filesystem::exists (csv))
+    GTEST_SKIP() << "real data not found in " << kDir;
+  // The local frame of the tile's PCD (SOURCE.md of the data set).
+  ASSERT_TRUE (writeFootprints (
+      csv, Eigen::Vector2d (119850.0, 485250.0), path ("footprints.txt")));
+  pcl::PointCloud<pcl::PointXYZL> points;
+  ASSERT_EQ (pcl::io::loadPCDFile (cloud_path, points), 0);
+  Eigen::Matrix4d perturbation = Eigen::Matrix4d::Identity();
+  perturbation.topLeftCorner<3, 3>() =
+      (Eigen::AngleAxisd (3.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()) *
+       Eigen::AngleAxisd (1.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
+  perturbation.topRightCorner<3, 1>() = Eigen::Vector3d (2.0, -1.5, 0.3);
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (auto& p : points) {
+    const Eigen::Vector3d q =
+        (perturbation * p.getVector3fMap().cast<double>().homogeneous()).head<3>();
+    p.getVector3fMap() = q.cast<float>();
+    centre += q;
+  }
+  centre /= double (points.size());
+  ASSERT_EQ (pcl::io::savePCDFileBinary (path ("tile.pcd"), points), 0);
+
+  ASSERT_EQ (run (path ("tile.pcd") + " " + path ("footprints.txt") + " " +
+                  path ("out.pcd") + " -transform_out " + path ("T.txt")),
+             0)
+      << output_;
+  Eigen::Matrix4d estimate;
+  pcl_ext::io::loadTransform (path ("T.txt"), estimate);
+  const Eigen::Matrix4d truth = perturbation.inverse();
+  const auto error = pcl_ext::computeTransformationError (estimate, truth, centre);
+  const auto nothing =
+      pcl_ext::computeTransformationError (Eigen::Matrix4d::Identity(), truth, centre);
+  ASSERT_GT (nothing.rotation_deg, 1.0);
+  ASSERT_GT (nothing.translation, 0.5);
+  EXPECT_LT (error.rotation_deg, 1.0) << output_;
+  EXPECT_LT (error.translation, 0.5) << output_;
+}
