@@ -217,8 +217,8 @@ main (int argc, char** argv)
   cl.addOption ("floor",
                 floor_height,
                 "floor height in map coordinates (m); when left out: 0, or with roof "
-                "outlines (a georeferenced airborne cloud) the median height of the "
-                "ground-class points under the guess");
+                "outlines and footprints in a projected system (beyond 1 km of its "
+                "zero) the median height of the ground-class points under the guess");
   cl.addOption ("id", id, "use only the footprint with this id (default: all)");
   cl.addOption ("threads", threads, "threads of the search (0 = all cores)");
   cl.addOption ("png", png, "top view of the registered scan over the footprint");
@@ -253,7 +253,7 @@ main (int argc, char** argv)
   for (const char* option : {"label_field", "ground_label", "building_label"})
     if (walls == "sac" && cl.given (option)) {
       std::cerr << "Error: -" << option
-                << " applies to -walls roof_outline and auto only.\n";
+                << " applies to -walls roof_outline or auto, not sac.\n";
       return 1;
     }
   if ((m != 0 && m < k) || (n != 0 && n < k) || m < 0 || n < 0 || m > 64 || n > 64) {
@@ -397,9 +397,13 @@ main (int argc, char** argv)
     extraction.setBuildingLabel (building_label);
     reg.setPlaneExtractor (extraction.asExtractor());
   }
-  // The map has no heights: a georeferenced airborne cloud gives its ground's.
+  // The map has no heights: with footprints in a projected system (beyond 1 km of its
+  // zero), heights are absolute, and a classified airborne cloud gives its ground's.
   map_parameters.floor_height = floor_height;
-  if (roof_outline && !cl.given ("floor")) {
+  Eigen::Vector3d map_centre = Eigen::Vector3d::Zero();
+  if (roof_outline && !cl.given ("floor") &&
+      pcl_ext::chooseLocalOrigin (footprints, map_centre) &&
+      map_centre.norm() > 1000.0) {
     std::vector<double> ground;
     for (std::size_t i = 0; i < scan->size(); ++i)
       if ((*labels)[i].label == ground_label && pcl::isXYZFinite ((*scan)[i]))
