@@ -2,6 +2,8 @@
  * pcl_ext_register_to_map: register a building scan to its 2D footprint by plane
  * matching (Khoshelham & Gorte 2009).
  */
+#include "register_to_map_output.h"
+
 #include <pcl_ext/evaluation/registration_metrics.h>
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/footprints.h>
@@ -22,6 +24,7 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/point_types.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <cstdio>
@@ -108,81 +111,19 @@ footprintNearScan (const std::vector<pcl_ext::io::Footprint>& footprints,
   return false;
 }
 
-// Row by row, as PDAL's filters.transformation and CloudCompare read it.
-bool
-writeTransform (const std::string& path, const Eigen::Matrix4d& t)
-{
-  std::FILE* file = std::fopen (path.c_str(), "w");
-  if (!file) {
-    std::cerr << "Error: cannot write " << path << ".\n";
-    return false;
-  }
-  for (int r = 0; r < 4; ++r)
-    std::fprintf (
-        file, "%.17g %.17g %.17g %.17g\n", t (r, 0), t (r, 1), t (r, 2), t (r, 3));
-  return std::fclose (file) == 0;
-}
-
-// T.txt -> T_candidate_2.txt
-std::string
-candidatePath (const std::string& path, std::size_t rank)
-{
-  const std::size_t dot = path.find_last_of ('.');
-  const std::size_t slash = path.find_last_of ("/\\");
-  const bool has_extension =
-      dot != std::string::npos && (slash == std::string::npos || dot > slash);
-  const std::string stem = has_extension ? path.substr (0, dot) : path;
-  return stem + "_candidate_" + std::to_string (rank) +
-         (has_extension ? path.substr (dot) : std::string());
-}
-
-// Rotation angle (radians) plus the translation difference over 100 m: ranks
-// candidates by their distance to a guess, rotation first.
-double
-poseDistance (const Eigen::Matrix4d& a, const Eigen::Matrix4d& b)
-{
-  const Eigen::Matrix3d r =
-      a.topLeftCorner<3, 3>().transpose() * b.topLeftCorner<3, 3>();
-  const double cosine = std::min (1.0, std::max (-1.0, 0.5 * (r.trace() - 1.0)));
-  return std::acos (cosine) +
-         (a.topRightCorner<3, 1>() - b.topRightCorner<3, 1>()).norm() / 100.0;
-}
-
-// x y z (FLOAT32, local) of every point moved by \a t; the other fields are kept.
-void
-transformXyz (const Eigen::Matrix4d& t, pcl::PCLPointCloud2& cloud)
-{
-  int offset[3] = {-1, -1, -1};
-  for (const auto& f : cloud.fields)
-    for (int c = 0; c < 3; ++c)
-      if (f.name == std::string (1, "xyz"[c]) &&
-          f.datatype == pcl::PCLPointField::FLOAT32)
-        offset[c] = static_cast<int> (f.offset);
-  if (offset[0] < 0 || offset[1] < 0 || offset[2] < 0)
-    return;
-  for (std::size_t i = 0; i < cloud.width * cloud.height; ++i) {
-    std::uint8_t* point = cloud.data.data() + i * cloud.point_step;
-    float v[3];
-    for (int c = 0; c < 3; ++c)
-      std::memcpy (&v[c], point + offset[c], sizeof (float));
-    const Eigen::Vector3d x =
-        t.topLeftCorner<3, 3>() * Eigen::Vector3d (v[0], v[1], v[2]) +
-        t.topRightCorner<3, 1>();
-    for (int c = 0; c < 3; ++c) {
-      const float value = static_cast<float> (x[c]);
-      std::memcpy (point + offset[c], &value, sizeof (float));
-    }
-  }
-}
 } // namespace
+using pcl_ext::apps::candidatePath;
+using pcl_ext::apps::poseDistance;
+using pcl_ext::apps::transformXyz;
+using pcl_ext::apps::writeTransform;
 
 int
 main (int argc, char** argv)
 {
   std::string input, footprint_path, output, png, png_before, no_constraint, id,
       guess_path, transform_out;
-  std::string walls = "sac", label_field;
-  int k = 4, m = 10, n = 10, max_planes = 30, min_inliers = 200;
+  std::string walls = "auto", label_field;
+  int k = 4, m = 0, n = 0, max_planes = 30, min_inliers = 200;
   unsigned int threads = 0, ground_label = 2, building_label = 6;
   double threshold = 0.4, angle = 3.0, distance = 0.5, floor_height = 0.0;
   double max_rotation = std::numeric_limits<double>::infinity();
@@ -209,8 +150,14 @@ main (int argc, char** argv)
                 "write the scan-to-map 4x4 transform (map coordinates, row by row) "
                 "to this file");
   cl.addOption ("k", k, "initial pairs per combination (paper: k)");
-  cl.addOption ("m", m, "scan planes used to initiate (paper: m)");
-  cl.addOption ("n", n, "map planes used to initiate (paper: n)");
+  cl.addOption ("m",
+                m,
+                "scan planes used to initiate (paper: m); 0: from the data, every scan "
+                "plane (at most 64)");
+  cl.addOption ("n",
+                n,
+                "map planes used to initiate (paper: n); 0: from the data, every map "
+                "plane of the footprints near the scan (at most 64)");
   cl.addSwitch ("similarity",
                 similarity,
                 "estimate a similarity (with scale) instead of a rigid transform");
@@ -250,9 +197,10 @@ main (int argc, char** argv)
   cl.addOption (
       "walls",
       walls,
-      "plane extraction: sac (sequential RANSAC, for terrestrial scans) or "
-      "roof_outline (a "
-      "classified airborne cloud: ground plane and walls along the building outlines)");
+      "plane extraction: sac (sequential RANSAC, for terrestrial scans), "
+      "roof_outline (a classified airborne cloud: ground plane and walls along the "
+      "building outlines) or auto (sac, and roof_outline when sac finds fewer than 3 "
+      "walls and the cloud has building-class points)");
   cl.addOption (
       "label_field",
       label_field,
@@ -266,7 +214,11 @@ main (int argc, char** argv)
   cl.addOption ("threshold", threshold, "sac: RANSAC inlier distance (m)");
   cl.addOption ("min_inliers", min_inliers, "sac: least points of a plane");
   cl.addOption ("max_planes", max_planes, "sac: most planes");
-  cl.addOption ("floor", floor_height, "floor height in map coordinates (m)");
+  cl.addOption ("floor",
+                floor_height,
+                "floor height in map coordinates (m); when left out: 0, or with roof "
+                "outlines and footprints in a projected system (beyond 1 km of its "
+                "zero) the median height of the ground-class points under the guess");
   cl.addOption ("id", id, "use only the footprint with this id (default: all)");
   cl.addOption ("threads", threads, "threads of the search (0 = all cores)");
   cl.addOption ("png", png, "top view of the registered scan over the footprint");
@@ -293,16 +245,21 @@ main (int argc, char** argv)
     std::cerr << "Error: unknown -initial '" << initial << "' (walls, largest).\n";
     return 1;
   }
-  const bool roof_outline = walls == "roof_outline";
-  if (!roof_outline && walls != "sac") {
-    std::cerr << "Error: unknown -walls '" << walls << "' (sac, roof_outline).\n";
+  bool roof_outline = walls == "roof_outline";
+  if (!roof_outline && walls != "sac" && walls != "auto") {
+    std::cerr << "Error: unknown -walls '" << walls << "' (auto, sac, roof_outline).\n";
     return 1;
   }
   for (const char* option : {"label_field", "ground_label", "building_label"})
-    if (!roof_outline && cl.given (option)) {
-      std::cerr << "Error: -" << option << " applies to -walls roof_outline only.\n";
+    if (walls == "sac" && cl.given (option)) {
+      std::cerr << "Error: -" << option
+                << " applies to -walls roof_outline or auto, not sac.\n";
       return 1;
     }
+  if ((m != 0 && m < k) || (n != 0 && n < k) || m < 0 || n < 0 || m > 64 || n > 64) {
+    std::cerr << "Error: -m and -n must be 0 (from the data) or in [k, 64].\n";
+    return 1;
+  }
   if (roof_outline && ground_label == building_label) {
     std::cerr << "Error: -ground_label and -building_label must differ.\n";
     return 1;
@@ -342,19 +299,20 @@ main (int argc, char** argv)
   pcl_ext::io::PointFile point_file;
   if (!pcl_ext::apps::loadInput (input, point_file, *scan))
     return 1;
-  if (roof_outline) {
+  if (walls != "sac") {
     std::vector<std::uint32_t> values;
     std::string error;
     if (label_field.empty())
       label_field = pcl::getFieldIndex (point_file.cloud, "label") >= 0
                         ? "label"
                         : "classification";
-    if (!pcl_ext::io::getLabelField (point_file.cloud, label_field, values, &error)) {
+    if (pcl_ext::io::getLabelField (point_file.cloud, label_field, values, &error))
+      for (const auto v : values)
+        labels->push_back (pcl::Label{v});
+    else if (roof_outline || cl.given ("label_field")) {
       std::cerr << "Error: " << input << ": " << error << " (-label_field).\n";
       return 1;
     }
-    for (const auto v : values)
-      labels->push_back (pcl::Label{v});
   }
   std::vector<pcl_ext::io::Footprint> footprints;
   try {
@@ -377,15 +335,61 @@ main (int argc, char** argv)
     footprints.swap (chosen);
   }
   pcl_ext::MapPlaneParameters map_parameters;
-  map_parameters.floor_height = floor_height;
   // A georeferenced scan is loaded relative to its origin: the footprints are shifted
   // by the same origin, so that both are in one local frame.
   map_parameters.origin = point_file.origin;
   if (!footprintNearScan (footprints, point_file.origin, *scan))
     return 1;
-  if (!reg.setFootprints (footprints, map_parameters))
-    return 1;
+  // The scan in map coordinates, as the guess puts it.
+  auto toMapFrame = [&] (const Point& p) {
+    return (guess *
+            (p.getVector3fMap().cast<double>() + point_file.origin).homogeneous())
+        .head<3>()
+        .eval();
+  };
+  Eigen::AlignedBox3d scan_box;
+  for (const auto& p : *scan)
+    if (pcl::isXYZFinite (p))
+      scan_box.extend (toMapFrame (p));
+  // Footprints within a tenth of the scan's extent of it; all when none is.
+  if (id.empty() && !scan_box.isEmpty()) {
+    std::vector<pcl_ext::io::Footprint> near;
+    const double margin = 0.1 * scan_box.sizes().head<2>().maxCoeff();
+    if (pcl_ext::selectFootprintsNearScan (footprints, scan_box, margin, near) &&
+        near.size() < footprints.size()) {
+      std::printf (
+          "Footprints near the scan: %zu of %zu\n", near.size(), footprints.size());
+      footprints.swap (near);
+    }
+  }
 
+  // Walls from the data: sequential RANSAC, and the roof outlines of a classified
+  // airborne cloud when RANSAC finds fewer than 3 walls.
+  const bool has_buildings =
+      labels->size() == scan->size() &&
+      std::any_of (labels->begin(), labels->end(), [&] (const pcl::Label& l) {
+        return l.label == building_label;
+      });
+  if (!roof_outline) {
+    pcl_ext::SACPlaneExtraction<Point> extraction;
+    extraction.setDistanceThreshold (threshold);
+    extraction.setMinInliers (min_inliers);
+    extraction.setMaxPlanes (max_planes);
+    if (walls == "auto" && has_buildings) {
+      std::vector<pcl::PointIndices> sets;
+      extraction.setInputCloud (scan);
+      extraction.extract (sets);
+      std::vector<pcl_ext::ScanPlane> planes;
+      roof_outline = pcl_ext::countVerticalPlanes (*scan, sets) < 3;
+      if (!roof_outline &&
+          pcl_ext::fitScanPlanes (*scan, sets, pcl_ext::ScanViewpoints(), planes))
+        reg.setSourcePlanes (planes);
+      if (roof_outline)
+        std::printf ("Walls: fewer than 3 from RANSAC, taken from the roof outlines\n");
+    }
+    if (!roof_outline)
+      reg.setPlaneExtractor (extraction.asExtractor());
+  }
   if (roof_outline) {
     pcl_ext::RoofOutlinePlaneExtraction<Point> extraction;
     extraction.setInputLabels (labels);
@@ -393,13 +397,32 @@ main (int argc, char** argv)
     extraction.setBuildingLabel (building_label);
     reg.setPlaneExtractor (extraction.asExtractor());
   }
-  else {
-    pcl_ext::SACPlaneExtraction<Point> extraction;
-    extraction.setDistanceThreshold (threshold);
-    extraction.setMinInliers (min_inliers);
-    extraction.setMaxPlanes (max_planes);
-    reg.setPlaneExtractor (extraction.asExtractor());
+  // The map has no heights: with footprints in a projected system (beyond 1 km of its
+  // zero), heights are absolute, and a classified airborne cloud gives its ground's.
+  map_parameters.floor_height = floor_height;
+  Eigen::Vector3d map_centre = Eigen::Vector3d::Zero();
+  if (roof_outline && !cl.given ("floor") &&
+      pcl_ext::chooseLocalOrigin (footprints, map_centre) &&
+      map_centre.norm() > 1000.0) {
+    std::vector<double> ground;
+    for (std::size_t i = 0; i < scan->size(); ++i)
+      if ((*labels)[i].label == ground_label && pcl::isXYZFinite ((*scan)[i]))
+        ground.push_back (toMapFrame ((*scan)[i]).z());
+    if (!ground.empty()) {
+      std::nth_element (
+          ground.begin(), ground.begin() + ground.size() / 2, ground.end());
+      map_parameters.floor_height = ground[ground.size() / 2];
+      std::printf ("Floor: %.3f m, the ground's median height\n",
+                   map_parameters.floor_height);
+    }
   }
+  if (!reg.setFootprints (footprints, map_parameters))
+    return 1;
+  // m and n from the data: every plane (at most 64).
+  if (m == 0)
+    m = 64;
+  if (n == 0)
+    n = 64;
   reg.setMaxRotationFromGuess (max_rotation);
   reg.setMaxTranslationFromGuess (max_translation);
   reg.setInitialPairs (k);

@@ -221,4 +221,32 @@ computeMapPlanes (const io::Ring2d& ring,
   footprint.polygons[0].outer = ring;
   return computeMapPlanes (std::vector<io::Footprint>{footprint}, parameters, planes);
 }
+
+bool
+selectFootprintsNearScan (const std::vector<io::Footprint>& footprints,
+                          const Eigen::AlignedBox3d& scan_box,
+                          double margin,
+                          std::vector<io::Footprint>& near)
+{
+  std::vector<io::Footprint> kept;
+  if (!scan_box.isEmpty() && margin >= 0.0) {
+    Eigen::AlignedBox2d box (scan_box.min().head<2>(), scan_box.max().head<2>());
+    box.min().array() -= margin;
+    box.max().array() += margin;
+    for (const auto& footprint : footprints) {
+      Eigen::AlignedBox2d extent;
+      for (const auto& polygon : footprint.polygons)
+        for (const auto& q : polygon.outer)
+          extent.extend (q);
+      if (!extent.isEmpty() && box.intersects (extent))
+        kept.push_back (footprint);
+    }
+  }
+  if (kept.empty()) {
+    near = footprints;
+    return false;
+  }
+  near.swap (kept);
+  return true;
+}
 } // namespace pcl_ext

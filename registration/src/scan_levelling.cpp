@@ -110,4 +110,63 @@ levellingTransform (const Eigen::Vector3d& up)
           .toRotationMatrix();
   return t;
 }
+
+bool
+refineAboutVertical (const std::vector<Plane>& scan,
+                     const std::vector<Plane>& map,
+                     const std::vector<PlanePair>& matches,
+                     PlaneTransformationResult& estimate)
+{
+  if (!estimate.valid || std::abs (estimate.scale - 1.0) > 1e-9 || matches.empty())
+    return false;
+  for (const auto& pair : matches)
+    if (pair.scan < 0 || pair.map < 0 || pair.scan >= int (scan.size()) ||
+        pair.map >= int (map.size()))
+      return false;
+  const Eigen::Matrix3d r0 = estimate.transformation.topLeftCorner<3, 3>();
+  const Eigen::Vector3d t0 = estimate.transformation.topRightCorner<3, 1>();
+  // The rotation about z nearest (Frobenius) to r0.
+  const double yaw = std::atan2 (r0 (1, 0) - r0 (0, 1), r0 (0, 0) + r0 (1, 1));
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd (yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  // Least squares on n_m . t = -d_m - n_m . R c_s, with a small pull towards t0 that
+  // only matters along directions the map normals leave free.
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for (const auto& pair : matches) {
+    const Plane& s = scan[pair.scan];
+    const Plane& m = map[pair.map];
+    a += m.normal * m.normal.transpose();
+    b += m.normal * (-m.d - m.normal.dot (r * s.centroid));
+  }
+  const double pull = 1e-6 * std::max (a.trace(), 1e-12);
+  a += pull * Eigen::Matrix3d::Identity();
+  b += pull * t0;
+  const Eigen::Vector3d t = a.ldlt().solve (b);
+  if (!t.allFinite())
+    return false;
+  estimate.transformation.setIdentity();
+  estimate.transformation.topLeftCorner<3, 3>() = r;
+  estimate.transformation.topRightCorner<3, 1>() = t;
+  estimate.angle_residuals.clear();
+  estimate.distance_residuals.clear();
+  estimate.max_angle = estimate.max_distance = 0.0;
+  double sum = 0.0;
+  for (const auto& pair : matches) {
+    const Plane& s = scan[pair.scan];
+    const Plane& m = map[pair.map];
+    const Eigen::Vector3d n = r * s.normal;
+    const double sign = n.dot (m.normal) < 0.0 ? -1.0 : 1.0;
+    const double angle = std::acos (std::min (1.0, std::abs (n.dot (m.normal))));
+    const double distance = std::abs (m.normal.dot (r * s.centroid + t) + m.d);
+    estimate.angle_residuals.push_back (angle);
+    estimate.distance_residuals.push_back (distance);
+    estimate.max_angle = std::max (estimate.max_angle, angle);
+    estimate.max_distance = std::max (estimate.max_distance, distance);
+    sum += (s.normal - sign * r.transpose() * m.normal).squaredNorm() +
+           distance * distance;
+  }
+  estimate.residual_norm = std::sqrt (sum / double (matches.size()));
+  return true;
+}
 } // namespace pcl_ext

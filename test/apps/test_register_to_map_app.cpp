@@ -197,9 +197,10 @@ TEST_F (RegisterToMapApp, RoofOutlineWallsRegisterAClassifiedAirborneCloud)
   EXPECT_LT (largestError ("airborne.pcd", "out.pcd", moved.inverse()), 0.3) << output_;
 
   // The same cloud through sequential RANSAC finds roofs and ground, not the walls: the
-  // outline walls are what make the airborne cloud usable.
+  // outline walls are what make the airborne cloud usable (the default, -walls auto,
+  // takes them for this reason).
   EXPECT_EQ (run (common + path ("sac.pcd") +
-                  " -threads 1 -max_rotation_from_guess 10 "
+                  " -threads 1 -walls sac -max_rotation_from_guess 10 "
                   "-max_translation_from_guess 5"),
              1)
       << output_;
@@ -225,7 +226,8 @@ TEST_F (RegisterToMapApp, BadOptionValuesAreRefusedWithoutOutput)
       {"-guess " + path ("bad_transform.txt"), "bad_transform.txt"},
       {"-guess", "guess"},
       {"-walls planes", "unknown -walls 'planes'"},
-      {"-ground_label 2", "-ground_label applies to -walls roof_outline only"},
+      {"-walls sac -ground_label 2",
+       "-ground_label applies to -walls roof_outline or auto"},
       {"-walls roof_outline -ground_label -1", "ground_label"},
       {"-walls roof_outline -ground_label 6 -building_label 6", "must differ"},
       {"-walls roof_outline -label_field nothing", "nothing"}};

@@ -134,3 +134,32 @@ TEST (MapPlanes, BadInputIsRejected)
   EXPECT_FALSE (computeMapPlanes (test::hShape(), bad, planes));
   EXPECT_TRUE (planes.empty());
 }
+
+// Footprints far from the scan are left out of the map; when none is near, all stay.
+TEST (MapPlanes, FootprintsNearTheScanOnly)
+{
+  auto square = [] (double x, double y, const std::string& id) {
+    io::Footprint f;
+    f.id = id;
+    io::FootprintPolygon polygon;
+    polygon.outer = {{x, y}, {x + 10, y}, {x + 10, y + 10}, {x, y + 10}};
+    f.polygons.push_back (polygon);
+    return f;
+  };
+  const std::vector<io::Footprint> all{
+      square (0, 0, "a"), square (55, 0, "b"), square (500, 500, "c")};
+  const Eigen::AlignedBox3d scan (Eigen::Vector3d (-5, -5, 0),
+                                  Eigen::Vector3d (50, 20, 10));
+  std::vector<io::Footprint> near;
+  ASSERT_TRUE (selectFootprintsNearScan (all, scan, 0.0, near));
+  ASSERT_EQ (near.size(), 1u);
+  EXPECT_EQ (near[0].id, "a");
+  ASSERT_TRUE (selectFootprintsNearScan (all, scan, 5.0, near));
+  ASSERT_EQ (near.size(), 2u);
+  EXPECT_EQ (near[1].id, "b");
+  // A scan that is not in map coordinates: nothing near, everything kept.
+  const Eigen::AlignedBox3d elsewhere (Eigen::Vector3d (-900, -900, 0),
+                                       Eigen::Vector3d (-850, -850, 10));
+  EXPECT_FALSE (selectFootprintsNearScan (all, elsewhere, 5.0, near));
+  EXPECT_EQ (near.size(), 3u);
+}

@@ -115,3 +115,21 @@ TEST (PlaneExtraction, SacPlaneExtractionFindsTheLargestPlaneFirst)
   EXPECT_NE (log.find ("[pcl_ext::SACPlaneExtraction::extract]"), std::string::npos)
       << log;
 }
+
+// Walls are the planes within the tolerance of vertical.
+TEST (PlaneExtraction, CountsVerticalPlanes)
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  std::vector<pcl::PointIndices> sets (3);
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) {
+      sets[0].indices.push_back (int (cloud.size()));
+      cloud.emplace_back (float (i), float (j), 0.f); // floor
+      sets[1].indices.push_back (int (cloud.size()));
+      cloud.emplace_back (float (i), 0.f, float (j)); // wall
+      sets[2].indices.push_back (int (cloud.size()));
+      cloud.emplace_back (0.1f * float (j), float (i), float (j)); // 5.7 deg off
+    }
+  EXPECT_EQ (countVerticalPlanes (cloud, sets), 2);
+  EXPECT_EQ (countVerticalPlanes (cloud, sets, 3.0), 1);
+}

@@ -106,6 +106,54 @@ registerScene (const Scene& s, TransformationError& error)
 }
 
 // Seeds of the report set (6-50); the tuning set is 1-5.
+// The rigid estimate of a levelled scan keeps the levelling's vertical: a tilted
+// estimate (as thin walls give it) becomes the rotation about z nearest to it, and the
+// translation is re-fitted to the matched planes at the scan centroids.
+TEST (ScanLevelling, RefineAboutVerticalKeepsTheVertical)
+{
+  const double yaw = 30.0 * kDeg;
+  Eigen::Matrix4d truth = Eigen::Matrix4d::Identity();
+  truth.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisd (yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  truth.topRightCorner<3, 1>() = Eigen::Vector3d (5.0, -3.0, 1.0);
+  // Map: floor and three walls of two directions; scan: the same, moved by truth^-1.
+  std::vector<Plane> map{Plane::throughPoint (Eigen::Vector3d::UnitZ(), {0, 0, 0}),
+                         Plane::throughPoint (Eigen::Vector3d::UnitX(), {10, 0, 0}),
+                         Plane::throughPoint (Eigen::Vector3d::UnitY(), {0, 8, 0}),
+                         Plane::throughPoint (-Eigen::Vector3d::UnitX(), {-6, 0, 0})};
+  const Eigen::Vector3d centres[] = {{1, 2, 0}, {10, 3, 2}, {4, 8, 3}, {-6, 1, 2}};
+  std::vector<Plane> scan;
+  std::vector<PlanePair> pairs;
+  const Eigen::Matrix4d inverse = truth.inverse();
+  for (int i = 0; i < 4; ++i) {
+    scan.push_back (
+        Plane::throughPoint (inverse.topLeftCorner<3, 3>() * map[i].normal,
+                             (inverse * centres[i].homogeneous()).head<3>()));
+    scan.back().centroid = (inverse * centres[i].homogeneous()).head<3>();
+    pairs.push_back (PlanePair{i, i, 1});
+  }
+  // The estimate: the truth tilted by 1.5 degrees about x and shifted by 0.2 m.
+  PlaneTransformationResult estimate;
+  estimate.valid = true;
+  estimate.transformation = truth;
+  estimate.transformation.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisd (1.5 * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix() *
+      truth.topLeftCorner<3, 3>();
+  estimate.transformation (0, 3) += 0.2;
+  ASSERT_TRUE (refineAboutVertical (scan, map, pairs, estimate));
+  EXPECT_TRUE (estimate.transformation.isApprox (truth, 1e-6))
+      << estimate.transformation;
+  ASSERT_EQ (estimate.angle_residuals.size(), 4u);
+  EXPECT_LT (estimate.max_angle, 1e-9);
+  EXPECT_LT (estimate.max_distance, 1e-6);
+  // A similarity, an invalid estimate or a pair out of range: left as it is.
+  PlaneTransformationResult scaled = estimate;
+  scaled.scale = 1.1;
+  EXPECT_FALSE (refineAboutVertical (scan, map, pairs, scaled));
+  pairs.push_back (PlanePair{7, 0, 1});
+  EXPECT_FALSE (refineAboutVertical (scan, map, pairs, estimate));
+}
+
 TEST (RegistrationDefaults, GeneratedBuildingInItsRandomPose)
 {
   for (const unsigned int seed : {6u, 17u, 31u}) {

@@ -8,6 +8,7 @@
 #include <pcl_ext/registration/planes.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <vector>
 
@@ -25,6 +26,24 @@ struct MapPlaneParameters {
   double min_edge_length = 0.5; ///< edges shorter than this (m) give no wall, >= 0
   bool add_floor = true;        ///< add the horizontal floor plane (paper: yes)
 };
+
+/** \brief The footprints near a scan: those whose bounding box, in plan, comes
+ * within \a margin of \a scan_box (the scan's points in map coordinates, e.g. moved by
+ * a guess; x and y are used). A city's footprint file holds hundreds of walls; with
+ * all of them as map planes, the initial combinations of Khoshelham & Gorte's search
+ * (section 3.3) are swamped by walls the scan cannot have seen. When none is near (a
+ * scan that is not in map coordinates), all are kept: the global search needs no
+ * overlap.
+ * \param[in] footprints polygons in map coordinates
+ * \param[in] scan_box the scan's bounding box in map coordinates
+ * \param[in] margin slack around the box (m), >= 0
+ * \param[out] near the footprints kept, in file order
+ * \return whether some footprint was near (false: \a near holds all) */
+bool
+selectFootprintsNearScan (const std::vector<io::Footprint>& footprints,
+                          const Eigen::AlignedBox3d& scan_box,
+                          double margin,
+                          std::vector<io::Footprint>& near);
 
 /** \brief A local origin for \a footprints: the centre of their bounding box rounded to
  * whole metres, z = 0. Rounding keeps the origin easy to read and to re-apply by hand.

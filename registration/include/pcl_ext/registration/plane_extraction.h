@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -55,6 +56,26 @@ using PlaneExtractor =
     std::function<void (const typename pcl::PointCloud<PointT>::ConstPtr&,
                         const pcl::IndicesConstPtr&,
                         std::vector<pcl::PointIndices>&)>;
+
+/** \brief Counts the inlier sets whose fitted plane is within \a tolerance_deg of
+ * vertical (|n_z| <= sin tolerance), i.e. the walls of Khoshelham & Gorte's constraint
+ * 1 (section 3.3). */
+template <typename PointT>
+int
+countVerticalPlanes (const pcl::PointCloud<PointT>& cloud,
+                     const std::vector<pcl::PointIndices>& sets,
+                     double tolerance_deg = 10.0)
+{
+  std::vector<ScanPlane> planes;
+  if (!fitScanPlanes (cloud, sets, ScanViewpoints(), planes))
+    return 0;
+  const double limit = std::sin (tolerance_deg * 3.14159265358979323846 / 180.0);
+  int count = 0;
+  for (const auto& plane : planes)
+    if (std::abs (plane.normal.z()) <= limit)
+      ++count;
+  return count;
+}
 
 /** \brief A plane extraction class as a PlaneExtractor: a copy of \a extraction, run on
  * the cloud and indices it is given. \a Extraction is a pcl::PCLBase<PointT> with void

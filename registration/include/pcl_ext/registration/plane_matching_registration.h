@@ -272,7 +272,10 @@ public:
    * (estimateUpDirection) and level the scan planes before the search, so that
    * constraint 1 holds for a scan tilted by up to 20 degrees; default on. Registering
    * to a map only (scan to scan, both clouds are taken as they are). The final
-   * transform includes the levelling. */
+   * transform includes the levelling, and a rigid one keeps its vertical: the rotation
+   * of the match set is turned into the nearest rotation about the vertical and the
+   * translation re-fitted (refineAboutVertical), so that the tilt comes from all the
+   * scan's horizontal and vertical planes, not from the matched few. */
   void
   setEstimateVertical (bool on)
   {

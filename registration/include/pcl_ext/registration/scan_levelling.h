@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pcl_ext/common/plane.h>
+#include <pcl_ext/registration/plane_transformation_estimation.h>
 
 #include <Eigen/Core>
 
@@ -40,4 +41,25 @@ estimateUpDirection (const std::vector<Plane>& planes,
 /** \brief The smallest rotation taking \a up to (0, 0, 1), as a 4 x 4 transform. */
 Eigen::Matrix4d
 levellingTransform (const Eigen::Vector3d& up);
+
+/** \brief Keeps the vertical of a levelled scan: the rigid \a estimate of levelled scan
+ * planes to map planes (Khoshelham & Gorte 2009, eq. 12, whose map is vertical along z)
+ * is replaced by the rotation about z nearest to its rotation, and the translation
+ * re-fitted by least squares to the matched pairs at the scan planes' centroids: n_m .
+ * (R c_s + t) + d_m = 0 for every pair. The levelling comes from every horizontal and
+ * vertical plane of the scan (estimateUpDirection, weighted by size); the estimate's
+ * tilt from a handful of matched planes, where walls with a thin band of points (roof
+ * outlines of an airborne scan, section 3.1 with airborne data) are tilted by a few
+ * degrees. The translation keeps the estimate's value along any direction the matched
+ * map normals do not span. Residuals are recomputed.
+ * \param[in] scan the levelled scan planes
+ * \param[in] map the map planes
+ * \param[in] matches the matched pairs
+ * \param[in,out] estimate a valid rigid estimate (scale 1); left as it is otherwise
+ * \return false when the estimate is left as it is */
+bool
+refineAboutVertical (const std::vector<Plane>& scan,
+                     const std::vector<Plane>& map,
+                     const std::vector<PlanePair>& matches,
+                     PlaneTransformationResult& estimate);
 } // namespace pcl_ext

@@ -276,8 +276,8 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (
   // A scan that is not levelled is levelled from its planes (map only: the map is).
   source_up_ = Eigen::Vector3d::UnitZ();
   std::vector<Plane> scan (source_planes_.begin(), source_planes_.end());
-  if (has_map_ && estimate_vertical_)
-    estimateUpDirection (scan, source_up_);
+  const bool levelled =
+      has_map_ && estimate_vertical_ && estimateUpDirection (scan, source_up_);
   const Eigen::Matrix4d level = levellingTransform (source_up_);
   for (auto& plane : scan)
     plane = transformPlane (plane, level);
@@ -289,6 +289,12 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (
                     guess.template cast<double>() * level_inverse))
     return;
 
+  // The tilt of the levelling, from every plane, not that of the matched few.
+  if (levelled) {
+    refineAboutVertical (scan, target_planes_, result_.matches, result_.estimate);
+    for (auto& candidate : result_.candidates)
+      refineAboutVertical (scan, target_planes_, candidate.matches, candidate.estimate);
+  }
   result_.estimate.transformation = result_.estimate.transformation * level;
   for (auto& candidate : result_.candidates)
     candidate.estimate.transformation = candidate.estimate.transformation * level;

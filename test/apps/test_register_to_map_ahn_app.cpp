@@ -1,0 +1,135 @@
+/*
+ * pcl_ext_register_to_map with its defaults on a real airborne tile (label "data";
+ * skipped without the data folder, PCL_EXT_SHARED_DATA_DIR): AHN3 tile 2397_9705 and
+ * every BGT building footprint of the data set, both in RD New (written so), so that
+ * the true cloud-to-map transform is the identity. The labelled cloud is moved by a
+ * known rigid transform and given to the tool with the footprint file and nothing else:
+ * the wall source, the footprints near the scan, m and n and the floor height all come
+ * from the data (Khoshelham & Gorte 2009, with airborne data).
+ */
+#include "../app_test.h"
+
+#include <pcl_ext/evaluation/registration_metrics.h>
+#include <pcl_ext/io/transform_file.h>
+
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Geometry>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace {
+const std::string kDir =
+    std::string (PCL_EXT_SHARED_DATA_DIR) + "/amsterdam_ahn3_bgt_footprints";
+
+class RegisterToMapAhn : public pcl_ext::test::AppTest {
+protected:
+  RegisterToMapAhn() : AppTest (PCL_EXT_REGISTER_TO_MAP_EXE) {}
+};
+
+// The BGT polygons of the data set's CSV (one JSON list of [x, y] per row, RD New), as
+// text footprints: "id n x1 y1 ... xn yn".
+bool
+writeFootprints (const std::string& csv, const std::string& path)
+{
+  std::ifstream in (csv);
+  std::ofstream out (path);
+  std::string line;
+  int id = 0;
+  const std::regex number ("-?[0-9]+(\\.[0-9]+)?");
+  while (std::getline (in, line)) {
+    const auto open = line.find ("[[");
+    const auto close = line.find ("]]");
+    if (open == std::string::npos || close == std::string::npos)
+      continue;
+    const std::string list = line.substr (open, close - open);
+    std::vector<double> values;
+    for (std::sregex_iterator i (list.begin(), list.end(), number), end; i != end; ++i)
+      values.push_back (std::stod (i->str()));
+    out << id++ << " " << values.size() / 2 << std::setprecision (12);
+    for (std::size_t v = 0; v + 1 < values.size(); v += 2)
+      out << " " << values[v] << " " << values[v + 1];
+    out << "\n";
+  }
+  return id > 0 && bool (out);
+}
+} // namespace
+
+// The perturbation turns the cloud about its centre by 3 degrees of yaw and 1 of tilt
+// and shifts it by (2, -1.5, 0) m: doing nothing is 3.16 degrees and 2.5 m off at the
+// centre. The map has no heights, so the floor is the cloud's ground, and a vertical
+// shift of the cloud is not observable: the perturbation keeps the height of the
+// cloud's centre. The bounds are those the tool meets here with a margin, and that
+// doing nothing fails; the goal (1 degree, 0.5 m) is met on the untouched tile
+// but not under this perturbation (figures and causes in docs/khoshelham_gorte.md).
+TEST_F (RegisterToMapAhn, Tile2397_9705WithTheDefaults)
+{
+  const std::string cloud_path = kDir + "/ahn_2397_9705.pcd";
+  const std::string csv = kDir + "/bgt_buildings_demo.csv";
+  if (!std::filesystem::exists (cloud_path) || !std::filesystem::exists (csv))
+    GTEST_SKIP() << "real data not found in " << kDir;
+  ASSERT_TRUE (writeFootprints (csv, path ("footprints.txt")));
+  pcl::PointCloud<pcl::PointXYZL> points;
+  ASSERT_EQ (pcl::io::loadPCDFile (cloud_path, points), 0);
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& p : points)
+    centre += p.getVector3fMap().cast<double>();
+  centre /= double (points.size());
+  Eigen::Matrix4d perturbation = Eigen::Matrix4d::Identity();
+  perturbation.topLeftCorner<3, 3>() =
+      (Eigen::AngleAxisd (3.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()) *
+       Eigen::AngleAxisd (1.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
+  perturbation.topRightCorner<3, 1>() = Eigen::Vector3d (2.0, -1.5, 0.0) + centre -
+                                        perturbation.topLeftCorner<3, 3>() * centre;
+  for (auto& p : points)
+    p.getVector3fMap() =
+        (perturbation * p.getVector3fMap().cast<double>().homogeneous())
+            .head<3>()
+            .cast<float>();
+  centre = (perturbation * centre.homogeneous()).head<3>();
+  // In RD New (the tile's corner added back, SOURCE.md of the data set), x y z in
+  // double precision.
+  const Eigen::Vector3d corner (119850.0, 485250.0, 0.0);
+  {
+    std::ofstream out (path ("tile.pcd"));
+    out << "VERSION 0.7\nFIELDS x y z label\nSIZE 8 8 8 4\nTYPE F F F U\nCOUNT 1 1 1 "
+           "1\nWIDTH "
+        << points.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS "
+        << points.size() << "\nDATA ascii\n"
+        << std::fixed << std::setprecision (4);
+    for (const auto& p : points) {
+      const Eigen::Vector3d q = p.getVector3fMap().cast<double>() + corner;
+      out << q.x() << " " << q.y() << " " << q.z() << " " << p.label << "\n";
+    }
+    ASSERT_TRUE (bool (out));
+  }
+  ASSERT_EQ (run (path ("tile.pcd") + " " + path ("footprints.txt") + " " +
+                  path ("out.pcd") + " -transform_out " + path ("T.txt")),
+             0)
+      << output_;
+  Eigen::Matrix4d estimate;
+  pcl_ext::io::loadTransform (path ("T.txt"), estimate);
+  // The perturbation in RD New: corner, perturbed, back.
+  Eigen::Matrix4d shift = Eigen::Matrix4d::Identity();
+  shift.topRightCorner<3, 1>() = corner;
+  const Eigen::Matrix4d truth = (shift * perturbation * shift.inverse()).inverse();
+  centre += corner;
+  const auto error = pcl_ext::computeTransformationError (estimate, truth, centre);
+  const auto nothing =
+      pcl_ext::computeTransformationError (Eigen::Matrix4d::Identity(), truth, centre);
+  ASSERT_GT (nothing.rotation_deg, 2.5);
+  ASSERT_GT (nothing.translation, 1.0);
+  RecordProperty ("rotation_error_deg", std::to_string (error.rotation_deg));
+  RecordProperty ("translation_error_m", std::to_string (error.translation));
+  EXPECT_LT (error.rotation_deg, 2.5) << output_;
+  EXPECT_LT (error.translation, 1.0) << output_;
+}
