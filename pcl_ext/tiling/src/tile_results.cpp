@@ -3,6 +3,8 @@
  */
 #include <pcl_ext/tiling/tile_results.h>
 
+#include "record_file.h"
+
 #include <pcl_ext/io/file_output.h>
 
 #include <pcl/console/print.h>
@@ -242,19 +244,18 @@ loadHaloLabels (const std::string& folder,
 {
   labels.clear();
   const std::string path = haloPath (folder, tile);
-  std::ifstream in (path, std::ios::binary | std::ios::ate);
-  const std::streamoff size = in ? static_cast<std::streamoff> (in.tellg()) : -1;
-  if (size < 0 || size % static_cast<std::streamoff> (kHaloRecordBytes) != 0) {
+  std::vector<char> bytes;
+  const detail::RecordFileRead read =
+      detail::readRecordFile (path, kHaloRecordBytes, bytes);
+  if (read == detail::RecordFileRead::CannotOpen ||
+      read == detail::RecordFileRead::NotWholeRecords) {
     PCL_ERROR ("[pcl_ext::tiling::loadHaloLabels] %s is missing (tile %zu not run) or "
                "broken.\n",
                path.c_str(),
                tile);
     return false;
   }
-  in.seekg (0);
-  std::vector<char> bytes (static_cast<std::size_t> (size));
-  in.read (bytes.data(), size);
-  if (!in) {
+  if (read == detail::RecordFileRead::CannotRead) {
     PCL_ERROR ("[pcl_ext::tiling::loadHaloLabels] cannot read %s.\n", path.c_str());
     return false;
   }
