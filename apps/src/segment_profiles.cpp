@@ -4,9 +4,7 @@
  * the segment in the field `segment` (-output_field; 1, 2, ... by decreasing size; 0
  * for points in no segment).
  */
-#include <pcl_ext/segmentation/cylinder_segment_join.h>
-#include <pcl_ext/segmentation/profile_auto.h>
-#include <pcl_ext/segmentation/profile_segmentation.h>
+#include <pcl_ext/segmentation/auto_profile_segmentation.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
 #include <pcl_ext/apps/output.h>
@@ -37,6 +35,8 @@ parseMethod (const std::string& name, Segmentation::ProfileMethod& method)
     method = Segmentation::ProfileMethod::MinimumSpanningTree;
   else if (name == "curve")
     method = Segmentation::ProfileMethod::CurveFitting;
+  else if (name == "crust")
+    method = Segmentation::ProfileMethod::CurveReconstruction;
   else
     return false;
   return true;
@@ -143,11 +143,13 @@ main (int argc, char** argv)
       "width_factor",
       width_factor,
       "profile width as a multiple of the spacing (curve fitting, noisy scans: 2.5)");
-  cl.addOption ("method",
-                method_name,
-                "profile segmenter: proximity, mst or curve; auto: chosen from the "
-                "cloud's noise and density variation (see -v), with the join, side "
-                "frames and local thresholds; the options given still apply");
+  cl.addOption (
+      "method",
+      method_name,
+      "profile segmenter: proximity, mst, curve or crust (curve reconstruction, "
+      "section 5.2); auto: chosen from the "
+      "cloud's noise and density variation (see -v), with the join, side "
+      "frames and local thresholds; the options given still apply");
   cl.addOption ("threshold",
                 threshold,
                 "proximity threshold (0: threshold_factor * average point spacing)");
@@ -240,7 +242,7 @@ main (int argc, char** argv)
   Segmentation::ProfileMethod method = Segmentation::ProfileMethod::Proximity;
   const bool automatic = method_name == "auto";
   if (!automatic && !parseMethod (method_name, method)) {
-    std::cerr << "Error: -method must be auto, proximity, mst or curve (got '"
+    std::cerr << "Error: -method must be auto, proximity, mst, curve or crust (got '"
               << method_name << "').\n";
     return 1;
   }
@@ -274,7 +276,12 @@ main (int argc, char** argv)
       !result.checkInput (input, input_path))
     return 1;
 
-  Segmentation seg;
+  // -method auto: AutoProfileSegmentation chooses the profile segmenter and the
+  // options for noisy or unevenly dense clouds from the cloud; the options given on the
+  // command line still apply.
+  pcl_ext::AutoProfileSegmentation<pcl::PointXYZ> automatic_segmentation;
+  Segmentation given_segmentation;
+  Segmentation& seg = automatic ? automatic_segmentation : given_segmentation;
   seg.setInputCloud (cloud);
   seg.setNumberOfStacks (stacks);
   seg.setStackDistribution (
@@ -291,74 +298,50 @@ main (int argc, char** argv)
   seg.setResidualFactor (residual_factor);
   seg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
   seg.setNumberOfThreads (threads);
+  seg.setProfileWidthFactor (width_factor);
+  seg.setProfileSegmentation (method);
+  seg.setLocalThreshold (local_threshold);
+  seg.setTurnSignificance (turn_significance);
+  seg.setCorrectedAic (aicc);
+  seg.setSideFrames (side_frames);
+  pcl_ext::CylinderSegmentJoin<pcl::PointXYZ> join;
+  if (cylinder_tolerance > 0.0)
+    join.setDistanceTolerance (cylinder_tolerance);
+  if (!radii_from_spacing)
+    join.setRadiusLimits (cylinder_min_radius, cylinder_max_radius);
+  if (cylinder_max_gap >= 0.0)
+    join.setMaxGap (cylinder_max_gap);
+  if (cylinder_patch > 0.0)
+    join.setNeighbourhoodRadius (cylinder_patch);
+  automatic_segmentation.setCylinderJoin (join);
+
   std::vector<pcl::PointIndices> clusters;
-  const auto segment = [&] {
-    seg.setProfileWidthFactor (width_factor);
-    seg.setProfileSegmentation (method);
-    seg.setLocalThreshold (local_threshold);
-    seg.setTurnSignificance (turn_significance);
-    seg.setCorrectedAic (aicc);
-    seg.setSideFrames (side_frames);
+  {
     pcl_ext::apps::StageTimer timer ("Segmenting");
     seg.extract (clusters);
     if (clusters.empty()) {
       std::cerr << "Error: segmentation failed (see the message above).\n";
-      return false;
+      return 1;
     }
     timer.done (cloud->size());
-    return true;
-  };
-  // -method auto: proximity chaining first; the configuration is then chosen from the
-  // cloud's statistics and how much of it that first run left in one segment. The
-  // options given on the command line keep their values.
-  if (!segment())
-    return 1;
-  if (automatic) {
-    std::vector<Eigen::Vector3f> xyz;
-    xyz.reserve (cloud->size());
-    for (const auto& p : *cloud)
-      if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
-        xyz.push_back (p.getVector3fMap());
-    const auto statistics = pcl_ext::profiles::estimateCloudStatistics (xyz);
-    const double share = xyz.empty()
-                             ? 0.0
-                             : static_cast<double> (clusters[0].indices.size()) /
-                                   static_cast<double> (xyz.size());
-    const auto chosen = pcl_ext::profiles::chooseConfiguration (statistics, share);
-    if (verbose)
-      std::cout << pcl_ext::profiles::describeConfiguration (statistics, share, chosen)
-                << "\n";
-    const bool rerun =
-        chosen.curve_fitting || (chosen.local_threshold && !local_threshold);
-    if (chosen.curve_fitting)
-      method = Segmentation::ProfileMethod::CurveFitting;
-    if (chosen.noisy) {
-      aicc = true;
-      if (!cl.given ("turn_significance"))
-        turn_significance = 3.0;
-      if (!cl.given ("width_factor"))
-        width_factor = 2.5;
-    }
-    side_frames = side_frames || chosen.side_frames;
-    local_threshold = local_threshold || chosen.local_threshold;
-    join_cylinders = join_cylinders || chosen.join_cylinders;
-    if (rerun && !segment())
-      return 1;
   }
-  std::size_t joined_cylinders = 0;
-  std::ostringstream join_settings;
-  if (join_cylinders) {
-    pcl_ext::CylinderSegmentJoin<pcl::PointXYZ> join;
+  bool curve_fitting = method == Segmentation::ProfileMethod::CurveFitting;
+  if (automatic) {
+    const auto& chosen = automatic_segmentation.getConfiguration();
+    if (verbose)
+      std::cout << pcl_ext::profiles::describeConfiguration (
+                       automatic_segmentation.getCloudStatistics(),
+                       automatic_segmentation.getLargestProximityShare(),
+                       chosen)
+                << "\n";
+    curve_fitting = chosen.curve_fitting;
+  }
+  const bool joined_by_segmentation =
+      automatic && automatic_segmentation.getCylindersJoined();
+  join_cylinders = join_cylinders || joined_by_segmentation;
+  if (join_cylinders && !joined_by_segmentation) {
     join.setInputCloud (cloud);
     join.setInputSegments (clusters);
-    if (cylinder_tolerance > 0.0)
-      join.setDistanceTolerance (cylinder_tolerance);
-    if (!radii_from_spacing)
-      join.setRadiusLimits (cylinder_min_radius, cylinder_max_radius);
-    if (cylinder_max_gap >= 0.0)
-      join.setMaxGap (cylinder_max_gap);
-    if (cylinder_patch > 0.0)
-      join.setNeighbourhoodRadius (cylinder_patch);
     join.setNumberOfThreads (threads);
     pcl_ext::apps::StageTimer joining ("Joining cylinders");
     join.join (clusters);
@@ -367,10 +350,16 @@ main (int argc, char** argv)
       return 1;
     }
     joining.done (cloud->size());
-    for (const auto& c : join.getCylinders())
+  }
+  std::size_t joined_cylinders = 0;
+  std::ostringstream join_settings;
+  if (join_cylinders) {
+    const auto& used_join =
+        joined_by_segmentation ? automatic_segmentation.getCylinderJoin() : join;
+    for (const auto& c : used_join.getCylinders())
       joined_cylinders += c.output_segment >= 0;
-    const auto& used = join.getUsedParameters();
-    join_settings << " (spacing " << join.getUsedPointSpacing() << ", tolerance "
+    const auto& used = used_join.getUsedParameters();
+    join_settings << " (spacing " << used_join.getUsedPointSpacing() << ", tolerance "
                   << used.detection.distance_tolerance << ", radii "
                   << used.detection.min_radius << " to " << used.detection.max_radius
                   << ", gap " << used.max_gap << ", patch "
@@ -383,7 +372,7 @@ main (int argc, char** argv)
             << seg.getUsedProfileWidth() << ", threshold "
             << seg.getUsedDistanceThreshold() << "; " << seg.getStackEdges().size()
             << " stacks, " << edges << " edges, " << clusters.size() << " segments";
-  if (method == Segmentation::ProfileMethod::CurveFitting)
+  if (curve_fitting)
     std::cout << ", " << seg.getBreakpoints().size() << " curve ends";
   if (join_cylinders)
     std::cout << ", " << joined_cylinders << " cylinders joined" << join_settings.str();

@@ -7,7 +7,7 @@
  * Optionally intersects the segments locally (section 4): writes the intersection
  * points and puts edge and boundary points back into the segments they fit.
  */
-#include "variance/variance_options.h"
+#include "variance/segment_variance_options.h"
 
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/classification/variance_segmentation.h>
@@ -32,12 +32,8 @@
 int
 main (int argc, char** argv)
 {
-  std::string input_path, output_path, png_path, intersections_path;
-  int k = 50, min_size = 50;
-  double max_distance = 0.0, max_distance_factor = 3.0, parallel_angle = 10.0;
-  double max_radius = 0.0;
-  bool reintegrate = false, keep_out = false;
-  pcl_ext::apps::VarianceClassificationOptions options;
+  std::string input_path, output_path, png_path;
+  pcl_ext::apps::SegmentVarianceOptions options;
   unsigned int threads = 0;
   pcl_ext::apps::CommandLine cl ("pcl_ext_segment_variance",
                                  "Segments a cloud by region growing over the Belton & "
@@ -50,41 +46,7 @@ main (int argc, char** argv)
   pcl_ext::apps::ResultField result = pcl_ext::apps::segmentIdField();
   cl.addPositional ("input", input_path, pcl_ext::apps::kInputFormats);
   cl.addPositional ("output", output_path, pcl_ext::apps::kOutputFormats);
-  cl.addOption ("k", k, "neighbours per point (the paper's k)");
-  cl.addOption (
-      "max_radius",
-      max_radius,
-      "keep only the k neighbours within this distance (0: no cap, the paper's)");
   options.addTo (cl);
-  cl.addOption (
-      "max_distance",
-      max_distance,
-      "longest link from a seed to a neighbour (0: no limit beyond the k neighbours)");
-  cl.addOption (
-      "max_distance_factor",
-      max_distance_factor,
-      "longest link from a seed as a multiple of its local point spacing (0: none)");
-  cl.addOption ("min_size", min_size, "smallest segment kept");
-  cl.addOption (
-      "intersections",
-      intersections_path,
-      "also write the local intersection points of the segments (section 4) to this "
-      "file (.pcd, .ply or .las; input's frame): x y z, segment_a, segment_b and the "
-      "two surface points index_a, index_b");
-  cl.addSwitch (
-      "reintegrate",
-      reintegrate,
-      "put edge and boundary points into the segment whose local plane they fit "
-      "(section 4) before writing the output (on with -preset derived)");
-  cl.addSwitch ("no_reintegrate",
-                keep_out,
-                "with -preset derived: leave the edge and boundary points out of the "
-                "segments (section 3 alone)");
-  cl.addOption (
-      "parallel_angle",
-      parallel_angle,
-      "with -intersections or -reintegrate: segments whose normals differ by less "
-      "(degrees) are parallel, not intersected (eq. 9)");
   result.addTo (cl);
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption (
@@ -97,39 +59,8 @@ main (int argc, char** argv)
     return 1;
   if (!options.valid (cl))
     return 1;
-  if (k < 3) {
-    std::cerr << "Error: -k must be at least 3.\n";
-    return 1;
-  }
-  if (min_size < 1) {
-    std::cerr << "Error: -min_size must be at least 1.\n";
-    return 1;
-  }
-  if (!(max_radius >= 0.0) || !std::isfinite (max_radius)) {
-    std::cerr << "Error: -max_radius must be finite and >= 0.\n";
-    return 1;
-  }
-  if (!(max_distance >= 0.0)) {
-    std::cerr << "Error: -max_distance must be >= 0.\n";
-    return 1;
-  }
-  if (!(max_distance_factor >= 0.0) || !std::isfinite (max_distance_factor)) {
-    std::cerr << "Error: -max_distance_factor must be finite and >= 0.\n";
-    return 1;
-  }
-  if (!(parallel_angle >= 0.0 && parallel_angle <= 90.0)) {
-    std::cerr << "Error: -parallel_angle must lie between 0 and 90 degrees.\n";
-    return 1;
-  }
-  if (reintegrate && keep_out) {
-    std::cerr << "Error: give -reintegrate or -no_reintegrate, not both.\n";
-    return 1;
-  }
-  // Section 4's re-integration with -preset derived: it keeps in the segments the
-  // crease and border bands the classification leaves out (docs/belton_lichti.md has
-  // the figures).
-  reintegrate = reintegrate || (!keep_out && options.preset == "derived");
-  const bool intersect = !intersections_path.empty() || reintegrate;
+  const std::string& intersections_path = options.intersections_path;
+  const bool intersect = options.intersects();
   if (!result.checkOutput (output_path, {png_path, intersections_path}))
     return 1;
   std::string reason;
@@ -146,12 +77,9 @@ main (int argc, char** argv)
     return 1;
 
   // One neighbourhood search for the segmentation and the intersections.
-  auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>>();
-  nb->setInputCloud (cloud);
-  nb->setKSearch (k);
-  nb->setMaxRadius (max_radius);
-  nb->setNumberOfThreads (threads);
-  pcl_ext::apps::StageTimer search ("Searching " + std::to_string (k) + " neighbours");
+  const auto nb = options.makeNeighbourhoods (cloud, threads);
+  pcl_ext::apps::StageTimer search ("Searching " + std::to_string (options.k) +
+                                    " neighbours");
   if (!nb->compute()) {
     std::cerr << "Error: the neighbourhood search failed (see the message above).\n";
     return 1;
@@ -159,25 +87,18 @@ main (int argc, char** argv)
   search.done (cloud->size());
 
   pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
-  options.applyTo (classifier);
-  classifier.setNumberOfThreads (threads);
   pcl_ext::VarianceRegionGrowing<pcl::PointXYZ> rg;
-  rg.setInputCloud (cloud);
-  rg.setNeighbourhoods (nb);
-  rg.setMaxDistance (max_distance);
-  rg.setMaxDistanceFactor (max_distance_factor);
-  rg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
-  rg.setNumberOfThreads (threads);
+  options.configure (cloud, nb, threads, classifier, rg);
   std::vector<pcl::PointIndices> clusters;
   pcl_ext::apps::StageTimer segment ("Classifying and segmenting");
   pcl_ext::segmentByLocalVariance (classifier, rg, clusters);
   if (clusters.empty()) {
     std::cerr << "Error: segmentation failed or found no segment of at least "
-              << min_size << " points (see the message above).\n";
+              << options.min_size << " points (see the message above).\n";
     return 1;
   }
   segment.done (cloud->size());
-  options.report (classifier);
+  options.classification.report (classifier);
   pcl::PointCloud<pcl::Label> labels;
   rg.getSegmentLabels (labels);
   std::size_t segmented = 0, classes[pcl_ext::kNumPointClasses] = {};
@@ -198,7 +119,7 @@ main (int argc, char** argv)
     lsi.setSegmentLabels (pcl::make_shared<pcl::PointCloud<pcl::Label>> (labels));
     lsi.setPointClasses (
         pcl::make_shared<pcl::PointCloud<pcl::Label>> (*rg.getInputClasses()));
-    lsi.setParallelAngleThreshold (parallel_angle * M_PI / 180.0);
+    lsi.setParallelAngleThreshold (options.parallel_angle * M_PI / 180.0);
     lsi.setNumberOfThreads (threads);
     pcl::PointCloud<pcl::Label> reintegrated;
     pcl_ext::apps::StageTimer stage ("Intersecting segments");
@@ -215,7 +136,7 @@ main (int argc, char** argv)
               << " without a plane); " << r.examined
               << " edge and boundary points: " << r.reintegrated << " fit one segment, "
               << r.ambiguous << " several, " << r.left << " none\n";
-    if (reintegrate)
+    if (options.reintegrate)
       labels = reintegrated;
     if (!intersections_path.empty()) {
       pcl_ext::apps::StageTimer save ("Saving " + intersections_path);

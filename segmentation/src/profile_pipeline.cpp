@@ -191,6 +191,9 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
                         local,
                         link_thresholds);
         break;
+      case ProfileMethod::CurveReconstruction:
+        crustEdges (points, link_threshold, local, link_thresholds);
+        break;
       case ProfileMethod::MinimumSpanningTree:
       case ProfileMethod::CurveFitting:
         spanningTreeEdges (points, link_threshold, local, link_thresholds);

@@ -2,6 +2,8 @@
  * Benchmark: profile-intersection segmentation (Sithole & Mapurisa) against stock PCL
  * segmenters on the same generated TLS scenes, in one run.
  *
+ * pcl_ext: AutoProfileSegmentation with its defaults (the configuration chosen from the
+ * cloud, as pcl_ext_segment_profiles runs it; proximity chaining on these scenes).
  * Scenes: cubes (41,500 points; the paper: 9 s) and spheres (155,000; the paper: 35 s)
  * at their defaults, and cubes rescanned at a finer step to a large cloud (1M points by
  * default). Stock PCL: pcl::EuclideanClusterExtraction with our proximity threshold as
@@ -12,7 +14,7 @@
  */
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/evaluation/segmentation_metrics.h>
-#include <pcl_ext/segmentation/profile_segmentation.h>
+#include <pcl_ext/segmentation/auto_profile_segmentation.h>
 #include <pcl_ext/simulation/scenes.h>
 #include <pcl_ext/apps/command_line.h>
 
@@ -95,14 +97,18 @@ benchmarkScene (const std::string& scene_name,
   std::cout << scene_name << ": " << cloud->size() << " points, " << threads
             << " threads\n";
 
-  pcl_ext::ProfileSegmentation<Point> ours;
+  pcl_ext::AutoProfileSegmentation<Point> ours;
   ours.setInputCloud (cloud);
   ours.setNumberOfThreads (threads);
   const Run profile = timeIt (repeats, truth, [&] (auto& c) { ours.extract (c); });
   std::cout << std::defaultfloat << "  (spacing " << ours.getUsedPointSpacing()
             << ", width " << ours.getUsedProfileWidth() << ", threshold "
             << ours.getUsedDistanceThreshold() << ")\n";
-  print ("pcl_ext::ProfileSegmentation (proximity)", profile, nullptr);
+  print (ours.getConfiguration().curve_fitting
+             ? "pcl_ext::AutoProfileSegmentation (curves)"
+             : "pcl_ext::AutoProfileSegmentation (proximity)",
+         profile,
+         nullptr);
   if (goal > 0)
     std::cout << "  goal: at most " << goal << " s -> "
               << (profile.seconds <= goal ? "met" : "NOT met") << "\n";

@@ -220,6 +220,40 @@ TEST (VarianceRegionGrowing, IndicesRestrictTheSegmentation)
   EXPECT_EQ (labels[441].label, 1u);
 }
 
+TEST (VarianceRegionGrowing, OnlySeedsStartWalks)
+{
+  // One patch, every point surface (k = 5: each links only to the points next to it).
+  // All points as seeds: one segment, as without seeds. Only the first 10 columns as
+  // seeds (a tile's core): they and the column they link to are one segment; the other
+  // points are labelled, each its own segment, but link nothing.
+  const auto cloud = pcl_ext::test::twoPatches (1.0);
+  pcl::IndicesPtr one (new pcl::Indices), all (new pcl::Indices),
+      seeds (new pcl::Indices);
+  for (pcl::index_t i = 0; i < 441; ++i) {
+    one->push_back (i);
+    all->push_back (i);
+    if (i / 21 < 10)
+      seeds->push_back (i);
+  }
+  Growing rg;
+  rg.setInputCloud (cloud);
+  rg.setIndices (one);
+  rg.setKSearch (5);
+  rg.setInputClasses (pcl_ext::test::uniformClasses (one->size(), 1));
+  std::vector<pcl::PointIndices> clusters;
+  rg.setSeedIndices (all);
+  rg.extract (clusters);
+  ASSERT_EQ (clusters.size(), 1u);
+  EXPECT_EQ (clusters[0].indices.size(), 441u);
+  rg.setSeedIndices (seeds);
+  rg.extract (clusters);
+  ASSERT_EQ (clusters.size(), 1u + 441u - 11u * 21u);
+  EXPECT_EQ (clusters[0].indices.size(), 11u * 21u); // the seeds and the next column
+  for (std::size_t c = 1; c < clusters.size(); ++c)
+    EXPECT_EQ (clusters[c].indices.size(), 1u);
+  EXPECT_EQ (rg.getSeedIndices(), seeds);
+}
+
 TEST (VarianceRegionGrowing, OutputsLabelsAndColours)
 {
   // An organised 2-row cloud: the labels keep its layout.

@@ -1,6 +1,7 @@
 /*
  * planTiles, writeTiles and MergedResults on a small point file: a wall across every
- * tile is one segment, an object inside one tile another, a NaN point in none.
+ * tile is one segment, an object inside one tile another, a NaN point in none; by size,
+ * the wall counted over all tiles.
  */
 #include <pcl_ext/tiling/merged_results.h>
 #include <pcl_ext/tiling/tile_plan.h>
@@ -14,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -63,6 +65,18 @@ TEST (MergedResults, SegmentsOfTilesJoinAcrossTheHalos)
     halo_points += halo.size();
     ASSERT_TRUE (TileResults::write (dir, core, labels));
     ASSERT_TRUE (saveHaloLabels (dir, t, halo));
+    std::vector<SegmentSize> sizes;
+    for (std::size_t i = 0; i < core.size(); ++i) {
+      if (sizes.size() <= labels[i])
+        sizes.resize (labels[i] + 1);
+      sizes[labels[i]].first = sizes[labels[i]].points == 0
+                                   ? core[i]
+                                   : std::min (sizes[labels[i]].first, core[i]);
+      ++sizes[labels[i]].points;
+    }
+    for (std::uint32_t l = 0; l < sizes.size(); ++l)
+      sizes[l].label = l;
+    ASSERT_TRUE (saveSegmentSizes (dir, t, sizes));
   }
   EXPECT_GT (halo_points, 0u);
 
@@ -82,6 +96,20 @@ TEST (MergedResults, SegmentsOfTilesJoinAcrossTheHalos)
   for (std::size_t i = 200; i < 210; ++i)
     EXPECT_EQ (all[i], 1u) << i;
   EXPECT_EQ (all[210], SegmentMerge::kNoSegment);
+
+  // By size over the joined tiles: no tile holds 60 wall points, the wall has 200 and
+  // stays; the object (10 points) is dropped.
+  MergedResults by_size;
+  by_size.setSegmentsBySize (60);
+  ASSERT_TRUE (by_size.open (plan, dir, MergedResults::Kind::Segments));
+  EXPECT_EQ (by_size.getNumberOfSegments(), 1u);
+  all.clear();
+  while (by_size.read (64, chunk, input_index, values) > 0)
+    all.insert (all.end(), values.begin(), values.end());
+  ASSERT_EQ (all.size(), 211u);
+  EXPECT_EQ (all[0], 0u);
+  EXPECT_EQ (all[199], 0u);
+  EXPECT_EQ (all[205], SegmentMerge::kNoSegment);
 
   // A tile that did not run: its halo labels are missing, the merge refuses.
   std::remove ((dir + "/tile_1.halo").c_str());

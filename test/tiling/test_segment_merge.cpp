@@ -81,3 +81,32 @@ TEST (SegmentMerge, ChainsOfTilesJoinTransitively)
   }
   EXPECT_EQ (merge.getNumberOfSegments(), 26u);
 }
+
+TEST (SegmentMerge, NumberedBySizeOverTheJoinedTiles)
+{
+  // A wall over tiles 0 and 1 (3 + 2 points, first point 10), a roof in tile 1 (4
+  // points, first 2), a box in tile 0 (4 points, first 7: after the roof in a tie) and
+  // a speck in tile 2 (1 point): largest first, ties by first point, the speck dropped
+  // at a minimum size of 2, whatever the order of the calls.
+  for (int order = 0; order < 2; ++order) {
+    SegmentMerge merge;
+    if (order == 0)
+      merge.join (SegmentMerge::key (1, 0), SegmentMerge::key (0, 0));
+    merge.addPoints (SegmentMerge::key (0, 0), 3, 10);
+    merge.addPoints (SegmentMerge::key (1, 0), 2, 12);
+    merge.addPoints (SegmentMerge::key (1, 1), 4, 2);
+    merge.addPoints (SegmentMerge::key (0, 1), 4, 7);
+    merge.addPoints (SegmentMerge::key (2, 0), 1, 0);
+    if (order == 1)
+      merge.join (SegmentMerge::key (0, 0), SegmentMerge::key (1, 0));
+    merge.numberBySize (2);
+    EXPECT_EQ (merge.getNumberOfSegments(), 3u);
+    EXPECT_EQ (merge.number (SegmentMerge::key (2, 0)), SegmentMerge::kNoSegment);
+    EXPECT_EQ (merge.number (SegmentMerge::key (1, 0)), 0u);
+    EXPECT_EQ (merge.number (SegmentMerge::key (0, 0)), 0u);
+    EXPECT_EQ (merge.number (SegmentMerge::key (0, 1)), 2u);
+    EXPECT_EQ (merge.number (SegmentMerge::key (1, 1)), 1u);
+    EXPECT_EQ (merge.number (SegmentMerge::key (3, 0)), SegmentMerge::kNoSegment);
+    EXPECT_EQ (merge.number (SegmentMerge::kNoKey), SegmentMerge::kNoSegment);
+  }
+}

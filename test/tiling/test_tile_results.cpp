@@ -64,6 +64,25 @@ TEST (TileResults, HaloLabelsRoundTrip)
   testing::internal::GetCapturedStderr();
 }
 
+TEST (TileResults, SegmentSizesRoundTrip)
+{
+  const std::string dir = freshFolder ("tile_sizes");
+  const std::vector<pcl_ext::tiling::SegmentSize> saved{{0, 12, 5}, {3, 1, 1ull << 40}};
+  ASSERT_TRUE (pcl_ext::tiling::saveSegmentSizes (dir, 2, saved));
+  std::vector<pcl_ext::tiling::SegmentSize> loaded;
+  ASSERT_TRUE (pcl_ext::tiling::loadSegmentSizes (dir, 2, loaded));
+  ASSERT_EQ (loaded.size(), 2u);
+  EXPECT_EQ (loaded[0].points, 12u);
+  EXPECT_EQ (loaded[1].label, 3u);
+  EXPECT_EQ (loaded[1].first, 1ull << 40);
+  ASSERT_TRUE (pcl_ext::tiling::saveSegmentSizes (dir, 5, {})); // a tile of no segment
+  ASSERT_TRUE (pcl_ext::tiling::loadSegmentSizes (dir, 5, loaded));
+  EXPECT_TRUE (loaded.empty());
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (pcl_ext::tiling::loadSegmentSizes (dir, 4, loaded)); // not run
+  testing::internal::GetCapturedStderr();
+}
+
 TEST (TileResults, NthValueOverAllTilesIsNthElementsAnswer)
 {
   const std::string dir = freshFolder ("tile_values");

@@ -6,6 +6,7 @@
 
 #include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/segmentation/adaptive_supervoxel_segmentation.h>
+#include <pcl_ext/segmentation/auto_profile_segmentation.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/profile_segmentation.h>
 #include <pcl_ext/classification/variance_segmentation.h>
@@ -105,6 +106,21 @@ profileRunner (profiles::ProfileMethod method)
   };
 }
 
+/** Sithole & Mapurisa configured from the cloud (AutoProfileSegmentation), the class
+ * defaults as pcl_ext_segment_profiles runs them; min_size. */
+bool
+runAutoProfiles (const SegmenterInput& in,
+                 const SegmenterSettings& s,
+                 std::vector<pcl::PointIndices>& clusters)
+{
+  AutoProfileSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud (in.cloud);
+  seg.setMinClusterSize (static_cast<pcl::uindex_t> (s.min_size));
+  seg.setNumberOfThreads (s.threads);
+  seg.extract (clusters);
+  return true;
+}
+
 template <typename PointT>
 void
 extractSupervoxels (const typename pcl::PointCloud<PointT>::ConstPtr& cloud,
@@ -153,6 +169,12 @@ pclExtMethods ()
        "variance, then pcl_ext::LocalSurfaceIntersection (Belton & Lichti section 4) "
        "re-integrating the edge and boundary points; class defaults, one k = 50 search",
        runVarianceWithIntersection},
+      {"profiles",
+       "pcl_ext",
+       false,
+       "pcl_ext::AutoProfileSegmentation (Sithole & Mapurisa configured from the "
+       "cloud), class defaults; min_size",
+       runAutoProfiles},
       {"proximity",
        "pcl_ext",
        false,
@@ -173,6 +195,12 @@ pclExtMethods ()
        "tolerance * "
        "s, min_size",
        profileRunner (ProfileMethod::CurveFitting)},
+      {"crust",
+       "pcl_ext",
+       false,
+       "pcl_ext::ProfileSegmentation, curve reconstruction (nearest-neighbour crust) "
+       "cut at tolerance * s; min_size",
+       profileRunner (ProfileMethod::CurveReconstruction)},
       {"adaptive_sv",
        "pcl_ext",
        false,

@@ -1,14 +1,13 @@
 /*
  * pcl_ext_demo step: profile-intersection segmentation (Sithole & Mapurisa) on the
  * scenes of the paper's section 5 (`cubes`, `spheres`, `coaxial`, `pipes`, `tree`),
- * scored against their ground truth; on `pipes` and `tree` the segments lying on one
- * cylinder are joined afterwards.
+ * scored against their ground truth, with the same defaults for every scene: the
+ * configuration is chosen from each cloud (AutoProfileSegmentation).
  */
 #include "demo_context.h"
 
 #include <pcl_ext/evaluation/segmentation_metrics.h>
-#include <pcl_ext/segmentation/cylinder_segment_join.h>
-#include <pcl_ext/segmentation/profile_segmentation.h>
+#include <pcl_ext/segmentation/auto_profile_segmentation.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/montage.h>
@@ -16,7 +15,6 @@
 #include <pcl/common/io.h>
 
 #include <algorithm>
-#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -24,14 +22,10 @@
 namespace pcl_ext {
 namespace demo {
 namespace {
-/** One run of the step: a scene, its truth, the segmenter's settings and whether the
- * segments lying on one cylinder are joined afterwards. */
+/** One run of the step: a scene and its truth. */
 struct ProfileRun {
   std::string scene;
   bool surfaces; ///< truth at the surface level (connected pieces) instead of objects
-  std::string settings;
-  std::function<void (ProfileSegmentation<pcl::PointXYZ>&)> configure;
-  bool join_cylinders;
   /** \brief Also scored: the truth segments of this scene label (0: none), or with
    * \a below_z > 0 only the one holding most of its points below that height. */
   std::uint32_t focus_label = 0;
@@ -72,14 +66,19 @@ focusIoU (const ProfileRun& run,
   return chosen.empty() ? 0.0 : sum / static_cast<double> (chosen.size());
 }
 
-/** Curve fitting for noisy scans (see ProfileSegmentation::setTurnSignificance). */
-void
-curvesForNoise (ProfileSegmentation<pcl::PointXYZ>& seg)
+/** The configuration chosen, in words. */
+std::string
+describeChoice (const AutoProfileSegmentation<pcl::PointXYZ>& seg)
 {
-  seg.setProfileSegmentation (profiles::ProfileMethod::CurveFitting);
-  seg.setProfileWidthFactor (2.5);
-  seg.setCorrectedAic (true);
-  seg.setTurnSignificance (3.0);
+  const auto& c = seg.getConfiguration();
+  if (!c.curve_fitting)
+    return c.local_threshold ? "proximity, local thresholds" : "proximity";
+  std::string words = c.noisy ? "curve fitting for noise" : "curve fitting";
+  if (c.local_threshold)
+    words += ", local thresholds";
+  if (seg.getCylindersJoined())
+    words += ", cylinders joined";
+  return words;
 }
 } // namespace
 
@@ -87,41 +86,11 @@ bool
 runProfilesStep (DemoContext& context)
 {
   const std::vector<ProfileRun> runs = {
-      {"cubes",
-       false,
-       "proximity, 4 stacks",
-       [] (ProfileSegmentation<pcl::PointXYZ>&) {},
-       false,
-       0,
-       0.0f,
-       ""},
-      {"spheres",
-       false,
-       "proximity, 4 stacks",
-       [] (ProfileSegmentation<pcl::PointXYZ>&) {},
-       false,
-       0,
-       0.0f,
-       ""},
-      {"coaxial", true, "curve fitting for noise", curvesForNoise, false, 0, 0.0f, ""},
-      {"pipes",
-       false,
-       "curve fitting for noise, local thresholds, cylinders joined",
-       [] (ProfileSegmentation<pcl::PointXYZ>& seg) {
-         curvesForNoise (seg);
-         seg.setLocalThreshold (true);
-       },
-       true,
-       3,
-       0.0f,
-       "the pipes"}, // the scene's label 3: pipe
+      {"cubes", false, 0, 0.0f, ""},
+      {"spheres", false, 0, 0.0f, ""},
+      {"coaxial", true, 0, 0.0f, ""},
+      {"pipes", false, 3, 0.0f, "the pipes"}, // the scene's label 3: pipe
       {"tree",
-       true,
-       "curve fitting for noise, side frames, cylinders joined",
-       [] (ProfileSegmentation<pcl::PointXYZ>& seg) {
-         curvesForNoise (seg);
-         seg.setSideFrames (true);
-       },
        true,
        static_cast<std::uint32_t> (simulation::OutdoorLabel::Trunk),
        3.0f,
@@ -138,21 +107,12 @@ runProfilesStep (DemoContext& context)
     for (const auto& p : scene->cloud)
       truth.push_back (run.surfaces ? p.segment : p.object);
 
-    ProfileSegmentation<pcl::PointXYZ> seg;
+    AutoProfileSegmentation<pcl::PointXYZ> seg;
     seg.setInputCloud (cloud);
     seg.setNumberOfThreads (context.threads);
-    run.configure (seg);
     std::vector<pcl::PointIndices> segments;
-    apps::StageTimer timer ("Profile segmentation of '" + name + "' (" + run.settings +
-                            ")");
+    apps::StageTimer timer ("Profile segmentation of '" + name + "'");
     seg.extract (segments);
-    if (run.join_cylinders && !segments.empty()) {
-      CylinderSegmentJoin<pcl::PointXYZ> join;
-      join.setInputCloud (cloud);
-      join.setInputSegments (segments);
-      join.setNumberOfThreads (context.threads);
-      join.join (segments);
-    }
     const double ms = timer.done (cloud->size());
     if (segments.empty()) {
       ok = false;
@@ -160,7 +120,8 @@ runProfilesStep (DemoContext& context)
     }
     SegmentationMetrics metrics;
     evaluateSegmentation (segments, truth, metrics);
-    context.summary << "  " << name << " (" << run.settings << "): " << segments.size()
+    const std::string settings = describeChoice (seg);
+    context.summary << "  " << name << " (" << settings << "): " << segments.size()
                     << " segments in " << ms << " ms; "
                     << (run.surfaces ? "surfaces" : "objects") << ": mean best IoU "
                     << metrics.mean_best_iou << ", weighted "
@@ -190,7 +151,7 @@ runProfilesStep (DemoContext& context)
             {{name + ": ground truth (" + (run.surfaces ? "surfaces" : "objects") + ")",
               {{makeColouredCloud (*cloud, colourByLabel (truth))}},
               {{"unsegmented", colourByLabel ({0u}).front()}}},
-             {name + ": " + run.settings + ", " + title_metric + " " + iou,
+             {name + ": " + settings + ", " + title_metric + " " + iou,
               {{makeColouredCloud (
                   *cloud, colourByLabel (matchLabelsToReference (labels, truth)))}},
               {{"unsegmented", colourByLabel ({0u}).front()}}}},

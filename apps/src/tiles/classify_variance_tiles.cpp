@@ -2,23 +2,14 @@
  * pcl_ext_tiles classify_variance: Belton & Lichti's classification tile by tile, with
  * the options and result of pcl_ext_classify_variance.
  */
-#include "../variance/variance_options.h"
-#include "tile_method.h"
+#include "variance_tiles.h"
 
-#include <pcl_ext/classification/local_variance_classification.h>
-#include <pcl_ext/tiling/tile_results.h>
-
-#include <cmath>
 #include <iostream>
-#include <sstream>
 
 namespace pcl_ext {
 namespace apps {
 namespace {
-constexpr const char* kCurvatures = "curvature";
-constexpr const char* kThresholdSetting = "curvature_threshold";
-
-class ClassifyVarianceTiles : public TileMethod {
+class ClassifyVarianceTiles : public VarianceTileMethod {
 public:
   void
   addOptions (CommandLine& cl) override
@@ -44,20 +35,7 @@ public:
       std::cerr << "Error: -radius and -max_radius must be >= 0.\n";
       return false;
     }
-    if (!options_.valid (cl))
-      return false;
-    pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
-    options_.applyTo (classifier);
-    if (classifier.getNoiseEstimation()) {
-      // Each tile would estimate its own noise, and the tiles would differ from the
-      // whole cloud's classification.
-      std::cerr << "Error: pcl_ext_tiles cannot estimate the noise of the whole cloud "
-                   "yet: give -noise_sigma with -preset derived (the value "
-                   "pcl_ext_classify_variance -v prints on a part of the cloud).\n";
-      return false;
-    }
-    curvature_factor_ = classifier.getCurvatureThresholdFactor();
-    return true;
+    return options_.valid (cl) && checkClassification();
   }
 
   ResultField
@@ -84,68 +62,8 @@ public:
     reach.k = k_;
     reach.radius = radius_;
     reach.max_radius = max_radius_;
-    // Eq. 5 reads the neighbours' curvatures; the boundary band the neighbours' labels.
-    reach.hops = options_.boundary_band ? 3 : 2;
+    reach.hops = getClassificationHops();
     return reach;
-  }
-
-  NeighbourhoodReach
-  getEstimateReach () const override
-  {
-    NeighbourhoodReach reach = getReach();
-    reach.hops = 1; // kappa (eq. 4) reads the point's own neighbourhood only
-    return reach;
-  }
-
-  bool
-  needsEstimate () const override
-  {
-    return options_.curvature_threshold == 0.0;
-  }
-
-  bool
-  estimate (const TileCloud& tile,
-            std::map<std::string, std::vector<float>>& values) override
-  {
-    auto& curvatures = values[kCurvatures];
-    curvatures.clear();
-    if (tile.core_points == 0 || !tile.neighbourhoods || tile.neighbourhoods->empty())
-      return true;
-    pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
-    configure (classifier, tile);
-    // Curvatures only: any threshold but 0 (0 would derive one from this tile).
-    classifier.setTests (decltype (classifier)::CURVATURE_TEST);
-    classifier.setCurvatureThreshold (1.0);
-    pcl::PointCloud<pcl::Label> labels;
-    classifier.classify (labels);
-    const auto& kappa = classifier.getCurvatures();
-    if (kappa.size() != tile.cloud->size()) {
-      std::cerr << "Error: the curvatures of tile " << tile.tile << " failed.\n";
-      return false;
-    }
-    for (std::size_t i = 0; i < kappa.size(); ++i)
-      if (tile.core[i])
-        curvatures.push_back (kappa[i]);
-    return true;
-  }
-
-  bool
-  reduce (const std::string& folder,
-          std::size_t tiles,
-          std::map<std::string, std::string>& settings) override
-  {
-    float median = 0.0f;
-    std::uint64_t count = 0;
-    if (!tiling::nthOfTileValues (folder, tiles, kCurvatures, 0.5, median, count))
-      return false;
-    // As LocalVarianceClassification derives it: factor * median over every point.
-    const double threshold =
-        count == 0 ? 0.0 : curvature_factor_ * static_cast<double> (median);
-    std::ostringstream text;
-    text.precision (17);
-    text << threshold;
-    settings[kThresholdSetting] = text.str();
-    return true;
   }
 
   bool
@@ -163,16 +81,8 @@ public:
     }
     pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
     configure (classifier, tile);
-    if (needsEstimate()) {
-      const auto found = settings.find (kThresholdSetting);
-      if (found == settings.end()) {
-        std::cerr
-            << "Error: the plan has no curvature threshold (run the estimate step "
-               "on every tile first).\n";
-        return false;
-      }
-      classifier.setCurvatureThreshold (std::stod (found->second));
-    }
+    if (!applyThreshold (classifier, settings))
+      return false;
     pcl::PointCloud<pcl::Label> result;
     classifier.classify (result);
     if (result.size() != tile.cloud->size()) {
@@ -184,36 +94,24 @@ public:
     return true;
   }
 
-private:
-  void
-  configure (pcl_ext::LocalVarianceClassification<pcl::PointXYZ>& classifier,
-             const TileCloud& tile) const
+protected:
+  const VarianceClassificationOptions&
+  getClassificationOptions () const override
   {
-    classifier.setInputCloud (tile.cloud);
-    if (radius_ > 0.0)
-      classifier.setRadiusSearch (radius_);
-    else {
-      classifier.setKSearch (k_);
-      classifier.setMaxRadius (max_radius_);
-    }
-    options_.applyTo (classifier);
-    classifier.setNumberOfThreads (threads_);
-    classifier.setNeighbourhoods (tile.neighbourhoods);
+    return options_;
   }
 
+private:
   int k_ = 50;
   double radius_ = 0.0, max_radius_ = 0.0;
-  double curvature_factor_ = 3.0; ///< the classifier's, after the options
   VarianceClassificationOptions options_;
 };
 } // namespace
 
 std::unique_ptr<TileMethod>
-makeTileMethod (const std::string& name)
+makeClassifyVarianceTiles ()
 {
-  if (name == "classify_variance")
-    return std::make_unique<ClassifyVarianceTiles>();
-  return nullptr;
+  return std::make_unique<ClassifyVarianceTiles>();
 }
 } // namespace apps
 } // namespace pcl_ext

@@ -44,6 +44,15 @@ public:
   virtual tiling::MergedResults::Kind
   getKind () const = 0;
 
+  /** \brief For segments: the smallest segment kept, counted over the whole cloud at
+   * the merge (the segments then numbered largest first, as pcl_ext's segmenters
+   * number theirs); 0: numbered by first point, none dropped. */
+  virtual std::uint64_t
+  getMinSegmentSize () const
+  {
+    return 0;
+  }
+
   /** \brief The neighbourhoods a point's result reaches through. */
   virtual NeighbourhoodReach
   getReach () const = 0;
@@ -104,6 +113,6 @@ std::unique_ptr<TileMethod>
 makeTileMethod (const std::string& name);
 
 /** \brief The names makeTileMethod knows, for the help text. */
-constexpr const char* kTileMethods = "classify_variance";
+constexpr const char* kTileMethods = "classify_variance, segment_variance";
 } // namespace apps
 } // namespace pcl_ext

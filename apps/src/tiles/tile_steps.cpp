@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <sys/stat.h>
@@ -88,6 +89,30 @@ estimateHalo (const std::string& input,
   return 1.25 * reach.hops * static_cast<double> (*at);
 }
 
+/** The points each segment of a tile has in the tile's core, and the first of them. */
+std::vector<tiling::SegmentSize>
+segmentSizes (const TileCloud& cloud, const std::vector<std::uint32_t>& labels)
+{
+  std::vector<tiling::SegmentSize> sizes;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const std::uint32_t l = labels[i];
+    if (!cloud.core[i] || l == tiling::SegmentMerge::kNoSegment)
+      continue;
+    if (sizes.size() <= l)
+      sizes.resize (l + 1);
+    auto& s = sizes[l];
+    s.first = s.points == 0 ? cloud.indices[i] : std::min (s.first, cloud.indices[i]);
+    ++s.points;
+  }
+  for (std::uint32_t l = 0; l < sizes.size(); ++l)
+    sizes[l].label = l;
+  sizes.erase (std::remove_if (sizes.begin(),
+                               sizes.end(),
+                               [] (const auto& s) { return s.points == 0; }),
+               sizes.end());
+  return sizes;
+}
+
 std::vector<std::string>
 splitArguments (const std::string& text)
 {
@@ -153,9 +178,10 @@ planStep (const std::string& method_name,
   }
   timer.done (plan.getTotalPoints());
   const tiling::TileGrid grid = plan.getGrid();
-  std::cout << grid.size() << " tiles (" << grid.getColumns() << " x " << grid.getRows()
-            << ") of " << plan.tile_size << " m, halo " << plan.halo << " m, in "
-            << workdir << "\n";
+  // Six digits whatever a timer left (StageTimer leaves the precision at 0).
+  std::cout << std::setprecision (6) << grid.size() << " tiles (" << grid.getColumns()
+            << " x " << grid.getRows() << ") of " << plan.tile_size << " m, halo "
+            << plan.halo << " m, in " << workdir << "\n";
   return true;
 }
 
@@ -252,7 +278,8 @@ tileStep (const tiling::TilePlan& plan,
   if (!tiling::TileResults::write (workdir, core_indices, core_labels))
     return false;
   if (method.getKind() == tiling::MergedResults::Kind::Segments &&
-      !tiling::saveHaloLabels (workdir, tile, halo))
+      (!tiling::saveHaloLabels (workdir, tile, halo) ||
+       !tiling::saveSegmentSizes (workdir, tile, segmentSizes (cloud, labels))))
     return false;
   if (!tiling::markTileDone (workdir, tile))
     return false;
@@ -291,8 +318,15 @@ mergeStep (const tiling::TilePlan& plan,
     if (!field.checkInput (like, plan.inputs.front()))
       return false;
     tiling::MergedResults merged;
+    const std::uint64_t min_size = method.getMinSegmentSize();
+    if (segments && min_size > 0)
+      merged.setSegmentsBySize (min_size);
     if (!merged.open (plan, workdir, method.getKind()))
       return false;
+    if (segments && min_size > 0 && merged.getNumberOfSegments() == 0) {
+      std::cerr << "\nError: no segment of at least " << min_size << " points.\n";
+      return false;
+    }
     const bool las = io::fileExtension (output) == "las";
     io::LasWriter writer;
     pcl::PCLPointCloud2 chunk, whole;

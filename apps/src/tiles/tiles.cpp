@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <sys/resource.h>
 
@@ -19,15 +20,12 @@ using pcl_ext::apps::CommandLine;
 
 constexpr const char* kDescription =
     "Runs a method over clouds of any size tile by tile: each tile reads only its "
-    "points "
-    "and a halo around them, and the output is what the method's own tool gives on the "
-    "whole cloud (the same classes point by point; the same segments, numbered by "
-    "their "
-    "first point). Methods: classify_variance (the options of "
-    "pcl_ext_classify_variance). Steps for scheduler array jobs: 'plan METHOD input... "
-    "-workdir D', then 'estimate I -workdir D' and 'tile I -workdir D' for every tile "
-    "I, "
-    "then 'merge output -workdir D'.";
+    "points and a halo around them, and the output is what the method's own tool "
+    "gives on the whole cloud (the same classes point by point; the same segments "
+    "with the same ids). Methods: classify_variance and segment_variance (the options "
+    "of pcl_ext_classify_variance and pcl_ext_segment_variance). Steps for scheduler "
+    "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D' and "
+    "'tile I -workdir D' for every tile I, then 'merge output -workdir D'.";
 
 /** The tool's own options, kept out of the method's. */
 struct TileOptions {
@@ -197,8 +195,9 @@ runAll (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
                     ? "Rank " + std::to_string (scheduler.getRank()) + ": "
                     : std::string())
             << (ok ? "done: " : "failed after ") << done << " of " << tiles
-            << " tiles, " << plan.getTotalPoints() << " points, " << seconds
-            << " s, peak memory " << peakMemoryMegabytes() << " MB\n";
+            << " tiles, " << plan.getTotalPoints() << " points, " << std::fixed
+            << std::setprecision (1) << seconds << " s, peak memory "
+            << peakMemoryMegabytes() << " MB\n";
   return ok ? 0 : 1;
 }
 

@@ -43,6 +43,18 @@ MergedResults::open (const TilePlan& plan, const std::string& folder, Kind kind)
               SegmentMerge::key (halo[i].owner, owner_labels[i]),
               SegmentMerge::key (static_cast<std::uint32_t> (t), halo[i].label));
     }
+    if (by_size_) {
+      std::vector<SegmentSize> sizes;
+      for (std::size_t t = 0; t < grid_.size(); ++t) {
+        if (!loadSegmentSizes (folder_, t, sizes))
+          return false;
+        for (const auto& s : sizes)
+          merge_.addPoints (SegmentMerge::key (static_cast<std::uint32_t> (t), s.label),
+                            s.points,
+                            s.first);
+      }
+      merge_.numberBySize (min_size_);
+    }
   }
   return true;
 }

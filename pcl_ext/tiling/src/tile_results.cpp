@@ -23,6 +23,7 @@ namespace pcl_ext {
 namespace tiling {
 namespace {
 constexpr std::size_t kHaloRecordBytes = 16;
+constexpr std::size_t kSizeRecordBytes = 20;
 constexpr std::size_t kBlockValues = 1 << 16;
 
 /** Writes all of \a bytes at \a offset. */
@@ -110,6 +111,46 @@ std::string
 haloPath (const std::string& folder, std::size_t tile)
 {
   return folder + "/tile_" + std::to_string (tile) + ".halo";
+}
+
+/** Writes \a count records of \a size bytes, record i filled by \a fill (i, bytes),
+ * to \a path, replacing it atomically. */
+template <typename Fill>
+bool
+writeRecords (const std::string& path, std::size_t count, std::size_t size, Fill fill)
+{
+  return io::writeFileAtomically (path, [&] (const std::string& temporary) {
+    std::vector<char> bytes (count * size);
+    for (std::size_t i = 0; i < count; ++i)
+      fill (i, bytes.data() + i * size);
+    std::ofstream out (temporary, std::ios::binary);
+    out.write (bytes.data(), static_cast<std::streamsize> (bytes.size()));
+    out.close();
+    return static_cast<bool> (out);
+  });
+}
+
+/** The bytes of \a path, a whole number of records of \a size bytes written by tile
+ * \a tile; false (PCL_ERROR) when missing or broken. */
+bool
+readRecords (const std::string& path,
+             std::size_t size,
+             std::size_t tile,
+             std::vector<char>& bytes)
+{
+  const detail::RecordFileRead read = detail::readRecordFile (path, size, bytes);
+  if (read == detail::RecordFileRead::CannotOpen ||
+      read == detail::RecordFileRead::NotWholeRecords) {
+    PCL_ERROR ("[pcl_ext::tiling] %s is missing (tile %zu not run) or broken.\n",
+               path.c_str(),
+               tile);
+    return false;
+  }
+  if (read == detail::RecordFileRead::CannotRead) {
+    PCL_ERROR ("[pcl_ext::tiling] cannot read %s.\n", path.c_str());
+    return false;
+  }
+  return true;
 }
 } // namespace
 
@@ -221,20 +262,14 @@ saveHaloLabels (const std::string& folder,
                 std::size_t tile,
                 const std::vector<HaloLabel>& labels)
 {
-  return io::writeFileAtomically (
-      haloPath (folder, tile), [&labels] (const std::string& temporary) {
-        std::vector<char> bytes (labels.size() * kHaloRecordBytes);
-        for (std::size_t i = 0; i < labels.size(); ++i) {
-          char* r = bytes.data() + i * kHaloRecordBytes;
-          std::memcpy (r, &labels[i].index, 8);
-          std::memcpy (r + 8, &labels[i].owner, 4);
-          std::memcpy (r + 12, &labels[i].label, 4);
-        }
-        std::ofstream out (temporary, std::ios::binary);
-        out.write (bytes.data(), static_cast<std::streamsize> (bytes.size()));
-        out.close();
-        return static_cast<bool> (out);
-      });
+  return writeRecords (haloPath (folder, tile),
+                       labels.size(),
+                       kHaloRecordBytes,
+                       [&labels] (std::size_t i, char* r) {
+                         std::memcpy (r, &labels[i].index, 8);
+                         std::memcpy (r + 8, &labels[i].owner, 4);
+                         std::memcpy (r + 12, &labels[i].label, 4);
+                       });
 }
 
 bool
@@ -243,22 +278,9 @@ loadHaloLabels (const std::string& folder,
                 std::vector<HaloLabel>& labels)
 {
   labels.clear();
-  const std::string path = haloPath (folder, tile);
   std::vector<char> bytes;
-  const detail::RecordFileRead read =
-      detail::readRecordFile (path, kHaloRecordBytes, bytes);
-  if (read == detail::RecordFileRead::CannotOpen ||
-      read == detail::RecordFileRead::NotWholeRecords) {
-    PCL_ERROR ("[pcl_ext::tiling::loadHaloLabels] %s is missing (tile %zu not run) or "
-               "broken.\n",
-               path.c_str(),
-               tile);
+  if (!readRecords (haloPath (folder, tile), kHaloRecordBytes, tile, bytes))
     return false;
-  }
-  if (read == detail::RecordFileRead::CannotRead) {
-    PCL_ERROR ("[pcl_ext::tiling::loadHaloLabels] cannot read %s.\n", path.c_str());
-    return false;
-  }
   labels.resize (bytes.size() / kHaloRecordBytes);
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const char* r = bytes.data() + i * kHaloRecordBytes;
@@ -268,6 +290,41 @@ loadHaloLabels (const std::string& folder,
   }
   return true;
 }
+
+bool
+saveSegmentSizes (const std::string& folder,
+                  std::size_t tile,
+                  const std::vector<SegmentSize>& sizes)
+{
+  return writeRecords (valuesPath (folder, tile, "sizes"),
+                       sizes.size(),
+                       kSizeRecordBytes,
+                       [&sizes] (std::size_t i, char* r) {
+                         std::memcpy (r, &sizes[i].label, 4);
+                         std::memcpy (r + 4, &sizes[i].points, 8);
+                         std::memcpy (r + 12, &sizes[i].first, 8);
+                       });
+}
+
+bool
+loadSegmentSizes (const std::string& folder,
+                  std::size_t tile,
+                  std::vector<SegmentSize>& sizes)
+{
+  sizes.clear();
+  std::vector<char> bytes;
+  if (!readRecords (valuesPath (folder, tile, "sizes"), kSizeRecordBytes, tile, bytes))
+    return false;
+  sizes.resize (bytes.size() / kSizeRecordBytes);
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    const char* r = bytes.data() + i * kSizeRecordBytes;
+    std::memcpy (&sizes[i].label, r, 4);
+    std::memcpy (&sizes[i].points, r + 4, 8);
+    std::memcpy (&sizes[i].first, r + 12, 8);
+  }
+  return true;
+}
+
 bool
 markTileDone (const std::string& folder, std::size_t tile)
 {

@@ -18,7 +18,8 @@ namespace profiles {
 enum class ProfileMethod {
   Proximity,           ///< proximity chaining (4.1.1)
   MinimumSpanningTree, ///< minimum spanning tree cut at the threshold (section 3)
-  CurveFitting         ///< curve fitting with AIC model selection (4.1.2)
+  CurveFitting,        ///< curve fitting with AIC model selection (4.1.2)
+  CurveReconstruction  ///< nearest-neighbour crust cut at the threshold (5.2)
 };
 
 /** \brief Everything the pipeline needs; see ProfileSegmentation for the meaning and

@@ -30,8 +30,10 @@ namespace pcl_ext {
  * profile segmenter (section 4.1, figure 8): proximity chaining (4.1.1), a minimum
  * spanning tree cut at the proximity threshold (section 3), or curve fitting with model
  * selection by the Akaike information criterion and splits where the unit normal turns
- * sharply (4.1.2, figure 9). The union of the edges of all profiles of all stacks is a
- * graph G(V, E); its connected components are the segments (section 3, figure 5).
+ * sharply (4.1.2, figure 9), or the curve reconstruction the paper uses for its nested
+ * spheres (section 5.2; profiles::crustEdges). The union of the edges of all profiles
+ * of all stacks is a graph G(V, E); its connected components are the segments (section
+ * 3, figure 5).
  *
  * Nothing searches neighbours over the whole cloud: each stack is a bucket sort of the
  * points by their coordinate along the stack normal, and each profile is segmented on
@@ -73,10 +75,9 @@ namespace pcl_ext {
  * (setLocalThreshold: a TLS scan is sparser far from the scanner) and curve fits along
  * each side's own axis (setSideFrames: tight smooth bends such as a thin trunk cut
  * obliquely).
- * - The class keeps the paper's defaults; profiles::estimateCloudStatistics and
- * profiles::chooseConfiguration (profile_auto.h) choose these options from the cloud's
- * noise, density variation and a first proximity run, as pcl_ext_segment_profiles does
- * by default.
+ * - The class keeps the paper's defaults; AutoProfileSegmentation chooses these
+ * options from the cloud's noise, density variation and a first proximity run
+ * (profile_auto.h), as pcl_ext_segment_profiles does by default.
  * - Points with non-finite coordinates are never segmented, whatever \c is_dense says.
  * - Curve fitting cuts a pipe where it rests on a support and a thin trunk where
  * branches leave it; CylinderSegmentJoin, a step after the segmentation, joins such
@@ -260,7 +261,8 @@ public:
     return spacing_;
   }
 
-  /** \brief The profile segmenter. Default Proximity. */
+  /** \brief The profile segmenter. Default Proximity; CurveReconstruction links each
+   * point to its nearest and half neighbours (profiles::crustEdges). */
   void
   setProfileSegmentation (ProfileMethod method)
   {
@@ -402,8 +404,9 @@ public:
 
   /** \brief Segment the cloud (the indices, if set).
    * \param[out] clusters one PointIndices per segment, largest first; empty on error
-   * (with a PCL_ERROR). */
-  void
+   * (with a PCL_ERROR). Virtual as in pcl::RegionGrowing: AutoProfileSegmentation
+   * chooses the configuration first. */
+  virtual void
   extract (std::vector<pcl::PointIndices>& clusters);
 
   /** \brief The input cloud coloured by segment (unsegmented points white), as

@@ -65,6 +65,31 @@ spanningTreeEdges (const ProfilePoints& profile,
                    std::vector<LocalEdge>& edges,
                    const std::vector<float>* thresholds = nullptr);
 
+/** \brief Curve reconstruction (section 5.2: the paper segments the profiles of the
+ * nested spheres by "first fitting curves to profile points using the curve
+ * reconstruction algorithm proposed by Dey et al. (2000) and then applying a proximity
+ * threshold on the curves"): the nearest-neighbour crust of T.K. Dey and P. Kumar, "A
+ * simple provable algorithm for curve reconstruction" (SODA 1999), then links longer
+ * than \a threshold cut.
+ *
+ * Each point is linked to its nearest point q and to its half neighbour, the nearest
+ * point s on the other side (angle q-p-s over 90 degrees). For curves sampled densely
+ * enough (every point of the curve within a third of its local feature size of a
+ * sample), these are exactly the curves' edges, like the conservative crust of Dey,
+ * Mehlhorn and Ramos the paper cites, and no Delaunay triangulation is needed. Unlike
+ * proximity chaining with k > 2 links, two curves closer to each other than the
+ * threshold but farther than their own spacing are not linked: the spheres within
+ * spheres of section 5.2. Departure: the paper's reference is the conservative crust,
+ * which also handles curves with ends without a threshold; here the threshold cuts the
+ * links past a curve's ends. Coincident points chain as one point; ties by index:
+ * deterministic. \param[in] thresholds optional per-point thresholds, as for
+ * proximityEdges \param[out] edges sorted, without duplicates */
+void
+crustEdges (const ProfilePoints& profile,
+            double threshold,
+            std::vector<LocalEdge>& edges,
+            const std::vector<float>* thresholds = nullptr);
+
 /** \brief Parameters of the curve-fitting profile segmenter. */
 struct CurveFitParameters {
   double threshold = 0.0; ///< proximity threshold of the chains (the spanning-tree cut)

@@ -211,6 +211,24 @@ public:
     return fit_planes_;
   }
 
+  /** \brief Only these points (indices into the input cloud) start walks; every point
+   * is still classified, linked to by the seeds and labelled. Default null: every
+   * point is a seed. For a tile of a larger cloud: its own points seed, the points of
+   * its halo around it are linked to, so that no walk starts where the tile's
+   * neighbourhoods are not the whole cloud's; the segments of the tiles are then joined
+   * through the points they share. */
+  void
+  setSeedIndices (const pcl::IndicesConstPtr& seeds)
+  {
+    seeds_ = seeds;
+  }
+
+  pcl::IndicesConstPtr
+  getSeedIndices () const
+  {
+    return seeds_;
+  }
+
   /** \brief Segment the cloud (the indices, if set).
    * \param[out] clusters one PointIndices per segment, largest first; empty after a
    * PCL_ERROR */
@@ -253,6 +271,7 @@ protected:
   checkClasses () const;
 
   LabelCloudConstPtr classes_;
+  pcl::IndicesConstPtr seeds_;
   double max_distance_ = 0.0;
   double max_distance_factor_ = 3.0;
   bool fit_planes_ = false;

@@ -1,3 +1,6 @@
+/*
+ * pcl_ext: the source of raw LAS point records (a LAS file or a LAZ decoder).
+ */
 #pragma once
 #include <cstddef>
 #include <cstdint>

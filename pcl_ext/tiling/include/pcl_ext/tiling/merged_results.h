@@ -23,13 +23,32 @@ namespace tiling {
  * For per-point results (classes) a point's result is what its owner tile wrote
  * (TileResults; kNoResult for a point no tile holds: not finite). For segments the
  * owners' labels are joined across the halos first (SegmentMerge over every tile's
- * halo labels), then numbered 0, 1, ... in the order of the segments' first points;
- * SegmentMerge::kNoSegment for a point in no segment. Either way the values depend
+ * halo labels), then numbered 0, 1, ... in the order of the segments' first points
+ * (or largest first, setSegmentsBySize); SegmentMerge::kNoSegment for a point in no
+ * segment. Either way the values depend
  * neither on the tile size, nor on the order or the number of the processes that ran
  * the tiles. */
 class MergedResults {
 public:
   enum class Kind { PerPoint, Segments };
+
+  /** \brief For segments: number them largest first (ties by first point), as pcl_ext's
+   * segmenters do, and drop those of fewer than \a min_size points, counted over the
+   * whole cloud (the tiles' segment sizes joined); call before open(). Default:
+   * numbered by first point, none dropped. */
+  void
+  setSegmentsBySize (std::uint64_t min_size)
+  {
+    by_size_ = true;
+    min_size_ = min_size;
+  }
+
+  /** \brief After open() with setSegmentsBySize: the number of segments kept. */
+  std::uint32_t
+  getNumberOfSegments () const
+  {
+    return merge_.getNumberOfSegments();
+  }
 
   /** \brief Prepare to read the results of \a plan in \a folder. \return false
    * (PCL_ERROR names it) when a tile was not run (its halo labels are missing) or a
@@ -64,6 +83,8 @@ private:
   std::size_t input_ = 0;
   std::uint64_t next_index_ = 0;
   bool failed_ = false;
+  bool by_size_ = false;
+  std::uint64_t min_size_ = 1;
 };
 } // namespace tiling
 } // namespace pcl_ext

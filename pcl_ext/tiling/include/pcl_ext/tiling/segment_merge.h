@@ -52,9 +52,22 @@ public:
   void
   join (Key owner, Key other);
 
+  /** \brief Segment \a key of a tile has \a points points in the tile's core, the
+   * smallest global index among them \a first (what numberBySize() counts). */
+  void
+  addPoints (Key key, std::uint64_t points, std::uint64_t first);
+
+  /** \brief Number the joined segments largest first, ties by their first points (the
+   * order of pcl_ext's segmenters), and drop those of fewer than \a min_size points:
+   * the sizes are the sums of addPoints() over the tiles' segments each joins. Call
+   * after every join() and addPoints(); number() then gives these ids, in any order of
+   * the points, and kNoSegment for a dropped segment. */
+  void
+  numberBySize (std::uint64_t min_size);
+
   /** \brief The global id of the point that its owner labelled \a owner, for the points
-   * in ascending global order (each segment is numbered when its first point comes);
-   * kNoSegment for kNoKey. */
+   * in ascending global order (each segment is numbered when its first point comes,
+   * unless numberBySize() numbered them); kNoSegment for kNoKey. */
   std::uint32_t
   number (Key owner);
 
@@ -72,7 +85,9 @@ private:
   std::unordered_map<Key, std::uint32_t> elements_;
   UnionFind sets_;
   std::vector<std::uint32_t> ids_; ///< per root element, kNoSegment until numbered
+  std::vector<std::uint64_t> points_, first_; ///< per element, from addPoints()
   std::uint32_t next_id_ = 0;
+  bool by_size_ = false;
 };
 } // namespace tiling
 } // namespace pcl_ext

@@ -73,6 +73,29 @@ bool
 loadHaloLabels (const std::string& folder,
                 std::size_t tile,
                 std::vector<HaloLabel>& labels);
+/** \brief A segment of a tile as the tile's core holds it: how many of its points the
+ * tile owns and the smallest global index among them (what numbers and drops the
+ * joined segments, see SegmentMerge::numberBySize). */
+struct SegmentSize {
+  std::uint32_t label = 0;  ///< the segment in the tile
+  std::uint64_t points = 0; ///< its points in the tile's core
+  std::uint64_t first = 0;  ///< the smallest global index of those
+};
+
+/** \brief Write the sizes of tile \a tile's segments (`tile_<tile>.sizes`, replaced
+ * atomically). \return false (PCL_ERROR) when it cannot be written */
+bool
+saveSegmentSizes (const std::string& folder,
+                  std::size_t tile,
+                  const std::vector<SegmentSize>& sizes);
+
+/** \brief Read the sizes of tile \a tile's segments. \return false (PCL_ERROR names the
+ * file) when it is missing (the tile was not run) or not a whole number of records */
+bool
+loadSegmentSizes (const std::string& folder,
+                  std::size_t tile,
+                  std::vector<SegmentSize>& sizes);
+
 /** \brief Record that tile \a tile wrote all its results (`tile_<tile>.done`). \return
  * false (PCL_ERROR) when it cannot be written */
 bool

@@ -125,14 +125,14 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (
   const float max_sqr = max_distance_ > 0.0
                             ? static_cast<float> (max_distance_ * max_distance_)
                             : std::numeric_limits<float>::infinity();
-  if (max_distance_factor_ > 0.0) {
+  if (max_distance_factor_ > 0.0 || seeds_) {
     // Per seed: the smaller of the fixed limit and the factor times its local spacing
     // s = r_m sqrt(pi / m), m half its neighbours (the row holds the seed first).
     const auto& offsets = nb->getOffsets();
     const auto& sqr_distances = nb->getSquaredDistances();
     const double f2 = max_distance_factor_ * max_distance_factor_;
     std::vector<float> limits (indices_->size(), max_sqr);
-    for (std::size_t r = 0; r < limits.size(); ++r) {
+    for (std::size_t r = 0; r < limits.size() && max_distance_factor_ > 0.0; ++r) {
       // A point without neighbourhood (NaN, or none found) has an empty row.
       const std::size_t row_size = offsets[r + 1] - offsets[r];
       const std::size_t m = row_size > 0 ? (row_size - 1) / 2 : 0;
@@ -141,6 +141,16 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (
             max_sqr,
             static_cast<float> (f2 * 3.141592653589793 / static_cast<double> (m)) *
                 sqr_distances[offsets[r] + m]);
+    }
+    if (seeds_) {
+      // A row that is not a seed's links nothing: every distance exceeds -1.
+      std::vector<char> seed (input_->size(), 0);
+      for (const auto i : *seeds_)
+        if (i >= 0 && static_cast<std::size_t> (i) < seed.size())
+          seed[i] = 1;
+      for (std::size_t r = 0; r < limits.size(); ++r)
+        if (!seed[(*indices_)[r]])
+          limits[r] = -1.0f;
     }
     growSurfaceSegments (nb->getOffsets(),
                          nb->getNeighbourIndices(),

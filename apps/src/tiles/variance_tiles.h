@@ -1,0 +1,79 @@
+/*
+ * pcl_ext_tiles: what Belton & Lichti's classification and segmentation share tile by
+ * tile: the curvature threshold of the whole cloud, and the classifier on a tile.
+ */
+#pragma once
+
+#include "../variance/variance_options.h"
+#include "tile_method.h"
+
+#include <pcl_ext/classification/local_variance_classification.h>
+
+namespace pcl_ext {
+namespace apps {
+/** \brief A method on Belton & Lichti's classification: when the curvature threshold is
+ * derived (factor x the median curvature kappa, eq. 4, of every point), every tile
+ * saves its core points' kappa (estimate()), and the median over all tiles gives the
+ * threshold every tile then uses (reduce(), applyThreshold()), as untiled. */
+class VarianceTileMethod : public TileMethod {
+public:
+  NeighbourhoodReach
+  getEstimateReach () const override;
+
+  bool
+  needsEstimate () const override
+  {
+    return getClassificationOptions().curvature_threshold == 0.0;
+  }
+
+  bool
+  estimate (const TileCloud& tile,
+            std::map<std::string, std::vector<float>>& values) override;
+
+  bool
+  reduce (const std::string& folder,
+          std::size_t tiles,
+          std::map<std::string, std::string>& settings) override;
+
+protected:
+  /** \brief The classification's options of the method. */
+  virtual const VarianceClassificationOptions&
+  getClassificationOptions () const = 0;
+
+  /** \brief Refuse what cannot run tile by tile yet (the noise estimated from the
+   * cloud) and keep the curvature factor; the message printed. */
+  bool
+  checkClassification ();
+
+  /** \brief The neighbourhood steps a class reaches through: eq. 5 reads the
+   * neighbours' curvatures, the boundary band the neighbours' labels. */
+  int
+  getClassificationHops () const
+  {
+    return getClassificationOptions().boundary_band ? 3 : 2;
+  }
+
+  /** \brief \a classifier on the points and neighbourhoods of \a tile with the
+   * method's options and threads. */
+  void
+  configure (LocalVarianceClassification<pcl::PointXYZ>& classifier,
+             const TileCloud& tile) const;
+
+  /** \brief The whole cloud's curvature threshold (from the plan's \a settings) on
+   * \a classifier when it is derived. \return false (message printed) when the plan
+   * has none */
+  bool
+  applyThreshold (LocalVarianceClassification<pcl::PointXYZ>& classifier,
+                  const std::map<std::string, std::string>& settings) const;
+
+private:
+  double curvature_factor_ = 3.0; ///< the classifier's, after the options
+};
+
+/** \brief The adapters of pcl_ext_classify_variance and pcl_ext_segment_variance. */
+std::unique_ptr<TileMethod>
+makeClassifyVarianceTiles ();
+std::unique_ptr<TileMethod>
+makeSegmentVarianceTiles ();
+} // namespace apps
+} // namespace pcl_ext

@@ -1,0 +1,157 @@
+/*
+ * pcl_ext: the options of pcl_ext_segment_variance and the set-up of its segmentation
+ * on one cloud, shared with pcl_ext_tiles segment_variance (which runs it on every
+ * tile).
+ */
+#pragma once
+
+#include "variance_options.h"
+
+#include <pcl_ext/classification/local_variance_classification.h>
+#include <pcl_ext/search/neighbourhoods.h>
+#include <pcl_ext/segmentation/variance_region_growing.h>
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+namespace pcl_ext {
+namespace apps {
+/** \brief Options of Belton & Lichti's segmentation (sections 2-4) as
+ * pcl_ext_segment_variance takes them, with its defaults. */
+struct SegmentVarianceOptions {
+  int k = 50;
+  int min_size = 50;
+  double max_radius = 0.0;
+  double max_distance = 0.0;
+  double max_distance_factor = 3.0;
+  double parallel_angle = 10.0; ///< degrees
+  std::string intersections_path;
+  bool reintegrate = false; ///< after valid(): -reintegrate or -preset derived
+  bool keep_out = false;
+  VarianceClassificationOptions classification;
+
+  void
+  addTo (CommandLine& cl)
+  {
+    cl.addOption ("k", k, "neighbours per point (the paper's k)");
+    cl.addOption (
+        "max_radius",
+        max_radius,
+        "keep only the k neighbours within this distance (0: no cap, the paper's)");
+    classification.addTo (cl);
+    cl.addOption ("max_distance",
+                  max_distance,
+                  "longest link from a seed to a neighbour (0: no limit beyond the k "
+                  "neighbours)");
+    cl.addOption (
+        "max_distance_factor",
+        max_distance_factor,
+        "longest link from a seed as a multiple of its local point spacing (0: none)");
+    cl.addOption ("min_size", min_size, "smallest segment kept");
+    cl.addOption (
+        "intersections",
+        intersections_path,
+        "also write the local intersection points of the segments (section 4) to this "
+        "file (.pcd, .ply or .las; input's frame): x y z, segment_a, segment_b and the "
+        "two surface points index_a, index_b");
+    cl.addSwitch (
+        "reintegrate",
+        reintegrate,
+        "put edge and boundary points into the segment whose local plane they fit "
+        "(section 4) before writing the output (on with -preset derived)");
+    cl.addSwitch ("no_reintegrate",
+                  keep_out,
+                  "with -preset derived: leave the edge and boundary points out of the "
+                  "segments (section 3 alone)");
+    cl.addOption (
+        "parallel_angle",
+        parallel_angle,
+        "with -intersections or -reintegrate: segments whose normals differ by less "
+        "(degrees) are parallel, not intersected (eq. 9)");
+  }
+
+  /** \brief Check the options (the error printed) and settle -reintegrate. */
+  bool
+  valid (const CommandLine& cl)
+  {
+    if (!classification.valid (cl))
+      return false;
+    if (k < 3) {
+      std::cerr << "Error: -k must be at least 3.\n";
+      return false;
+    }
+    if (min_size < 1) {
+      std::cerr << "Error: -min_size must be at least 1.\n";
+      return false;
+    }
+    if (!(max_radius >= 0.0) || !std::isfinite (max_radius)) {
+      std::cerr << "Error: -max_radius must be finite and >= 0.\n";
+      return false;
+    }
+    if (!(max_distance >= 0.0)) {
+      std::cerr << "Error: -max_distance must be >= 0.\n";
+      return false;
+    }
+    if (!(max_distance_factor >= 0.0) || !std::isfinite (max_distance_factor)) {
+      std::cerr << "Error: -max_distance_factor must be finite and >= 0.\n";
+      return false;
+    }
+    if (!(parallel_angle >= 0.0 && parallel_angle <= 90.0)) {
+      std::cerr << "Error: -parallel_angle must lie between 0 and 90 degrees.\n";
+      return false;
+    }
+    if (reintegrate && keep_out) {
+      std::cerr << "Error: give -reintegrate or -no_reintegrate, not both.\n";
+      return false;
+    }
+    // Section 4's re-integration with -preset derived: it keeps in the segments the
+    // crease and border bands the classification leaves out (docs/belton_lichti.md has
+    // the figures).
+    reintegrate = reintegrate || (!keep_out && classification.preset == "derived");
+    return true;
+  }
+
+  /** \brief Whether section 4 runs (intersection points or re-integration). */
+  bool
+  intersects () const
+  {
+    return !intersections_path.empty() || reintegrate;
+  }
+
+  /** \brief Neighbourhoods of \a cloud as the segmentation searches them (k nearest,
+   * capped at max_radius), not yet computed. */
+  Neighbourhoods<pcl::PointXYZ>::Ptr
+  makeNeighbourhoods (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+                      unsigned int threads) const
+  {
+    auto nb = pcl::make_shared<Neighbourhoods<pcl::PointXYZ>>();
+    nb->setInputCloud (cloud);
+    nb->setKSearch (k);
+    nb->setMaxRadius (max_radius);
+    nb->setNumberOfThreads (threads);
+    return nb;
+  }
+
+  /** \brief Set up the classification (section 2) and the region growing (section 3) of
+   * \a cloud on its computed neighbourhoods \a nb; pcl_ext::segmentByLocalVariance
+   * then segments it. */
+  void
+  configure (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+             const Neighbourhoods<pcl::PointXYZ>::Ptr& nb,
+             unsigned int threads,
+             LocalVarianceClassification<pcl::PointXYZ>& classifier,
+             VarianceRegionGrowing<pcl::PointXYZ>& rg) const
+  {
+    classification.applyTo (classifier);
+    classifier.setNumberOfThreads (threads);
+    rg.setInputCloud (cloud);
+    rg.setNeighbourhoods (nb);
+    rg.setMaxDistance (max_distance);
+    rg.setMaxDistanceFactor (max_distance_factor);
+    rg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
+    rg.setNumberOfThreads (threads);
+  }
+};
+} // namespace apps
+} // namespace pcl_ext

@@ -1,0 +1,266 @@
+/*
+ * pcl_ext_tiles segment_variance run as a command: generated scenes segmented tile by
+ * tile, in one command, in steps and shared among MPI ranks, give the segments of
+ * pcl_ext_segment_variance on the whole cloud (the same partition of the points, and
+ * the same ids: largest first); a wall across four tiles' corner is one segment; a tile
+ * that owns no point, a tile of one point and points without coordinates change
+ * nothing.
+ */
+#include "../app_test.h"
+
+#include <pcl_ext/io/point_file.h>
+
+#include <pcl/PCLPointCloud2.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+/** An output's points (x, y relative to the file's origin) and segment ids. */
+struct Segments {
+  std::vector<float> x, y, z;
+  std::vector<std::uint32_t> ids;
+  std::vector<char> bytes; ///< the whole file
+};
+
+Segments
+readSegments (const std::string& path)
+{
+  Segments s;
+  std::ifstream in (path, std::ios::binary);
+  s.bytes.assign (std::istreambuf_iterator<char> (in),
+                  std::istreambuf_iterator<char>());
+  pcl_ext::io::PointFile file;
+  try {
+    pcl_ext::io::loadPointFile (path, file);
+  }
+  catch (const std::exception&) {
+    return s;
+  }
+  const auto& c = file.cloud;
+  int seg = -1;
+  for (std::size_t f = 0; f < c.fields.size(); ++f)
+    if (c.fields[f].name == "seg")
+      seg = static_cast<int> (f);
+  if (seg < 0 || c.fields[seg].datatype != pcl::PCLPointField::UINT32)
+    return s;
+  const std::size_t n = static_cast<std::size_t> (c.width) * c.height;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* p = c.data.data() + i * c.point_step;
+    float xyz[3];
+    std::memcpy (xyz, p, sizeof (xyz)); // x y z come first
+    std::uint32_t id;
+    std::memcpy (&id, p + c.fields[seg].offset, 4);
+    s.x.push_back (xyz[0]);
+    s.y.push_back (xyz[1]);
+    s.z.push_back (xyz[2]);
+    s.ids.push_back (id);
+  }
+  return s;
+}
+
+/** The points whose segment differs between \a a and \a b up to renumbering: in a
+ * segment in one and in none in the other, or breaking the one-to-one map of ids. */
+std::size_t
+differingPoints (const std::vector<std::uint32_t>& a,
+                 const std::vector<std::uint32_t>& b)
+{
+  if (a.size() != b.size())
+    return std::max (a.size(), b.size());
+  std::map<std::uint32_t, std::uint32_t> a_to_b, b_to_a;
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if ((a[i] == 0) != (b[i] == 0)) {
+      ++differ;
+      continue;
+    }
+    if (a[i] == 0)
+      continue;
+    const auto ab = a_to_b.emplace (a[i], b[i]).first;
+    const auto ba = b_to_a.emplace (b[i], a[i]).first;
+    differ += ab->second != b[i] || ba->second != a[i];
+  }
+  return differ;
+}
+
+class TilesSegmentsApp : public pcl_ext::test::AppTest {
+protected:
+  TilesSegmentsApp() : AppTest (PCL_EXT_TILES_EXE) {}
+
+  /** Generate \a scene (60,000 points) and segment it whole. */
+  void
+  makeScene (const std::string& scene)
+  {
+    const std::string generate = std::string (PCL_EXT_GENERATE_SCENE_EXE) + " " +
+                                 scene + " '" + path ("scene.pcd") +
+                                 "' -points 60000 -seed 2 > /dev/null 2>&1";
+    ASSERT_EQ (std::system (generate.c_str()), 0);
+    const std::string whole = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " '" +
+                              path ("scene.pcd") + "' '" + path ("whole.las") +
+                              "' -output_field seg > /dev/null 2>&1";
+    ASSERT_EQ (std::system (whole.c_str()), 0);
+    whole_ = readSegments (path ("whole.las"));
+    ASSERT_FALSE (whole_.ids.empty());
+    const std::set<std::uint32_t> ids (whole_.ids.begin(), whole_.ids.end());
+    ASSERT_GT (ids.size(), 10u); // a dozen segments or more
+  }
+
+  /** Segment the scene tile by tile into \a output with \a options. */
+  int
+  runTiled (const std::string& output, const std::string& options)
+  {
+    return run ("segment_variance '" + path ("scene.pcd") + "' '" + path (output) +
+                "' -output_field seg " + options);
+  }
+
+  void
+  expectSameAsWhole (const std::string& output)
+  {
+    const Segments tiled = readSegments (path (output));
+    EXPECT_EQ (tiled.ids.size(), whole_.ids.size()) << output;
+    EXPECT_EQ (differingPoints (whole_.ids, tiled.ids), 0u) << output;
+    EXPECT_TRUE (tiled.bytes == whole_.bytes) << output; // the ids too: largest first
+  }
+
+  Segments whole_;
+};
+} // namespace
+
+TEST_F (TilesSegmentsApp, AnyTileSizeGivesTheWholeCloudsSegments)
+{
+  makeScene ("indoor");
+  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3 -threads 1"), 0) << output_;
+  expectSameAsWhole ("t3.las");
+  // A halo far too small: the tiles widen themselves.
+  ASSERT_EQ (runTiled ("t7.las", "-tile_size 7 -halo 0.05"), 0) << output_;
+  expectSameAsWhole ("t7.las");
+}
+
+TEST_F (TilesSegmentsApp, AWallAcrossFourTilesCornerIsOneSegment)
+{
+  // The room's wall y = 0 lies on a row of tile borders (tiles on multiples of 3 m),
+  // its points on both sides of it (range noise); x = 3 is a column of borders. Its
+  // points around the corner (3, 0) lie in four tiles, and are one segment.
+  makeScene ("indoor");
+  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3"), 0) << output_;
+  const Segments tiled = readSegments (path ("t3.las"));
+  ASSERT_EQ (tiled.ids.size(), whole_.ids.size());
+  std::set<std::uint32_t> ids;
+  std::size_t in_quadrant[4] = {};
+  for (std::size_t i = 0; i < tiled.ids.size(); ++i) {
+    const float x = tiled.x[i], y = tiled.y[i], z = tiled.z[i];
+    if (std::abs (x - 3.0f) > 1.0f || std::abs (y) > 0.05f || z < 0.5f || z > 2.5f ||
+        tiled.ids[i] == 0)
+      continue;
+    ids.insert (tiled.ids[i]);
+    ++in_quadrant[(x >= 3.0f ? 1 : 0) + (y >= 0.0f ? 2 : 0)];
+  }
+  for (int q = 0; q < 4; ++q)
+    EXPECT_GT (in_quadrant[q], 0u) << "no wall point in quadrant " << q;
+  EXPECT_EQ (ids.size(), 1u);
+}
+
+TEST_F (TilesSegmentsApp, StepsInAnyOrderGiveTheSameSegments)
+{
+  makeScene ("indoor");
+  const std::string work = " -workdir " + path ("work");
+  ASSERT_EQ (run ("plan segment_variance " + path ("scene.pcd") + work +
+                  " -output_field seg -tile_size 4"),
+             0)
+      << output_;
+  std::size_t tiles = 0;
+  while (exists ("work/tile_" + std::to_string (tiles) + ".points"))
+    ++tiles;
+  ASSERT_GT (tiles, 2u);
+  for (std::size_t t = tiles; t-- > 0;)
+    ASSERT_EQ (run ("estimate " + std::to_string (t) + work), 0) << output_;
+  ASSERT_EQ (run ("merge " + path ("early.las") + work), 1); // no tile has run
+  for (std::size_t t = tiles; t-- > 0;)
+    ASSERT_EQ (run ("tile " + std::to_string (t) + work + " -threads 2"), 0) << output_;
+  ASSERT_EQ (run ("merge " + path ("steps.las") + work), 0) << output_;
+  expectSameAsWhole ("steps.las");
+}
+
+TEST_F (TilesSegmentsApp, ATileThatOwnsNoPointChangesNothing)
+{
+  // Spheres on the ground, far apart: 2 m tiles between them own no point.
+  makeScene ("spheres");
+  ASSERT_EQ (runTiled ("t2.las", "-tile_size 2"), 0) << output_;
+  EXPECT_NE (output_.find (": 0 points]"), std::string::npos) << output_;
+  expectSameAsWhole ("t2.las");
+}
+
+TEST_F (TilesSegmentsApp, ATileOfOnePointAndPointsWithoutCoordinates)
+{
+  // Two floor patches with a 20 cm step between them, a point alone in a 3 m tile of
+  // its own, and points with NaN coordinates (in no tile): segmented tile by tile as
+  // whole (PCD: LAS has no point without coordinates).
+  std::vector<std::string> points;
+  for (int i = 0; i <= 60; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const double x = 0.1 * i, y = 0.1 * j;
+      const double z = (x > 3.2 ? 0.2 : 0.0) + 0.002 * std::sin (7.0 * x + 3.0 * y);
+      points.push_back (std::to_string (x) + " " + std::to_string (y) + " " +
+                        std::to_string (z));
+      if ((i * 41 + j) % 500 == 0)
+        points.push_back ("nan nan nan");
+    }
+  points.push_back ("10.5 1.5 0.0"); // tile [9, 12) x [0, 3): this point alone
+  std::ofstream pcd (path ("scene.pcd"));
+  pcd << "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH "
+      << points.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS "
+      << points.size() << "\nDATA ascii\n";
+  for (const auto& p : points)
+    pcd << p << "\n";
+  pcd.close();
+  const std::string whole = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " '" +
+                            path ("scene.pcd") + "' '" + path ("whole.pcd") +
+                            "' -output_field seg > '" + path ("whole.log") + "' 2>&1";
+  ASSERT_EQ (std::system (whole.c_str()), 0);
+  whole_ = readSegments (path ("whole.pcd"));
+  ASSERT_EQ (whole_.ids.size(), points.size());
+  ASSERT_EQ (runTiled ("t3.pcd", "-tile_size 3"), 0) << output_;
+  EXPECT_NE (output_.find (": 1 points]"), std::string::npos) << output_;
+  expectSameAsWhole ("t3.pcd");
+  const std::set<std::uint32_t> ids (whole_.ids.begin(), whole_.ids.end());
+  EXPECT_GE (ids.size(), 3u); // the two patches and the unsegmented points
+}
+
+#ifdef PCL_EXT_MPIEXEC
+TEST_F (TilesSegmentsApp, MpiRanksGiveTheSameSegments)
+{
+  makeScene ("indoor");
+  for (const int ranks : {2, 4}) {
+    const std::string out = "mpi" + std::to_string (ranks) + ".las";
+    const std::string command =
+        std::string (PCL_EXT_MPIEXEC) + " --allow-run-as-root --oversubscribe -np " +
+        std::to_string (ranks) + " " + PCL_EXT_TILES_EXE + " segment_variance '" +
+        path ("scene.pcd") + "' '" + path (out) +
+        "' -output_field seg -tile_size 3 -threads 1 > '" + path ("mpi.log") + "' 2>&1";
+    ASSERT_EQ (std::system (command.c_str()), 0) << ranks << " ranks";
+    expectSameAsWhole (out);
+  }
+}
+#endif
+
+TEST_F (TilesSegmentsApp, WhatCannotRunTileByTileIsRefused)
+{
+  const std::string generate = std::string (PCL_EXT_GENERATE_SCENE_EXE) + " cubes '" +
+                               path ("scene.pcd") + "' -points 2000 > /dev/null 2>&1";
+  ASSERT_EQ (std::system (generate.c_str()), 0);
+  EXPECT_EQ (runTiled ("a.las", "-reintegrate"), 1);
+  EXPECT_NE (output_.find ("section 4"), std::string::npos) << output_;
+  EXPECT_EQ (runTiled ("a.las", "-intersections " + path ("i.pcd")), 1);
+  EXPECT_EQ (runTiled ("a.las", "-preset derived"), 1); // the noise, and section 4
+  EXPECT_EQ (runTiled ("a.las", "-min_size 0"), 1);
+  EXPECT_FALSE (exists ("a.las"));
+}

@@ -1,0 +1,176 @@
+/*
+ * Tests of pcl_ext::AutoProfileSegmentation: the configuration chosen from the cloud on
+ * analytic clouds whose answer is known.
+ */
+#include "profile_test_clouds.h"
+
+#include <pcl_ext/evaluation/segmentation_metrics.h>
+#include <pcl_ext/segmentation/auto_profile_segmentation.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using profile_test::addCube;
+using profile_test::addRectangle;
+using profile_test::LabelledCloud;
+using AutoSegmentation = pcl_ext::AutoProfileSegmentation<pcl::PointXYZ>;
+using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
+
+namespace {
+pcl_ext::SegmentationMetrics
+evaluate (const std::vector<pcl::PointIndices>& clusters, const LabelledCloud& scene)
+{
+  pcl_ext::SegmentationMetrics metrics;
+  EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, scene.labels, metrics));
+  return metrics;
+}
+
+/** Three cubes of one size a metre or more apart: proximity chaining separates them,
+ * and the largest holds a third of the points. */
+LabelledCloud
+threeCubes ()
+{
+  LabelledCloud scene;
+  std::mt19937 rng (3);
+  addCube (scene, {0, 0, 0}, Eigen::Matrix3d::Identity(), 0.8, 0.02, 1, rng);
+  addCube (scene,
+           {2.0, 0.3, 0.2},
+           Eigen::AngleAxisd (0.5, Eigen::Vector3d (1, 1, 0).normalized())
+               .toRotationMatrix(),
+           0.8,
+           0.02,
+           2,
+           rng);
+  addCube (scene,
+           {0.5, 2.2, -0.3},
+           Eigen::AngleAxisd (1.1, Eigen::Vector3d (0, 1, 2).normalized())
+               .toRotationMatrix(),
+           0.8,
+           0.02,
+           3,
+           rng);
+  return scene;
+}
+
+/** A floor and a wall meeting at a right angle, 2 mm noise at 2 cm spacing: one
+ * connected surface, two planes. */
+LabelledCloud
+floorAndWall ()
+{
+  LabelledCloud scene;
+  std::mt19937 rng (5);
+  addRectangle (scene, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.5, 1.5, 0.02, 1, rng, 0.002);
+  addRectangle (scene, {0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.5, 1.0, 0.02, 2, rng, 0.002);
+  return scene;
+}
+} // namespace
+
+TEST (AutoProfileSegmentation, SeparateObjectsKeepProximityChaining)
+{
+  const LabelledCloud scene = threeCubes();
+  AutoSegmentation automatic;
+  automatic.setInputCloud (scene.cloud);
+  std::vector<pcl::PointIndices> clusters;
+  automatic.extract (clusters);
+  EXPECT_FALSE (automatic.getConfiguration().curve_fitting);
+  EXPECT_FALSE (automatic.getCylindersJoined());
+  EXPECT_LT (automatic.getLargestProximityShare(), 0.5);
+  EXPECT_NEAR (automatic.getCloudStatistics().spacing, 0.02, 0.004);
+  ASSERT_EQ (clusters.size(), 3u);
+  EXPECT_DOUBLE_EQ (evaluate (clusters, scene).mean_best_iou, 1.0);
+
+  // The same segments as the paper's configuration.
+  Segmentation paper;
+  paper.setInputCloud (scene.cloud);
+  std::vector<pcl::PointIndices> expected;
+  paper.extract (expected);
+  ASSERT_EQ (expected.size(), clusters.size());
+  for (std::size_t i = 0; i < clusters.size(); ++i)
+    EXPECT_EQ (clusters[i].indices, expected[i].indices);
+}
+
+TEST (AutoProfileSegmentation, TouchingSurfacesChooseCurveFitting)
+{
+  // Proximity chaining gives one segment (the share is 1); curve fitting splits the
+  // crease, which the paper's configuration does not do unless told.
+  const LabelledCloud scene = floorAndWall();
+  Segmentation paper;
+  paper.setInputCloud (scene.cloud);
+  std::vector<pcl::PointIndices> proximity;
+  paper.extract (proximity);
+  ASSERT_EQ (proximity.size(), 1u);
+
+  AutoSegmentation automatic;
+  automatic.setInputCloud (scene.cloud);
+  std::vector<pcl::PointIndices> clusters;
+  automatic.extract (clusters);
+  EXPECT_DOUBLE_EQ (automatic.getLargestProximityShare(), 1.0);
+  EXPECT_TRUE (automatic.getConfiguration().curve_fitting);
+  EXPECT_TRUE (automatic.getConfiguration().side_frames);
+  EXPECT_FALSE (automatic.getConfiguration().local_threshold);
+  ASSERT_GE (clusters.size(), 2u);
+  const auto m = evaluate (clusters, scene);
+  EXPECT_EQ (m.correct, 2u);
+  EXPECT_GE (m.mean_best_iou, 0.9);
+  // The segments are reported in the coloured cloud too.
+  EXPECT_EQ (automatic.getColoredCloud()->size(), scene.cloud->size());
+}
+
+TEST (AutoProfileSegmentation, TheCallersSettingsAreKept)
+{
+  const LabelledCloud scene = floorAndWall();
+  AutoSegmentation automatic;
+  automatic.setInputCloud (scene.cloud);
+  automatic.setProfileSegmentation (Segmentation::ProfileMethod::MinimumSpanningTree);
+  automatic.setMinClusterSize (50);
+  std::vector<pcl::PointIndices> clusters;
+  automatic.extract (clusters);
+  ASSERT_TRUE (automatic.getConfiguration().curve_fitting);
+  for (const auto& c : clusters)
+    EXPECT_GE (c.indices.size(), 50u);
+  // What extract() chose is not left in the settings.
+  EXPECT_EQ (automatic.getProfileSegmentation(),
+             Segmentation::ProfileMethod::MinimumSpanningTree);
+  EXPECT_FALSE (automatic.getSideFrames());
+  EXPECT_FALSE (automatic.getCorrectedAic());
+  EXPECT_DOUBLE_EQ (automatic.getTurnSignificance(), 0.0);
+  EXPECT_DOUBLE_EQ (automatic.getProfileWidthFactor(), 1.5);
+}
+
+TEST (AutoProfileSegmentation, DeterministicForAnyThreadCount)
+{
+  const LabelledCloud scene = floorAndWall();
+  std::vector<pcl::PointIndices> one, two;
+  for (const unsigned int threads : {1u, 2u}) {
+    AutoSegmentation automatic;
+    automatic.setInputCloud (scene.cloud);
+    automatic.setNumberOfThreads (threads);
+    automatic.extract (threads == 1 ? one : two);
+  }
+  ASSERT_EQ (one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i)
+    EXPECT_EQ (one[i].indices, two[i].indices);
+}
+
+TEST (AutoProfileSegmentation, BadInputGivesNoSegments)
+{
+  AutoSegmentation automatic;
+  std::vector<pcl::PointIndices> clusters (1);
+  automatic.extract (clusters); // no input cloud
+  EXPECT_TRUE (clusters.empty());
+  EXPECT_FALSE (automatic.getConfiguration().curve_fitting);
+
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  cloud->push_back (pcl::PointXYZ (nan, nan, nan));
+  automatic.setInputCloud (cloud);
+  automatic.extract (clusters);
+  EXPECT_TRUE (clusters.empty());
+
+  automatic.setInputCloud (threeCubes().cloud);
+  automatic.setNumberOfStacks (0);
+  automatic.extract (clusters);
+  EXPECT_TRUE (clusters.empty());
+  EXPECT_FALSE (automatic.getCylindersJoined());
+}
