@@ -105,9 +105,7 @@ main (int argc, char** argv)
   std::vector<std::uint32_t> classes (labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i)
     classes[i] = labels[i].label;
-  pcl::PCLPointCloud2 output = input.cloud;
-  if (!result.attach (output, classes) ||
-      !pcl_ext::apps::saveOutput (output_path, output, input))
+  if (!result.save (output_path, input, classes))
     return 1;
 
   if (!png_path.empty()) {

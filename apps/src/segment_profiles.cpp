@@ -388,9 +388,7 @@ main (int argc, char** argv)
   std::vector<std::uint32_t> ids (labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i)
     ids[i] = labels[i].label;
-  pcl::PCLPointCloud2 output = input.cloud;
-  if (!result.attach (output, ids) ||
-      !pcl_ext::apps::saveOutput (output_path, output, input))
+  if (!result.save (output_path, input, ids))
     return 1;
 
   if (!png_path.empty() || !png_profiles_path.empty()) {

@@ -11,9 +11,29 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <initializer_list>
 #include <set>
 
 namespace pcl_ext {
+namespace {
+/** The one of \a values whose name (\a name) is \a text, into \a value; false when
+ * none is. */
+template <typename Enum>
+bool
+parseByName (const std::string& text,
+             std::initializer_list<Enum> values,
+             const char* (*name) (Enum),
+             Enum& value)
+{
+  for (const Enum v : values)
+    if (text == name (v)) {
+      value = v;
+      return true;
+    }
+  return false;
+}
+} // namespace
+
 const char*
 crfModeName (CrfMode mode)
 {
@@ -30,12 +50,10 @@ crfModeName (CrfMode mode)
 bool
 parseCrfMode (const std::string& text, CrfMode& mode)
 {
-  for (const CrfMode m : {CrfMode::NodeOnly, CrfMode::LocalCrf, CrfMode::MultiscaleCrf})
-    if (text == crfModeName (m)) {
-      mode = m;
-      return true;
-    }
-  return false;
+  return parseByName (text,
+                      {CrfMode::NodeOnly, CrfMode::LocalCrf, CrfMode::MultiscaleCrf},
+                      crfModeName,
+                      mode);
 }
 
 const char*
@@ -54,14 +72,12 @@ crfNodeExpansionName (CrfNodeExpansion expansion)
 bool
 parseCrfNodeExpansion (const std::string& text, CrfNodeExpansion& expansion)
 {
-  for (const CrfNodeExpansion e : {CrfNodeExpansion::Linear,
-                                   CrfNodeExpansion::Spline,
-                                   CrfNodeExpansion::SplineProducts})
-    if (text == crfNodeExpansionName (e)) {
-      expansion = e;
-      return true;
-    }
-  return false;
+  return parseByName (text,
+                      {CrfNodeExpansion::Linear,
+                       CrfNodeExpansion::Spline,
+                       CrfNodeExpansion::SplineProducts},
+                      crfNodeExpansionName,
+                      expansion);
 }
 
 const char*
@@ -73,12 +89,10 @@ crfNodeModelName (CrfNodeModel model)
 bool
 parseCrfNodeModel (const std::string& text, CrfNodeModel& model)
 {
-  for (const auto m : {CrfNodeModel::Logistic, CrfNodeModel::BoostedTrees})
-    if (text == crfNodeModelName (m)) {
-      model = m;
-      return true;
-    }
-  return false;
+  return parseByName (text,
+                      {CrfNodeModel::Logistic, CrfNodeModel::BoostedTrees},
+                      crfNodeModelName,
+                      model);
 }
 
 bool

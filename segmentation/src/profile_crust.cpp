@@ -24,20 +24,10 @@ crustEdges (const ProfilePoints& profile,
   if (n < 2 || !(threshold >= 0.0))
     return;
   const std::vector<std::uint32_t> rep = detail::coincidentRepresentatives (profile.uv);
-  const float radius = static_cast<float> (threshold);
-  detail::ProfileGrid grid;
-  grid.build (
-      profile.uv,
-      (thresholds && !thresholds->empty()
-           ? std::min (*std::min_element (thresholds->begin(), thresholds->end()),
-                       radius)
-           : radius) /
-          3.f);
-  const auto limit = [&] (std::uint32_t i) {
-    return thresholds ? std::min ((*thresholds)[i], radius) : radius;
-  };
-  const std::int64_t max_ring =
-      static_cast<std::int64_t> (std::ceil (radius / grid.cellSize())) + 1;
+  const detail::ThresholdRings rings (profile.uv, threshold, thresholds);
+  const detail::ProfileGrid& grid = rings.grid();
+  const std::int64_t max_ring = rings.maxRing();
+  const auto limit = [&rings] (std::uint32_t i) { return rings.reach (i); };
   std::vector<std::pair<float, std::uint32_t>> best;
   for (std::uint32_t i = 0; i < n; ++i) {
     if (rep[i] != i) {

@@ -199,6 +199,54 @@ private:
   std::vector<std::uint32_t> begin_;
   std::vector<std::uint32_t> rows_;
 };
+/** \brief The grid of nearest-neighbour searches ring by ring (ProfileGrid::
+ * nearestInRings) among a profile's points within \a threshold, or, with local
+ * \a thresholds, within each point's own threshold capped at \a threshold. Small cells,
+ * a third of the shortest threshold: in dense parts of a profile the nearest are found
+ * in the first rings, and the threshold only bounds the search in sparse parts. */
+class ThresholdRings {
+public:
+  ThresholdRings (const std::vector<Eigen::Vector2f>& uv,
+                  double threshold,
+                  const std::vector<float>* thresholds)
+  : radius_ (static_cast<float> (threshold)), thresholds_ (thresholds)
+  {
+    grid_.build (
+        uv,
+        (thresholds && !thresholds->empty()
+             ? std::min (*std::min_element (thresholds->begin(), thresholds->end()),
+                         radius_)
+             : radius_) /
+            3.f);
+    max_ring_ = static_cast<std::int64_t> (std::ceil (radius_ / grid_.cellSize())) + 1;
+  }
+
+  const ProfileGrid&
+  grid () const
+  {
+    return grid_;
+  }
+
+  /** \brief The ring beyond which no point is within the threshold. */
+  std::int64_t
+  maxRing () const
+  {
+    return max_ring_;
+  }
+
+  /** \brief Point \a i's search radius: its threshold, at most the global one. */
+  float
+  reach (std::uint32_t i) const
+  {
+    return thresholds_ ? std::min ((*thresholds_)[i], radius_) : radius_;
+  }
+
+private:
+  float radius_;
+  const std::vector<float>* thresholds_;
+  ProfileGrid grid_;
+  std::int64_t max_ring_ = 0;
+};
 } // namespace detail
 } // namespace profiles
 } // namespace pcl_ext

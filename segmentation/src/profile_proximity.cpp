@@ -24,22 +24,10 @@ proximityEdges (const ProfilePoints& profile,
   if (n < 2 || !(threshold >= 0.0) || neighbours == 0)
     return;
   const std::vector<std::uint32_t> rep = detail::coincidentRepresentatives (profile.uv);
-  // Small cells searched ring by ring: in dense parts of a profile the k nearest are
-  // found in the first rings, and the threshold only bounds the search in sparse parts.
-  const float radius = static_cast<float> (threshold);
-  detail::ProfileGrid grid;
-  grid.build (
-      profile.uv,
-      (thresholds && !thresholds->empty()
-           ? std::min (*std::min_element (thresholds->begin(), thresholds->end()),
-                       radius)
-           : radius) /
-          3.f);
-  const auto limit = [&] (std::uint32_t i) {
-    return thresholds ? std::min ((*thresholds)[i], radius) : radius;
-  };
-  const std::int64_t max_ring =
-      static_cast<std::int64_t> (std::ceil (radius / grid.cellSize())) + 1;
+  const detail::ThresholdRings rings (profile.uv, threshold, thresholds);
+  const detail::ProfileGrid& grid = rings.grid();
+  const std::int64_t max_ring = rings.maxRing();
+  const auto limit = [&rings] (std::uint32_t i) { return rings.reach (i); };
   const std::size_t k = neighbours;
   // The k nearest of each point (ties by index), kept sorted by insertion.
   std::vector<std::uint32_t> lists (n * k);

@@ -173,27 +173,41 @@ matchOf (const pcl_ext::SegmentationMetrics& m, std::uint32_t truth_label)
         return s.truth_label == truth_label;
       });
 }
+
+/** The tree scene of figure 14 (a tree on flat ground, 275,000 points) and two of its
+ * truth segments: the trunk, the surface of most trunk points below 3 m (the first
+ * branch starts above 3.7 m), and the ground, of most terrain points below 1 m. */
+struct TreeScene {
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
+  std::vector<std::uint32_t> truth, labels;
+  std::uint32_t trunk = 0, ground = 0;
+};
+
+TreeScene
+loadTreeScene ()
+{
+  TreeScene tree;
+  loadScene ("tree", true, tree.cloud, tree.truth, &tree.labels);
+  tree.trunk = dominantSegment (
+      *tree.cloud,
+      tree.truth,
+      tree.labels,
+      static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Trunk),
+      3.0f);
+  tree.ground = dominantSegment (
+      *tree.cloud,
+      tree.truth,
+      tree.labels,
+      static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Terrain),
+      1.0f);
+  return tree;
+}
 } // namespace
 
 TEST (ProfileSegmentationScenes, TreeTrunkIsSeparatedFromTheGroundByCurveFitting)
 {
-  // Figure 14: a tree on flat ground, 275,000 points. The trunk is the surface of most
-  // trunk points below the first branch (which starts above 3.7 m).
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
-  std::vector<std::uint32_t> truth, labels;
-  loadScene ("tree", true, cloud, truth, &labels);
-  const auto trunk = dominantSegment (
-      *cloud,
-      truth,
-      labels,
-      static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Trunk),
-      3.0f);
-  const auto ground = dominantSegment (
-      *cloud,
-      truth,
-      labels,
-      static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Terrain),
-      1.0f);
+  // Figure 14: a tree on flat ground, 275,000 points.
+  const auto [cloud, truth, labels, trunk, ground] = loadTreeScene();
   // Proximity: the trunk touches the ground, and trunk and ground are one segment.
   const auto proximity = segment (cloud, truth);
   report ("tree trunk, proximity", matchOf (proximity, trunk));
@@ -223,15 +237,9 @@ TEST (ProfileSegmentationScenes, SideFramesKeepTheTrunkWhole)
   // removes the bands where the trunk is thick. Scene: the tree with the ground cut
   // to 1.5 m around the trunk, at the whole scene's spacing (0.027 m), which keeps the
   // trunk-ground crease and the crown in a few seconds.
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
-  std::vector<std::uint32_t> truth, labels;
-  loadScene ("tree", true, cloud, truth, &labels);
+  const auto [cloud, truth, labels, trunk, ground] = loadTreeScene();
   const auto terrain =
       static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Terrain);
-  const auto trunk_label =
-      static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Trunk);
-  const auto trunk = dominantSegment (*cloud, truth, labels, trunk_label, 3.0f);
-  const auto ground = dominantSegment (*cloud, truth, labels, terrain, 1.0f);
   pcl::IndicesPtr kept (new pcl::Indices);
   std::vector<std::uint32_t> kept_truth (truth.size(), 0);
   for (std::size_t i = 0; i < cloud->size(); ++i) {
@@ -271,21 +279,7 @@ TEST (ProfileSegmentationScenes, TreeTrunkIsOneSegmentAfterTheCylinderJoin)
   // crown). Those pieces lie on the trunk's cone: CylinderSegmentJoin (cones allowed,
   // radii compared where two pieces face each other) joins them to the lower trunk, and
   // the fragments at the branch junctions that lie on the joined surface follow.
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
-  std::vector<std::uint32_t> truth, labels;
-  loadScene ("tree", true, cloud, truth, &labels);
-  const auto trunk = dominantSegment (
-      *cloud,
-      truth,
-      labels,
-      static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Trunk),
-      3.0f);
-  const auto ground = dominantSegment (
-      *cloud,
-      truth,
-      labels,
-      static_cast<std::uint32_t> (pcl_ext::simulation::OutdoorLabel::Terrain),
-      1.0f);
+  const auto [cloud, truth, labels, trunk, ground] = loadTreeScene();
   Segmentation seg;
   seg.setInputCloud (cloud);
   seg.setProfileSegmentation (Segmentation::ProfileMethod::CurveFitting);

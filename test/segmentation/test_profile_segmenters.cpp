@@ -280,6 +280,26 @@ TEST (CurveFit, AicCountsTheNoiseVariance)
   }
 }
 
+namespace {
+/** The curve fitting's scores of \a profile, straight chains of points 0.01 apart with
+ * noise across them: chains of the spanning tree at 0.02, window 0.105, tangent radius
+ * 0.04, corrected AIC. */
+CurveScores
+scoreNoisyChains (const ProfilePoints& profile)
+{
+  std::vector<LocalEdge> chain;
+  spanningTreeEdges (profile, 0.02, chain);
+  CurveFitParameters p;
+  p.threshold = 0.02;
+  p.window = 0.105;
+  p.tangent_radius = 0.04;
+  p.corrected_aic = true;
+  CurveScores scores;
+  scoreCurveTurns (profile, chain, p, scores);
+  return scores;
+}
+} // namespace
+
 TEST (CurveFit, ResidualRmsIsTheNoise)
 {
   // Many short straight chains, one profile: each is clean to the left of its middle
@@ -301,15 +321,7 @@ TEST (CurveFit, ResidualRmsIsTheNoise)
                                static_cast<float> (i >= 0 ? noise (rng) : 0.0));
       profile.t.push_back (static_cast<float> (across (rng)));
     }
-  std::vector<LocalEdge> chain;
-  spanningTreeEdges (profile, 0.02, chain);
-  CurveFitParameters p;
-  p.threshold = 0.02;
-  p.window = 0.105;
-  p.tangent_radius = 0.04;
-  p.corrected_aic = true;
-  CurveScores scores;
-  scoreCurveTurns (profile, chain, p, scores);
+  const CurveScores scores = scoreNoisyChains (profile);
   double sum = 0.0;
   for (const std::uint32_t i : middles) {
     ASSERT_TRUE (scores.evaluated[i]);
@@ -336,15 +348,7 @@ TEST (CurveFit, NoiseIsTheNoiseSigma)
                                static_cast<float> (noise (rng)));
       profile.t.push_back (static_cast<float> (across (rng)));
     }
-  std::vector<LocalEdge> chain;
-  spanningTreeEdges (profile, 0.02, chain);
-  CurveFitParameters p;
-  p.threshold = 0.02;
-  p.window = 0.105;
-  p.tangent_radius = 0.04;
-  p.corrected_aic = true;
-  CurveScores scores;
-  scoreCurveTurns (profile, chain, p, scores);
+  const CurveScores scores = scoreNoisyChains (profile);
   std::vector<float> pooled, larger;
   for (std::size_t i = 0; i < profile.uv.size(); ++i)
     if (scores.evaluated[i]) {

@@ -97,6 +97,15 @@ ResultField::attach (pcl::PCLPointCloud2& cloud,
 }
 
 bool
+ResultField::save (const std::string& path,
+                   const io::PointFile& input,
+                   const std::vector<std::uint32_t>& values) const
+{
+  pcl::PCLPointCloud2 output = input.cloud;
+  return attach (output, values) && saveOutput (path, output, input);
+}
+
+bool
 saveOutput (const std::string& path,
             const pcl::PCLPointCloud2& cloud,
             const io::PointFile& input)

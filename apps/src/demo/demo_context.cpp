@@ -4,7 +4,9 @@
 #include "demo_context.h"
 
 #include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/io/cloud_io.h>
 
+#include <fstream>
 #include <iostream>
 
 namespace pcl_ext {
@@ -31,6 +33,22 @@ DemoContext::scene (const std::string& name)
           << ms << " ms\n";
   slot = std::move (scene);
   return slot.get();
+}
+
+pcl::PointCloud<pcl::PointXYZ>::Ptr
+DemoContext::loadRoomScan()
+{
+  if (shared_data_dir.empty())
+    return nullptr;
+  const std::string room = shared_data_dir + "/pcl_data_tutorials/room_scan1.pcd";
+  if (!std::ifstream (room).good()) {
+    summary << "  room_scan1.pcd: not found under " << shared_data_dir << ", skipped\n";
+    return nullptr;
+  }
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  if (!io::loadCloud (room, *cloud))
+    cloud->clear();
+  return cloud;
 }
 
 std::string

@@ -6,6 +6,9 @@
 #include <pcl_ext/simulation/scenes.h>
 #include <pcl_ext/visualization/offscreen_renderer.h>
 
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
 #include <map>
 #include <memory>
 #include <sstream>
@@ -35,6 +38,12 @@ struct DemoContext {
   render (const std::vector<visualization::View>& views,
           const std::string& file,
           const visualization::RenderOptions& options = visualization::RenderOptions());
+
+  /** \brief PCL's room_scan1.pcd from the shared data folder, for the steps that also
+   * run on a real scan: null when there is none (no folder given, or not in it, which
+   * the summary notes); an empty cloud when it could not be read. */
+  pcl::PointCloud<pcl::PointXYZ>::Ptr
+  loadRoomScan ();
 
   /** \brief Path of \a file inside the output folder. */
   std::string

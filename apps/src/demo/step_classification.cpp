@@ -8,13 +8,10 @@
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/evaluation/classification_metrics.h>
 #include <pcl_ext/point_types.h>
-#include <pcl_ext/io/cloud_io.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
 
 #include <pcl/common/io.h>
-
-#include <fstream>
 
 namespace pcl_ext {
 namespace demo {
@@ -87,18 +84,10 @@ runClassificationStep (DemoContext& context)
                             options);
 
   // A real indoor scan, when available.
-  if (context.shared_data_dir.empty())
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr real = context.loadRoomScan();
+  if (!real)
     return ok;
-  const std::string room =
-      context.shared_data_dir + "/pcl_data_tutorials/room_scan1.pcd";
-  if (!std::ifstream (room).good()) {
-    context.summary << "  room_scan1.pcd: not found under " << context.shared_data_dir
-                    << ", skipped\n";
-    return ok;
-  }
-  pcl::PointCloud<pcl::PointXYZ>::Ptr real (new pcl::PointCloud<pcl::PointXYZ>);
-  if (!io::loadCloud (room, *real) ||
-      !classify (context, real, "room_scan1", predicted))
+  if (real->empty() || !classify (context, real, "room_scan1", predicted))
     return false;
   RenderOptions room_options;
   room_options.width = 1200;

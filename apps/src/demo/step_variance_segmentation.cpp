@@ -10,7 +10,6 @@
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
-#include <pcl_ext/io/cloud_io.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/visualization/colour_maps.h>
 #include <pcl_ext/visualization/montage.h>
@@ -19,7 +18,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 
 namespace pcl_ext {
@@ -170,18 +168,10 @@ runVarianceSegmentationStep (DemoContext& context)
       options);
 
   // A real indoor scan, when available.
-  if (context.shared_data_dir.empty())
+  const pcl::PointCloud<pcl::PointXYZ>::Ptr real = context.loadRoomScan();
+  if (!real)
     return ok;
-  const std::string room =
-      context.shared_data_dir + "/pcl_data_tutorials/room_scan1.pcd";
-  if (!std::ifstream (room).good()) {
-    context.summary << "  room_scan1.pcd: not found under " << context.shared_data_dir
-                    << ", skipped\n";
-    return ok;
-  }
-  pcl::PointCloud<pcl::PointXYZ>::Ptr real (new pcl::PointCloud<pcl::PointXYZ>);
-  if (!io::loadCloud (room, *real) ||
-      !segment (context, real, "room_scan1", predicted, intersections))
+  if (real->empty() || !segment (context, real, "room_scan1", predicted, intersections))
     return false;
   RenderOptions room_options;
   room_options.width = 1200;

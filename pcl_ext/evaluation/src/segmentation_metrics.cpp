@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 namespace pcl_ext {
 namespace {
@@ -46,6 +47,34 @@ struct Overlap {
   std::size_t other; // dense id of the segment in the other labelling
   std::size_t count;
 };
+
+/** Hoover et al.'s over- or under-segmentation of one segment of \a size points, whose
+ * overlaps with the other labelling are \a overlaps: the unused segments of the other
+ * labelling (sizes \a other_size) with at least T of their points in it, when there
+ * are two or more and they hold at least T of its points. Those are marked used in
+ * \a other_used and returned (their dense ids); none otherwise. \a covers (overlap,
+ * size) tells overlap >= T size. */
+template <typename Covers>
+std::vector<std::size_t>
+claimParts (const std::vector<Overlap>& overlaps,
+            std::size_t size,
+            const std::vector<std::size_t>& other_size,
+            std::vector<bool>& other_used,
+            const Covers& covers)
+{
+  std::vector<std::size_t> parts;
+  std::size_t covered = 0;
+  for (const Overlap& o : overlaps)
+    if (!other_used[o.other] && covers (o.count, other_size[o.other])) {
+      parts.push_back (o.other);
+      covered += o.count;
+    }
+  if (parts.size() < 2 || !covers (covered, size))
+    return {};
+  for (const std::size_t other : parts)
+    other_used[other] = true;
+  return parts;
+}
 } // namespace
 
 const char*
@@ -167,42 +196,27 @@ evaluateSegmentation (const std::vector<std::uint32_t>& predicted,
   for (std::size_t t = 0; t < num_truth; ++t) {
     if (truth_used[t])
       continue;
-    std::size_t parts = 0, covered = 0;
-    for (const Overlap& o : by_truth[t])
-      if (!predicted_used[o.other] && covers (o.count, psize[o.other])) {
-        ++parts;
-        covered += o.count;
-      }
-    if (parts < 2 || !covers (covered, tsize[t]))
+    const std::vector<std::size_t> parts =
+        claimParts (by_truth[t], tsize[t], psize, predicted_used, covers);
+    if (parts.empty())
       continue;
     matches[t].outcome = SegmentOutcome::OverSegmented;
     truth_used[t] = true;
     ++metrics.over_segmented;
-    for (const Overlap& o : by_truth[t])
-      if (!predicted_used[o.other] && covers (o.count, psize[o.other])) {
-        predicted_used[o.other] = true;
-        ++metrics.over_segmenting;
-      }
+    metrics.over_segmenting += parts.size();
   }
   for (std::size_t p = 0; p < num_predicted; ++p) {
     if (predicted_used[p])
       continue;
-    std::size_t parts = 0, covered = 0;
-    for (const Overlap& o : by_predicted[p])
-      if (!truth_used[o.other] && covers (o.count, tsize[o.other])) {
-        ++parts;
-        covered += o.count;
-      }
-    if (parts < 2 || !covers (covered, psize[p]))
+    const std::vector<std::size_t> parts =
+        claimParts (by_predicted[p], psize[p], tsize, truth_used, covers);
+    if (parts.empty())
       continue;
     predicted_used[p] = true;
     ++metrics.under_segmenting;
-    for (const Overlap& o : by_predicted[p])
-      if (!truth_used[o.other] && covers (o.count, tsize[o.other])) {
-        truth_used[o.other] = true;
-        matches[o.other].outcome = SegmentOutcome::UnderSegmented;
-        ++metrics.under_segmented;
-      }
+    metrics.under_segmented += parts.size();
+    for (const std::size_t t : parts)
+      matches[t].outcome = SegmentOutcome::UnderSegmented;
   }
   metrics.missed = static_cast<std::size_t> (
       std::count (truth_used.begin(), truth_used.end(), false));

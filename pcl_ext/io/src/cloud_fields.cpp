@@ -3,6 +3,8 @@
  */
 #include <pcl_ext/io/cloud_fields.h>
 
+#include "cloud_repack.h"
+
 #include <pcl/PCLPointField.h>
 #include <pcl/common/io.h>
 
@@ -13,41 +15,6 @@
 namespace pcl_ext {
 namespace io {
 namespace {
-template <typename T>
-T
-load (const std::uint8_t* p)
-{
-  T v;
-  std::memcpy (&v, p, sizeof (T));
-  return v;
-}
-
-/** Value as double (exact for every integer type up to 32 bits). */
-double
-valueAt (const std::uint8_t* p, std::uint8_t type)
-{
-  switch (type) {
-  case pcl::PCLPointField::INT8:
-    return load<std::int8_t> (p);
-  case pcl::PCLPointField::UINT8:
-    return load<std::uint8_t> (p);
-  case pcl::PCLPointField::INT16:
-    return load<std::int16_t> (p);
-  case pcl::PCLPointField::UINT16:
-    return load<std::uint16_t> (p);
-  case pcl::PCLPointField::INT32:
-    return load<std::int32_t> (p);
-  case pcl::PCLPointField::UINT32:
-    return load<std::uint32_t> (p);
-  case pcl::PCLPointField::FLOAT32:
-    return load<float> (p);
-  case pcl::PCLPointField::FLOAT64:
-    return load<double> (p);
-  default:
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-}
-
 std::size_t
 typeSize (std::uint8_t type)
 {
@@ -95,8 +62,8 @@ getLabelField (const pcl::PCLPointCloud2& cloud,
                  " points");
   std::vector<std::uint32_t> result (n);
   for (std::size_t i = 0; i < n; ++i) {
-    const double v = valueAt (cloud.data.data() + i * cloud.point_step + field.offset,
-                              field.datatype);
+    const double v = detail::readNumber (
+        cloud.data.data() + i * cloud.point_step + field.offset, field.datatype);
     if (std::isnan (v) || v < 0.0)
       result[i] = 0;
     else if (v != std::floor (v) || v > std::numeric_limits<std::uint32_t>::max())

@@ -3,6 +3,8 @@
  */
 #include <pcl_ext/tiling/tile_points.h>
 
+#include "record_file.h"
+
 #include <pcl/console/print.h>
 
 #include <cstring>
@@ -95,22 +97,19 @@ readTilePoints (const std::string& folder,
 {
   points.clear();
   const std::string path = tilePointsPath (folder, tile);
-  std::ifstream in (path, std::ios::binary | std::ios::ate);
-  if (!in) {
+  std::vector<char> data;
+  const detail::RecordFileRead read = detail::readRecordFile (path, kRecordBytes, data);
+  if (read == detail::RecordFileRead::CannotOpen) {
     PCL_ERROR ("[pcl_ext::tiling::readTilePoints] cannot open %s.\n", path.c_str());
     return false;
   }
-  const std::streamoff bytes = in.tellg();
-  if (bytes < 0 || bytes % static_cast<std::streamoff> (kRecordBytes) != 0) {
+  if (read == detail::RecordFileRead::NotWholeRecords) {
     PCL_ERROR (
         "[pcl_ext::tiling::readTilePoints] %s is not a whole number of points.\n",
         path.c_str());
     return false;
   }
-  in.seekg (0);
-  std::vector<char> data (static_cast<std::size_t> (bytes));
-  in.read (data.data(), bytes);
-  if (!in) {
+  if (read == detail::RecordFileRead::CannotRead) {
     PCL_ERROR ("[pcl_ext::tiling::readTilePoints] cannot read %s.\n", path.c_str());
     return false;
   }

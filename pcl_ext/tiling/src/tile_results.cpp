@@ -3,6 +3,8 @@
  */
 #include <pcl_ext/tiling/tile_results.h>
 
+#include "record_file.h"
+
 #include <pcl_ext/io/file_output.h>
 
 #include <pcl/console/print.h>
@@ -136,19 +138,15 @@ readRecords (const std::string& path,
              std::size_t tile,
              std::vector<char>& bytes)
 {
-  bytes.clear();
-  std::ifstream in (path, std::ios::binary | std::ios::ate);
-  const std::streamoff length = in ? static_cast<std::streamoff> (in.tellg()) : -1;
-  if (length < 0 || length % static_cast<std::streamoff> (size) != 0) {
+  const detail::RecordFileRead read = detail::readRecordFile (path, size, bytes);
+  if (read == detail::RecordFileRead::CannotOpen ||
+      read == detail::RecordFileRead::NotWholeRecords) {
     PCL_ERROR ("[pcl_ext::tiling] %s is missing (tile %zu not run) or broken.\n",
                path.c_str(),
                tile);
     return false;
   }
-  in.seekg (0);
-  bytes.resize (static_cast<std::size_t> (length));
-  in.read (bytes.data(), length);
-  if (!in) {
+  if (read == detail::RecordFileRead::CannotRead) {
     PCL_ERROR ("[pcl_ext::tiling] cannot read %s.\n", path.c_str());
     return false;
   }

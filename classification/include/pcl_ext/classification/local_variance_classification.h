@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pcl_ext/common/noise_estimation.h>
+#include <pcl_ext/features/centroid_offset_test_options.h>
 #include <pcl_ext/search/neighbourhood_options.h>
 #include <pcl_ext/point_types.h>
 
@@ -71,7 +72,8 @@ namespace pcl_ext {
  */
 template <typename PointT>
 class LocalVarianceClassification : public pcl::PCLBase<PointT>,
-                                    public NeighbourhoodOptions<PointT> {
+                                    public NeighbourhoodOptions<PointT>,
+                                    public CentroidOffsetTestOptions {
 public:
   using Ptr = pcl::shared_ptr<LocalVarianceClassification<PointT>>;
   using ConstPtr = pcl::shared_ptr<const LocalVarianceClassification<PointT>>;
@@ -305,34 +307,6 @@ public:
     return crease_angle_;
   }
 
-  /** \brief Confidence level of the boundary test (alpha of chi2_2(alpha), eq. 6).
-   * Default 0.95; valid: 0 < confidence < 1. */
-  void
-  setConfidence (double confidence)
-  {
-    confidence_ = confidence;
-  }
-
-  double
-  getConfidence () const
-  {
-    return confidence_;
-  }
-
-  /** \brief Scale eq. 6 by the neighbourhood size (default true; false: the printed
-   * form, see pcl_ext::centroidOffsetStatistic). */
-  void
-  setScaleByNeighbourhoodSize (bool scale)
-  {
-    scale_by_size_ = scale;
-  }
-
-  bool
-  getScaleByNeighbourhoodSize () const
-  {
-    return scale_by_size_;
-  }
-
   /** \brief Give the boundary class the reach of the edge class. Default false (the
    * paper): a point is boundary when it fails eq. 6 itself, which happens within about
    * half a neighbourhood radius of a border (farther in, the missing side moves the
@@ -449,8 +423,6 @@ protected:
   bool boundary_band_ = false;
   double boundary_band_fraction_ = 1.0;
   double crease_angle_ = 0.0;
-  double confidence_ = 0.95;
-  bool scale_by_size_ = true;
   unsigned int tests_ = ALL_TESTS;
 
   std::vector<float> kappa_;     ///< per point of the cloud; NaN when not computed

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <pcl_ext/features/centroid_offset_test_options.h>
 #include <pcl_ext/features/neighbourhood_feature.h>
 
 #include <pcl/features/feature.h>
@@ -38,7 +39,8 @@ namespace pcl_ext {
  */
 template <typename PointInT, typename PointOutT = pcl::Boundary>
 class ChiSquaredBoundaryEstimation
-: public NeighbourhoodFeature<pcl::Feature<PointInT, PointOutT>, PointInT> {
+: public NeighbourhoodFeature<pcl::Feature<PointInT, PointOutT>, PointInT>,
+  public CentroidOffsetTestOptions {
   using Base = NeighbourhoodFeature<pcl::Feature<PointInT, PointOutT>, PointInT>;
 
 public:
@@ -50,35 +52,6 @@ public:
   ChiSquaredBoundaryEstimation()
   {
     this->feature_name_ = "ChiSquaredBoundaryEstimation";
-  }
-
-  /** \brief Confidence level of the region around the centroid (the paper's alpha in
-   * chi2_2(alpha), eq. 6). Valid: 0 < confidence < 1. Default 0.95 (quantile 5.991).
-   * Higher values find fewer boundary points. */
-  void
-  setConfidence (double confidence)
-  {
-    confidence_ = confidence;
-  }
-
-  double
-  getConfidence () const
-  {
-    return confidence_;
-  }
-
-  /** \brief Multiply eq. 6 by the neighbourhood size n (the centroid's confidence
-   * region). Default true; false gives the printed eq. 6. */
-  void
-  setScaleByNeighbourhoodSize (bool scale)
-  {
-    scale_by_size_ = scale;
-  }
-
-  bool
-  getScaleByNeighbourhoodSize () const
-  {
-    return scale_by_size_;
   }
 
   /** \brief Range noise standard deviation sigma of the scanner, in the cloud's units.
@@ -116,8 +89,6 @@ protected:
   bool
   computePoint (std::size_t row, double quantile, PointOutT& out) const;
 
-  double confidence_ = 0.95;
-  bool scale_by_size_ = true;
   double noise_sigma_ = 0.0;
 };
 } // namespace pcl_ext

@@ -3,6 +3,7 @@
  */
 #pragma once
 
+#include <pcl_ext/segmentation/cluster_size_limits.h>
 #include <pcl_ext/segmentation/profile_graph.h>
 #include <pcl_ext/segmentation/profile_pipeline.h>
 #include <pcl_ext/segmentation/profile_stacks.h>
@@ -15,7 +16,6 @@
 #include <Eigen/Core>
 
 #include <cmath>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -90,7 +90,7 @@ namespace pcl_ext {
  * the paper's section 5.
  */
 template <typename PointT>
-class ProfileSegmentation : public pcl::PCLBase<PointT> {
+class ProfileSegmentation : public pcl::PCLBase<PointT>, public ClusterSizeLimits {
 public:
   using PointCloud = pcl::PointCloud<PointT>;
   using PointCloudConstPtr = typename PointCloud::ConstPtr;
@@ -390,30 +390,6 @@ public:
     return residual_factor_;
   }
 
-  /** \brief Smallest segment kept. Default 1; valid: >= 1. */
-  void
-  setMinClusterSize (pcl::uindex_t size)
-  {
-    min_size_ = size;
-  }
-  pcl::uindex_t
-  getMinClusterSize () const
-  {
-    return min_size_;
-  }
-
-  /** \brief Largest segment kept. Default: no limit; valid: >= the minimum. */
-  void
-  setMaxClusterSize (pcl::uindex_t size)
-  {
-    max_size_ = size;
-  }
-  pcl::uindex_t
-  getMaxClusterSize () const
-  {
-    return max_size_;
-  }
-
   /** \brief OpenMP threads; 0 = all cores (default). Results do not depend on it. */
   void
   setNumberOfThreads (unsigned int threads)
@@ -509,8 +485,6 @@ protected:
   double turn_significance_ = 0.0;
   bool corrected_aic_ = false;
   bool side_frames_ = false;
-  pcl::uindex_t min_size_ = 1;
-  pcl::uindex_t max_size_ = std::numeric_limits<pcl::uindex_t>::max();
   unsigned int threads_ = 0;
 
   // Results of the last extract().

@@ -6,6 +6,7 @@
 
 #include <pcl_ext/point_types.h>
 #include <pcl_ext/search/neighbourhood_options.h>
+#include <pcl_ext/segmentation/cluster_size_limits.h>
 #include <pcl_ext/segmentation/local_planes.h>
 
 #include <pcl/PointIndices.h>
@@ -126,7 +127,8 @@ growSurfaceSegments (const std::vector<std::size_t>& offsets,
  */
 template <typename PointT>
 class VarianceRegionGrowing : public pcl::PCLBase<PointT>,
-                              public NeighbourhoodOptions<PointT> {
+                              public NeighbourhoodOptions<PointT>,
+                              public ClusterSizeLimits {
 public:
   /** \brief The smallest m of the local spacing of setMaxDistanceFactor. */
   static constexpr std::size_t kMinSpacingNeighbour = 3;
@@ -193,33 +195,6 @@ public:
   getMaxDistanceFactor () const
   {
     return max_distance_factor_;
-  }
-
-  /** \brief Smallest segment kept (the paper's "too few points to be useful"). Default
-   * 1, as pcl::RegionGrowing; valid: >= 1. */
-  void
-  setMinClusterSize (pcl::uindex_t size)
-  {
-    min_size_ = size;
-  }
-
-  pcl::uindex_t
-  getMinClusterSize () const
-  {
-    return min_size_;
-  }
-
-  /** \brief Largest segment kept. Default: no limit; valid: >= the minimum. */
-  void
-  setMaxClusterSize (pcl::uindex_t size)
-  {
-    max_size_ = size;
-  }
-
-  pcl::uindex_t
-  getMaxClusterSize () const
-  {
-    return max_size_;
   }
 
   /** \brief Fit a least-squares plane to every segment kept (getSegmentPlanes). Default
@@ -299,8 +274,6 @@ protected:
   pcl::IndicesConstPtr seeds_;
   double max_distance_ = 0.0;
   double max_distance_factor_ = 3.0;
-  pcl::uindex_t min_size_ = 1;
-  pcl::uindex_t max_size_ = std::numeric_limits<pcl::uindex_t>::max();
   bool fit_planes_ = false;
 
   // Results of the last extract().

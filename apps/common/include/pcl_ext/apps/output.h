@@ -57,6 +57,14 @@ public:
   bool
   attach (pcl::PCLPointCloud2& cloud, const std::vector<std::uint32_t>& values) const;
 
+  /** \brief The input's points and fields with \a values (one per point) in the result
+   * field, written to \a path (saveOutput). \return false (message printed) on a size
+   * mismatch or a write error */
+  bool
+  save (const std::string& path,
+        const io::PointFile& input,
+        const std::vector<std::uint32_t>& values) const;
+
   const std::string&
   name () const
   {

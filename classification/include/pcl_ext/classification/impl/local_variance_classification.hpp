@@ -65,7 +65,7 @@ pcl_ext::LocalVarianceClassification<PointT>::checkParameters() const
                crease_angle_);
     return false;
   }
-  if ((tests_ & BOUNDARY_TEST) && !std::isfinite (chiSquaredQuantile2 (confidence_))) {
+  if ((tests_ & BOUNDARY_TEST) && !std::isfinite (confidenceQuantile())) {
     PCL_ERROR ("%s confidence = %g; it must lie strictly between 0 and 1.\n",
                name,
                confidence_);
@@ -224,7 +224,7 @@ pcl_ext::LocalVarianceClassification<PointT>::label (
   const bool variance = (tests_ & VARIANCE_TEST) != 0;
   const bool boundary = (tests_ & BOUNDARY_TEST) != 0;
   const double threshold = curvature_threshold_used_;
-  const double quantile = boundary ? chiSquaredQuantile2 (confidence_) : 0.0;
+  const double quantile = boundary ? confidenceQuantile() : 0.0;
   const float* const kappa = kappa_.data();
   const float min_cosine = static_cast<float> (std::cos (crease_angle_));
 #pragma omp parallel for num_threads(resolveThreadCount(threads_))                     \

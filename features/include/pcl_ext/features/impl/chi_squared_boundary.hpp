@@ -12,7 +12,7 @@ template <typename PointInT, typename PointOutT>
 bool
 pcl_ext::ChiSquaredBoundaryEstimation<PointInT, PointOutT>::checkInputs()
 {
-  if (!std::isfinite (chiSquaredQuantile2 (confidence_))) {
+  if (!std::isfinite (confidenceQuantile())) {
     PCL_ERROR (
         "[pcl_ext::%s::compute] confidence = %g; it must lie strictly between 0 and "
         "1.\n",
@@ -55,7 +55,7 @@ void
 pcl_ext::ChiSquaredBoundaryEstimation<PointInT, PointOutT>::computeFeature (
     PointCloudOut& output)
 {
-  const double quantile = chiSquaredQuantile2 (confidence_);
+  const double quantile = confidenceQuantile();
   output.is_dense = this->computeRows (
       output,
       256,

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <pcl_ext/search/neighbourhood_search_options.h>
 #include <pcl_ext/search/neighbourhood_source.h>
 
 #include <pcl/console/print.h>
@@ -58,7 +59,9 @@ protected:
 
 /** \brief The neighbourhood options shared by pcl_ext's classifiers and segmenters: k
  * or a radius, a maximum radius for k, the search method, shared neighbourhoods and the
- * thread count, one set/get pair each, and the search they configure.
+ * thread count, one set/get pair each (the first four those of
+ * pcl_ext::NeighbourhoodSearchOptions, as for pcl_ext::Neighbourhoods), and the search
+ * they configure.
  *
  * A mixin, derived from next to pcl::PCLBase (as pcl::FeatureFromNormals adds normals
  * to pcl::Feature): pcl_ext::LocalVarianceClassification,
@@ -68,73 +71,21 @@ protected:
  * for the same cloud and indices.
  */
 template <typename PointT>
-class NeighbourhoodOptions : public SharedNeighbourhoodsOption<PointT> {
+class NeighbourhoodOptions : public SharedNeighbourhoodsOption<PointT>,
+                             public NeighbourhoodSearchOptions<PointT> {
 public:
-  using SearchPtr = typename Neighbourhoods<PointT>::SearchPtr;
+  using SearchPtr = typename NeighbourhoodSearchOptions<PointT>::SearchPtr;
 
-  /** \brief Number of neighbours k, the point included. Default 50 (Belton & Lichti's
-   * k); valid: 3 .. number of finite points. Clears the radius. */
-  void
-  setKSearch (int k)
-  {
-    k_ = k;
-    radius_ = 0.0;
-  }
-
-  int
-  getKSearch () const
-  {
-    return k_;
-  }
-
-  /** \brief Neighbourhood radius instead of k, in the cloud's units. Default 0 (k is
-   * used); valid: > 0. Clears k. */
-  void
-  setRadiusSearch (double radius)
-  {
-    radius_ = radius;
-    k_ = 0;
-  }
-
-  double
-  getRadiusSearch () const
-  {
-    return radius_;
-  }
-
-  /** \brief With k: keep only the neighbours within this distance, in the cloud's units
-   * (the k nearest within it). Default 0: no cap, the k nearest. Valid: finite, >= 0;
-   * ignored with a radius or shared neighbourhoods (give those
-   * pcl_ext::Neighbourhoods::setMaxRadius instead). A TLS scan's spacing varies with
-   * range and incidence, so k neighbours of a far or grazing surface can reach a second
-   * surface; the cap bounds that reach. */
-  void
-  setMaxRadius (double radius)
-  {
-    max_radius_ = radius;
-  }
-
-  double
-  getMaxRadius () const
-  {
-    return max_radius_;
-  }
-
-  /** \brief Search for the neighbourhoods. Default null:
-   * pcl_ext::search::NanoflannKdTree. */
-  void
-  setSearchMethod (const SearchPtr& search)
-  {
-    search_ = search;
-  }
-
-  SearchPtr
-  getSearchMethod () const
-  {
-    return search_;
-  }
+  /** \brief k = 50 neighbours (Belton & Lichti's k), no radius, no maximum radius,
+   * the default search. */
+  NeighbourhoodOptions() : NeighbourhoodSearchOptions<PointT> (50) {}
 
 protected:
+  using NeighbourhoodSearchOptions<PointT>::k_;
+  using NeighbourhoodSearchOptions<PointT>::radius_;
+  using NeighbourhoodSearchOptions<PointT>::max_radius_;
+  using NeighbourhoodSearchOptions<PointT>::search_;
+
   /** \brief PCL_ERROR (prefixed by \a caller) and false when k is below \a min_k, k and
    * the radius are negative or not finite, or the maximum radius is negative or not
    * finite. */
@@ -184,10 +135,5 @@ protected:
   {
     this->source_.release();
   }
-
-  int k_ = 50;
-  double radius_ = 0.0;
-  double max_radius_ = 0.0;
-  SearchPtr search_;
 };
 } // namespace pcl_ext

@@ -3,6 +3,8 @@
  */
 #pragma once
 
+#include <pcl_ext/search/neighbourhood_search_options.h>
+
 #include <pcl/pcl_base.h>
 #include <pcl/search/search.h>
 
@@ -44,13 +46,14 @@ namespace pcl_ext {
  * \endcode
  */
 template <typename PointT>
-class Neighbourhoods : public pcl::PCLBase<PointT> {
+class Neighbourhoods : public pcl::PCLBase<PointT>,
+                       public NeighbourhoodSearchOptions<PointT> {
 public:
   using Ptr = pcl::shared_ptr<Neighbourhoods<PointT>>;
   using ConstPtr = pcl::shared_ptr<const Neighbourhoods<PointT>>;
   using PointCloud = pcl::PointCloud<PointT>;
   using PointCloudConstPtr = typename PointCloud::ConstPtr;
-  using SearchPtr = typename pcl::search::Search<PointT>::Ptr;
+  using SearchPtr = typename NeighbourhoodSearchOptions<PointT>::SearchPtr;
 
   /** \brief A read-only view of one row: the neighbours of one point, closest first. */
   struct Row {
@@ -87,36 +90,6 @@ public:
 
   Neighbourhoods() = default;
 
-  /** \brief Number of nearest neighbours per point (PCL's k), query point included.
-   * Valid: 1 .. number of finite points. Default 0 (unset); clears the radius. */
-  void
-  setKSearch (int k)
-  {
-    k_ = k;
-    radius_ = 0.0;
-  }
-
-  int
-  getKSearch () const
-  {
-    return k_;
-  }
-
-  /** \brief Neighbourhood radius in the cloud's units. Valid: > 0. Default 0 (unset);
-   * clears k. */
-  void
-  setRadiusSearch (double radius)
-  {
-    radius_ = radius;
-    k_ = 0;
-  }
-
-  double
-  getRadiusSearch () const
-  {
-    return radius_;
-  }
-
   /** \brief With a radius, keep at most this many closest neighbours (0, the default:
    * all). */
   void
@@ -129,35 +102,6 @@ public:
   getMaxNeighbours () const
   {
     return max_nn_;
-  }
-
-  /** \brief With k: keep only the neighbours within this distance, so each row holds
-   * the k nearest within it (the same rows as a radius search limited to k, found at
-   * the cost of the k search). Default 0: none; valid: finite, >= 0; ignored with a
-   * radius. */
-  void
-  setMaxRadius (double radius)
-  {
-    max_radius_ = radius;
-  }
-
-  double
-  getMaxRadius () const
-  {
-    return max_radius_;
-  }
-
-  /** \brief Search method; the default (null) builds a NanoflannKdTree. */
-  void
-  setSearchMethod (const SearchPtr& search)
-  {
-    search_ = search;
-  }
-
-  SearchPtr
-  getSearchMethod () const
-  {
-    return search_;
   }
 
   /** \brief Threads for the search (0, the default: all cores). Results do not depend
@@ -247,6 +191,10 @@ protected:
   using pcl::PCLBase<PointT>::fake_indices_;
   using pcl::PCLBase<PointT>::initCompute;
   using pcl::PCLBase<PointT>::deinitCompute;
+  using NeighbourhoodSearchOptions<PointT>::k_;
+  using NeighbourhoodSearchOptions<PointT>::radius_;
+  using NeighbourhoodSearchOptions<PointT>::max_radius_;
+  using NeighbourhoodSearchOptions<PointT>::search_;
 
   void
   clear ();
@@ -270,12 +218,8 @@ protected:
   void
   capRows ();
 
-  int k_ = 0;
-  double radius_ = 0.0;
   unsigned int max_nn_ = 0;
-  double max_radius_ = 0.0;
   unsigned int threads_ = 0;
-  SearchPtr search_;
 
   std::size_t searchable_ = 0;
   std::vector<std::size_t> offsets_;

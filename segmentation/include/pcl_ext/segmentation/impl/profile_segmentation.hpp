@@ -59,7 +59,7 @@ ProfileSegmentation<PointT>::prepare (std::vector<Eigen::Vector3f>& xyz)
         name);
     return false;
   }
-  if (min_size_ < 1 || max_size_ < min_size_) {
+  if (!validClusterSizes()) {
     PCL_ERROR (
         "[pcl_ext::%s] Need 1 <= minimum cluster size <= maximum cluster size.\n",
         name);
@@ -189,7 +189,7 @@ ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
   for (std::size_t i = 0; i < points_.size(); ++i)
     all[result.labels[i]].indices.push_back (points_[i]);
   for (auto& segment : all)
-    if (segment.indices.size() >= min_size_ && segment.indices.size() <= max_size_) {
+    if (keepsClusterSize (segment.indices.size())) {
       std::sort (segment.indices.begin(), segment.indices.end());
       clusters_.push_back (std::move (segment));
     }

@@ -35,7 +35,7 @@ pcl_ext::VarianceRegionGrowing<PointT>::checkParameters() const
         max_distance_factor_);
     return false;
   }
-  if (min_size_ < 1 || max_size_ < min_size_) {
+  if (!validClusterSizes()) {
     PCL_ERROR ("%s Need 1 <= minimum cluster size (%u) <= maximum cluster size (%u).\n",
                name,
                static_cast<unsigned int> (min_size_),
@@ -179,7 +179,7 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (
   std::vector<std::int32_t> slot (input_->size(), -1);
   std::vector<pcl::index_t> kept;
   for (std::size_t i = 0; i < input_->size(); ++i)
-    if (size[i] >= min_size_ && size[i] <= max_size_ && size[i] > 0)
+    if (keepsClusterSize (size[i]) && size[i] > 0)
       kept.push_back (static_cast<pcl::index_t> (i));
   // Roots are the smallest index of their segment, so this order breaks size ties by
   // it.
