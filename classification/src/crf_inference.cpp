@@ -61,8 +61,7 @@ beliefPropagation (const Graph& graph,
   }
   const Eigen::MatrixXd exp_diag = diag.array().exp().matrix();
   // Messages in log space: column 2e goes a -> b, 2e + 1 goes b -> a.
-  Eigen::MatrixXd msg = Eigen::MatrixXd::Zero (C, 2 * E), next (C, 2 * E),
-                  incoming (C, N);
+  Eigen::MatrixXd msg = Eigen::MatrixXd::Zero (C, 2 * E), next (C, 2 * E);
   if (messages && messages->rows() == msg.rows() && messages->cols() == msg.cols())
     msg = *messages;
   const double damping = settings.bp_damping;
@@ -70,54 +69,55 @@ beliefPropagation (const Graph& graph,
   iterations = 0;
   for (int it = 0; it < settings.bp_iterations && !converged; ++it) {
     // Synchronous sweep: every new message is computed from the previous sweep's
-    // messages.
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n) {
-      // Summed in place: a temporary vector per node and sweep cost more than the sum.
-      auto sum = incoming.col (n);
-      sum.setZero();
-      for (std::size_t a = graph.adj_offsets[n]; a < graph.adj_offsets[n + 1]; ++a) {
-        const std::uint32_t e = graph.adj_edge[a];
-        sum += msg.col (2 * e +
-                        (graph.edge_a[e] == static_cast<std::uint32_t> (n) ? 1 : 0));
-      }
-    }
+    // messages. One parallel loop over the senders: each node sums what it heard and
+    // sends all its messages, so that a sweep has one synchronisation point (two, a
+    // loop summing and a loop over the messages, cost twice the waiting on a loaded
+    // machine for the same arithmetic).
     double change = 0.0;
 #pragma omp parallel num_threads(threads)
     {
       std::vector<double> h (C), out (C);
-#pragma omp for schedule(static) reduction(max : change)
-      for (std::ptrdiff_t m = 0; m < static_cast<std::ptrdiff_t> (2 * E); ++m) {
-        const std::size_t e = static_cast<std::size_t> (m) / 2;
-        const bool forward = (m % 2) == 0;
-        const std::uint32_t from = forward ? graph.edge_a[e] : graph.edge_b[e];
-        // Cavity: the sender's belief without what the receiver told it.
-        double mx = -std::numeric_limits<double>::infinity();
-        for (std::size_t c = 0; c < C; ++c) {
-          h[c] = unary (c, from) + incoming (c, from) - msg (c, m ^ 1);
-          mx = std::max (mx, h[c]);
+      Eigen::VectorXd incoming (C);
+#pragma omp for schedule(dynamic, 256) reduction(max : change)
+      for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n) {
+        const auto from = static_cast<std::uint32_t> (n);
+        const std::size_t first = graph.adj_offsets[n], last = graph.adj_offsets[n + 1];
+        incoming.setZero();
+        for (std::size_t a = first; a < last; ++a) {
+          const std::uint32_t e = graph.adj_edge[a];
+          incoming += msg.col (2 * e + (graph.edge_a[e] == from ? 1 : 0));
         }
-        double sum = 0.0;
-        for (std::size_t c = 0; c < C; ++c) {
-          h[c] = std::exp (h[c] - mx);
-          sum += h[c];
-        }
-        // The potential is diagonal: sum over c_a of exp(h + [c_a = c_b] d) is the
-        // plain sum with the c_b term scaled by exp(d), O(C) per message instead of
-        // O(C^2). Normalised in the linear domain (the terms are >= 1 after the shift
-        // by mx): one log each.
-        double total = 0.0;
-        for (std::size_t cb = 0; cb < C; ++cb) {
-          out[cb] = sum + h[cb] * (exp_diag (cb, e) - 1.0);
-          total += out[cb];
-        }
-        const double log_total = std::log (total);
-        for (std::size_t cb = 0; cb < C; ++cb)
-          out[cb] = std::log (out[cb]) - log_total;
-        for (std::size_t c = 0; c < C; ++c) {
-          const double v = (1.0 - damping) * out[c] + damping * msg (c, m);
-          next (c, m) = v;
-          change = std::max (change, std::abs (v - msg (c, m)));
+        for (std::size_t a = first; a < last; ++a) {
+          const std::uint32_t e = graph.adj_edge[a];
+          const std::size_t m = 2 * e + (graph.edge_a[e] == from ? 0 : 1);
+          // Cavity: the sender's belief without what the receiver told it.
+          double mx = -std::numeric_limits<double>::infinity();
+          for (std::size_t c = 0; c < C; ++c) {
+            h[c] = unary (c, n) + incoming (c) - msg (c, m ^ 1);
+            mx = std::max (mx, h[c]);
+          }
+          double sum = 0.0;
+          for (std::size_t c = 0; c < C; ++c) {
+            h[c] = std::exp (h[c] - mx);
+            sum += h[c];
+          }
+          // The potential is diagonal: sum over c_a of exp(h + [c_a = c_b] d) is the
+          // plain sum with the c_b term scaled by exp(d), O(C) per message instead of
+          // O(C^2). Normalised in the linear domain (the terms are >= 1 after the
+          // shift by mx): one log each.
+          double total = 0.0;
+          for (std::size_t cb = 0; cb < C; ++cb) {
+            out[cb] = sum + h[cb] * (exp_diag (cb, e) - 1.0);
+            total += out[cb];
+          }
+          const double log_total = std::log (total);
+          for (std::size_t cb = 0; cb < C; ++cb)
+            out[cb] = std::log (out[cb]) - log_total;
+          for (std::size_t c = 0; c < C; ++c) {
+            const double v = (1.0 - damping) * out[c] + damping * msg (c, m);
+            next (c, m) = v;
+            change = std::max (change, std::abs (v - msg (c, m)));
+          }
         }
       }
     }
