@@ -24,6 +24,34 @@ normaliseLog (double* v, std::size_t n)
   for (std::size_t i = 0; i < n; ++i)
     v[i] -= lse;
 }
+
+/** The log message of a sender whose cavity (its belief without the receiver's
+ * message, log, shifted or not) is \a h, over an edge whose diagonal potential is \a
+ * exp_diag: normalised, into \a out. \a h is overwritten. */
+void
+edgeMessage (std::vector<double>& h, const double* exp_diag, std::vector<double>& out)
+{
+  const std::size_t C = h.size();
+  double mx = -std::numeric_limits<double>::infinity();
+  for (std::size_t c = 0; c < C; ++c)
+    mx = std::max (mx, h[c]);
+  double sum = 0.0;
+  for (std::size_t c = 0; c < C; ++c) {
+    h[c] = std::exp (h[c] - mx);
+    sum += h[c];
+  }
+  // The potential is diagonal: sum over c_a of exp(h + [c_a = c_b] d) is the plain sum
+  // with the c_b term scaled by exp(d), O(C) per message instead of O(C^2). Normalised
+  // in the linear domain (the terms are >= 1 after the shift by mx): one log each.
+  double total = 0.0;
+  for (std::size_t cb = 0; cb < C; ++cb) {
+    out[cb] = sum + h[cb] * (exp_diag[cb] - 1.0);
+    total += out[cb];
+  }
+  const double log_total = std::log (total);
+  for (std::size_t cb = 0; cb < C; ++cb)
+    out[cb] = std::log (out[cb]) - log_total;
+}
 } // namespace
 
 void
@@ -65,6 +93,24 @@ beliefPropagation (const Graph& graph,
   if (messages && messages->rows() == msg.rows() && messages->cols() == msg.cols())
     msg = *messages;
   const double damping = settings.bp_damping;
+  // A node with one edge (every local point) hears only the receiver of its message,
+  // so its cavity is its own node potential and its message, before damping, is the
+  // same in every sweep: computed once.
+  Eigen::MatrixXd leaf_out (C, N);
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<double> h (C), out (C);
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n) {
+      if (graph.adj_offsets[n + 1] - graph.adj_offsets[n] != 1)
+        continue;
+      for (std::size_t c = 0; c < C; ++c)
+        h[c] = unary (c, n);
+      edgeMessage (h, &exp_diag (0, graph.adj_edge[graph.adj_offsets[n]]), out);
+      for (std::size_t c = 0; c < C; ++c)
+        leaf_out (c, n) = out[c];
+    }
+  }
   converged = E == 0;
   iterations = 0;
   for (int it = 0; it < settings.bp_iterations && !converged; ++it) {
@@ -82,37 +128,26 @@ beliefPropagation (const Graph& graph,
       for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n) {
         const auto from = static_cast<std::uint32_t> (n);
         const std::size_t first = graph.adj_offsets[n], last = graph.adj_offsets[n + 1];
-        incoming.setZero();
-        for (std::size_t a = first; a < last; ++a) {
-          const std::uint32_t e = graph.adj_edge[a];
-          incoming += msg.col (2 * e + (graph.edge_a[e] == from ? 1 : 0));
+        const bool leaf = last - first == 1;
+        if (!leaf) {
+          incoming.setZero();
+          for (std::size_t a = first; a < last; ++a) {
+            const std::uint32_t e = graph.adj_edge[a];
+            incoming += msg.col (2 * e + (graph.edge_a[e] == from ? 1 : 0));
+          }
         }
         for (std::size_t a = first; a < last; ++a) {
           const std::uint32_t e = graph.adj_edge[a];
           const std::size_t m = 2 * e + (graph.edge_a[e] == from ? 0 : 1);
-          // Cavity: the sender's belief without what the receiver told it.
-          double mx = -std::numeric_limits<double>::infinity();
-          for (std::size_t c = 0; c < C; ++c) {
-            h[c] = unary (c, n) + incoming (c) - msg (c, m ^ 1);
-            mx = std::max (mx, h[c]);
+          if (leaf)
+            for (std::size_t c = 0; c < C; ++c)
+              out[c] = leaf_out (c, n);
+          else {
+            // Cavity: the sender's belief without what the receiver told it.
+            for (std::size_t c = 0; c < C; ++c)
+              h[c] = unary (c, n) + incoming (c) - msg (c, m ^ 1);
+            edgeMessage (h, &exp_diag (0, e), out);
           }
-          double sum = 0.0;
-          for (std::size_t c = 0; c < C; ++c) {
-            h[c] = std::exp (h[c] - mx);
-            sum += h[c];
-          }
-          // The potential is diagonal: sum over c_a of exp(h + [c_a = c_b] d) is the
-          // plain sum with the c_b term scaled by exp(d), O(C) per message instead of
-          // O(C^2). Normalised in the linear domain (the terms are >= 1 after the
-          // shift by mx): one log each.
-          double total = 0.0;
-          for (std::size_t cb = 0; cb < C; ++cb) {
-            out[cb] = sum + h[cb] * (exp_diag (cb, e) - 1.0);
-            total += out[cb];
-          }
-          const double log_total = std::log (total);
-          for (std::size_t cb = 0; cb < C; ++cb)
-            out[cb] = std::log (out[cb]) - log_total;
           for (std::size_t c = 0; c < C; ++c) {
             const double v = (1.0 - damping) * out[c] + damping * msg (c, m);
             next (c, m) = v;
