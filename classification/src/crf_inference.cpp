@@ -13,6 +13,10 @@
 namespace pcl_ext {
 namespace crf {
 namespace {
+/** Message entries (messages times classes) from which a BP sweep runs on several
+ * threads: about 30 ms of work on one. */
+constexpr std::size_t kParallelSweepEntries = std::size_t{1} << 20;
+
 void
 normaliseLog (double* v, std::size_t n)
 {
@@ -23,6 +27,34 @@ normaliseLog (double* v, std::size_t n)
   const double lse = m + std::log (s);
   for (std::size_t i = 0; i < n; ++i)
     v[i] -= lse;
+}
+
+/** The log message of a sender whose cavity (its belief without the receiver's
+ * message, log, shifted or not) is \a h, over an edge whose diagonal potential is \a
+ * exp_diag: normalised, into \a out. \a h is overwritten. */
+void
+edgeMessage (std::vector<double>& h, const double* exp_diag, std::vector<double>& out)
+{
+  const std::size_t C = h.size();
+  double mx = -std::numeric_limits<double>::infinity();
+  for (std::size_t c = 0; c < C; ++c)
+    mx = std::max (mx, h[c]);
+  double sum = 0.0;
+  for (std::size_t c = 0; c < C; ++c) {
+    h[c] = std::exp (h[c] - mx);
+    sum += h[c];
+  }
+  // The potential is diagonal: sum over c_a of exp(h + [c_a = c_b] d) is the plain sum
+  // with the c_b term scaled by exp(d), O(C) per message instead of O(C^2). Normalised
+  // in the linear domain (the terms are >= 1 after the shift by mx): one log each.
+  double total = 0.0;
+  for (std::size_t cb = 0; cb < C; ++cb) {
+    out[cb] = sum + h[cb] * (exp_diag[cb] - 1.0);
+    total += out[cb];
+  }
+  const double log_total = std::log (total);
+  for (std::size_t cb = 0; cb < C; ++cb)
+    out[cb] = std::log (out[cb]) - log_total;
 }
 } // namespace
 
@@ -61,63 +93,75 @@ beliefPropagation (const Graph& graph,
   }
   const Eigen::MatrixXd exp_diag = diag.array().exp().matrix();
   // Messages in log space: column 2e goes a -> b, 2e + 1 goes b -> a.
-  Eigen::MatrixXd msg = Eigen::MatrixXd::Zero (C, 2 * E), next (C, 2 * E),
-                  incoming (C, N);
+  Eigen::MatrixXd msg = Eigen::MatrixXd::Zero (C, 2 * E), next (C, 2 * E);
   if (messages && messages->rows() == msg.rows() && messages->cols() == msg.cols())
     msg = *messages;
   const double damping = settings.bp_damping;
+  // A node with one edge (every local point) hears only the receiver of its message,
+  // so its cavity is its own node potential and its message, before damping, is the
+  // same in every sweep: computed once.
+  Eigen::MatrixXd leaf_out (C, N);
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<double> h (C), out (C);
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n) {
+      if (graph.adj_offsets[n + 1] - graph.adj_offsets[n] != 1)
+        continue;
+      for (std::size_t c = 0; c < C; ++c)
+        h[c] = unary (c, n);
+      edgeMessage (h, &exp_diag (0, graph.adj_edge[graph.adj_offsets[n]]), out);
+      for (std::size_t c = 0; c < C; ++c)
+        leaf_out (c, n) = out[c];
+    }
+  }
+  // A sweep is parallel only when it holds enough work: each costs a synchronisation
+  // of the threads, and on a shared machine a thread that has to wait for the
+  // scheduler costs more than a small sweep (some 60,000 messages on a 100,000-point
+  // scan, a few milliseconds) gains. The messages do not depend on it.
+  const int sweep_threads = 2 * E * C >= kParallelSweepEntries ? threads : 1;
   converged = E == 0;
   iterations = 0;
   for (int it = 0; it < settings.bp_iterations && !converged; ++it) {
     // Synchronous sweep: every new message is computed from the previous sweep's
-    // messages.
-#pragma omp parallel for num_threads(threads) schedule(static)
-    for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n) {
-      // Summed in place: a temporary vector per node and sweep cost more than the sum.
-      auto sum = incoming.col (n);
-      sum.setZero();
-      for (std::size_t a = graph.adj_offsets[n]; a < graph.adj_offsets[n + 1]; ++a) {
-        const std::uint32_t e = graph.adj_edge[a];
-        sum += msg.col (2 * e +
-                        (graph.edge_a[e] == static_cast<std::uint32_t> (n) ? 1 : 0));
-      }
-    }
+    // messages. One parallel loop over the senders: each node sums what it heard and
+    // sends all its messages, so that a sweep has one synchronisation point (two, a
+    // loop summing and a loop over the messages, cost twice the waiting on a loaded
+    // machine for the same arithmetic).
     double change = 0.0;
-#pragma omp parallel num_threads(threads)
+#pragma omp parallel num_threads(sweep_threads)
     {
       std::vector<double> h (C), out (C);
-#pragma omp for schedule(static) reduction(max : change)
-      for (std::ptrdiff_t m = 0; m < static_cast<std::ptrdiff_t> (2 * E); ++m) {
-        const std::size_t e = static_cast<std::size_t> (m) / 2;
-        const bool forward = (m % 2) == 0;
-        const std::uint32_t from = forward ? graph.edge_a[e] : graph.edge_b[e];
-        // Cavity: the sender's belief without what the receiver told it.
-        double mx = -std::numeric_limits<double>::infinity();
-        for (std::size_t c = 0; c < C; ++c) {
-          h[c] = unary (c, from) + incoming (c, from) - msg (c, m ^ 1);
-          mx = std::max (mx, h[c]);
+      Eigen::VectorXd incoming (C);
+#pragma omp for schedule(dynamic, 256) reduction(max : change)
+      for (std::ptrdiff_t n = 0; n < static_cast<std::ptrdiff_t> (N); ++n) {
+        const auto from = static_cast<std::uint32_t> (n);
+        const std::size_t first = graph.adj_offsets[n], last = graph.adj_offsets[n + 1];
+        const bool leaf = last - first == 1;
+        if (!leaf) {
+          incoming.setZero();
+          for (std::size_t a = first; a < last; ++a) {
+            const std::uint32_t e = graph.adj_edge[a];
+            incoming += msg.col (2 * e + (graph.edge_a[e] == from ? 1 : 0));
+          }
         }
-        double sum = 0.0;
-        for (std::size_t c = 0; c < C; ++c) {
-          h[c] = std::exp (h[c] - mx);
-          sum += h[c];
-        }
-        // The potential is diagonal: sum over c_a of exp(h + [c_a = c_b] d) is the
-        // plain sum with the c_b term scaled by exp(d), O(C) per message instead of
-        // O(C^2). Normalised in the linear domain (the terms are >= 1 after the shift
-        // by mx): one log each.
-        double total = 0.0;
-        for (std::size_t cb = 0; cb < C; ++cb) {
-          out[cb] = sum + h[cb] * (exp_diag (cb, e) - 1.0);
-          total += out[cb];
-        }
-        const double log_total = std::log (total);
-        for (std::size_t cb = 0; cb < C; ++cb)
-          out[cb] = std::log (out[cb]) - log_total;
-        for (std::size_t c = 0; c < C; ++c) {
-          const double v = (1.0 - damping) * out[c] + damping * msg (c, m);
-          next (c, m) = v;
-          change = std::max (change, std::abs (v - msg (c, m)));
+        for (std::size_t a = first; a < last; ++a) {
+          const std::uint32_t e = graph.adj_edge[a];
+          const std::size_t m = 2 * e + (graph.edge_a[e] == from ? 0 : 1);
+          if (leaf)
+            for (std::size_t c = 0; c < C; ++c)
+              out[c] = leaf_out (c, n);
+          else {
+            // Cavity: the sender's belief without what the receiver told it.
+            for (std::size_t c = 0; c < C; ++c)
+              h[c] = unary (c, n) + incoming (c) - msg (c, m ^ 1);
+            edgeMessage (h, &exp_diag (0, e), out);
+          }
+          for (std::size_t c = 0; c < C; ++c) {
+            const double v = (1.0 - damping) * out[c] + damping * msg (c, m);
+            next (c, m) = v;
+            change = std::max (change, std::abs (v - msg (c, m)));
+          }
         }
       }
     }
