@@ -4,11 +4,17 @@
  */
 #pragma once
 
+#include <pcl_ext/evaluation/segmentation_metrics.h>
+
+#include <pcl/PointIndices.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
 #include <Eigen/Geometry>
 
+#include <gtest/gtest.h>
+
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -168,5 +174,40 @@ inline LabelledCloud
 coarseCoaxialPipes ()
 {
   return coaxialPipes (0.03);
+}
+/** Segmentation metrics of \a clusters against the labels of \a scene. */
+inline pcl_ext::SegmentationMetrics
+evaluate (const std::vector<pcl::PointIndices>& clusters, const LabelledCloud& scene)
+{
+  pcl_ext::SegmentationMetrics metrics;
+  EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, scene.labels, metrics));
+  return metrics;
+}
+
+/** Three cubes on a 2 cm grid, a metre or more apart, labels 1 to 3, with edges of
+ * \a sizes. */
+inline LabelledCloud
+threeCubes (const std::array<double, 3>& sizes = {1.0, 0.6, 0.8}, unsigned seed = 1)
+{
+  LabelledCloud scene;
+  std::mt19937 rng (seed);
+  addCube (scene, {0, 0, 0}, Eigen::Matrix3d::Identity(), sizes[0], 0.02, 1, rng);
+  addCube (scene,
+           {2.0, 0.3, 0.2},
+           Eigen::AngleAxisd (0.5, Eigen::Vector3d (1, 1, 0).normalized())
+               .toRotationMatrix(),
+           sizes[1],
+           0.02,
+           2,
+           rng);
+  addCube (scene,
+           {0.5, 2.0, -0.3},
+           Eigen::AngleAxisd (1.1, Eigen::Vector3d (0, 1, 2).normalized())
+               .toRotationMatrix(),
+           sizes[2],
+           0.02,
+           3,
+           rng);
+  return scene;
 }
 } // namespace profile_test

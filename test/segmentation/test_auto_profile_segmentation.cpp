@@ -13,46 +13,13 @@
 
 using profile_test::addCube;
 using profile_test::addRectangle;
+using profile_test::evaluate;
 using profile_test::LabelledCloud;
+using profile_test::threeCubes;
 using AutoSegmentation = pcl_ext::AutoProfileSegmentation<pcl::PointXYZ>;
 using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
 
 namespace {
-pcl_ext::SegmentationMetrics
-evaluate (const std::vector<pcl::PointIndices>& clusters, const LabelledCloud& scene)
-{
-  pcl_ext::SegmentationMetrics metrics;
-  EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, scene.labels, metrics));
-  return metrics;
-}
-
-/** Three cubes of one size a metre or more apart: proximity chaining separates them,
- * and the largest holds a third of the points. */
-LabelledCloud
-threeCubes ()
-{
-  LabelledCloud scene;
-  std::mt19937 rng (3);
-  addCube (scene, {0, 0, 0}, Eigen::Matrix3d::Identity(), 0.8, 0.02, 1, rng);
-  addCube (scene,
-           {2.0, 0.3, 0.2},
-           Eigen::AngleAxisd (0.5, Eigen::Vector3d (1, 1, 0).normalized())
-               .toRotationMatrix(),
-           0.8,
-           0.02,
-           2,
-           rng);
-  addCube (scene,
-           {0.5, 2.2, -0.3},
-           Eigen::AngleAxisd (1.1, Eigen::Vector3d (0, 1, 2).normalized())
-               .toRotationMatrix(),
-           0.8,
-           0.02,
-           3,
-           rng);
-  return scene;
-}
-
 /** A floor and a wall meeting at a right angle, 2 mm noise at 2 cm spacing: one
  * connected surface, two planes. */
 LabelledCloud
@@ -68,7 +35,7 @@ floorAndWall ()
 
 TEST (AutoProfileSegmentation, SeparateObjectsKeepProximityChaining)
 {
-  const LabelledCloud scene = threeCubes();
+  const LabelledCloud scene = threeCubes ({0.8, 0.8, 0.8}, 3);
   AutoSegmentation automatic;
   automatic.setInputCloud (scene.cloud);
   std::vector<pcl::PointIndices> clusters;

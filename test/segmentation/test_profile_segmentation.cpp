@@ -16,42 +16,6 @@
 using namespace profile_test;
 using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
 
-namespace {
-pcl_ext::SegmentationMetrics
-evaluate (const std::vector<pcl::PointIndices>& clusters, const LabelledCloud& scene)
-{
-  pcl_ext::SegmentationMetrics metrics;
-  EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, scene.labels, metrics));
-  return metrics;
-}
-
-LabelledCloud
-threeCubes ()
-{
-  LabelledCloud scene;
-  std::mt19937 rng (1);
-  addCube (scene, {0, 0, 0}, Eigen::Matrix3d::Identity(), 1.0, 0.02, 1, rng);
-  addCube (scene,
-           {2.0, 0.3, 0.2},
-           Eigen::AngleAxisd (0.5, Eigen::Vector3d (1, 1, 0).normalized())
-               .toRotationMatrix(),
-           0.6,
-           0.02,
-           2,
-           rng);
-  addCube (scene,
-           {0.5, 2.0, -0.3},
-           Eigen::AngleAxisd (1.1, Eigen::Vector3d (0, 1, 2).normalized())
-               .toRotationMatrix(),
-           0.8,
-           0.02,
-           3,
-           rng);
-  return scene;
-}
-
-} // namespace
-
 TEST (ProfileSegmentation, SeparatedCubesAreOneSegmentEach)
 {
   const LabelledCloud scene = threeCubes();

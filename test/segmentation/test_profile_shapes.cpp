@@ -19,14 +19,6 @@ using namespace profile_test;
 using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
 
 namespace {
-pcl_ext::SegmentationMetrics
-evaluate (const std::vector<pcl::PointIndices>& clusters, const LabelledCloud& scene)
-{
-  pcl_ext::SegmentationMetrics metrics;
-  EXPECT_TRUE (pcl_ext::evaluateSegmentation (clusters, scene.labels, metrics));
-  return metrics;
-}
-
 /** Prints the figures the bounds below check. */
 void
 report (const std::string& name, const pcl_ext::SegmentationMetrics& m)
