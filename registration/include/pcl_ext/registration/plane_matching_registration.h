@@ -357,6 +357,11 @@ protected:
 private:
   void
   setCornerTarget ();
+  /** \brief The body of every setIndices overload: PCLBase's, then the check of
+   * holdBackIndicesOutOfRange. */
+  template <typename IndicesT>
+  void
+  setCheckedIndices (const IndicesT& indices);
   /** \brief Hold back indices that do not fit the source cloud, or restore held-back
    * ones that fit a new cloud; \a method names the caller in the PCL_ERROR. */
   void

@@ -47,9 +47,7 @@ void
 PlaneMatchingRegistration<PointSource, PointTarget>::setIndices (
     const pcl::IndicesPtr& indices)
 {
-  held_back_indices_.reset();
-  Base::setIndices (indices);
-  holdBackIndicesOutOfRange ("setIndices");
+  setCheckedIndices (indices);
 }
 
 template <typename PointSource, typename PointTarget>
@@ -57,15 +55,22 @@ void
 PlaneMatchingRegistration<PointSource, PointTarget>::setIndices (
     const pcl::IndicesConstPtr& indices)
 {
-  held_back_indices_.reset();
-  Base::setIndices (indices);
-  holdBackIndicesOutOfRange ("setIndices");
+  setCheckedIndices (indices);
 }
 
 template <typename PointSource, typename PointTarget>
 void
 PlaneMatchingRegistration<PointSource, PointTarget>::setIndices (
     const pcl::PointIndicesConstPtr& indices)
+{
+  setCheckedIndices (indices);
+}
+
+template <typename PointSource, typename PointTarget>
+template <typename IndicesT>
+void
+PlaneMatchingRegistration<PointSource, PointTarget>::setCheckedIndices (
+    const IndicesT& indices)
 {
   held_back_indices_.reset();
   Base::setIndices (indices);
