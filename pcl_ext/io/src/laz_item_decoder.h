@@ -57,6 +57,17 @@ makeLayeredItemDecoder (const LazItem& item);
 std::unique_ptr<ItemDecoder>
 makePoint14Decoder (bool v4);
 
+/** \brief The level of return \a r of \a n returns, |n - r| capped at 7: a context of
+ * the coordinate differences. LASzip tabulates it twice, as number_return_level
+ * (POINT10, 3-bit r and n, where the cap never applies) and number_return_level_8ctx
+ * (POINT14, 4-bit r and n); both tables are this function. */
+inline unsigned
+numberReturnLevel (unsigned n, unsigned r)
+{
+  const unsigned level = n > r ? n - r : r - n;
+  return level < 7u ? level : 7u;
+}
+
 inline std::uint16_t
 loadU16 (const std::uint8_t* p)
 {

@@ -12,9 +12,9 @@ namespace pcl_ext {
 namespace io {
 namespace laz_detail {
 namespace {
-// Contexts of the return number r and the number of returns n (3 bits each) of POINT10:
-// a map of the (n, r) pairs to 16 contexts, and the level n - r (LASzip's
-// number_return_map and number_return_level, completed for inconsistent pairs).
+// Context of the return number r and the number of returns n (3 bits each) of POINT10:
+// a map of the (n, r) pairs to 16 contexts (LASzip's number_return_map, completed for
+// inconsistent pairs). The other context, the level, is numberReturnLevel.
 const std::uint8_t number_return_map[8][8] = {{15, 14, 13, 12, 11, 10, 9, 8},
                                               {14, 0, 1, 3, 6, 10, 10, 9},
                                               {13, 1, 2, 4, 7, 11, 11, 10},
@@ -23,15 +23,6 @@ const std::uint8_t number_return_map[8][8] = {{15, 14, 13, 12, 11, 10, 9, 8},
                                               {10, 10, 11, 12, 13, 14, 14, 13},
                                               {9, 10, 11, 12, 13, 14, 15, 14},
                                               {8, 9, 10, 11, 12, 13, 14, 15}};
-
-const std::uint8_t number_return_level[8][8] = {{0, 1, 2, 3, 4, 5, 6, 7},
-                                                {1, 0, 1, 2, 3, 4, 5, 6},
-                                                {2, 1, 0, 1, 2, 3, 4, 5},
-                                                {3, 2, 1, 0, 1, 2, 3, 4},
-                                                {4, 3, 2, 1, 0, 1, 2, 3},
-                                                {5, 4, 3, 2, 1, 0, 1, 2},
-                                                {6, 5, 4, 3, 2, 1, 0, 1},
-                                                {7, 6, 5, 4, 3, 2, 1, 0}};
 
 /** A symbol model of 256 symbols per value of a previous byte, made on first use. */
 class LazyModels {
@@ -113,7 +104,7 @@ public:
       const std::uint32_t r = last_[14] & 7;
       n = (last_[14] >> 3) & 7;
       m = number_return_map[n][r];
-      l = number_return_level[n][r];
+      l = numberReturnLevel (n, r);
       if (changed & 16) {
         const std::int32_t intensity =
             ic_intensity_.decompress (dec_, last_intensity_[m], m < 3 ? m : 3);
@@ -140,7 +131,7 @@ public:
       const std::uint32_t r = last_[14] & 7;
       n = (last_[14] >> 3) & 7;
       m = number_return_map[n][r];
-      l = number_return_level[n][r];
+      l = numberReturnLevel (n, r);
     }
 
     const std::int32_t dx =

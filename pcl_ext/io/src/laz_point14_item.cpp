@@ -9,9 +9,9 @@ namespace pcl_ext {
 namespace io {
 namespace laz_detail {
 namespace {
-// Contexts of the return number r and the number of returns n (4 bits each) of POINT14:
-// (n, r) pairs mapped to 6 contexts, and the level n - r capped at 7 (LASzip's
-// number_return_map_6ctx and number_return_level_8ctx).
+// Context of the return number r and the number of returns n (4 bits each) of POINT14:
+// (n, r) pairs mapped to 6 contexts (LASzip's number_return_map_6ctx). The other
+// context, the level, is numberReturnLevel.
 const std::uint8_t number_return_map_6ctx[16][16] = {
     {0, 1, 2, 3, 4, 5, 3, 4, 4, 5, 5, 5, 5, 5, 5, 5},
     {1, 0, 1, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3},
@@ -29,24 +29,6 @@ const std::uint8_t number_return_map_6ctx[16][16] = {
     {5, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 4, 5, 5, 5, 4},
     {5, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 5, 5, 5},
     {5, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 5, 5}};
-
-const std::uint8_t number_return_level_8ctx[16][16] = {
-    {0, 1, 2, 3, 4, 5, 6, 7, 7, 7, 7, 7, 7, 7, 7, 7},
-    {1, 0, 1, 2, 3, 4, 5, 6, 7, 7, 7, 7, 7, 7, 7, 7},
-    {2, 1, 0, 1, 2, 3, 4, 5, 6, 7, 7, 7, 7, 7, 7, 7},
-    {3, 2, 1, 0, 1, 2, 3, 4, 5, 6, 7, 7, 7, 7, 7, 7},
-    {4, 3, 2, 1, 0, 1, 2, 3, 4, 5, 6, 7, 7, 7, 7, 7},
-    {5, 4, 3, 2, 1, 0, 1, 2, 3, 4, 5, 6, 7, 7, 7, 7},
-    {6, 5, 4, 3, 2, 1, 0, 1, 2, 3, 4, 5, 6, 7, 7, 7},
-    {7, 6, 5, 4, 3, 2, 1, 0, 1, 2, 3, 4, 5, 6, 7, 7},
-    {7, 7, 6, 5, 4, 3, 2, 1, 0, 1, 2, 3, 4, 5, 6, 7},
-    {7, 7, 7, 6, 5, 4, 3, 2, 1, 0, 1, 2, 3, 4, 5, 6},
-    {7, 7, 7, 7, 6, 5, 4, 3, 2, 1, 0, 1, 2, 3, 4, 5},
-    {7, 7, 7, 7, 7, 6, 5, 4, 3, 2, 1, 0, 1, 2, 3, 4},
-    {7, 7, 7, 7, 7, 7, 6, 5, 4, 3, 2, 1, 0, 1, 2, 3},
-    {7, 7, 7, 7, 7, 7, 7, 6, 5, 4, 3, 2, 1, 0, 1, 2},
-    {7, 7, 7, 7, 7, 7, 7, 7, 6, 5, 4, 3, 2, 1, 0, 1},
-    {7, 7, 7, 7, 7, 7, 7, 7, 7, 6, 5, 4, 3, 2, 1, 0}};
 
 /** The fields of a point format 6 record (ASPRS LAS 1.4 R15, table 13). */
 struct Point14 {
@@ -285,7 +267,7 @@ public:
     p.return_number = static_cast<std::uint8_t> (r);
 
     const unsigned m = number_return_map_6ctx[n][r];
-    const unsigned l = number_return_level_8ctx[n][r];
+    const unsigned l = numberReturnLevel (n, r);
     const unsigned cpr = (r == 1 ? 2 : 0) + (r >= n ? 1 : 0);
     const unsigned median = (m << 1) | (gps_time_change ? 1 : 0);
 
