@@ -4,7 +4,6 @@
  */
 #include "register_to_map_output.h"
 
-#include <pcl_ext/evaluation/registration_metrics.h>
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/footprints.h>
 #include <pcl_ext/io/transform_file.h>
@@ -34,27 +33,6 @@
 
 namespace {
 using Point = pcl::PointXYZ;
-
-// Tables 1-2: the distances of the matched scan planes' inliers to their map planes.
-pcl_ext::PlaneDistanceMetrics
-planeDistances (const pcl_ext::PlaneMatchingRegistration<Point, Point>& reg,
-                const pcl_ext::PlaneMatchingCandidate& candidate,
-                const pcl::PointCloud<Point>& scan)
-{
-  std::vector<pcl::PointIndices> inliers;
-  for (const auto& plane : reg.getSourcePlanes())
-    inliers.push_back (plane.inliers);
-  std::vector<Eigen::Vector4d> coefficients;
-  for (const auto& plane : reg.getTargetPlanes())
-    coefficients.push_back (plane.coefficients());
-  pcl::Correspondences matches;
-  for (const auto& pair : candidate.matches)
-    matches.emplace_back (pair.scan, pair.map, 0.f);
-  pcl_ext::PlaneDistanceMetrics metrics;
-  pcl_ext::computePlaneDistances (
-      scan, inliers, coefficients, matches, candidate.estimate.transformation, metrics);
-  return metrics;
-}
 
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 // Top view (figures 3 and 5): the scan's wall points (inliers of its vertical planes)
@@ -546,7 +524,14 @@ main (int argc, char** argv)
                  known ? residuals.angle_residuals[i] * 180.0 / M_PI : NAN,
                  known ? residuals.distance_residuals[i] : NAN);
   }
-  const pcl_ext::PlaneDistanceMetrics d = planeDistances (reg, pick, *scan);
+  // Tables 1-2: the distances of the matched scan planes' inliers to their map planes.
+  pcl_ext::PlaneDistanceMetrics d;
+  pcl_ext::computePlaneDistances (*scan,
+                                  reg.getSourcePlanes(),
+                                  reg.getTargetPlanes(),
+                                  pick.matches,
+                                  pick.estimate.transformation,
+                                  d);
   std::printf ("Plane distances (Tables 1-2): mean %.3f m, max %.3f m, rms %.3f m over "
                "%zu points\n",
                d.mean,

@@ -3,8 +3,6 @@
  */
 #include <pcl_ext/evaluation/registration_metrics.h>
 
-#include <pcl/point_types.h>
-
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
@@ -73,77 +71,4 @@ TEST (RegistrationMetrics, ScaleDoesNotLeakIntoRotation)
   const auto e = pcl_ext::computeTransformationError (scaled, truth);
   EXPECT_NEAR (e.rotation_deg, 0.0, 1e-9);
   EXPECT_NEAR (e.scale_ratio, 1.5, 1e-12);
-}
-
-TEST (RegistrationMetrics, PlaneDistances)
-{
-  // Scan: a wall x = 0 (points with alternating +-0.2 m noise along x) and a floor z =
-  // 0.
-  pcl::PointCloud<pcl::PointXYZ> scan;
-  std::vector<pcl::PointIndices> planes (2);
-  for (int i = 0; i < 10; ++i)
-    for (int j = 0; j < 10; ++j) {
-      planes[0].indices.push_back (static_cast<int> (scan.size()));
-      scan.push_back (pcl::PointXYZ ((i + j) % 2 ? 0.2f : -0.2f, 0.5f * i, 0.5f * j));
-      planes[1].indices.push_back (static_cast<int> (scan.size()));
-      scan.push_back (pcl::PointXYZ (0.5f * i + 1.0f, 0.5f * j, 0.0f));
-    }
-  scan.push_back (pcl::PointXYZ (std::nanf (""), 0, 0)); // skipped
-  planes[1].indices.push_back (static_cast<int> (scan.size() - 1));
-
-  // The map is the scan moved by a known transform; its planes are (n, d), n . x + d =
-  // 0.
-  const Eigen::Matrix4d truth =
-      makeTransform (40.0, Eigen::Vector3d::UnitZ(), Eigen::Vector3d (100, 200, 3));
-  const Eigen::Matrix3d r = truth.topLeftCorner<3, 3>();
-  const Eigen::Vector3d t = truth.topRightCorner<3, 1>();
-  std::vector<Eigen::Vector4d> map_planes;
-  for (const Eigen::Vector3d n :
-       {Eigen::Vector3d (1, 0, 0), Eigen::Vector3d (0, 0, 1)}) {
-    const Eigen::Vector3d nm = r * n;
-    // Scale the normal by 2 to check that it is normalised.
-    map_planes.push_back (2.0 * Eigen::Vector4d (nm.x(), nm.y(), nm.z(), -nm.dot (t)));
-  }
-  map_planes.push_back (Eigen::Vector4d (0, 1, 0, 0)); // an unmatched map plane
-  pcl::Correspondences matches = {pcl::Correspondence (0, 0, 0.f),
-                                  pcl::Correspondence (1, 1, 0.f)};
-
-  pcl_ext::PlaneDistanceMetrics m;
-  ASSERT_TRUE (
-      pcl_ext::computePlaneDistances (scan, planes, map_planes, matches, truth, m));
-  ASSERT_EQ (m.pairs.size(), 2u);
-  EXPECT_EQ (m.points, 200u);
-  EXPECT_NEAR (m.pairs[0].mean, 0.2, 1e-6);
-  EXPECT_NEAR (m.pairs[0].max, 0.2, 1e-6);
-  EXPECT_NEAR (m.pairs[0].centroid_distance, 0.0, 1e-6);
-  EXPECT_NEAR (m.pairs[1].mean, 0.0, 1e-6);
-  EXPECT_EQ (m.pairs[1].points, 100u);
-  EXPECT_NEAR (m.mean, 0.1, 1e-6);
-  EXPECT_NEAR (m.max, 0.2, 1e-6);
-  EXPECT_NEAR (m.mean_of_planes, 0.1, 1e-6);
-  EXPECT_NEAR (m.max_angle_deg, 0.0, 1e-3);
-
-  // Shift the estimate by 0.5 m along z: the floor is 0.5 m off, the wall unaffected.
-  Eigen::Matrix4d shifted = truth;
-  shifted (2, 3) += 0.5;
-  ASSERT_TRUE (
-      pcl_ext::computePlaneDistances (scan, planes, map_planes, matches, shifted, m));
-  EXPECT_NEAR (m.pairs[1].mean, 0.5, 1e-6);
-  EXPECT_NEAR (m.pairs[1].centroid_distance, 0.5, 1e-6);
-  EXPECT_NEAR (m.pairs[0].mean, 0.2, 1e-6);
-  EXPECT_NEAR (m.max, 0.5, 1e-6);
-
-  // Tilt the estimate by 3 degrees about y: both planes tilt by 3 degrees.
-  const Eigen::Matrix4d tilted =
-      truth * makeTransform (3.0, Eigen::Vector3d::UnitY(), Eigen::Vector3d::Zero());
-  ASSERT_TRUE (
-      pcl_ext::computePlaneDistances (scan, planes, map_planes, matches, tilted, m));
-  EXPECT_NEAR (m.pairs[1].angle_deg, 3.0, 1e-3);
-  EXPECT_NEAR (m.max_angle_deg, 3.0, 1e-3);
-
-  // A correspondence out of range is refused.
-  matches.push_back (pcl::Correspondence (2, 0, 0.f));
-  EXPECT_FALSE (
-      pcl_ext::computePlaneDistances (scan, planes, map_planes, matches, truth, m));
-  EXPECT_TRUE (m.pairs.empty());
 }

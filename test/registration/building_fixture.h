@@ -5,7 +5,6 @@
  */
 #pragma once
 
-#include "plane_distances.h"
 #include "plane_fixtures.h"
 
 #include <pcl_ext/evaluation/registration_metrics.h>
@@ -107,7 +106,7 @@ registerToMap (const Building& b)
   truth.topRightCorner<3, 1>() -= reg.getLocalOrigin();
   o.error = computeTransformationError (
       reg.getFinalTransformationDouble(), truth, centroidOf (*b.cloud));
-  o.distances = planeDistances (reg, *b.cloud);
+  reg.getPlaneDistances (o.distances);
   o.scan_planes = reg.getSourcePlanes().size();
   o.map_planes = reg.getMapPlanes().size();
   o.matches = reg.getMatchingResult().matches.size();

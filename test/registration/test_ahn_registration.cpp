@@ -8,7 +8,6 @@
  * class. Each tile is registered from an identity guess, once with bounds of 10 deg and
  * 10 m around it (a rough GNSS pose) and once by the paper's global search.
  */
-#include "plane_distances.h"
 
 #include <pcl_ext/evaluation/registration_metrics.h>
 #include <pcl_ext/registration/plane_matching_registration.h>
@@ -131,7 +130,8 @@ registerTile (const std::string& tile,
   const auto error =
       computeTransformationError (reg.getFinalTransformationDouble(), truth, centre);
   figures.rotation_deg = error.rotation_deg;
-  const PlaneDistanceMetrics distances = test::planeDistances (reg, *cloud);
+  PlaneDistanceMetrics distances;
+  reg.getPlaneDistances (distances);
   std::printf ("AHN %s: rotation error %.3f deg, translation error %.3f m, plane "
                "distance mean %.3f m, "
                "max %.3f m\n",

@@ -16,32 +16,6 @@
 
 namespace pcl_ext {
 namespace demo {
-namespace {
-// Tables 1-2: the distances of the matched scan planes' inliers to their map planes.
-PlaneDistanceMetrics
-planeDistances (const PlaneMatchingRegistration<pcl::PointXYZ, pcl::PointXYZ>& reg,
-                const pcl::PointCloud<pcl::PointXYZ>& scan)
-{
-  std::vector<pcl::PointIndices> inliers;
-  for (const auto& plane : reg.getSourcePlanes())
-    inliers.push_back (plane.inliers);
-  std::vector<Eigen::Vector4d> coefficients;
-  for (const auto& plane : reg.getTargetPlanes())
-    coefficients.push_back (plane.coefficients());
-  pcl::Correspondences matches;
-  for (const auto& pair : reg.getMatchingResult().matches)
-    matches.emplace_back (pair.scan, pair.map, 0.f);
-  PlaneDistanceMetrics metrics;
-  computePlaneDistances (scan,
-                         inliers,
-                         coefficients,
-                         matches,
-                         reg.getFinalTransformationDouble(),
-                         metrics);
-  return metrics;
-}
-} // namespace
-
 bool
 runRegistrationStep (DemoContext& context)
 {
@@ -97,7 +71,8 @@ runRegistrationStep (DemoContext& context)
   pcl::compute3DCentroid (*scan, centroid);
   const auto error = computeTransformationError (
       scan_to_map, scene->scan_to_map, centroid.head<3>().cast<double>());
-  const PlaneDistanceMetrics d = planeDistances (reg, *scan);
+  PlaneDistanceMetrics d;
+  reg.getPlaneDistances (d);
   context.summary << "  building: " << scan->size() << " points, "
                   << reg.getSourcePlanes().size() << " scan planes, "
                   << reg.getMapPlanes().size() << " map planes, "

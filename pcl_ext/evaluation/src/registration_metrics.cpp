@@ -1,10 +1,9 @@
 /*
  * pcl_ext: registration accuracy.
  */
-#include <pcl_ext/common/instantiate.h>
 #include <pcl_ext/evaluation/registration_metrics.h>
-#include <pcl_ext/evaluation/impl/registration_metrics.hpp>
 
+#include <Eigen/LU>
 #include <Eigen/SVD>
 
 #include <cmath>
@@ -57,5 +56,3 @@ pcl_ext::computeTransformationError (const Eigen::Matrix4d& estimated,
   error.scale_ratio = scale_truth > 0.0 ? scale_estimated / scale_truth : 0.0;
   return error;
 }
-
-PCL_EXT_INSTANTIATE (computePlaneDistances, PCL_EXT_XYZ_POINT_TYPES)

@@ -6,6 +6,7 @@
 
 #include <pcl_ext/io/footprints.h>
 #include <pcl_ext/registration/map_planes.h>
+#include <pcl_ext/registration/plane_distances.h>
 #include <pcl_ext/registration/plane_extraction.h>
 #include <pcl_ext/registration/plane_matching.h>
 
@@ -101,6 +102,19 @@ public:
   getFitnessScore (double max_range = std::numeric_limits<double>::max());
   /** \brief pcl::Registration's score of two sets of correspondence distances. */
   using Base::getFitnessScore;
+
+  /** \brief The distances of Khoshelham & Gorte's Tables 1-2 after the last align():
+   * computePlaneDistances on the source cloud, the scan planes, the target planes and
+   * the match set, with getFinalTransformationDouble(). Unlike getFitnessScore(), every
+   * inlier counts and the figures are per point and per pair (mean, maximum, RMS,
+   * normal angle). After an align() that did not converge the match set is empty, and
+   * so are \a metrics.
+   * \param[out] metrics the distances (reset first)
+   * \return false (PCL_ERROR, empty metrics) without a source cloud, or as
+   * computePlaneDistances (scan planes set by setSourcePlanes() since align() that no
+   * longer fit the match set) */
+  bool
+  getPlaneDistances (PlaneDistanceMetrics& metrics) const;
 
   /** \brief Map planes from footprints (section 3.1). The local origin is \a
    * parameters.origin, or when it is zero and \a choose_origin is true,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl_ext/common/indices.h>
+#include <pcl_ext/registration/impl/plane_distances.hpp>
 #include <pcl_ext/registration/impl/plane_extraction.hpp>
 #include <pcl_ext/registration/plane_matching_registration.h>
 #include <pcl_ext/registration/scan_levelling.h>
@@ -135,6 +136,21 @@ PlaneMatchingRegistration<PointSource, PointTarget>::getFitnessScore (double max
   }
   return planes > 0 ? sum / static_cast<double> (planes)
                     : std::numeric_limits<double>::max();
+}
+
+template <typename PointSource, typename PointTarget>
+bool
+PlaneMatchingRegistration<PointSource, PointTarget>::getPlaneDistances (
+    PlaneDistanceMetrics& metrics) const
+{
+  if (!input_) {
+    PCL_ERROR ("[pcl_ext::%s::getPlaneDistances] No source cloud.\n",
+               reg_name_.c_str());
+    metrics = PlaneDistanceMetrics();
+    return false;
+  }
+  return computePlaneDistances (
+      *input_, source_planes_, target_planes_, result_.matches, final_double_, metrics);
 }
 
 template <typename PointSource, typename PointTarget>

@@ -1,9 +1,9 @@
 /*
- * pcl_ext: registration accuracy, template part.
+ * pcl_ext: the distances between the matched planes of a registration, template part.
  */
 #pragma once
 
-#include <pcl_ext/evaluation/registration_metrics.h>
+#include <pcl_ext/registration/plane_distances.h>
 
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
@@ -119,11 +119,40 @@ pcl_ext::computePlaneDistances (const pcl::PointCloud<PointT>& scan,
   return true;
 }
 
+template <typename PointT>
+bool
+pcl_ext::computePlaneDistances (const pcl::PointCloud<PointT>& scan,
+                                const std::vector<ScanPlane>& scan_planes,
+                                const std::vector<Plane>& target_planes,
+                                const std::vector<PlanePair>& matches,
+                                const Eigen::Matrix4d& transformation,
+                                PlaneDistanceMetrics& metrics)
+{
+  std::vector<pcl::PointIndices> inliers;
+  for (const auto& plane : scan_planes)
+    inliers.push_back (plane.inliers);
+  std::vector<Eigen::Vector4d> coefficients;
+  for (const auto& plane : target_planes)
+    coefficients.push_back (plane.coefficients());
+  pcl::Correspondences correspondences;
+  for (const auto& pair : matches)
+    correspondences.emplace_back (pair.scan, pair.map, 0.f);
+  return computePlaneDistances (
+      scan, inliers, coefficients, correspondences, transformation, metrics);
+}
+
 #define PCL_EXT_INSTANTIATE_computePlaneDistances(T)                                   \
   template bool pcl_ext::computePlaneDistances<T> (                                    \
       const pcl::PointCloud<T>&,                                                       \
       const std::vector<pcl::PointIndices>&,                                           \
       const std::vector<Eigen::Vector4d>&,                                             \
       const pcl::Correspondences&,                                                     \
+      const Eigen::Matrix4d&,                                                          \
+      pcl_ext::PlaneDistanceMetrics&);                                                 \
+  template bool pcl_ext::computePlaneDistances<T> (                                    \
+      const pcl::PointCloud<T>&,                                                       \
+      const std::vector<pcl_ext::ScanPlane>&,                                          \
+      const std::vector<pcl_ext::Plane>&,                                              \
+      const std::vector<pcl_ext::PlanePair>&,                                          \
       const Eigen::Matrix4d&,                                                          \
       pcl_ext::PlaneDistanceMetrics&);
