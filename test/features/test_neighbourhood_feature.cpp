@@ -42,19 +42,11 @@ protected:
 /** The same count, from an estimator that takes normals as PCL's FeatureFromNormals
  * does. */
 class NeighbourCountWithNormals
-: public pcl_ext::NeighbourhoodFeature<
-      pcl::FeatureFromNormals<Point, pcl::Normal, pcl::Intensity>,
-      Point> {
+: public pcl_ext::NeighbourhoodFeatureFromNormals<Point, pcl::Normal, pcl::Intensity> {
 public:
   NeighbourCountWithNormals() { feature_name_ = "NeighbourCountWithNormals"; }
 
 protected:
-  bool
-  checkInputs () override
-  {
-    return checkNormals (normals_);
-  }
-
   void
   computeFeature (Output& output) override
   {

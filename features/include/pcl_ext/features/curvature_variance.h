@@ -49,11 +49,8 @@ template <typename PointInT,
           typename PointNT,
           typename PointOutT = pcl_ext::CurvatureVariance>
 class CurvatureVarianceEstimation
-: public NeighbourhoodFeature<pcl::FeatureFromNormals<PointInT, PointNT, PointOutT>,
-                              PointInT> {
-  using Base =
-      NeighbourhoodFeature<pcl::FeatureFromNormals<PointInT, PointNT, PointOutT>,
-                           PointInT>;
+: public NeighbourhoodFeatureFromNormals<PointInT, PointNT, PointOutT> {
+  using Base = NeighbourhoodFeatureFromNormals<PointInT, PointNT, PointOutT>;
 
 public:
   using Ptr =
@@ -69,9 +66,6 @@ protected:
   using Base::input_;
   using Base::nb_;
   using Base::normals_;
-
-  bool
-  checkInputs () override;
 
   void
   computeFeature (PointCloudOut& output) override;

@@ -1,6 +1,6 @@
 /*
  * pcl_ext: the part every pcl_ext feature estimator shares: shared neighbourhoods and
- * threads.
+ * threads, and for those that read normals, the normals' check.
  */
 #pragma once
 
@@ -171,5 +171,26 @@ protected:
   /** \brief The neighbourhoods of the current compute(); row r belongs to
    * (*indices_)[r]. */
   const Neighbourhoods<PointInT>* nb_ = nullptr;
+};
+
+/** \brief A NeighbourhoodFeature on pcl::FeatureFromNormals: the normals given with
+ * setInputNormals() are checked (checkNormals: one per input point) before any search.
+ *
+ * The base of the estimators that read a normal per neighbour, as PCL's estimators
+ * derive from pcl::FeatureFromNormals. A subclass with inputs of its own to check
+ * overrides checkInputs() and calls this one first.
+ */
+template <typename PointInT, typename PointNT, typename PointOutT>
+class NeighbourhoodFeatureFromNormals
+: public NeighbourhoodFeature<pcl::FeatureFromNormals<PointInT, PointNT, PointOutT>,
+                              PointInT> {
+protected:
+  using pcl::FeatureFromNormals<PointInT, PointNT, PointOutT>::normals_;
+
+  bool
+  checkInputs () override
+  {
+    return this->checkNormals (normals_);
+  }
 };
 } // namespace pcl_ext

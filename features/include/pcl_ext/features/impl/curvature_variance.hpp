@@ -10,13 +10,6 @@
 
 template <typename PointInT, typename PointNT, typename PointOutT>
 bool
-pcl_ext::CurvatureVarianceEstimation<PointInT, PointNT, PointOutT>::checkInputs()
-{
-  return this->checkNormals (normals_);
-}
-
-template <typename PointInT, typename PointNT, typename PointOutT>
-bool
 pcl_ext::CurvatureVarianceEstimation<PointInT, PointNT, PointOutT>::computePoint (
     std::size_t row, PointOutT& out) const
 {

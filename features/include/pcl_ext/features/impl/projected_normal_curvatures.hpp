@@ -9,14 +9,6 @@
 #include <limits>
 
 template <typename PointInT, typename PointNT, typename PointOutT>
-bool
-pcl_ext::ProjectedNormalCurvaturesEstimation<PointInT, PointNT, PointOutT>::
-    checkInputs()
-{
-  return this->checkNormals (normals_);
-}
-
-template <typename PointInT, typename PointNT, typename PointOutT>
 void
 pcl_ext::ProjectedNormalCurvaturesEstimation<PointInT, PointNT, PointOutT>::setInvalid (
     PointOutT& out)
