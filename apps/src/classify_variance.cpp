@@ -44,8 +44,6 @@ main (int argc, char** argv)
       "",
       "surface, edge and boundary have no ASPRS class code; the classes go to the "
       "-output_field field (LAS: an extra-bytes dimension)");
-  cl.addPositional ("input", input_path, pcl_ext::apps::kInputFormats);
-  cl.addPositional ("output", output_path, pcl_ext::apps::kOutputFormats);
   cl.addOption ("k", k, "neighbours per point (the paper's k)");
   cl.addOption ("radius", radius, "neighbourhood radius instead of k (0: use k)");
   cl.addOption (
@@ -53,7 +51,7 @@ main (int argc, char** argv)
       max_radius,
       "with k: keep only the neighbours within this distance (0: no cap, the paper's)");
   options.addTo (cl);
-  result.addTo (cl);
+  result.addTo (cl, input_path, output_path);
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption ("png",
                 png_path,

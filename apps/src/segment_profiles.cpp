@@ -130,9 +130,7 @@ main (int argc, char** argv)
                                  "input's coordinates, with the segment in the field "
                                  "'segment' (1.. by decreasing size, 0: none).");
   pcl_ext::apps::ResultField result = pcl_ext::apps::segmentIdField();
-  cl.addPositional ("input", input_path, pcl_ext::apps::kInputFormats);
-  cl.addPositional ("output", output_path, pcl_ext::apps::kOutputFormats);
-  result.addTo (cl);
+  result.addTo (cl, input_path, output_path);
   cl.addOption ("stacks", stacks, "number of stacks (stack normals spread evenly)");
   cl.addOption ("distribution",
                 distribution,

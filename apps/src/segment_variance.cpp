@@ -44,10 +44,8 @@ main (int argc, char** argv)
                                  "the segment (field 'segment': 1.. by decreasing "
                                  "size, 0: none) in the input's coordinates.");
   pcl_ext::apps::ResultField result = pcl_ext::apps::segmentIdField();
-  cl.addPositional ("input", input_path, pcl_ext::apps::kInputFormats);
-  cl.addPositional ("output", output_path, pcl_ext::apps::kOutputFormats);
   options.addTo (cl);
-  result.addTo (cl);
+  result.addTo (cl, input_path, output_path);
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addOption (
       "png", png_path, "also render the segments to this PNG; needs an X display");

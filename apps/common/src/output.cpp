@@ -1,6 +1,7 @@
 /*
  * pcl_ext: an app's result written next to the input's fields, in the input's frame.
  */
+#include <pcl_ext/apps/input.h>
 #include <pcl_ext/apps/output.h>
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/file_output.h>
@@ -36,6 +37,14 @@ ResultField::addTo (CommandLine& cl)
                 asprs_note_.empty() ? "refused: " + refusal_
                                     : asprs_note_ + " (LAS output only)");
   cl_ = &cl;
+}
+
+void
+ResultField::addTo (CommandLine& cl, std::string& input, std::string& output)
+{
+  cl.addPositional ("input", input, kInputFormats);
+  cl.addPositional ("output", output, kOutputFormats);
+  addTo (cl);
 }
 
 bool

@@ -37,6 +37,12 @@ public:
   void
   addTo (CommandLine& cl);
 
+  /** \brief The command line of an app that writes the input's points again with its
+   * result: the positionals `input` (any point file, kInputFormats) and `output`
+   * (kOutputFormats), then -output_field and -asprs as addTo(). */
+  void
+  addTo (CommandLine& cl, std::string& input, std::string& output);
+
   /** \brief Before any work: the output's format can be written
    * (io::canWritePointFile), its folder and those of the \a optional outputs are
    * writable, and -asprs is usable (offered by the app, .las output). Prints the reason
