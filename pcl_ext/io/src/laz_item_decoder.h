@@ -45,6 +45,29 @@ public:
   decode (std::uint8_t* item, unsigned& context) = 0;
 };
 
+/** \brief The start of a chunk, the same for every layered item: the decoder of each of
+ * the \a count \a layers that has bytes starts on them, and \a changed says which did
+ * (an empty layer: the field kept its value all through the chunk); every scanner
+ * channel's context is marked unused, to be set up again from the chunk's first item.
+ * \a decoders and \a changed are indexed by layer (arrays or vectors). */
+template <typename Decoders, typename Changed, typename Context>
+void
+startLayers (const Layer* layers,
+             std::size_t count,
+             Decoders& decoders,
+             Changed& changed,
+             std::unique_ptr<Context> (&contexts)[4])
+{
+  for (std::size_t i = 0; i < count; ++i) {
+    changed[i] = layers[i].size > 0;
+    if (changed[i])
+      decoders[i].init (layers[i].data, layers[i].data + layers[i].size);
+  }
+  for (auto& c : contexts)
+    if (c)
+      c->unused = true;
+}
+
 /** \brief The decoder of a pointwise (v2) item, reading from \a dec. */
 std::unique_ptr<ItemDecoder>
 makePointwiseItemDecoder (const LazItem& item, LazArithmeticDecoder& dec);

@@ -37,14 +37,7 @@ public:
   void
   startChunk (const std::uint8_t* item, const Layer* layers, unsigned& context) override
   {
-    for (std::size_t i = 0; i < layerCount(); ++i) {
-      changed_[i] = layers[i].size > 0;
-      if (changed_[i])
-        dec_[i].init (layers[i].data, layers[i].data + layers[i].size);
-    }
-    for (auto& c : contexts_)
-      if (c)
-        c->unused = true;
+    startLayers (layers, layerCount(), dec_, changed_, contexts_);
     std::uint16_t first[4] = {0, 0, 0, 0};
     for (std::size_t i = 0; i < layerCount() + 2; ++i)
       first[i] = loadU16 (item + 2 * i);
@@ -141,14 +134,7 @@ public:
   void
   startChunk (const std::uint8_t* item, const Layer* layers, unsigned& context) override
   {
-    for (std::size_t i = 0; i < count_; ++i) {
-      changed_[i] = layers[i].size > 0;
-      if (changed_[i])
-        dec_[i].init (layers[i].data, layers[i].data + layers[i].size);
-    }
-    for (auto& c : contexts_)
-      if (c)
-        c->unused = true;
+    startLayers (layers, count_, dec_, changed_, contexts_);
     current_ = context & 3;
     initContext (current_, item);
   }

@@ -190,14 +190,7 @@ public:
   void
   startChunk (const std::uint8_t* item, const Layer* layers, unsigned& context) override
   {
-    for (std::size_t i = 0; i < layer_count; ++i) {
-      changed_[i] = layers[i].size > 0;
-      if (changed_[i])
-        dec_[i].init (layers[i].data, layers[i].data + layers[i].size);
-    }
-    for (auto& c : contexts_)
-      if (c)
-        c->unused = true;
+    startLayers (layers, layer_count, dec_, changed_, contexts_);
     Point14 first;
     first.load (item);
     current_ = first.scanner_channel;
