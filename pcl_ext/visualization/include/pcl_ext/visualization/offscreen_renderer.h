@@ -45,7 +45,7 @@ struct View {
   std::string title;
   std::vector<Layer> layers;
   std::vector<LegendEntry> legend;
-  ColourBar colour_bar;
+  ColourBar colour_bar = {}; ///< none when its name is empty
 };
 
 /** \brief Image and camera settings. All panels share one camera so results compare.
