@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl_ext/classification/local_variance_classification.h>
+#include <pcl_ext/common/indices.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/features/local_variance.h>
 
@@ -390,16 +391,17 @@ pcl_ext::LocalVarianceClassification<PointT>::extract (
   classify (labels);
   if (labels.empty())
     return;
-  clusters.resize (kNumPointClasses);
-  for (auto& c : clusters)
-    c.header = input_->header;
   // classify() released the indices; the labels are in the order of getIndices().
   const auto indices = this->getIndices();
-  for (std::size_t r = 0; r < labels.size(); ++r) {
-    const auto c = std::min<std::size_t> (labels[r].label, kNumPointClasses - 1);
-    clusters[c].indices.push_back (indices ? (*indices)[r]
-                                           : static_cast<pcl::index_t> (r));
-  }
+  groupByClass (
+      labels,
+      indices.get(),
+      kNumPointClasses,
+      [] (std::uint32_t label) {
+        return std::min<std::size_t> (label, kNumPointClasses - 1);
+      },
+      input_->header,
+      clusters);
 }
 
 #define PCL_EXT_INSTANTIATE_LocalVarianceClassification(T)                             \

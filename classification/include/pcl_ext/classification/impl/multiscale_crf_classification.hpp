@@ -8,6 +8,7 @@
 
 #include <pcl/console/print.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -110,14 +111,18 @@ pcl_ext::MultiscaleCrfClassification<PointT>::extract (
   classify (labels);
   if (labels.empty())
     return;
+  // A label not among the model's classes (none is expected) leaves its point out.
   const auto& ids = model_.getClassLabels();
-  classes.resize (ids.size());
-  for (std::size_t r = 0; r < labels.size(); ++r)
-    for (std::size_t k = 0; k < ids.size(); ++k)
-      if (labels[r].label == ids[k])
-        classes[k].indices.push_back ((*indices_)[r]);
-  for (auto& c : classes)
-    c.header = input_->header;
+  groupByClass (
+      labels,
+      indices_.get(),
+      ids.size(),
+      [&ids] (std::uint32_t label) {
+        return static_cast<std::size_t> (std::find (ids.begin(), ids.end(), label) -
+                                         ids.begin());
+      },
+      input_->header,
+      classes);
 }
 
 #define PCL_EXT_INSTANTIATE_MultiscaleCrfClassification(T)                             \

@@ -1,13 +1,18 @@
 /*
  * pcl_ext: the index check every class runs before it reads the points its indices
- * name.
+ * name, and the grouping of a classifier's labels into one index list per class.
  */
 #pragma once
 
+#include <pcl/PCLHeader.h>
+#include <pcl/PointIndices.h>
 #include <pcl/console/print.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
 #include <pcl/types.h>
 
 #include <cstddef>
+#include <vector>
 
 namespace pcl_ext {
 /** \brief True when every index names a point of a cloud of \a size points. Otherwise
@@ -26,5 +31,29 @@ indicesInRange (const pcl::Indices& indices, std::size_t size, const char* calle
       return false;
     }
   return true;
+}
+
+/** \brief The points of \a labels grouped by class, as a classifier's extract() gives
+ * them: \a classes lists, each with \a header. Row r of \a labels is the point
+ * (*\a indices)[r], or r when \a indices is null; \a class_of maps a label to its class
+ * (a value of \a classes or more leaves the point out). */
+template <typename ClassOf>
+void
+groupByClass (const pcl::PointCloud<pcl::Label>& labels,
+              const pcl::Indices* indices,
+              std::size_t classes,
+              const ClassOf& class_of,
+              const pcl::PCLHeader& header,
+              std::vector<pcl::PointIndices>& grouped)
+{
+  grouped.assign (classes, pcl::PointIndices());
+  for (auto& c : grouped)
+    c.header = header;
+  for (std::size_t r = 0; r < labels.size(); ++r) {
+    const std::size_t c = class_of (labels[r].label);
+    if (c < classes)
+      grouped[c].indices.push_back (indices ? (*indices)[r]
+                                            : static_cast<pcl::index_t> (r));
+  }
 }
 } // namespace pcl_ext
