@@ -217,9 +217,8 @@ TEST (VarianceRegionGrowingScenes, IndoorWorkflowBeatsPclRegionGrowing)
 }
 
 // Goal (mean best IoU 0.85, and 0.10 above pcl::RegionGrowing), not met: disabled, run
-// with
-// --gtest_also_run_disabled_tests. What region growing over the classification cannot
-// reach sets a ceiling below it (pieces smaller than the minimum size or with no
+// with --gtest_also_run_disabled_tests. What region growing over the classification
+// cannot reach sets a ceiling below it (pieces smaller than the minimum size or with no
 // surface point to seed from, the tangent pipe run); docs/belton_lichti.md has the
 // figures, the options tried and where the mean is lost.
 TEST (VarianceRegionGrowingScenes, DISABLED_IndoorMeanBestIoUBeatsPclRegionGrowing)
