@@ -5,6 +5,8 @@
  */
 #include <pcl_ext/io/laz_arithmetic_decoder.h>
 
+#include <pcl_ext/common/random.h>
+
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -25,6 +27,82 @@ decoderOver (const std::vector<std::uint8_t>& bytes)
   dec.init (bytes.data(), bytes.data() + bytes.size());
   return dec;
 }
+
+/** LASzip's adaptive symbol model and symbol decoding written out the plain way: the
+ * distribution recomputed on the same schedule, the symbol found by bisecting the whole
+ * distribution (multiplying out each boundary), no look-up table. */
+class ReferenceSymbolDecoder {
+public:
+  ReferenceSymbolDecoder (const std::vector<std::uint8_t>& bytes, std::uint32_t symbols)
+  : bytes_ (bytes), counts_ (symbols, 1), distribution_ (symbols)
+  {
+    value_ = (std::uint32_t (bytes[0]) << 24) | (std::uint32_t (bytes[1]) << 16) |
+             (std::uint32_t (bytes[2]) << 8) | std::uint32_t (bytes[3]);
+    next_ = 4;
+    cycle_ = symbols;
+    update();
+    until_ = cycle_ = (symbols + 6) / 2;
+  }
+
+  std::uint32_t
+  decode ()
+  {
+    std::uint32_t sym = 0, x = 0, y = length_, n = symbols();
+    length_ >>= 15;
+    for (std::uint32_t k = n / 2; k != sym; k = (sym + n) / 2) {
+      const std::uint32_t z = length_ * distribution_[k];
+      if (z > value_) {
+        n = k;
+        y = z;
+      }
+      else {
+        sym = k;
+        x = z;
+      }
+    }
+    value_ -= x;
+    length_ = y - x;
+    while (length_ < (1u << 24)) {
+      value_ = (value_ << 8) | bytes_.at (next_++);
+      length_ <<= 8;
+    }
+    ++counts_[sym];
+    if (--until_ == 0)
+      update();
+    return sym;
+  }
+
+private:
+  std::uint32_t
+  symbols () const
+  {
+    return static_cast<std::uint32_t> (counts_.size());
+  }
+
+  void
+  update ()
+  {
+    if ((total_ += cycle_) > (1u << 15)) {
+      total_ = 0;
+      for (auto& c : counts_)
+        total_ += (c = (c + 1) / 2);
+    }
+    const std::uint32_t scale = 0x80000000u / total_;
+    std::uint32_t sum = 0;
+    for (std::uint32_t k = 0; k < symbols(); ++k) {
+      distribution_[k] = (scale * sum) >> 16;
+      sum += counts_[k];
+    }
+    cycle_ = std::min ((5 * cycle_) / 4, (symbols() + 6) * 8);
+    until_ = cycle_;
+  }
+
+  const std::vector<std::uint8_t>& bytes_;
+  std::size_t next_ = 0;
+  std::uint32_t value_ = 0, length_ = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> counts_, distribution_;
+  std::uint32_t total_ = 0, cycle_ = 0, until_ = 0;
+};
 } // namespace
 
 TEST (LazArithmeticDecoder, NeedsFourBytesToStart)
@@ -93,7 +171,7 @@ TEST (LazArithmeticDecoder, BitWithEquiprobableModel)
 
 TEST (LazArithmeticDecoder, SymbolWithUniformModelBySearch)
 {
-  // 4 symbols (no table): distribution k * 2^13, length >> 15 = 0x1FFFF. value
+  // 4 symbols: distribution k * 2^13, length >> 15 = 0x1FFFF. value
   // 0x40000000 lies in [8192, 16384) * 0x1FFFF: symbol 1; 0xC0000000: symbol 3.
   for (const auto& [lead, expected] :
        std::vector<std::pair<std::uint8_t, std::uint32_t>>{
@@ -107,7 +185,7 @@ TEST (LazArithmeticDecoder, SymbolWithUniformModelBySearch)
 
 TEST (LazArithmeticDecoder, SymbolWithUniformModelByTable)
 {
-  // 16 symbols (search): distribution k * 2^11; 32 symbols (table): k * 2^10. value
+  // 16 symbols: distribution k * 2^11; 32 symbols: k * 2^10. value
   // 0x40000000 / 0x1FFFF = 8192: symbol 4 of 16, symbol 8 of 32.
   const std::vector<std::uint8_t> bytes = {0x40, 0, 0, 0, 0, 0, 0, 0};
   LazArithmeticDecoder a = decoderOver (bytes);
@@ -116,6 +194,32 @@ TEST (LazArithmeticDecoder, SymbolWithUniformModelByTable)
   LazArithmeticDecoder b = decoderOver (bytes);
   LazSymbolModel m32 (32);
   EXPECT_EQ (b.decodeSymbol (m32), 8u);
+}
+
+TEST (LazArithmeticDecoder, SymbolsAreThoseOfThePlainBisection)
+{
+  // The decoder's look-up table only says where to start looking: whatever the alphabet
+  // and however skewed the model has become, each symbol is the one a plain bisection
+  // of the distribution finds. Streams of uniform bytes keep the models near uniform;
+  // streams that are mostly zero bytes skew them towards the first symbols.
+  for (const std::uint32_t symbols :
+       {2u, 3u, 5u, 16u, 17u, 33u, 64u, 256u, 257u, 2048u}) {
+    for (const bool skewed : {false, true}) {
+      pcl_ext::RandomStream random (symbols * 2 + skewed);
+      std::vector<std::uint8_t> bytes (200000);
+      for (auto& b : bytes)
+        b = (skewed && random.uniform() < 0.9)
+                ? 0
+                : static_cast<std::uint8_t> (random.next());
+      LazArithmeticDecoder dec = decoderOver (bytes);
+      LazSymbolModel model (symbols);
+      ReferenceSymbolDecoder reference (bytes, symbols);
+      for (int i = 0; i < 20000; ++i)
+        ASSERT_EQ (dec.decodeSymbol (model), reference.decode())
+            << symbols << " symbols, " << (skewed ? "skewed" : "uniform")
+            << " stream, symbol " << i;
+    }
+  }
 }
 
 TEST (LazArithmeticDecoder, ModelsAdaptToWhatTheyDecode)

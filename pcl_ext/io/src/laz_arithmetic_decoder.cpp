@@ -46,20 +46,16 @@ LazSymbolModel::LazSymbolModel (std::uint32_t symbols) : symbols_ (symbols)
     throw std::invalid_argument (
         "LazSymbolModel: the number of symbols must be in [2, 2048]");
   last_symbol_ = symbols - 1;
-  std::size_t size = 2 * static_cast<std::size_t> (symbols);
-  if (symbols > 16) {
-    std::uint32_t table_bits = 3;
-    while (symbols > (1u << (table_bits + 2)))
-      ++table_bits;
-    table_size_ = 1u << table_bits;
-    table_shift_ = symbol_length_shift - table_bits;
-    size += table_size_ + 2;
-  }
-  storage_.assign (size, 0);
-  distribution_ = storage_.data();
-  symbol_count_ = distribution_ + symbols;
-  if (table_size_ > 0)
-    decoder_table_ = distribution_ + 2 * static_cast<std::size_t> (symbols);
+  std::uint32_t table_bits = 3;
+  while (symbols > (1u << (table_bits - 2)) && table_bits < 12)
+    ++table_bits;
+  table_size_ = 1u << table_bits;
+  table_shift_ = symbol_length_shift - table_bits;
+  lookup_.assign (static_cast<std::size_t> (symbols) + table_size_ + 2, 0);
+  distribution_ = lookup_.data();
+  decoder_table_ = distribution_ + symbols;
+  counts_.assign (symbols, 1);
+  symbol_count_ = counts_.data();
   reset();
 }
 
@@ -84,24 +80,17 @@ LazSymbolModel::update()
   }
   std::uint32_t sum = 0, s = 0;
   const std::uint32_t scale = 0x80000000u / total_count_;
-  if (table_size_ == 0) {
-    for (std::uint32_t k = 0; k < symbols_; ++k) {
-      distribution_[k] = (scale * sum) >> (31 - symbol_length_shift);
-      sum += symbol_count_[k];
-    }
+  for (std::uint32_t k = 0; k < symbols_; ++k) {
+    distribution_[k] =
+        static_cast<std::uint16_t> ((scale * sum) >> (31 - symbol_length_shift));
+    sum += symbol_count_[k];
+    const std::uint32_t w = distribution_[k] >> table_shift_;
+    while (s < w)
+      decoder_table_[++s] = static_cast<std::uint16_t> (k - 1);
   }
-  else {
-    for (std::uint32_t k = 0; k < symbols_; ++k) {
-      distribution_[k] = (scale * sum) >> (31 - symbol_length_shift);
-      sum += symbol_count_[k];
-      const std::uint32_t w = distribution_[k] >> table_shift_;
-      while (s < w)
-        decoder_table_[++s] = k - 1;
-    }
-    decoder_table_[0] = 0;
-    while (s <= table_size_)
-      decoder_table_[++s] = symbols_ - 1;
-  }
+  decoder_table_[0] = 0;
+  while (s <= table_size_)
+    decoder_table_[++s] = static_cast<std::uint16_t> (symbols_ - 1);
   update_cycle_ = (5 * update_cycle_) >> 2;
   const std::uint32_t max_cycle = (symbols_ + 6) << 3;
   if (update_cycle_ > max_cycle)

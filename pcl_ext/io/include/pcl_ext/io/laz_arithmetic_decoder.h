@@ -50,8 +50,13 @@ private:
  *
  * Counts start at one each and are halved past 2^15; the cumulative distribution (15
  * bits) is recomputed after (symbols + 6) / 2 symbols, then each time after 5/4 as
- * many, at most 8 (symbols + 6). Models of more than 16 symbols keep a look-up table
- * that narrows the search of the decoded symbol. */
+ * many, at most 8 (symbols + 6).
+ *
+ * Every model keeps a look-up table from the top bits of the scaled value to the range
+ * of symbols it can fall in. LASzip's table has about one entry per four symbols and
+ * only for more than 16 symbols; this one has about four entries per symbol (at most
+ * 4096), so the bisection after the look-up mostly has nothing to do. The table changes
+ * only the speed: the decoded symbols are those of the distribution. */
 class LazSymbolModel {
 public:
   /** \param[in] symbols the alphabet size, 2 to 2048 \throw std::invalid_argument else
@@ -81,19 +86,22 @@ private:
   void
   update ();
 
-  // distribution (symbols), then counts (symbols), then the decoder table (table_size_
-  // + 2) when there is one.
-  std::vector<std::uint32_t> storage_;
-  std::uint32_t* distribution_ = nullptr;
+  // What decoding a symbol reads comes first, within one cache line: the cumulative
+  // distribution (symbols entries, each below 2^15) and the decoder table (table_size_
+  // + 2 entries: the symbols of distribution values from t << table_shift_ are in
+  // [decoder_table_[t], decoder_table_[t + 1]]) point into lookup_.
+  std::uint16_t* distribution_ = nullptr;
+  std::uint16_t* decoder_table_ = nullptr;
   std::uint32_t* symbol_count_ = nullptr;
-  std::uint32_t* decoder_table_ = nullptr;
-  std::uint32_t symbols_;
+  std::uint32_t table_shift_ = 0;
+  std::uint32_t table_size_ = 0;
   std::uint32_t last_symbol_;
+  std::uint32_t symbols_until_update_ = 0;
+  std::uint32_t symbols_;
   std::uint32_t total_count_ = 0;
   std::uint32_t update_cycle_ = 0;
-  std::uint32_t symbols_until_update_ = 0;
-  std::uint32_t table_size_ = 0;
-  std::uint32_t table_shift_ = 0;
+  std::vector<std::uint16_t> lookup_;
+  std::vector<std::uint32_t> counts_;
 };
 
 /** \brief The range decoder of LAZ (LASzip's ArithmeticDecoder, after Said's FastAC;
@@ -144,44 +152,24 @@ public:
   std::uint32_t
   decodeSymbol (LazSymbolModel& m)
   {
-    std::uint32_t sym, x, y = length_;
-    if (m.decoder_table_) {
-      length_ >>= 15;
-      const std::uint32_t dv = value_ / length_;
-      std::uint32_t t = dv >> m.table_shift_;
-      if (t > m.table_size_) // only in corrupt data: value beyond the interval
-        t = m.table_size_;
-      sym = m.decoder_table_[t];
-      std::uint32_t n = m.decoder_table_[t + 1] + 1;
-      while (n > sym + 1) {
-        const std::uint32_t k = (sym + n) >> 1;
-        if (m.distribution_[k] > dv)
-          n = k;
-        else
-          sym = k;
-      }
-      x = m.distribution_[sym] * length_;
-      if (sym != m.last_symbol_)
-        y = m.distribution_[sym + 1] * length_;
+    std::uint32_t y = length_;
+    length_ >>= 15;
+    const std::uint32_t dv = value_ / length_;
+    std::uint32_t t = dv >> m.table_shift_;
+    if (t > m.table_size_) // only in corrupt data: value beyond the interval
+      t = m.table_size_;
+    std::uint32_t sym = m.decoder_table_[t];
+    std::uint32_t n = m.decoder_table_[t + 1] + 1u;
+    while (n > sym + 1) {
+      const std::uint32_t k = (sym + n) >> 1;
+      if (m.distribution_[k] > dv)
+        n = k;
+      else
+        sym = k;
     }
-    else {
-      x = sym = 0;
-      length_ >>= 15;
-      std::uint32_t n = m.symbols_;
-      std::uint32_t k = n >> 1;
-      do {
-        const std::uint32_t z = length_ * m.distribution_[k];
-        if (z > value_) {
-          n = k;
-          y = z;
-        }
-        else {
-          sym = k;
-          x = z;
-        }
-      }
-      while ((k = (sym + n) >> 1) != sym);
-    }
+    const std::uint32_t x = m.distribution_[sym] * length_;
+    if (sym != m.last_symbol_)
+      y = m.distribution_[sym + 1] * length_;
     value_ -= x;
     length_ = y - x;
     if (length_ < min_length)
