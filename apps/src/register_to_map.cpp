@@ -116,9 +116,10 @@ main (int argc, char** argv)
   cl.addPositional ("scan",
                     input,
                     std::string ("the building scan: ") + pcl_ext::apps::kInputFormats);
-  cl.addPositional ("footprint.(wkt|geojson|txt)",
+  cl.addPositional ("footprint.(wkt|geojson|csv|txt)",
                     footprint_path,
-                    "footprint polygons: WKT, GeoJSON or text (told by content)");
+                    "footprint polygons: WKT, GeoJSON, CSV with a geometry column "
+                    "(.csv) or text (told by content)");
   cl.addPositional ("output",
                     output,
                     "the registered scan in map coordinates, every input field kept: "

@@ -498,6 +498,8 @@ loadFootprints (const std::string& path, std::vector<Footprint>& footprints)
     return loadWktFootprints (path, footprints);
   if (ext == "GEOJSON" || ext == "JSON")
     return loadGeoJsonFootprints (path, footprints);
+  if (ext == "CSV")
+    return loadCsvFootprints (path, footprints);
   if (ext == "TXT")
     return loadTextFootprints (path, footprints);
   detail::TextLines lines (path);

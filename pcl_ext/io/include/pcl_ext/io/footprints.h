@@ -1,5 +1,5 @@
 /*
- * pcl_ext: building footprint polygons from WKT, GeoJSON and plain text files.
+ * pcl_ext: building footprint polygons from WKT, GeoJSON, CSV and plain text files.
  */
 #pragma once
 
@@ -88,8 +88,27 @@ loadGeoJsonFootprints (const std::string& path, std::vector<Footprint>& footprin
 void
 loadTextFootprints (const std::string& path, std::vector<Footprint>& footprints);
 
+/** \brief Read a CSV table of footprints, as GIS tools and open-data portals export
+ * them: a header row, then one footprint per row.
+ *
+ * Fields follow RFC 4180 (a field in double quotes may hold the delimiter, line breaks
+ * and doubled quotes); the delimiter is the one of ',', ';' and tab found most often in
+ * the header; a UTF-8 byte order mark is skipped. The geometry is the column named
+ * (in any case) wkt, geometry, geom, the_geom, polygon or shape, holding either WKT (a
+ * POLYGON or MULTIPOLYGON as parseWkt reads it; an EWKT "SRID=n;" prefix is dropped) or
+ * JSON coordinates: one closed ring [[x, y], ...], a polygon's rings [[[x, y], ...],
+ * ...] (outer ring first), or a list of such polygons. The id is the column id, fid,
+ * identificatie, gml_id or objectid when there is one and it is not empty, else the
+ * row's line number. Rows with an empty geometry are skipped. \throw ReadError naming
+ * the file and line: no geometry column, a row whose field count differs from the
+ * header's, an unclosed quote, a geometry parseWkt refuses; or when the file is missing
+ * or holds no polygon; \a footprints is untouched then
+ */
+void
+loadCsvFootprints (const std::string& path, std::vector<Footprint>& footprints);
+
 /** \brief Read a footprint file choosing the reader by extension (.wkt; .geojson or
- * .json; .txt), or for other extensions by content (a '{' first means GeoJSON, a
+ * .json; .csv; .txt), or for other extensions by content (a '{' first means GeoJSON, a
  * POLYGON keyword in the first data line WKT, otherwise the text format). \throw
  * ReadError as the readers
  */
