@@ -218,6 +218,13 @@ TEST (LazArithmeticDecoder, SymbolsAreThoseOfThePlainBisection)
         ASSERT_EQ (dec.decodeSymbol (model), reference.decode())
             << symbols << " symbols, " << (skewed ? "skewed" : "uniform")
             << " stream, symbol " << i;
+      // reset() makes the adapted model a fresh one again, as at a chunk's start.
+      model.reset();
+      LazArithmeticDecoder again = decoderOver (bytes);
+      ReferenceSymbolDecoder fresh (bytes, symbols);
+      for (int i = 0; i < 2000; ++i)
+        ASSERT_EQ (again.decodeSymbol (model), fresh.decode())
+            << symbols << " symbols after reset(), symbol " << i;
     }
   }
 }

@@ -3,6 +3,10 @@
  */
 #include <pcl_ext/io/laz_arithmetic_decoder.h>
 
+#include <algorithm>
+#include <map>
+#include <mutex>
+
 namespace pcl_ext {
 namespace io {
 namespace {
@@ -12,6 +16,21 @@ constexpr std::uint32_t bit_length_shift = 13;
 constexpr std::uint32_t bit_max_count = 1u << bit_length_shift;
 constexpr std::uint32_t symbol_length_shift = 15;
 constexpr std::uint32_t symbol_max_count = 1u << symbol_length_shift;
+
+/** One shared copy of the \a lookup of a fresh model of \a symbols symbols: every
+ * model of that size starts from the same one, and a chunk start resets hundreds. */
+std::shared_ptr<const std::vector<std::uint16_t>>
+pristineLookup (std::uint32_t symbols, const std::vector<std::uint16_t>& lookup)
+{
+  static std::mutex mutex;
+  static std::map<std::uint32_t, std::shared_ptr<const std::vector<std::uint16_t>>>
+      copies;
+  const std::lock_guard<std::mutex> lock (mutex);
+  auto& copy = copies[symbols];
+  if (!copy)
+    copy = std::make_shared<const std::vector<std::uint16_t>> (lookup);
+  return copy;
+}
 } // namespace
 
 void
@@ -56,17 +75,20 @@ LazSymbolModel::LazSymbolModel (std::uint32_t symbols) : symbols_ (symbols)
   decoder_table_ = distribution_ + symbols;
   counts_.assign (symbols, 1);
   symbol_count_ = counts_.data();
-  reset();
+  // The state of a fresh model, computed once: reset() copies it back.
+  update_cycle_ = symbols_;
+  update();
+  symbols_until_update_ = update_cycle_ = (symbols_ + 6) >> 1;
+  pristine_ = pristineLookup (symbols_, lookup_);
 }
 
 void
 LazSymbolModel::reset()
 {
-  total_count_ = 0;
-  update_cycle_ = symbols_;
-  for (std::uint32_t k = 0; k < symbols_; ++k)
-    symbol_count_[k] = 1;
-  update();
+  // As the constructor left it: every count 1, the uniform distribution and its table.
+  std::copy (pristine_->begin(), pristine_->end(), lookup_.begin());
+  std::fill (counts_.begin(), counts_.end(), 1u);
+  total_count_ = symbols_;
   symbols_until_update_ = update_cycle_ = (symbols_ + 6) >> 1;
 }
 

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -102,6 +103,7 @@ private:
   std::uint32_t update_cycle_ = 0;
   std::vector<std::uint16_t> lookup_;
   std::vector<std::uint32_t> counts_;
+  std::shared_ptr<const std::vector<std::uint16_t>> pristine_; ///< lookup_ when fresh
 };
 
 /** \brief The range decoder of LAZ (LASzip's ArithmeticDecoder, after Said's FastAC;
