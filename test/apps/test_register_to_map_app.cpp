@@ -1,7 +1,7 @@
 /*
  * pcl_ext_register_to_map run as a command: the building scene registered from a guess
  * within bounds, a classified airborne cloud registered with roof outline walls, and
- * bad option values refused before anything is written.
+ * bad option values, footprints and scans refused before anything is written.
  */
 #include "../app_test.h"
 
@@ -235,5 +235,38 @@ TEST_F (RegisterToMapApp, BadOptionValuesAreRefusedWithoutOutput)
     EXPECT_EQ (run (common + options), 1) << options << ": " << output_;
     EXPECT_NE (output_.find (message), std::string::npos) << options << ": " << output_;
     EXPECT_FALSE (exists ("out.pcd")) << options;
+  }
+}
+
+TEST_F (RegisterToMapApp, BadFootprintsAndWallessScansAreRefusedWithoutOutput)
+{
+  generateBuilding();
+  ASSERT_FALSE (HasFatalFailure());
+  std::ofstream (path ("empty.wkt")).flush();
+  std::ofstream (path ("one_edge.wkt")) << "1 POLYGON((0 0, 10 0, 0 0))\n";
+  std::ofstream (path ("collinear.wkt")) << "1 POLYGON((0 0, 10 0, 20 0, 0 0))\n";
+  std::ofstream (path ("far.wkt"))
+      << "1 POLYGON((5000 5000, 5010 5000, 5010 5010, 5000 5010, 5000 5000))\n";
+  // A level ground plane and nothing else: no wall to match.
+  pcl::PointCloud<pcl::PointXYZ> flat;
+  for (int i = 0; i < 100; ++i)
+    for (int j = 0; j < 100; ++j)
+      flat.push_back (pcl::PointXYZ (0.2f * i, 0.2f * j, 0.0f));
+  ASSERT_EQ (pcl::io::savePCDFileBinary (path ("flat.pcd"), flat), 0);
+  const std::pair<std::string, std::string> bad[] = {
+      {"b.pcd empty.wkt", "empty file, no polygons"},
+      {"b.pcd one_edge.wkt", "fewer than 3 distinct vertices"},
+      {"b.pcd collinear.wkt", "not a valid polygon"},
+      {"b.pcd far.wkt", "more than 1 km"},
+      {"flat.pcd b.footprint.wkt", "did not converge"}};
+  for (const auto& [inputs, message] : bad) {
+    const auto space = inputs.find (' ');
+    EXPECT_EQ (run (path (inputs.substr (0, space)) + " " +
+                    path (inputs.substr (space + 1)) + " " + path ("out.pcd") +
+                    " -threads 1"),
+               1)
+        << inputs << ": " << output_;
+    EXPECT_NE (output_.find (message), std::string::npos) << inputs << ": " << output_;
+    EXPECT_FALSE (exists ("out.pcd")) << inputs;
   }
 }
