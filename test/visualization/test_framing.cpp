@@ -81,6 +81,37 @@ TEST (Framing, DirectionsFollowTheUpDirectionAndTheLongerAxis)
                    .isApprox (Eigen::Vector3d::UnitY()));
 }
 
+TEST (Framing, WithoutASensorTheCameraStandsOnTheGroundsSide)
+{
+  // A facade 20 m long and 8 m high along x at y = 0, and the ground a scan of it saw
+  // in front of it, on one side: the side and oblique views look from that side,
+  // whichever it is. With the ground on both sides the fixed side is kept.
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d nan = Eigen::Vector3d::Constant (std::nan (""));
+  const auto scene = [] (double ground_side, bool both) {
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i <= 100; ++i)
+      for (int j = 0; j <= 40; ++j) {
+        points.emplace_back (0.2 * i, 0.0, 0.2 * j);
+        points.emplace_back (0.2 * i, ground_side * 0.25 * (j + 1), 0.0);
+        if (both)
+          points.emplace_back (0.2 * i, -ground_side * 0.25 * (j + 1), 0.0);
+      }
+    return points;
+  };
+  for (const double side : {-1.0, 1.0}) {
+    const auto points = scene (side, false);
+    // Looking from the ground's side towards the facade: along -side * y.
+    EXPECT_GT (-side * viewDirection (points, ViewKind::Side, up, nan).y(), 0.99)
+        << side;
+    EXPECT_GT (-side * viewDirection (points, ViewKind::Oblique, up, nan).y(), 0.5)
+        << side;
+  }
+  const auto symmetric = scene (1.0, true);
+  // The fixed side: looking along (-1, -1.4, 0) made across the long axis, -y.
+  EXPECT_LT (viewDirection (symmetric, ViewKind::Side, up, nan).y(), -0.99);
+}
+
 TEST (Framing, FarSparsePointsDoNotShrinkTheSubject)
 {
   std::vector<Eigen::Vector3d> points;

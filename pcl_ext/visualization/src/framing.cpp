@@ -100,6 +100,47 @@ viewKindName (ViewKind kind)
   }
 }
 
+namespace {
+/** Along \a across: +1 when the lowest fifth of the points (by height along \a u) lies
+ * on the + side of the highest fifth by more than a tenth of the points' extent, -1
+ * when on the - side, 0 when neither. */
+double
+groundSide (const std::vector<Eigen::Vector3d>& points,
+            const Eigen::Vector3d& u,
+            const Eigen::Vector3d& across)
+{
+  std::vector<double> height (points.size()), position (points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    height[i] = points[i].dot (u);
+    position[i] = points[i].dot (across);
+  }
+  std::vector<double> sorted = height; // quantile() reorders its values
+  const double low = quantile (sorted, 0.2), high = quantile (sorted, 0.8);
+  if (!(high > low))
+    return 0.0;
+  double low_sum = 0.0, high_sum = 0.0;
+  std::size_t low_count = 0, high_count = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (height[i] <= low) {
+      low_sum += position[i];
+      ++low_count;
+    }
+    else if (height[i] >= high) {
+      high_sum += position[i];
+      ++high_count;
+    }
+  }
+  if (low_count == 0 || high_count == 0)
+    return 0.0;
+  sorted = position;
+  const double extent = quantile (sorted, 0.95) - quantile (sorted, 0.05);
+  const double offset = low_sum / double (low_count) - high_sum / double (high_count);
+  if (!(extent > 0.0) || std::abs (offset) <= 0.1 * extent)
+    return 0.0;
+  return offset > 0.0 ? 1.0 : -1.0;
+}
+} // namespace
+
 Eigen::Vector3d
 viewDirection (const std::vector<Eigen::Vector3d>& points,
                ViewKind kind,
@@ -138,14 +179,22 @@ viewDirection (const std::vector<Eigen::Vector3d>& points,
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver (spread);
   const Eigen::Vector2d minor = solver.eigenvectors().col (0);
   Eigen::Vector3d across = minor.x() * a + minor.y() * b;
-  // From the sensor's side when it is known, else from a fixed side (so that the same
-  // cloud is always seen from the same side).
+  // From the sensor's side when it is known. Else from the side of the ground: a scan
+  // sees the ground in front of what stands on it (a street in front of its facades),
+  // so when the lowest points lie clearly to one side of the tallest ones, across the
+  // long axis, the camera goes to that side. Otherwise from a fixed side (so that the
+  // same cloud is always seen from the same side).
   Eigen::Vector3d reference = Eigen::Vector3d (-1.0, -1.4, 0.0);
   if (sensor_known && !points.empty()) {
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (const auto& p : points)
       mean += p;
     reference = mean / double (points.size()) - sensor;
+  }
+  else if (points.size() >= 100) {
+    const double side = groundSide (points, u, across);
+    if (side != 0.0)
+      reference = -side * across;
   }
   if (across.dot (reference) < 0.0)
     across = -across;

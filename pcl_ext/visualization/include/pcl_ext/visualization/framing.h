@@ -44,8 +44,10 @@ struct Framing {
  * scene's up direction (unit length) and \a sensor the scanner's position (NaN when
  * unknown; Sensor then falls back to Oblique). Side and Oblique look across the longer
  * axis of the points' horizontal spread, so a long building is seen along its length,
- * from the sensor's side when it is known, else from a fixed side. Sensor looks from
- * the sensor at the points' median. */
+ * from the sensor's side when it is known, else from the side where the lowest fifth of
+ * the points lies, beyond the highest fifth, by more than a tenth of the extent (the
+ * ground a scan saw in front of what stands on it), else from a fixed side. Sensor
+ * looks from the sensor at the points' median. */
 Eigen::Vector3d
 viewDirection (const std::vector<Eigen::Vector3d>& points,
                ViewKind kind,
