@@ -24,6 +24,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -238,7 +239,7 @@ TEST_F (RegisterToMapApp, BadOptionValuesAreRefusedWithoutOutput)
   }
 }
 
-TEST_F (RegisterToMapApp, BadFootprintsAndWallessScansAreRefusedWithoutOutput)
+TEST_F (RegisterToMapApp, BadFootprintsScansAndGuessesAreRefusedWithoutOutput)
 {
   generateBuilding();
   ASSERT_FALSE (HasFatalFailure());
@@ -253,17 +254,21 @@ TEST_F (RegisterToMapApp, BadFootprintsAndWallessScansAreRefusedWithoutOutput)
     for (int j = 0; j < 100; ++j)
       flat.push_back (pcl::PointXYZ (0.2f * i, 0.2f * j, 0.0f));
   ASSERT_EQ (pcl::io::savePCDFileBinary (path ("flat.pcd"), flat), 0);
+  std::ofstream (path ("nan_guess.txt")) << "nan 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
   const std::pair<std::string, std::string> bad[] = {
       {"b.pcd empty.wkt", "empty file, no polygons"},
       {"b.pcd one_edge.wkt", "fewer than 3 distinct vertices"},
       {"b.pcd collinear.wkt", "not a valid polygon"},
       {"b.pcd far.wkt", "more than 1 km"},
-      {"flat.pcd b.footprint.wkt", "did not converge"}};
+      {"flat.pcd b.footprint.wkt", "did not converge"},
+      {"b.pcd b.footprint.wkt -guess nan_guess.txt", "not a finite number"}};
   for (const auto& [inputs, message] : bad) {
-    const auto space = inputs.find (' ');
-    EXPECT_EQ (run (path (inputs.substr (0, space)) + " " +
-                    path (inputs.substr (space + 1)) + " " + path ("out.pcd") +
-                    " -threads 1"),
+    std::istringstream words (inputs);
+    std::string scan, footprint, option, value;
+    words >> scan >> footprint >> option >> value;
+    const std::string guess = option.empty() ? "" : " " + option + " " + path (value);
+    EXPECT_EQ (run (path (scan) + " " + path (footprint) + " " + path ("out.pcd") +
+                    " -threads 1" + guess),
                1)
         << inputs << ": " << output_;
     EXPECT_NE (output_.find (message), std::string::npos) << inputs << ": " << output_;
