@@ -5,10 +5,10 @@
 
 #include "text_lines.h"
 
+#include <boost/algorithm/string/case_conv.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <fstream>
 #include <initializer_list>
@@ -22,16 +22,6 @@ struct CsvRecord {
   std::vector<std::string> fields;
   std::size_t line = 0;
 };
-
-std::string
-lower (std::string_view text)
-{
-  std::string s (text);
-  std::transform (s.begin(), s.end(), s.begin(), [] (unsigned char c) {
-    return static_cast<char> (std::tolower (c));
-  });
-  return s;
-}
 
 /** The delimiter among ',', ';' and tab that occurs most often outside quotes in the
  * first record; ',' when none does (a table of one column). */
@@ -62,6 +52,7 @@ parseCsv (const std::string& text, char delimiter, const std::string& path)
 {
   std::vector<CsvRecord> records;
   CsvRecord record;
+  record.line = 1;
   std::string field;
   std::size_t line = 1, quote_line = 0;
   bool quoted = false, was_quoted = false, blank = true;
@@ -79,8 +70,6 @@ parseCsv (const std::string& text, char delimiter, const std::string& path)
   };
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
-    if (record.fields.empty() && field.empty() && !was_quoted && blank)
-      record.line = line;
     if (quoted) {
       if (c == '"') {
         if (i + 1 < text.size() && text[i + 1] == '"') {
@@ -109,7 +98,7 @@ parseCsv (const std::string& text, char delimiter, const std::string& path)
     }
     else if (c == '\n') {
       endRecord();
-      ++line;
+      record.line = ++line;
     }
     else if (was_quoted) {
       if (c != '\r' && c != ' ' && c != '\t')
@@ -134,7 +123,8 @@ findColumn (const std::vector<std::string>& header,
 {
   for (const char* name : names)
     for (std::size_t i = 0; i < header.size(); ++i)
-      if (lower (detail::trim (header[i])) == name)
+      if (boost::algorithm::to_lower_copy (std::string (detail::trim (header[i]))) ==
+          name)
         return static_cast<long> (i);
   return -1;
 }
@@ -272,7 +262,7 @@ loadCsvFootprints (const std::string& path, std::vector<Footprint>& footprints)
         throw ReadError (path, record.line, e.what());
       }
     }
-    else if (lower (cell.substr (0, 5)) == "srid=" &&
+    else if (boost::algorithm::to_lower_copy (cell.substr (0, 5)) == "srid=" &&
              cell.find (';') != std::string::npos)
       cell.erase (0, cell.find (';') + 1); // EWKT
     parseWkt (cell, f, path, record.line);
