@@ -4,6 +4,7 @@ pcl_ext_add_app(tiles
   SOURCES
     src/tiles/tiles.cpp
     src/tiles/tile_steps.cpp
+    src/tiles/tile_outputs.cpp
     src/tiles/tile_cloud.cpp
     src/tiles/tile_scheduler.cpp
     src/tiles/variance_tiles.cpp

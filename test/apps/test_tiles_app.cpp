@@ -8,11 +8,20 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <set>
+#include <sstream>
+#include <csignal>
+#include <filesystem>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -72,8 +81,43 @@ protected:
     EXPECT_TRUE (tiled.records == whole_.records) << output;
   }
 
+  /** Runs the tool through the shell with the file size limit \a kilobytes (writes
+   * beyond it fail as on a full disk: SIGXFSZ is ignored); the exit code. */
+  int
+  runOnFullDisk (const std::string& args, int kilobytes)
+  {
+    const std::string command =
+        "bash -c \"trap '' XFSZ; ulimit -f " + std::to_string (kilobytes) + "; exec " +
+        PCL_EXT_TILES_EXE + " " + args + "\" > '" + path ("full.txt") + "' 2>&1";
+    const int status = std::system (command.c_str());
+    std::ifstream in (path ("full.txt"));
+    output_.assign ((std::istreambuf_iterator<char> (in)),
+                    std::istreambuf_iterator<char>());
+    return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
+  }
+
   LasContent whole_;
 };
+
+/** The LAS point record length and the X, Y of record \a i in the file's frame. */
+struct LasXy {
+  double x, y;
+};
+
+LasXy
+recordXy (const std::vector<char>& header,
+          const std::vector<char>& records,
+          std::size_t i)
+{
+  std::uint16_t length;
+  std::memcpy (&length, &header[105], 2);
+  double scale[2], offset[2];
+  std::memcpy (scale, &header[131], 16);
+  std::memcpy (offset, &header[155], 16);
+  std::int32_t xy[2];
+  std::memcpy (xy, &records[i * length], 8);
+  return {xy[0] * scale[0] + offset[0], xy[1] * scale[1] + offset[1]};
+}
 } // namespace
 
 TEST_F (TilesApp, AnyTileSizeGivesTheWholeCloudsClasses)
@@ -112,6 +156,80 @@ TEST_F (TilesApp, MpiRanksShareTheTilesAndGiveTheSameOutput)
         << text;
     expectSameAsWhole (out);
   }
+}
+#endif
+
+#ifdef PCL_EXT_MPIEXEC
+TEST_F (TilesApp, ARankThatDiesIsNamedAndResumeCompletesTheRun)
+{
+  // Over two ranks, a process is killed (SIGKILL) in the middle of a tile: the job
+  // fails and writes no output; the merge names the tile and the process; 'resume',
+  // over two ranks again, runs what is left and gives the whole cloud's bytes.
+  const std::string work = path ("dying");
+  const std::string mpi = std::string (PCL_EXT_MPIEXEC) +
+                          " --allow-run-as-root --oversubscribe -np 2 " +
+                          PCL_EXT_TILES_EXE;
+  const std::string command =
+      "(" + mpi + " classify_variance '" + path ("scene.pcd") + "' '" +
+      path ("died.las") + "' -tile_size 1 -threads 1 -workdir '" + work + "' > '" +
+      path ("mpi.log") + "' 2>&1; echo $? > '" + path ("rc.tmp") + "'; mv '" +
+      path ("rc.tmp") + "' '" + path ("rc.txt") + "') &";
+  ASSERT_EQ (std::system (command.c_str()), 0);
+  // A tile's record names its process: the process is stopped (SIGSTOP) and killed if
+  // it is still in a tile (a record of its own, the tile not done: it may be stopped
+  // between the two), else let go and another tried.
+  const auto recordOf = [&work] (const std::string& process) {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator (work, error)) {
+      const std::string name = entry.path().filename().string();
+      if (name.size() < 14 || name.compare (0, 5, "tile_") != 0 ||
+          name.compare (name.size() - 8, 8, ".running") != 0)
+        continue;
+      std::ifstream in (entry.path());
+      std::string word, pid;
+      in >> word >> pid; // "process <pid> on host ..."
+      if (word == "process" && !pid.empty() && (process.empty() || pid == process))
+        return std::make_pair (name.substr (5, name.size() - 13), pid);
+    }
+    return std::make_pair (std::string(), std::string());
+  };
+  std::string killed_tile, killed_process;
+  for (int i = 0; i < 12000 && killed_tile.empty() && !exists ("rc.txt"); ++i) {
+    const auto seen = recordOf ("");
+    if (!seen.second.empty() && ::kill (std::stoi (seen.second), SIGSTOP) == 0) {
+      ::usleep (20000);
+      const auto in_tile = recordOf (seen.second);
+      if (!in_tile.first.empty() &&
+          !std::filesystem::exists (work + "/tile_" + in_tile.first + ".done") &&
+          ::kill (std::stoi (seen.second), SIGKILL) == 0)
+        std::tie (killed_tile, killed_process) = in_tile;
+      else
+        ::kill (std::stoi (seen.second), SIGCONT);
+    }
+    ::usleep (2000);
+  }
+  for (int i = 0; i < 24000 && !exists ("rc.txt"); ++i)
+    ::usleep (5000);
+  ASSERT_FALSE (killed_tile.empty()) << "no tile was seen running";
+  std::ifstream rc (path ("rc.txt"));
+  int code = 0;
+  rc >> code;
+  EXPECT_NE (code, 0);
+  EXPECT_FALSE (exists ("died.las"));
+
+  ASSERT_EQ (run ("merge " + path ("died.las") + " -workdir " + work), 1);
+  EXPECT_NE (output_.find ("tile " + killed_tile + " was started by process " +
+                           killed_process + " on host"),
+             std::string::npos)
+      << "killed process " << killed_process << " in tile " << killed_tile << "\n"
+      << output_;
+  EXPECT_NE (output_.find ("resume"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("died.las"));
+
+  const std::string resume = mpi + " resume '" + path ("resumed.las") + "' -workdir '" +
+                             work + "' -threads 1 > '" + path ("mpi.log") + "' 2>&1";
+  ASSERT_EQ (std::system (resume.c_str()), 0);
+  expectSameAsWhole ("resumed.las");
 }
 #endif
 
@@ -155,4 +273,156 @@ TEST_F (TilesApp, BadUsageIsRefusedWithoutOutput)
   EXPECT_EQ (run ("tile 0 -workdir " + path ("nowhere")), 1);
   EXPECT_FALSE (exists ("a.las"));
   EXPECT_FALSE (exists ("a.laz"));
+}
+
+TEST_F (TilesApp, OneFilePerTileWithAnIndex)
+{
+  // 'tile_#.las': a file per tile that owns points, each holding exactly the points of
+  // its core box, together the whole cloud's records; the index names each file with
+  // its box.
+  ASSERT_EQ (run ("classify_variance " + path ("scene.pcd") + " " +
+                  path ("tile_#.las") + " -tile_size 3 -threads 2"),
+             0)
+      << output_;
+  std::ifstream index (path ("tile_index.csv"));
+  ASSERT_TRUE (index.good()) << output_;
+  std::string line;
+  std::getline (index, line);
+  EXPECT_EQ (line, "file,tile,points,xmin,ymin,xmax,ymax,wkt");
+  std::ifstream whole_file (path ("whole.las"), std::ios::binary);
+  const std::vector<char> whole_bytes ((std::istreambuf_iterator<char> (whole_file)),
+                                       std::istreambuf_iterator<char>());
+  std::uint16_t length;
+  std::memcpy (&length, &whole_bytes[105], 2);
+  ASSERT_GT (length, 0);
+  std::multiset<std::string> expected, found;
+  for (std::size_t i = 0; i < whole_.records.size() / length; ++i)
+    expected.insert (std::string (&whole_.records[i * length], length));
+  std::size_t files = 0;
+  while (std::getline (index, line)) {
+    std::stringstream row (line);
+    std::string file, tile, points, box[4];
+    std::getline (row, file, ',');
+    std::getline (row, tile, ',');
+    std::getline (row, points, ',');
+    for (auto& b : box)
+      std::getline (row, b, ',');
+    EXPECT_EQ (file, "tile_" + tile + ".las");
+    std::ifstream in (path (file), std::ios::binary);
+    const std::vector<char> bytes ((std::istreambuf_iterator<char> (in)),
+                                   std::istreambuf_iterator<char>());
+    const LasContent content = readLas (path (file));
+    EXPECT_TRUE (content.scale_and_offset == whole_.scale_and_offset) << file;
+    ASSERT_EQ (content.records.size(), std::stoull (points) * length) << file;
+    ASSERT_GT (std::stoull (points), 0u) << file;
+    for (std::size_t i = 0; i < std::stoull (points); ++i) {
+      const LasXy p = recordXy (bytes, content.records, i);
+      // Within the core box, up to the LAS coordinates' rounding.
+      EXPECT_GE (p.x, std::stod (box[0]) - 0.001) << file;
+      EXPECT_GE (p.y, std::stod (box[1]) - 0.001) << file;
+      EXPECT_LE (p.x, std::stod (box[2]) + 0.001) << file;
+      EXPECT_LE (p.y, std::stod (box[3]) + 0.001) << file;
+      found.insert (std::string (&content.records[i * length], length));
+    }
+    ++files;
+  }
+  EXPECT_GT (files, 3u);
+  EXPECT_TRUE (found == expected)
+      << found.size() << " records against " << expected.size();
+  // Only .las can be split.
+  EXPECT_EQ (run ("classify_variance " + path ("scene.pcd") + " " + path ("t_#.pcd") +
+                  " -tile_size 3"),
+             1);
+  EXPECT_FALSE (exists ("t_index.csv"));
+}
+
+TEST_F (TilesApp, AFullDiskStopsTheRunWithAMessageAndNoOutput)
+{
+  // The work folder fills up while planning (a file may not exceed 50 KB; the
+  // results alone need 240 KB).
+  const std::string work = " -workdir " + path ("work");
+  EXPECT_EQ (runOnFullDisk ("classify_variance " + path ("scene.pcd") + " " +
+                                path ("full.las") + work + " -tile_size 3",
+                            50),
+             1);
+  EXPECT_NE (output_.find ("disk full"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("full.las"));
+  // The output fills it up while merging: no output, and the merge runs again.
+  ASSERT_EQ (
+      run ("plan classify_variance " + path ("scene.pcd") + work + " -tile_size 3"), 0)
+      << output_;
+  std::size_t tiles = 0;
+  while (exists ("work/tile_" + std::to_string (tiles) + ".points"))
+    ++tiles;
+  for (std::size_t t = 0; t < tiles; ++t)
+    ASSERT_EQ (run ("estimate " + std::to_string (t) + work), 0) << output_;
+  for (std::size_t t = 0; t < tiles; ++t)
+    ASSERT_EQ (run ("tile " + std::to_string (t) + work + " -threads 2"), 0) << output_;
+  // (The limit is per file: the tiles' files are smaller than the whole cloud's.)
+  for (const auto& [out, kilobytes] : std::vector<std::pair<std::string, int>>{
+           {"full.las", 1000}, {"full_#.las", 20}}) {
+    EXPECT_EQ (runOnFullDisk ("merge " + path (out) + work, kilobytes), 1) << out;
+    EXPECT_NE (output_.find ("disk full"), std::string::npos) << output_;
+    EXPECT_FALSE (exists (out));
+    EXPECT_FALSE (exists ("full_0.las"));
+    EXPECT_FALSE (exists ("full_index.csv"));
+  }
+  ASSERT_EQ (run ("merge " + path ("full.las") + work), 0) << output_;
+  expectSameAsWhole ("full.las");
+}
+
+TEST_F (TilesApp, SlurmScriptRunsTheStepsAsArrayJobsOrHere)
+{
+  // scripts/tiles_slurm.sh with an sbatch that runs each job at once (every task of an
+  // array in turn), then without sbatch: the untiled tool's bytes both times, and the
+  // jobs are the estimates over every tile, tile 0 alone, then the other tiles.
+  const std::string shims = path ("shims");
+  std::filesystem::create_directories (shims);
+  {
+    std::ofstream sbatch (shims + "/sbatch");
+    sbatch
+        << "#!/bin/bash\n"
+           "array=''; wrap=''\n"
+           "for a in \"$@\"; do case \"$a\" in --array=*) array=\"${a#--array=}\";; "
+           "--wrap=*) wrap=\"${a#--wrap=}\";; esac; done\n"
+           "echo \"array=${array:-none} ${wrap%% -workdir*}\" >> \"$(dirname "
+           "\"$0\")/sbatch.log\"\n"
+           "if [ -n \"$array\" ]; then\n"
+           "  for i in $(seq \"${array%-*}\" \"${array#*-}\"); do\n"
+           "    SLURM_ARRAY_TASK_ID=$i bash -c \"$wrap\" > /dev/null 2>&1 || exit 1\n"
+           "  done\n"
+           "else bash -c \"$wrap\" > /dev/null 2>&1 || exit 1; fi\n"
+           "echo 4242\n";
+  }
+  std::filesystem::permissions (shims + "/sbatch", std::filesystem::perms::owner_all);
+  const std::string script = std::string ("PCL_EXT_TILES=") + PCL_EXT_TILES_EXE +
+                             " bash " + PCL_EXT_SOURCE_DIR + "/scripts/tiles_slurm.sh";
+  const std::string job = " classify_variance '" + path ("slurm.las") + "' '" +
+                          path ("scene.pcd") + "' -- -tile_size 4 > '" +
+                          path ("slurm.log") + "' 2>&1";
+  ASSERT_EQ (std::system (("PATH=" + shims + ":$PATH " + script + job).c_str()), 0);
+  expectSameAsWhole ("slurm.las");
+  std::ifstream log (shims + "/sbatch.log");
+  std::vector<std::string> jobs;
+  for (std::string line; std::getline (log, line);)
+    jobs.push_back (line);
+  ASSERT_EQ (jobs.size(), 4u);
+  EXPECT_EQ (jobs[0].rfind ("array=0-", 0), 0u) << jobs[0];
+  EXPECT_NE (jobs[0].find (" estimate $SLURM_ARRAY_TASK_ID"), std::string::npos);
+  EXPECT_EQ (jobs[1].rfind ("array=none ", 0), 0u) << jobs[1];
+  EXPECT_NE (jobs[1].find (" tile 0"), std::string::npos) << jobs[1];
+  EXPECT_EQ (jobs[2].rfind ("array=1-", 0), 0u) << jobs[2];
+  const auto lastTile = [] (const std::string& job) {
+    return job.substr (8, job.find (' ') - 8);
+  };
+  EXPECT_EQ (lastTile (jobs[0]), lastTile (jobs[2]));
+  EXPECT_NE (lastTile (jobs[0]), "0");
+  EXPECT_NE (jobs[3].find (" merge "), std::string::npos) << jobs[3];
+
+  if (std::system ("PATH=/usr/bin:/bin command -v sbatch > /dev/null 2>&1") == 0)
+    return; // a machine with Slurm: the script would submit
+  std::filesystem::remove_all (path ("slurm.las.tiles"));
+  std::filesystem::remove (path ("slurm.las"));
+  ASSERT_EQ (std::system (("PATH=/usr/bin:/bin " + script + job).c_str()), 0);
+  expectSameAsWhole ("slurm.las");
 }

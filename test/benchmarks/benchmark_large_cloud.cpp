@@ -83,6 +83,7 @@ split (const std::string& text)
 int
 main (int argc, char** argv)
 {
+  pcl_ext::benchmark::returnFreedArraysToTheSystem();
   int points = 20000000, k = 50;
   unsigned int threads = 2, seed = 1;
   std::string scene_name = "indoor", stages = "classify,segment,profiles";

@@ -32,6 +32,7 @@ using pcl_ext::benchmark::seconds;
 int
 main (int argc, char** argv)
 {
+  pcl_ext::benchmark::returnFreedArraysToTheSystem();
   int points = 1000000, k = 50, repeats = 2;
   unsigned int threads = 2, seed = 1;
   std::string scene_name = "indoor";
@@ -146,6 +147,7 @@ main (int argc, char** argv)
   if (peak_bytes > base_bytes && base_bytes > 0)
     std::cout << "peak memory above the cloud        : " << std::setprecision (0)
               << static_cast<double> (peak_bytes - base_bytes) / cloud->size()
-              << " bytes per point\n";
+              << " bytes per point (resident " << base_bytes / 1048576 << " MB before, "
+              << peak_bytes / 1048576 << " MB at the peak)\n";
   return 0;
 }

@@ -9,6 +9,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <malloc.h>
 #include <sys/resource.h>
 
 #include <chrono>
@@ -51,6 +52,18 @@ statusBytes (const std::string& key)
     if (line.compare (0, key.size() + 1, key + ":") == 0)
       return 1024 * std::stoul (line.substr (key.size() + 1));
   return 0;
+}
+
+/** Make every allocation of a megabyte or more come from the system and go back to it
+ * when freed (glibc otherwise raises that threshold after the first large free, up to
+ * 32 MB, and keeps smaller freed blocks in its heap): the peak resident size then
+ * counts every array alive at the peak, and an earlier stage's freed memory never hides
+ * a later stage's. Call first in main(). */
+inline void
+returnFreedArraysToTheSystem ()
+{
+  mallopt (M_MMAP_THRESHOLD, 1 << 20);
+  mallopt (M_TRIM_THRESHOLD, 1 << 20);
 }
 
 /** Reset the peak resident size to the current one, so VmHWM measures what follows

@@ -11,7 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
+#include <string>
 
 namespace {
 using Point = pcl::PointXYZ;
@@ -50,6 +52,15 @@ bruteForce (const Cloud& cloud, const Point& q)
   }
   std::sort (all.begin(), all.end());
   return all;
+}
+
+std::vector<std::size_t>
+rowSizes (const pcl_ext::Neighbourhoods<Point>& nb)
+{
+  std::vector<std::size_t> sizes;
+  for (std::size_t r = 0; r < nb.size(); ++r)
+    sizes.push_back (nb[r].size());
+  return sizes;
 }
 
 // Rows must hold the true k nearest (compared by distance, which is robust to ties).
@@ -304,7 +315,7 @@ TEST (Neighbourhoods, DeterministicForAnyThreadCountAndSearchMethod)
   ASSERT_TRUE (one.compute());
   ASSERT_TRUE (two.compute());
   ASSERT_TRUE (flann.compute());
-  EXPECT_EQ (one.getOffsets(), two.getOffsets());
+  EXPECT_EQ (rowSizes (one), rowSizes (two));
   EXPECT_EQ (one.getNeighbourIndices(), two.getNeighbourIndices());
   EXPECT_EQ (one.getSquaredDistances(), two.getSquaredDistances());
   ASSERT_EQ (one.getSquaredDistances().size(), flann.getSquaredDistances().size());
@@ -320,6 +331,66 @@ TEST (Neighbourhoods, DeterministicForAnyThreadCountAndSearchMethod)
   r2.setNumberOfThreads (2);
   ASSERT_TRUE (r1.compute());
   ASSERT_TRUE (r2.compute());
-  EXPECT_EQ (r1.getOffsets(), r2.getOffsets());
+  EXPECT_EQ (rowSizes (r1), rowSizes (r2));
   EXPECT_EQ (r1.getNeighbourIndices(), r2.getNeighbourIndices());
+}
+
+TEST (Neighbourhoods, WithoutStoredDistancesTheRowsAndDistancesAreTheSame)
+{
+  // Leaf by leaf (k >= 24) and point by point (k < 24), capped at a radius, for chosen
+  // rows, and by radius: the same rows, and distances computed from the coordinates
+  // equal to those the search stored, bit for bit. With k, the rows take k indices a
+  // point (a point with NaN coordinates included, its row empty) and no distances.
+  auto cloud = randomCloud (3000, 11, 500.0f);
+  (*cloud)[17].x = std::numeric_limits<float>::quiet_NaN();
+  const pcl::IndicesPtr some (new pcl::Indices{3, 2999, 17, 1200});
+  struct Setting {
+    int k;
+    double radius, max_radius;
+    pcl::IndicesPtr indices;
+  };
+  const std::vector<Setting> settings{{50, 0.0, 0.0, nullptr},
+                                      {8, 0.0, 0.0, nullptr},
+                                      {50, 0.0, 0.04, nullptr},
+                                      {30, 0.0, 0.0, some},
+                                      {0, 0.05, 0.0, nullptr}};
+  for (const auto& setting : settings) {
+    pcl_ext::Neighbourhoods<Point> stored, computed;
+    for (auto* nb : {&stored, &computed}) {
+      nb->setInputCloud (cloud);
+      if (setting.indices)
+        nb->setIndices (setting.indices);
+      if (setting.k > 0) {
+        nb->setKSearch (setting.k);
+        nb->setMaxRadius (setting.max_radius);
+      }
+      else
+        nb->setRadiusSearch (setting.radius);
+    }
+    computed.setStoreSquaredDistances (false);
+    ASSERT_TRUE (stored.compute());
+    ASSERT_TRUE (computed.compute());
+    const std::string what = "k " + std::to_string (setting.k) + ", radius " +
+                             std::to_string (setting.radius) + ", cap " +
+                             std::to_string (setting.max_radius);
+    EXPECT_TRUE (computed.getSquaredDistances().empty()) << what;
+    ASSERT_EQ (rowSizes (stored), rowSizes (computed)) << what;
+    std::size_t compared = 0;
+    for (std::size_t r = 0; r < stored.size(); ++r) {
+      EXPECT_EQ (computed[r].sqr_distances, nullptr);
+      for (std::size_t i = 0; i < stored[r].size(); ++i, ++compared) {
+        ASSERT_EQ (stored[r][i], computed[r][i]) << what << ", row " << r;
+        ASSERT_EQ (stored[r].sqr_distances[i], computed.getSquaredDistance (r, i))
+            << what << ", row " << r;
+        ASSERT_EQ (stored.getSquaredDistance (r, i), stored[r].sqr_distances[i]);
+      }
+    }
+    EXPECT_GT (compared, stored.size()) << what;
+    const std::size_t nan_row = setting.indices ? 2 : 17;
+    EXPECT_TRUE (computed[nan_row].empty()) << what;
+    if (setting.k > 0 && setting.max_radius == 0.0)
+      EXPECT_EQ (computed.getNeighbourIndices().size(),
+                 computed.size() * static_cast<std::size_t> (setting.k))
+          << what;
+  }
 }

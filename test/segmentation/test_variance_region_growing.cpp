@@ -41,12 +41,22 @@ struct Rows {
     offsets.push_back (neighbours.size());
   }
 
+  /** The walks with every row cut where its distances pass \a max_sqr. */
   std::vector<std::int32_t>
   grow (const std::vector<std::int8_t>& classes, float max_sqr = kNoLimit) const
   {
+    std::vector<std::uint32_t> reach;
+    if (max_sqr != kNoLimit)
+      for (std::size_t r = 0; r < points.size(); ++r) {
+        std::size_t m = offsets[r];
+        while (m < offsets[r + 1] && sqr_distances[m] <= max_sqr)
+          ++m;
+        reach.push_back (static_cast<std::uint32_t> (m - offsets[r]));
+      }
+    const pcl_ext::NeighbourRowsView view{
+        neighbours.data(), offsets.data(), 0, points.size()};
     std::vector<std::int32_t> root;
-    pcl_ext::growSurfaceSegments (
-        offsets, neighbours, sqr_distances, points, classes, max_sqr, 1, root);
+    pcl_ext::growSurfaceSegments (view, points, classes, reach, 1, root);
     return root;
   }
 };

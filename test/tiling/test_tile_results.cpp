@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -135,4 +137,16 @@ TEST (TileResults, TilesNotRunAreFound)
   EXPECT_EQ (pcl_ext::tiling::findTilesNotDone (dir, 5),
              (std::vector<std::size_t>{0, 2, 4}));
   EXPECT_TRUE (pcl_ext::tiling::findTilesNotDone (dir, 2).size() == 1u);
+  // A tile started and not finished is named with its process; done, it is not.
+  EXPECT_EQ (pcl_ext::tiling::describeTileStart (dir, 2), "");
+  ASSERT_TRUE (pcl_ext::tiling::markTileStarted (dir, 2));
+  const std::string start = pcl_ext::tiling::describeTileStart (dir, 2);
+  EXPECT_EQ (start.rfind ("process " + std::to_string (::getpid()) + " on host ", 0),
+             0u)
+      << start;
+  EXPECT_NE (start.find (" UTC"), std::string::npos) << start;
+  ASSERT_TRUE (pcl_ext::tiling::markTileDone (dir, 2));
+  EXPECT_EQ (pcl_ext::tiling::describeTileStart (dir, 2), "");
+  EXPECT_EQ (pcl_ext::tiling::findTilesNotDone (dir, 5),
+             (std::vector<std::size_t>{0, 4}));
 }

@@ -46,6 +46,7 @@ runVarianceWithIntersection (const SegmenterInput& in,
   nb->setInputCloud (in.cloud);
   nb->setKSearch (50);
   nb->setNumberOfThreads (s.threads);
+  nb->setStoreSquaredDistances (false);
   if (!nb->compute())
     return false;
   VarianceRegionGrowing<pcl::PointXYZ> rg;

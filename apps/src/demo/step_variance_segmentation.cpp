@@ -40,6 +40,7 @@ segment (DemoContext& context,
   nb->setInputCloud (cloud);
   nb->setKSearch (context.k);
   nb->setNumberOfThreads (context.threads);
+  nb->setStoreSquaredDistances (false);
   if (!nb->compute())
     return false;
   VarianceRegionGrowing<pcl::PointXYZ> rg;

@@ -65,7 +65,8 @@ ownNeighbourhoodsWithin (const tiling::TilePlan& plan,
     else if (row >= 0) {
       const auto r = nb[static_cast<std::size_t> (row)];
       if (r.size() == static_cast<std::size_t> (reach.k) && r.size() > 0)
-        needed = std::sqrt (static_cast<double> (r.sqr_distances[r.size() - 1]));
+        needed = std::sqrt (static_cast<double> (
+            nb.getSquaredDistance (static_cast<std::size_t> (row), r.size() - 1)));
       else if (reach.max_radius > 0.0)
         needed = reach.max_radius;
     }
@@ -127,6 +128,7 @@ loadTileCloud (const tiling::TilePlan& plan,
     result.neighbourhoods = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>>();
     auto& nb = *result.neighbourhoods;
     nb.setInputCloud (result.cloud);
+    nb.setStoreSquaredDistances (false);
     if (reach.radius > 0.0)
       nb.setRadiusSearch (reach.radius);
     else {

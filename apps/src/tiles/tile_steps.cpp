@@ -3,6 +3,7 @@
  * alone (scheduler array jobs) or one after another.
  */
 #include "tile_steps.h"
+#include "tile_outputs.h"
 
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/io/file_output.h>
@@ -20,6 +21,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <sys/resource.h>
 #include <sys/stat.h>
 
 namespace pcl_ext {
@@ -29,6 +31,25 @@ namespace {
  * neighbourhoods and the method's arrays stay well under a gigabyte. */
 constexpr std::uint64_t kPointsPerTile = 2000000;
 constexpr std::size_t kChunkPoints = 1 << 20;
+
+/** How many files one process may hold open besides its own few: the soft limit,
+ * raised to the hard one first. */
+std::size_t
+openFilesAllowed ()
+{
+  rlimit limit{};
+  if (::getrlimit (RLIMIT_NOFILE, &limit) != 0)
+    return 256;
+  if (limit.rlim_cur < limit.rlim_max) {
+    rlimit raised = limit;
+    raised.rlim_cur = limit.rlim_max;
+    if (::setrlimit (RLIMIT_NOFILE, &raised) == 0)
+      limit = raised;
+  }
+  const rlim_t usable = limit.rlim_cur == RLIM_INFINITY ? 65536 : limit.rlim_cur;
+  return usable > 96 ? static_cast<std::size_t> (std::min<rlim_t> (usable - 64, 65536))
+                     : 32;
+}
 
 std::string
 joinArguments (const std::vector<std::string>& args)
@@ -81,7 +102,7 @@ estimateHalo (const std::string& input,
   std::vector<float> radii;
   for (std::size_t r = 0; r < nb.size(); ++r)
     if (nb[r].size() > 0)
-      radii.push_back (std::sqrt (nb[r].sqr_distances[nb[r].size() - 1]));
+      radii.push_back (std::sqrt (nb.getSquaredDistance (r, nb[r].size() - 1)));
   if (radii.empty())
     return 0.0;
   auto at = radii.begin() + static_cast<std::ptrdiff_t> (0.99 * (radii.size() - 1));
@@ -257,6 +278,8 @@ tileStep (const tiling::TilePlan& plan,
           unsigned int threads)
 {
   StageTimer timer ("Tile " + std::to_string (tile));
+  if (!tiling::markTileStarted (workdir, tile))
+    return false;
   TileCloud cloud;
   method.setNumberOfThreads (threads);
   if (!loadTileCloud (plan, workdir, tile, method.getReach(), threads, cloud))
@@ -294,6 +317,26 @@ tileStep (const tiling::TilePlan& plan,
   return true;
 }
 
+void
+reportTilesNotDone (const std::string& workdir, const std::vector<std::size_t>& missing)
+{
+  std::cerr << "Error: " << missing.size() << " tile(s) of " << workdir
+            << " have not run or did not finish:";
+  for (std::size_t i = 0; i < missing.size() && i < 20; ++i)
+    std::cerr << " " << missing[i];
+  std::cerr << (missing.size() > 20 ? " ..." : "") << ".\n";
+  std::size_t named = 0;
+  for (const std::size_t t : missing) {
+    const std::string start = tiling::describeTileStart (workdir, t);
+    if (!start.empty() && named++ < 20)
+      std::cerr << "  tile " << t << " was started by " << start
+                << " and did not finish (the process stopped or died)\n";
+  }
+  std::cerr << "Run 'pcl_ext_tiles tile I -workdir " << workdir
+            << "' for each, then merge again; or 'pcl_ext_tiles resume OUTPUT -workdir "
+            << workdir << "' (under mpirun too) runs them all and merges.\n";
+}
+
 bool
 mergeStep (const tiling::TilePlan& plan,
            TileMethod& method,
@@ -303,13 +346,18 @@ mergeStep (const tiling::TilePlan& plan,
 {
   const auto missing = tiling::findTilesNotDone (workdir, plan.getGrid().size());
   if (!missing.empty()) {
-    std::cerr << "Error: " << missing.size() << " tile(s) of " << workdir
-              << " have not run (the first: tile " << missing.front()
-              << "); run them, then merge again.\n";
+    reportTilesNotDone (workdir, missing);
     return false;
   }
   StageTimer timer ("Merging into " + output);
   const bool segments = method.getKind() == tiling::MergedResults::Kind::Segments;
+  const bool las = io::fileExtension (output) == "las";
+  const bool per_tile = TileOutputs::isPattern (output);
+  if (per_tile && !las) {
+    std::cerr << "\nError: one file per tile ('#' in " << output
+              << ") is written as LAS: name it .las.\n";
+    return false;
+  }
   try {
     tiling::PointFileChunks first;
     first.open (plan.inputs.front());
@@ -317,50 +365,74 @@ mergeStep (const tiling::TilePlan& plan,
     like.origin = plan.origin;
     if (!field.checkInput (like, plan.inputs.front()))
       return false;
-    tiling::MergedResults merged;
     const std::uint64_t min_size = method.getMinSegmentSize();
-    if (segments && min_size > 0)
-      merged.setSegmentsBySize (min_size);
-    if (!merged.open (plan, workdir, method.getKind()))
-      return false;
-    if (segments && min_size > 0 && merged.getNumberOfSegments() == 0) {
-      std::cerr << "\nError: no segment of at least " << min_size << " points.\n";
-      return false;
-    }
-    const bool las = io::fileExtension (output) == "las";
+    const tiling::TileGrid grid = plan.getGrid();
+    const io::LasFileInfo* like_las = like.las ? &*like.las : nullptr;
+    TileOutputs tile_outputs (output, grid, plan.origin, like_las);
     io::LasWriter writer;
     pcl::PCLPointCloud2 chunk, whole;
     std::vector<std::uint32_t> values;
-    std::size_t input = 0;
-    bool opened = false;
     std::uint64_t points = 0;
-    while (merged.read (kChunkPoints, chunk, input, values) > 0) {
-      for (auto& v : values)
-        v = v == tiling::TileResults::kNoResult ? 0u : (segments ? v + 1 : v);
-      if (!field.attach (chunk, values))
+    // One file per tile: a pass over the inputs for as many tiles as files may be
+    // open at once (all of them, mostly).
+    const std::size_t tiles_per_pass =
+        per_tile ? openFilesAllowed() : std::max<std::size_t> (grid.size(), 1);
+    for (std::size_t pass_first = 0;
+         pass_first < std::max<std::size_t> (grid.size(), 1);
+         pass_first += tiles_per_pass) {
+      tiling::MergedResults merged;
+      if (segments && min_size > 0)
+        merged.setSegmentsBySize (min_size);
+      if (!merged.open (plan, workdir, method.getKind()))
         return false;
-      if (las) {
-        if (!opened &&
-            !writer.open (output, chunk, plan.origin, like.las ? &*like.las : nullptr))
-          return false;
-        opened = true;
-        if (!writer.write (chunk))
-          return false;
-      }
-      else if (whole.data.empty())
-        whole = chunk;
-      else if (!pcl::PCLPointCloud2::concatenate (whole, chunk)) {
-        std::cerr << "\nError: the inputs have different fields; write .las tiles one "
-                     "input at a time.\n";
+      if (segments && min_size > 0 && merged.getNumberOfSegments() == 0) {
+        std::cerr << "\nError: no segment of at least " << min_size << " points.\n";
         return false;
       }
-      points += values.size();
+      std::size_t input = 0;
+      bool opened = false;
+      while (merged.read (kChunkPoints, chunk, input, values) > 0) {
+        for (auto& v : values)
+          v = v == tiling::TileResults::kNoResult ? 0u : (segments ? v + 1 : v);
+        if (!field.attach (chunk, values))
+          return false;
+        if (per_tile) {
+          if (!tile_outputs.write (chunk, pass_first, pass_first + tiles_per_pass))
+            return false;
+        }
+        else if (las) {
+          if (!opened && !writer.open (output, chunk, plan.origin, like_las))
+            return false;
+          opened = true;
+          if (!writer.write (chunk))
+            return false;
+        }
+        else if (whole.data.empty())
+          whole = chunk;
+        else if (!pcl::PCLPointCloud2::concatenate (whole, chunk)) {
+          std::cerr << "\nError: the inputs have different fields; write .las tiles "
+                       "one input at a time.\n";
+          return false;
+        }
+        if (pass_first == 0)
+          points += values.size();
+      }
+      if (merged.failed() || (per_tile && !tile_outputs.finishPass()))
+        return false;
     }
-    if (merged.failed())
-      return false;
-    if (las ? !writer.close() : !io::savePointFile (output, whole, plan.origin, &like))
+    if (per_tile ? !tile_outputs.close()
+        : las    ? !writer.close()
+                 : !io::savePointFile (output, whole, plan.origin, &like))
       return false;
     timer.done (points);
+    if (per_tile) {
+      std::cout << "  " << tile_outputs.getNumberOfFiles() << " files, index "
+                << TileOutputs::indexPathOf (output);
+      if (tile_outputs.getPointsInNoTile() > 0)
+        std::cout << "; " << tile_outputs.getPointsInNoTile()
+                  << " points without finite coordinates are in no tile's file";
+      std::cout << "\n";
+    }
   }
   catch (const std::exception& e) {
     std::cerr << "\nError: " << e.what() << "\n";

@@ -5,6 +5,8 @@
 #include "tile_scheduler.h"
 #include "tile_steps.h"
 
+#include <pcl_ext/tiling/tile_results.h>
+
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
 #include <pcl_ext/apps/output.h>
@@ -23,9 +25,13 @@ constexpr const char* kDescription =
     "points and a halo around them, and the output is what the method's own tool "
     "gives on the whole cloud (the same classes point by point; the same segments "
     "with the same ids). Methods: classify_variance and segment_variance (the options "
-    "of pcl_ext_classify_variance and pcl_ext_segment_variance). Steps for scheduler "
+    "of pcl_ext_classify_variance and pcl_ext_segment_variance). An output named "
+    "with a '#' (out_#.las) gives one LAS file per tile, '#' its number, and an index "
+    "of the files with their boxes (out_index.csv). Steps for scheduler "
     "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D' and "
-    "'tile I -workdir D' for every tile I, then 'merge output -workdir D'.";
+    "'tile I -workdir D' for every tile I, then 'merge output -workdir D'; 'resume "
+    "output -workdir D' runs the tiles that have not run or did not finish (a process "
+    "that died), then merges.";
 
 /** The tool's own options, kept out of the method's. */
 struct TileOptions {
@@ -116,6 +122,78 @@ parsePlan (int argc,
   return -1;
 }
 
+std::vector<std::size_t>
+allTiles (const pcl_ext::tiling::TilePlan& plan)
+{
+  std::vector<std::size_t> tiles (plan.getGrid().size());
+  for (std::size_t t = 0; t < tiles.size(); ++t)
+    tiles[t] = t;
+  return tiles;
+}
+
+/** The estimates (when the method needs them and the plan has none yet), the tiles
+ * \a to_run shared among the processes, then the merge into \a output by the first
+ * process; a summary line per process. \return whether every process succeeded */
+bool
+runTiles (pcl_ext::apps::TileScheduler& scheduler,
+          pcl_ext::tiling::TilePlan& plan,
+          pcl_ext::apps::TileMethod& method,
+          pcl_ext::apps::ResultField& field,
+          const TileOptions& options,
+          const std::string& output,
+          const std::vector<std::size_t>& to_run,
+          std::chrono::steady_clock::time_point start)
+{
+  const bool leader = scheduler.getRank() == 0;
+  const std::size_t tiles = plan.getGrid().size();
+  std::size_t phase_index, done = 0;
+  bool ok = true;
+  if (method.needsEstimate() && !plan.settings.count ("estimated")) {
+    scheduler.startPhase (tiles);
+    while (ok && scheduler.next (phase_index))
+      ok = pcl_ext::apps::estimateStep (
+          plan, method, options.workdir, phase_index, options.threads);
+    ok = scheduler.allOk (ok);
+    ok = scheduler.allOk (
+        ok && (!leader || pcl_ext::apps::reduceStep (plan, method, options.workdir)));
+    ok = ok && (leader || pcl_ext::tiling::loadTilePlan (
+                              pcl_ext::apps::planPath (options.workdir), plan));
+  }
+  scheduler.startPhase (to_run.size());
+  while (ok && scheduler.next (phase_index)) {
+    const std::size_t tile = to_run[phase_index];
+    ok = pcl_ext::apps::tileStep (plan, method, options.workdir, tile, options.threads);
+    if (!ok) {
+      std::cerr << "Error: tile " << tile << " failed; the work folder "
+                << options.workdir << " is kept: run 'pcl_ext_tiles tile " << tile
+                << " -workdir " << options.workdir << "', then 'merge', or 'resume'.\n";
+      break;
+    }
+    ++done;
+    const double seconds =
+        std::chrono::duration<double> (std::chrono::steady_clock::now() - start)
+            .count();
+    if (scheduler.getSize() == 1)
+      std::cout << "  " << done << " / " << to_run.size() << " tiles, ETA "
+                << static_cast<long> (seconds / done * (to_run.size() - done))
+                << " s\n";
+  }
+  ok = scheduler.allOk (ok);
+  if (leader && ok)
+    ok = pcl_ext::apps::mergeStep (plan, method, field, options.workdir, output);
+  ok = scheduler.allOk (ok);
+  const double seconds =
+      std::chrono::duration<double> (std::chrono::steady_clock::now() - start).count();
+  std::cout << (scheduler.getSize() > 1
+                    ? "Rank " + std::to_string (scheduler.getRank()) + ": "
+                    : std::string())
+            << (ok ? "done: " : "failed after ") << done << " of " << to_run.size()
+            << " tiles, " << plan.getTotalPoints() << " points, " << std::fixed
+            << std::setprecision (1) << seconds << " s, peak memory "
+            << peakMemoryMegabytes() << " MB\n";
+  return ok;
+}
+
 int
 runAll (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
 {
@@ -150,55 +228,52 @@ runAll (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
                       pcl_ext::apps::planPath (options.workdir), plan));
   if (!scheduler.allOk (ok))
     return 1;
-  const std::size_t tiles = plan.getGrid().size();
-  std::size_t tile, done = 0;
-  if (method->needsEstimate()) {
-    scheduler.startPhase (tiles);
-    while (ok && scheduler.next (tile))
-      ok = pcl_ext::apps::estimateStep (
-          plan, *method, options.workdir, tile, options.threads);
-    ok = scheduler.allOk (ok);
-    ok = scheduler.allOk (
-        ok && (!leader || pcl_ext::apps::reduceStep (plan, *method, options.workdir)));
-    ok = ok && (leader || pcl_ext::tiling::loadTilePlan (
-                              pcl_ext::apps::planPath (options.workdir), plan));
-  }
-  scheduler.startPhase (tiles);
-  while (ok && scheduler.next (tile)) {
-    ok =
-        pcl_ext::apps::tileStep (plan, *method, options.workdir, tile, options.threads);
-    if (!ok) {
-      std::cerr << "Error: tile " << tile << " failed; the work folder "
-                << options.workdir << " is kept: run 'pcl_ext_tiles tile " << tile
-                << " -workdir " << options.workdir << "', then 'merge'.\n";
-      break;
-    }
-    ++done;
-    const double seconds =
-        std::chrono::duration<double> (std::chrono::steady_clock::now() - start)
-            .count();
-    if (scheduler.getSize() == 1)
-      std::cout << "  " << done << " / " << tiles << " tiles, ETA "
-                << static_cast<long> (seconds / done * (tiles - done)) << " s\n";
-  }
-  ok = scheduler.allOk (ok);
-  if (leader && ok)
-    ok = pcl_ext::apps::mergeStep (plan, *method, field, options.workdir, output);
-  ok = scheduler.allOk (ok);
-  if (leader && ok && own_workdir && !options.keep_workdir) {
+  const auto all = allTiles (plan);
+  const bool done =
+      runTiles (scheduler, plan, *method, field, options, output, all, start);
+  if (leader && done && own_workdir && !options.keep_workdir) {
     std::error_code ignored;
     std::filesystem::remove_all (options.workdir, ignored);
   }
-  const double seconds =
-      std::chrono::duration<double> (std::chrono::steady_clock::now() - start).count();
-  std::cout << (scheduler.getSize() > 1
-                    ? "Rank " + std::to_string (scheduler.getRank()) + ": "
-                    : std::string())
-            << (ok ? "done: " : "failed after ") << done << " of " << tiles
-            << " tiles, " << plan.getTotalPoints() << " points, " << std::fixed
-            << std::setprecision (1) << seconds << " s, peak memory "
-            << peakMemoryMegabytes() << " MB\n";
-  return ok ? 0 : 1;
+  return done ? 0 : 1;
+}
+
+/** `resume output -workdir D`: the tiles of D that have not run or did not finish, then
+ * the merge; under mpirun too. */
+int
+runResume (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
+{
+  const auto start = std::chrono::steady_clock::now();
+  std::string output;
+  TileOptions options;
+  CommandLine cl ("pcl_ext_tiles resume", kDescription);
+  cl.addPositional ("output", output, pcl_ext::apps::kOutputFormats);
+  options.addTo (cl, false);
+  if (const int code = cl.parse (argc - 1, argv + 1); code >= 0)
+    return code;
+  if (options.workdir.empty()) {
+    std::cerr << "Error: -workdir is required.\n";
+    return 1;
+  }
+  pcl_ext::tiling::TilePlan plan;
+  std::unique_ptr<pcl_ext::apps::TileMethod> method;
+  pcl_ext::apps::ResultField field ("", "", "");
+  CommandLine plan_options ("pcl_ext_tiles", "The options of the plan.");
+  bool ok = pcl_ext::apps::loadPlanAndMethod (
+                options.workdir, plan, method, plan_options, field) &&
+            field.checkOutput (output);
+  // Every process lists the same tiles: all list before any runs one.
+  const auto missing =
+      ok ? pcl_ext::tiling::findTilesNotDone (options.workdir, plan.getGrid().size())
+         : std::vector<std::size_t>();
+  if (!scheduler.allOk (ok))
+    return 1;
+  if (scheduler.getRank() == 0)
+    std::cout << missing.size() << " of " << plan.getGrid().size()
+              << " tiles to run in " << options.workdir << "\n";
+  return runTiles (scheduler, plan, *method, field, options, output, missing, start)
+             ? 0
+             : 1;
 }
 
 /** `estimate I`, `tile I` or `merge output`, each with -workdir. */
@@ -259,6 +334,8 @@ main (int argc, char** argv)
   const std::string first = argc > 1 ? argv[1] : "";
   if (first == "estimate" || first == "tile" || first == "merge")
     return runStep (argc, argv);
+  if (first == "resume")
+    return runResume (argc, argv, *scheduler);
   if (first == "plan") {
     std::unique_ptr<pcl_ext::apps::TileMethod> method;
     TileOptions options;

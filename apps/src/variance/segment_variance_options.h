@@ -130,6 +130,7 @@ struct SegmentVarianceOptions {
     nb->setKSearch (k);
     nb->setMaxRadius (max_radius);
     nb->setNumberOfThreads (threads);
+    nb->setStoreSquaredDistances (false);
     return nb;
   }
 

@@ -124,7 +124,9 @@ AtomicFileOutput::commit()
     return true;
   }
   abandon();
-  PCL_ERROR ("[pcl_ext::io] could not write %s; nothing was written.\n", path_.c_str());
+  PCL_ERROR ("[pcl_ext::io] could not write %s (disk full or folder not writable); "
+             "nothing was written.\n",
+             path_.c_str());
   return false;
 }
 
@@ -156,9 +158,9 @@ writeFileAtomically (const std::string& path,
   if (ok)
     return output.commit();
   output.abandon();
-  PCL_ERROR (
-      "[pcl_ext::io::writeFileAtomically] could not write %s; nothing was written.\n",
-      path.c_str());
+  PCL_ERROR ("[pcl_ext::io::writeFileAtomically] could not write %s (disk full or "
+             "folder not writable); nothing was written.\n",
+             path.c_str());
   return false;
 }
 

@@ -12,8 +12,10 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <limits>
+#include <cstdio>
 #include <cstring>
+#include <ctime>
+#include <limits>
 #include <fcntl.h>
 #include <fstream>
 #include <sys/stat.h>
@@ -325,11 +327,47 @@ loadSegmentSizes (const std::string& folder,
   return true;
 }
 
+namespace {
+std::string
+startPath (const std::string& folder, std::size_t tile)
+{
+  return folder + "/tile_" + std::to_string (tile) + ".running";
+}
+} // namespace
+
+bool
+markTileStarted (const std::string& folder, std::size_t tile)
+{
+  char host[256] = "unknown";
+  ::gethostname (host, sizeof (host) - 1);
+  host[sizeof (host) - 1] = '\0';
+  const std::time_t now = std::time (nullptr);
+  char when[64] = "";
+  std::tm utc{};
+  if (::gmtime_r (&now, &utc))
+    std::strftime (when, sizeof (when), "%Y-%m-%d %H:%M:%S UTC", &utc);
+  return io::writeTextFile (startPath (folder, tile),
+                            "process " + std::to_string (::getpid()) + " on host " +
+                                host + " at " + when + "\n");
+}
+
+std::string
+describeTileStart (const std::string& folder, std::size_t tile)
+{
+  std::ifstream in (startPath (folder, tile));
+  std::string line;
+  std::getline (in, line);
+  return line;
+}
+
 bool
 markTileDone (const std::string& folder, std::size_t tile)
 {
-  return io::writeTextFile (folder + "/tile_" + std::to_string (tile) + ".done",
-                            "done\n");
+  if (!io::writeTextFile (folder + "/tile_" + std::to_string (tile) + ".done",
+                          "done\n"))
+    return false;
+  std::remove (startPath (folder, tile).c_str());
+  return true;
 }
 
 std::vector<std::size_t>

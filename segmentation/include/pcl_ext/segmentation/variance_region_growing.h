@@ -6,6 +6,7 @@
 
 #include <pcl_ext/point_types.h>
 #include <pcl_ext/search/neighbourhood_options.h>
+#include <pcl_ext/search/neighbourhoods.h>
 #include <pcl_ext/segmentation/cluster_size_limits.h>
 #include <pcl_ext/segmentation/local_planes.h>
 
@@ -22,39 +23,27 @@
 
 namespace pcl_ext {
 /** \brief The walks and merges of Belton & Lichti's region growing (section 3) over
- * neighbourhoods stored as compressed rows (pcl_ext::Neighbourhoods).
+ * stored neighbourhoods (pcl_ext::Neighbourhoods::getRows).
  *
  * For every row whose point is a surface point, its neighbours are visited closest
  * first: the point itself and points of class -1 are skipped, a surface point is linked
- * to the seed, and anything else, or a neighbour farther than \a max_sqr_distance, ends
- * the walk. The result is the connected components of the links. \param[in] offsets,
- * neighbours, sqr_distances the rows (see Neighbourhoods::getOffsets) \param[in]
- * row_points the point of each row \param[in] class_of_point per point of the cloud: a
- * PointClass value, or -1 for points that are not segmented (skipped in the walks)
- * \param[in] max_sqr_distance squared distance limit from the seed (infinity: none)
- * \param[in] threads OpenMP threads for the walks (0: all cores)
- * \param[out] root per point of the cloud: the smallest point index of its segment for
- *             surface points of the rows, -1 for every other point
+ * to the seed, and anything else, or the end of the row's reach, ends the walk. The
+ * result is the connected components of the links.
+ * \param[in] rows the neighbours of each row, closest first
+ * \param[in] row_points the point of each row
+ * \param[in] class_of_point per point of the cloud: a PointClass value, or -1 for
+ * points that are not segmented (skipped in the walks) \param[in] row_reach per row,
+ * how many of its first neighbours lie within the seed's distance limit (the walk stops
+ * there); empty: no limit \param[in] threads OpenMP threads for the walks (0: all
+ * cores) \param[out] root per point of the cloud: the smallest point index of its
+ * segment for surface points of the rows, -1 for every other point; empty when \a
+ * row_reach is neither empty nor one per row
  */
 void
-growSurfaceSegments (const std::vector<std::size_t>& offsets,
-                     const pcl::Indices& neighbours,
-                     const std::vector<float>& sqr_distances,
+growSurfaceSegments (const NeighbourRowsView& rows,
                      const pcl::Indices& row_points,
                      const std::vector<std::int8_t>& class_of_point,
-                     float max_sqr_distance,
-                     unsigned int threads,
-                     std::vector<std::int32_t>& root);
-
-/** \brief The same with one squared distance limit per row (\a row_max_sqr_distances,
- * one per row; \a root is left empty when the sizes differ). */
-void
-growSurfaceSegments (const std::vector<std::size_t>& offsets,
-                     const pcl::Indices& neighbours,
-                     const std::vector<float>& sqr_distances,
-                     const pcl::Indices& row_points,
-                     const std::vector<std::int8_t>& class_of_point,
-                     const std::vector<float>& row_max_sqr_distances,
+                     const std::vector<std::uint32_t>& row_reach,
                      unsigned int threads,
                      std::vector<std::int32_t>& root);
 

@@ -74,6 +74,7 @@ public:
     }
     own_.reset (new NeighbourhoodsT);
     own_->setInputCloud (cloud);
+    own_->setStoreSquaredDistances (false); // computed when read: half the memory
     if (indices)
       own_->setIndices (indices);
     if (k != 0) {

@@ -12,6 +12,31 @@
 #include <vector>
 
 namespace pcl_ext {
+/** \brief Where each row of a pcl_ext::Neighbourhoods lies in its array of neighbour
+ * indices, for code that is not a template over the point type. */
+struct NeighbourRowsView {
+  const pcl::index_t* indices = nullptr;
+  /** Row r spans [offsets[r], offsets[r + 1]); null: every row spans \a stride entries,
+   * starting with -1 when the row is empty. */
+  const std::size_t* offsets = nullptr;
+  std::size_t stride = 0;
+  std::size_t rows = 0;
+
+  std::size_t
+  begin (std::size_t row) const
+  {
+    return offsets ? offsets[row] : row * stride;
+  }
+
+  std::size_t
+  size (std::size_t row) const
+  {
+    if (offsets)
+      return offsets[row + 1] - offsets[row];
+    return stride > 0 && indices[row * stride] >= 0 ? stride : 0;
+  }
+};
+
 /** \brief The k nearest or radius neighbours of every point of a cloud (or of the
  * points named by setIndices), computed once, in parallel, and stored compactly.
  *
@@ -19,11 +44,19 @@ namespace pcl_ext {
  * Neighbourhoods object through setNeighbourhoods(), so the cloud is searched once for
  * all of them.
  *
- * Storage is compressed sparse rows: row r holds the neighbours of point
- * getIndices()[r], closest first, as offsets into one array of point indices and one of
- * squared distances. Rows include the query point itself at distance 0, as PCL's
- * searches do. Neighbours are searched among all finite points of the input cloud, not
- * only the indexed ones (PCL's Feature does the same when no search surface is set).
+ * Storage is one array of point indices: row r holds the neighbours of point
+ * getIndices()[r], closest first. With k neighbours (and no maximum radius) every row
+ * spans k entries, a point without neighbourhood's holding -1s; otherwise rows are
+ * compressed sparse rows with offsets. Rows include the query point itself at distance
+ * 0, as PCL's searches do. Neighbours are searched among all finite points of the input
+ * cloud, not only the indexed ones (PCL's Feature does the same when no search surface
+ * is set).
+ *
+ * The squared distances are stored too unless setStoreSquaredDistances (false) says
+ * otherwise; getSquaredDistance() then computes them from the coordinates, in the same
+ * float arithmetic as the default search, so the values are the same. At k = 50 the
+ * rows then take 200 bytes per point instead of 408 (the methods' own searches store no
+ * distances).
  *
  * The default search is pcl_ext::search::NanoflannKdTree; any pcl::search::Search works
  * through setSearchMethod(). With the default and k >= 24 neighbours of the whole
@@ -55,7 +88,8 @@ public:
   using PointCloudConstPtr = typename PointCloud::ConstPtr;
   using SearchPtr = typename NeighbourhoodSearchOptions<PointT>::SearchPtr;
 
-  /** \brief A read-only view of one row: the neighbours of one point, closest first. */
+  /** \brief A read-only view of one row: the neighbours of one point, closest first
+   * (\a sqr_distances is null when the distances are not stored). */
   struct Row {
     const pcl::index_t* indices;
     const float* sqr_distances;
@@ -104,6 +138,22 @@ public:
     return max_nn_;
   }
 
+  /** \brief Keep the squared distance of every neighbour (default: true). Without
+   * them the rows take half the memory at k neighbours; getSquaredDistance() computes
+   * them from the coordinates, and Row::sqr_distances and getSquaredDistances() are
+   * empty. */
+  void
+  setStoreSquaredDistances (bool store)
+  {
+    store_sqr_distances_ = store;
+  }
+
+  bool
+  getStoreSquaredDistances () const
+  {
+    return store_sqr_distances_;
+  }
+
   /** \brief Threads for the search (0, the default: all cores). Results do not depend
    * on it. */
   void
@@ -127,7 +177,7 @@ public:
   std::size_t
   size () const
   {
-    return offsets_.empty() ? 0 : offsets_.size() - 1;
+    return rows_;
   }
 
   bool
@@ -140,10 +190,29 @@ public:
   Row
   operator[] (std::size_t row) const
   {
-    return Row{indices_flat_.data() + offsets_[row],
-               sqr_distances_.data() + offsets_[row],
-               offsets_[row + 1] - offsets_[row]};
+    const NeighbourRowsView view = getRows();
+    const std::size_t begin = view.begin (row);
+    return Row{indices_flat_.data() + begin,
+               sqr_distances_.empty() ? nullptr : sqr_distances_.data() + begin,
+               view.size (row)};
   }
+
+  /** \brief The rows as a view that does not depend on the point type. */
+  NeighbourRowsView
+  getRows () const
+  {
+    return NeighbourRowsView{indices_flat_.data(),
+                             stride_ > 0 || offsets_.empty() ? nullptr
+                                                             : offsets_.data(),
+                             stride_,
+                             rows_};
+  }
+
+  /** \brief The squared distance between the point of row \a row and its \a i-th
+   * neighbour: the stored value, or one computed from the coordinates as the default
+   * search computes it. */
+  float
+  getSquaredDistance (std::size_t row, std::size_t i) const;
 
   /** \brief Row of point \a point_index, or -1 when the point was not a query. */
   std::ptrdiff_t
@@ -156,19 +225,16 @@ public:
   isComputedFor (const PointCloudConstPtr& cloud,
                  const pcl::IndicesConstPtr& indices) const;
 
-  /** \brief CSR arrays: row r spans [offsets[r], offsets[r+1]) of the other two. */
-  const std::vector<std::size_t>&
-  getOffsets () const
-  {
-    return offsets_;
-  }
-
+  /** \brief Every row's neighbours, one row after another (getRows() says where each
+   * starts). */
   const pcl::Indices&
   getNeighbourIndices () const
   {
     return indices_flat_;
   }
 
+  /** \brief The squared distances along getNeighbourIndices(); empty when they are not
+   * stored. */
   const std::vector<float>&
   getSquaredDistances () const
   {
@@ -220,8 +286,11 @@ protected:
 
   unsigned int max_nn_ = 0;
   unsigned int threads_ = 0;
+  bool store_sqr_distances_ = true;
 
   std::size_t searchable_ = 0;
+  std::size_t rows_ = 0;
+  std::size_t stride_ = 0; // > 0: every row spans stride_ entries, offsets_ is empty
   std::vector<std::size_t> offsets_;
   pcl::Indices indices_flat_;
   std::vector<float> sqr_distances_;

@@ -96,8 +96,19 @@ loadSegmentSizes (const std::string& folder,
                   std::size_t tile,
                   std::vector<SegmentSize>& sizes);
 
-/** \brief Record that tile \a tile wrote all its results (`tile_<tile>.done`). \return
- * false (PCL_ERROR) when it cannot be written */
+/** \brief Record that a process started tile \a tile (`tile_<tile>.running`: which
+ * process, on which host, when), so that a tile whose process died can be named.
+ * \return false (PCL_ERROR) when it cannot be written */
+bool
+markTileStarted (const std::string& folder, std::size_t tile);
+
+/** \brief What markTileStarted recorded for \a tile ("process 1234 on host h at
+ * 2026-11-27 09:00:00 UTC"), or empty when the tile was not started or finished. */
+std::string
+describeTileStart (const std::string& folder, std::size_t tile);
+
+/** \brief Record that tile \a tile wrote all its results (`tile_<tile>.done`; its
+ * start record is removed). \return false (PCL_ERROR) when it cannot be written */
 bool
 markTileDone (const std::string& folder, std::size_t tile);
 

@@ -104,8 +104,8 @@ pcl_ext::LocalSurfaceIntersection<PointT>::reachOf (pcl::index_t i) const
   const auto row = (*nb_)[static_cast<std::size_t> (i)];
   return row.empty()
              ? 0.0
-             : reach_factor_ *
-                   std::sqrt (static_cast<double> (row.sqr_distances[row.size() - 1]));
+             : reach_factor_ * std::sqrt (static_cast<double> (nb_->getSquaredDistance (
+                                   static_cast<std::size_t> (i), row.size() - 1)));
 }
 
 template <typename PointT>
@@ -178,9 +178,9 @@ pcl_ext::LocalSurfaceIntersection<PointT>::intersect (std::vector<Record>& recor
   const auto surface = static_cast<std::uint32_t> (PointClass::Surface);
   const auto radius = [this] (pcl::index_t i) {
     const auto row = (*nb_)[static_cast<std::size_t> (i)];
-    return row.empty()
-               ? 0.0
-               : std::sqrt (static_cast<double> (row.sqr_distances[row.size() - 1]));
+    return row.empty() ? 0.0
+                       : std::sqrt (static_cast<double> (nb_->getSquaredDistance (
+                             static_cast<std::size_t> (i), row.size() - 1)));
   };
 
 #pragma omp parallel num_threads(resolveThreadCount(threads_))

@@ -121,55 +121,47 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (
     return;
   }
 
-  std::vector<std::int32_t> root;
-  const float max_sqr = max_distance_ > 0.0
-                            ? static_cast<float> (max_distance_ * max_distance_)
-                            : std::numeric_limits<float>::infinity();
-  if (max_distance_factor_ > 0.0 || seeds_) {
-    // Per seed: the smaller of the fixed limit and the factor times its local spacing
-    // s = r_m sqrt(pi / m), m half its neighbours (the row holds the seed first).
-    const auto& offsets = nb->getOffsets();
-    const auto& sqr_distances = nb->getSquaredDistances();
-    const double f2 = max_distance_factor_ * max_distance_factor_;
-    std::vector<float> limits (indices_->size(), max_sqr);
-    for (std::size_t r = 0; r < limits.size() && max_distance_factor_ > 0.0; ++r) {
-      // A point without neighbourhood (NaN, or none found) has an empty row.
-      const std::size_t row_size = offsets[r + 1] - offsets[r];
-      const std::size_t m = row_size > 0 ? (row_size - 1) / 2 : 0;
-      if (m >= kMinSpacingNeighbour)
-        limits[r] = std::min (
-            max_sqr,
-            static_cast<float> (f2 * 3.141592653589793 / static_cast<double> (m)) *
-                sqr_distances[offsets[r] + m]);
-    }
+  // Per row, how many of its neighbours lie within the seed's distance limit: the
+  // smaller of the fixed limit and the factor times the seed's local spacing
+  // s = r_m sqrt(pi / m), m half its neighbours (the row holds the seed first). A row
+  // that is not a seed's links nothing.
+  std::vector<std::uint32_t> reach;
+  const bool limited = max_distance_ > 0.0 || max_distance_factor_ > 0.0 || seeds_;
+  if (limited) {
+    std::vector<char> seed;
     if (seeds_) {
-      // A row that is not a seed's links nothing: every distance exceeds -1.
-      std::vector<char> seed (input_->size(), 0);
+      seed.assign (input_->size(), 0);
       for (const auto i : *seeds_)
         if (i >= 0 && static_cast<std::size_t> (i) < seed.size())
           seed[i] = 1;
-      for (std::size_t r = 0; r < limits.size(); ++r)
-        if (!seed[(*indices_)[r]])
-          limits[r] = -1.0f;
     }
-    growSurfaceSegments (nb->getOffsets(),
-                         nb->getNeighbourIndices(),
-                         sqr_distances,
-                         *indices_,
-                         class_of_point,
-                         limits,
-                         threads_,
-                         root);
+    const float max_sqr = max_distance_ > 0.0
+                              ? static_cast<float> (max_distance_ * max_distance_)
+                              : std::numeric_limits<float>::infinity();
+    const double f2 = max_distance_factor_ * max_distance_factor_;
+    const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size());
+    reach.assign (indices_->size(), 0);
+#pragma omp parallel for num_threads(resolveThreadCount(threads_)) schedule(static)
+    for (std::ptrdiff_t r = 0; r < rows; ++r) {
+      if (!seed.empty() && !seed[(*indices_)[r]])
+        continue;
+      // A point without neighbourhood (NaN, or none found) has an empty row.
+      const std::size_t row_size = (*nb)[r].size();
+      float limit = max_sqr;
+      const std::size_t m = row_size > 0 ? (row_size - 1) / 2 : 0;
+      if (max_distance_factor_ > 0.0 && m >= kMinSpacingNeighbour)
+        limit = std::min (
+            max_sqr,
+            static_cast<float> (f2 * 3.141592653589793 / static_cast<double> (m)) *
+                nb->getSquaredDistance (r, m));
+      std::size_t within = 0;
+      while (within < row_size && !(nb->getSquaredDistance (r, within) > limit))
+        ++within;
+      reach[r] = static_cast<std::uint32_t> (within);
+    }
   }
-  else
-    growSurfaceSegments (nb->getOffsets(),
-                         nb->getNeighbourIndices(),
-                         nb->getSquaredDistances(),
-                         *indices_,
-                         class_of_point,
-                         max_sqr,
-                         threads_,
-                         root);
+  std::vector<std::int32_t> root;
+  growSurfaceSegments (nb->getRows(), *indices_, class_of_point, reach, threads_, root);
 
   // Segments from the roots, within the size limits, largest first.
   std::vector<std::uint32_t> size (input_->size(), 0);

@@ -33,6 +33,8 @@ template <typename PointT>
 void
 pcl_ext::Neighbourhoods<PointT>::clear()
 {
+  rows_ = 0;
+  stride_ = 0;
   offsets_.clear();
   indices_flat_.clear();
   sqr_distances_.clear();
@@ -94,8 +96,10 @@ pcl_ext::Neighbourhoods<PointT>::compute()
   }
 
   // The default search; a NanoflannKdTree (ours or the user's) is queried without
-  // allocation.
-  if (!search_)
+  // allocation. Ours is dropped after the search: the rows are what is kept (the tree
+  // would add about 24 bytes a point to them).
+  const bool own_search = !search_;
+  if (own_search)
     search_.reset (new search::NanoflannKdTree<PointT>);
   search_->setInputCloud (input_);
   const auto* tree =
@@ -106,6 +110,8 @@ pcl_ext::Neighbourhoods<PointT>::compute()
     searchable_ += pcl::isFinite (p) ? 1 : 0;
   if (searchable_ == 0) {
     PCL_ERROR ("[pcl_ext::Neighbourhoods::compute] The cloud has no finite point.\n");
+    if (own_search)
+      search_.reset();
     clear();
     deinitCompute();
     return false;
@@ -116,6 +122,8 @@ pcl_ext::Neighbourhoods<PointT>::compute()
                "of the cloud.\n",
                k_,
                searchable_);
+    if (own_search)
+      search_.reset();
     clear();
     deinitCompute();
     return false;
@@ -137,8 +145,25 @@ pcl_ext::Neighbourhoods<PointT>::compute()
   computed_cloud_ = input_;
   computed_indices_ = indices_;
   computed_fake_indices_ = fake_indices_;
+  if (own_search)
+    search_.reset();
   deinitCompute();
   return true;
+}
+
+template <typename PointT>
+float
+pcl_ext::Neighbourhoods<PointT>::getSquaredDistance (std::size_t row,
+                                                     std::size_t i) const
+{
+  const std::size_t at = getRows().begin (row) + i;
+  if (!sqr_distances_.empty())
+    return sqr_distances_[at];
+  // As the tree ranks its candidates: neighbour minus query, summed x, y, z.
+  const PointT& q = (*computed_cloud_)[(*computed_indices_)[row]];
+  const PointT& p = (*computed_cloud_)[indices_flat_[at]];
+  const float dx = p.x - q.x, dy = p.y - q.y, dz = p.z - q.z;
+  return dx * dx + dy * dy + dz * dz;
 }
 
 template <typename PointT>
@@ -146,23 +171,41 @@ void
 pcl_ext::Neighbourhoods<PointT>::capRows()
 {
   // In place, front to back: a row only moves towards the front. The comparison is the
-  // one a radius search makes (squared distance <= squared radius, in float).
+  // one a radius search makes (squared distance <= squared radius, in float). Rows of
+  // k entries become rows with offsets.
   const float limit = static_cast<float> (max_radius_ * max_radius_);
-  const std::size_t rows = offsets_.size() - 1;
+  const NeighbourRowsView view = getRows();
+  std::vector<std::size_t> offsets (rows_ + 1, 0);
   std::size_t out = 0;
-  for (std::size_t r = 0; r < rows; ++r) {
-    const std::size_t begin = offsets_[r], end = offsets_[r + 1];
-    offsets_[r] = out;
-    for (std::size_t j = begin; j < end && sqr_distances_[j] <= limit; ++j, ++out) {
+  for (std::size_t r = 0; r < rows_; ++r) {
+    const std::size_t begin = view.begin (r), count = view.size (r);
+    offsets[r] = out;
+    const PointT* q = count > 0 ? &(*input_)[(*indices_)[r]] : nullptr;
+    for (std::size_t j = begin; j < begin + count; ++j, ++out) {
+      float d2;
+      if (store_sqr_distances_)
+        d2 = sqr_distances_[j];
+      else {
+        const PointT& p = (*input_)[indices_flat_[j]];
+        const float dx = p.x - q->x, dy = p.y - q->y, dz = p.z - q->z;
+        d2 = dx * dx + dy * dy + dz * dz;
+      }
+      if (d2 > limit)
+        break;
       indices_flat_[out] = indices_flat_[j];
-      sqr_distances_[out] = sqr_distances_[j];
+      if (store_sqr_distances_)
+        sqr_distances_[out] = d2;
     }
   }
-  offsets_[rows] = out;
+  offsets[rows_] = out;
+  offsets_.swap (offsets);
+  stride_ = 0;
   indices_flat_.resize (out);
-  sqr_distances_.resize (out);
   indices_flat_.shrink_to_fit();
-  sqr_distances_.shrink_to_fit();
+  if (store_sqr_distances_) {
+    sqr_distances_.resize (out);
+    sqr_distances_.shrink_to_fit();
+  }
 }
 
 template <typename PointT>
@@ -175,12 +218,14 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree()
   const std::size_t k = static_cast<std::size_t> (k_);
 
   // Every finite query gets exactly k neighbours (k <= finite points was checked), so
-  // the row offsets are known before searching and threads write straight into place.
-  offsets_.assign (rows + 1, 0);
-  for (std::size_t r = 0; r < rows; ++r)
-    offsets_[r + 1] = offsets_[r] + (pcl::isFinite ((*input_)[(*indices_)[r]]) ? k : 0);
-  indices_flat_.resize (offsets_[rows]);
-  sqr_distances_.resize (offsets_[rows]);
+  // every row spans k entries and threads write straight into place; the rows of
+  // points that are not finite hold -1s.
+  rows_ = rows;
+  stride_ = k;
+  indices_flat_.assign (rows * k, -1);
+  if (store_sqr_distances_)
+    sqr_distances_.assign (rows * k, 0.0f);
+  const bool store = store_sqr_distances_;
 
   const unsigned int threads = resolveThreadCount (threads_);
   // For the whole cloud, search leaf by leaf: the points of a leaf share most of their
@@ -192,7 +237,7 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree()
   const bool whole_cloud = fake_indices_ && tree.size() == searchable_;
   if (whole_cloud && k >= kMinNeighboursPerLeafSearch) {
     const auto leaves = tree.leafRanges();
-#pragma omp parallel num_threads(threads) default(none) shared(tree, k, leaves)
+#pragma omp parallel num_threads(threads) default(none) shared(tree, k, leaves, store)
     {
       pcl::Indices nn;
       std::vector<float> d2;
@@ -203,10 +248,10 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree()
         d2.resize (nn.size());
         tree.nearestKSearchOfPoints (first, last, k, nn.data(), d2.data());
         for (std::size_t pos = first; pos < last; ++pos) {
-          const std::size_t at =
-              offsets_[static_cast<std::size_t> (tree.pointIndex (pos))];
+          const std::size_t at = static_cast<std::size_t> (tree.pointIndex (pos)) * k;
           std::copy_n (&nn[(pos - first) * k], k, &indices_flat_[at]);
-          std::copy_n (&d2[(pos - first) * k], k, &sqr_distances_[at]);
+          if (store)
+            std::copy_n (&d2[(pos - first) * k], k, &sqr_distances_[at]);
         }
       }
     }
@@ -223,8 +268,9 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree()
   constexpr std::size_t run = 256;
   const std::ptrdiff_t num_runs = static_cast<std::ptrdiff_t> ((n + run - 1) / run);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1) default(none)       \
-    shared(tree, k, n, num_runs, whole_cloud)
+    shared(tree, k, n, num_runs, whole_cloud, store)
   for (std::ptrdiff_t r = 0; r < num_runs; ++r) {
+    std::vector<float> scratch (store ? 0 : k);
     float previous[3] = {0, 0, 0};
     float previous_kth = -1.0f; // k-th distance of the previous query; < 0: none
     const std::size_t last = std::min (n, static_cast<std::size_t> (r + 1) * run);
@@ -253,8 +299,8 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree()
         // Widened by a relative margin so float rounding never drops a true neighbour.
         bound = reach * reach * (1.0f + 1e-4f) + 1e-30f;
       }
-      float* d2 = &sqr_distances_[offsets_[row]];
-      tree.nearestKSearch (q, k, &indices_flat_[offsets_[row]], d2, bound);
+      float* d2 = store ? &sqr_distances_[row * k] : scratch.data();
+      tree.nearestKSearch (q, k, &indices_flat_[row * k], d2, bound);
       std::copy_n (q, 3, previous);
       previous_kth = d2[k - 1];
     }
@@ -296,7 +342,8 @@ pcl_ext::Neighbourhoods<PointT>::searchWithSearchMethod()
             if (nn[i] >= 0 && static_cast<std::size_t> (nn[i]) < input_->size() &&
                 std::isfinite (d2[i])) {
               block.indices.push_back (nn[i]);
-              block.sqr_distances.push_back (d2[i]);
+              if (store_sqr_distances_)
+                block.sqr_distances.push_back (d2[i]);
               ++found;
             }
         }
@@ -311,8 +358,10 @@ pcl_ext::Neighbourhoods<PointT>::searchWithSearchMethod()
     for (std::size_t i = 0; i < block.rows.size(); ++i)
       offsets_[block.rows[i] + 1] = block.counts[i];
   std::partial_sum (offsets_.begin(), offsets_.end(), offsets_.begin());
+  rows_ = rows;
   indices_flat_.resize (offsets_[rows]);
-  sqr_distances_.resize (offsets_[rows]);
+  if (store_sqr_distances_)
+    sqr_distances_.resize (offsets_[rows]);
 #pragma omp parallel for num_threads(threads) schedule(static) default(none)           \
     shared(blocks, num_blocks)
   for (std::ptrdiff_t b = 0; b < static_cast<std::ptrdiff_t> (num_blocks); ++b) {
@@ -322,9 +371,10 @@ pcl_ext::Neighbourhoods<PointT>::searchWithSearchMethod()
     const std::size_t start = offsets_[block.rows.front()];
     std::copy (
         block.indices.begin(), block.indices.end(), indices_flat_.begin() + start);
-    std::copy (block.sqr_distances.begin(),
-               block.sqr_distances.end(),
-               sqr_distances_.begin() + start);
+    if (!block.sqr_distances.empty())
+      std::copy (block.sqr_distances.begin(),
+                 block.sqr_distances.end(),
+                 sqr_distances_.begin() + start);
   }
 }
 
@@ -332,7 +382,7 @@ template <typename PointT>
 std::ptrdiff_t
 pcl_ext::Neighbourhoods<PointT>::getRowOfPoint (pcl::index_t point_index) const
 {
-  if (offsets_.empty() || point_index < 0)
+  if (rows_ == 0 || point_index < 0)
     return -1;
   if (computed_fake_indices_)
     return static_cast<std::size_t> (point_index) < size() ? point_index : -1;
@@ -346,7 +396,7 @@ bool
 pcl_ext::Neighbourhoods<PointT>::isComputedFor (
     const PointCloudConstPtr& cloud, const pcl::IndicesConstPtr& indices) const
 {
-  if (offsets_.empty() || cloud != computed_cloud_)
+  if (rows_ == 0 || cloud != computed_cloud_)
     return false;
   if (computed_fake_indices_) {
     // Computed for every point: accept no indices, or indices that name every point in

@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# pcl_ext_tiles on a cluster without MPI: the plan here, then the estimates and the tiles as
+# Slurm array jobs (one task per tile; tile 0 alone first, as it reduces the estimates into the
+# plan), then the merge, each job waiting for the one before.
+# Without sbatch the same steps run here, one after another.
+#
+#   scripts/tiles_slurm.sh METHOD OUTPUT INPUT... [-- OPTIONS]
+#
+# OPTIONS are the method's and the plan's (-tile_size, -halo, ...), as pcl_ext_tiles takes
+# them. Environment:
+#   PCL_EXT_TILES   the tool (default: pcl_ext_tiles on the PATH, else build/apps/pcl_ext_tiles)
+#   WORKDIR         the work folder (default: OUTPUT.tiles); kept, for 'resume' after a failure
+#   SBATCH_OPTIONS  options for every sbatch call (e.g. "--partition=x --time=1:00:00")
+#   THREADS         threads per tile task (default: SLURM_CPUS_PER_TASK in the job, else 0: all)
+#
+# A task that fails or dies leaves its tile unfinished and the jobs after it do not start:
+# 'pcl_ext_tiles merge OUTPUT -workdir WORKDIR' names the tiles left, and
+# 'pcl_ext_tiles resume OUTPUT -workdir WORKDIR' runs them and merges.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(dirname "$here")"
+
+if [ $# -lt 3 ] || [ "$1" = "-h" ] || [ "$1" = "--help" ]; then
+  sed -n '2,17p' "${BASH_SOURCE[0]}"
+  [ $# -ge 1 ] && { [ "$1" = "-h" ] || [ "$1" = "--help" ]; } && exit 0
+  exit 2
+fi
+method="$1"
+output="$2"
+shift 2
+inputs=()
+while [ $# -gt 0 ] && [ "$1" != "--" ]; do
+  inputs+=("$1")
+  shift
+done
+[ $# -gt 0 ] && shift # the --
+options=("$@")
+
+tool="${PCL_EXT_TILES:-}"
+if [ -z "$tool" ]; then
+  tool="$(command -v pcl_ext_tiles || true)"
+  [ -z "$tool" ] && tool="$root/build/apps/pcl_ext_tiles"
+fi
+if [ ! -x "$tool" ]; then
+  echo "Error: pcl_ext_tiles not found (set PCL_EXT_TILES)." >&2
+  exit 1
+fi
+workdir="${WORKDIR:-$output.tiles}"
+threads="${THREADS:-}"
+
+"$tool" plan "$method" "${inputs[@]}" -workdir "$workdir" "${options[@]}"
+tiles=0
+while [ -e "$workdir/tile_$tiles.points" ]; do
+  tiles=$((tiles + 1))
+done
+if [ "$tiles" -eq 0 ]; then
+  echo "Error: the plan in $workdir has no tile." >&2
+  exit 1
+fi
+last=$((tiles - 1))
+
+if ! command -v sbatch >/dev/null 2>&1; then
+  echo "sbatch not found: running the $tiles tiles here, one after another."
+  for t in $(seq 0 "$last"); do
+    "$tool" estimate "$t" -workdir "$workdir" -threads "${threads:-0}"
+  done
+  for t in $(seq 0 "$last"); do
+    "$tool" tile "$t" -workdir "$workdir" -threads "${threads:-0}"
+  done
+  exec "$tool" merge "$output" -workdir "$workdir"
+fi
+
+# shellcheck disable=SC2206
+extra=(${SBATCH_OPTIONS:-})
+task_threads="${threads:-\${SLURM_CPUS_PER_TASK:-0}}"
+q() { printf '%q' "$1"; }
+estimate=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_estimate --array="0-$last" \
+  --wrap="$(q "$tool") estimate \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads")
+# Tile 0 first, alone: it reduces the estimates into the plan, which the other tiles read.
+first=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_tile \
+  --dependency="afterok:${estimate%%;*}" \
+  --wrap="$(q "$tool") tile 0 -workdir $(q "$workdir") -threads $task_threads")
+tile="${first%%;*}"
+if [ "$last" -ge 1 ]; then
+  rest=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_tile --array="1-$last" \
+    --dependency="afterok:${first%%;*}" \
+    --wrap="$(q "$tool") tile \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads")
+  tile="${rest%%;*}"
+fi
+merge=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_merge \
+  --dependency="afterok:$tile" \
+  --wrap="$(q "$tool") merge $(q "$output") -workdir $(q "$workdir")")
+echo "Submitted: estimates ${estimate%%;*} (array 0-$last), tile 0 ${first%%;*}, tiles $tile, merge ${merge%%;*}."
+echo "After a failure: $tool resume $output -workdir $workdir"
