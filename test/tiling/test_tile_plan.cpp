@@ -12,7 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <map>
 
 using namespace pcl_ext::tiling;
 
@@ -86,6 +89,44 @@ TEST (TilePlan, SuggestedTileSizeHoldsAboutTheAskedPoints)
                     50.0);
   EXPECT_DOUBLE_EQ (suggestTileSize ({0.0, 0.0}, {100.0, 100.0}, 1000000, 10000), 10.0);
   EXPECT_DOUBLE_EQ (suggestTileSize ({0.0, 0.0}, {100.0, 100.0}, 1000000, 40000), 20.0);
+}
+
+TEST (TilePlan, FittedTileSizeKeepsTheDensestTileWithinTheLimit)
+{
+  // 100 m x 100 m at 1 point a square metre, and 4,000 more points in the square metre
+  // (30, 30) - (31, 31), as near a scanner: 14,000 points, at most 5,000 a tile. A
+  // uniform density gives 100 m tiles (all points in one). The fitted size is a
+  // multiple of 5 m cells (a sixteenth of 100 m, rounded down to 1, 2 or 5 times a
+  // power of ten): 30 m, whose tile [30, 60) holds the dense square and 900 others; at
+  // 35 m the tile [0, 35) holds it and 1,225 others, too many.
+  const std::string dir = freshFolder ("tile_plan_fit");
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int y = 0; y < 100; ++y)
+    for (int x = 0; x < 100; ++x)
+      cloud.push_back (pcl::PointXYZ (x + 0.5f, y + 0.5f, 0.0f));
+  for (int i = 0; i < 4000; ++i)
+    cloud.push_back (
+        pcl::PointXYZ (30.1f + 0.012f * (i % 64), 30.1f + 0.012f * (i / 64), 1.0f));
+  ASSERT_EQ (pcl::io::savePCDFileBinary (dir + "/dense.pcd", cloud), 0);
+  TilePlan plan;
+  ASSERT_TRUE (planTiles ({dir + "/dense.pcd"}, 1e9, 0.0, plan));
+  EXPECT_DOUBLE_EQ (suggestTileSize (plan.min, plan.max, 14000, 5000), 100.0);
+  const auto densest = [&cloud] (double s) {
+    std::map<std::pair<long, long>, int> tiles;
+    int most = 0;
+    for (const auto& p : cloud)
+      most = std::max (most,
+                       ++tiles[{static_cast<long> (std::floor (p.x / s)),
+                                static_cast<long> (std::floor (p.y / s))}]);
+    return most;
+  };
+  const double size = fitTileSize (plan, 5000);
+  EXPECT_DOUBLE_EQ (size, 30.0);
+  EXPECT_EQ (densest (30.0), 4900);
+  EXPECT_EQ (densest (35.0), 5225);
+  // Where no size fits (a limit below the dense square's points), the cell: 2 m for
+  // 3,000 a tile (a uniform density gives 50 m).
+  EXPECT_DOUBLE_EQ (fitTileSize (plan, 3000), 2.0);
 }
 
 TEST (TilePlan, InputsFarApartAreRefused)

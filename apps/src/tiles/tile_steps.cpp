@@ -27,9 +27,10 @@
 namespace pcl_ext {
 namespace apps {
 namespace {
-/** About this many points a tile when no tile size is given: a tile's points, their
- * neighbourhoods and the method's arrays stay well under a gigabyte. */
-constexpr std::uint64_t kPointsPerTile = 2000000;
+/** At most this many points in the densest tile when no tile size is given: with its
+ * halo, its neighbourhoods and the method's arrays, a process stays under 2 GB
+ * (docs/tiles.md has the measurements). */
+constexpr std::uint64_t kPointsPerTile = 2500000;
 constexpr std::size_t kChunkPoints = 1 << 20;
 
 /** How many files one process may hold open besides its own few: the soft limit,
@@ -178,9 +179,8 @@ planStep (const std::string& method_name,
     // The grid's size and halo need the box: plan once to get it.
     if (!tiling::planTiles (inputs, 1e9, 0.0, plan))
       return false;
-    const std::uint64_t points = plan.getTotalPoints();
     if (!(tile_size > 0.0))
-      tile_size = tiling::suggestTileSize (plan.min, plan.max, points, kPointsPerTile);
+      tile_size = tiling::fitTileSize (plan, kPointsPerTile);
     if (halo < 0.0)
       halo = std::min (estimateHalo (inputs.front(), plan.origin, method->getReach()),
                        0.5 * tile_size);

@@ -18,8 +18,8 @@ namespace apps {
 std::string
 planPath (const std::string& workdir);
 
-/** \brief Plan a run: the inputs' box and points, the tile grid (\a tile_size 0: about
- * two million points a tile), the halo (\a halo < 0: from the
+/** \brief Plan a run: the inputs' box and points, the tile grid (\a tile_size 0: at
+ * most 2.5 million points in the densest tile), the halo (\a halo < 0: from the
  * neighbourhood radii of a sample of the first input), the
  * method and its options (\a method_arguments, to parse again in the other steps), and
  * the points sorted into the tiles' files. \return false (message printed) on error */

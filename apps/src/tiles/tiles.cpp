@@ -53,8 +53,10 @@ struct TileOptions {
     cl.addOption ("threads", threads, "OpenMP threads per process (0: all cores)");
     if (!planning)
       return;
-    cl.addOption (
-        "tile_size", tile_size, "tile side in metres (0: about 2M points a tile)");
+    cl.addOption ("tile_size",
+                  tile_size,
+                  "tile side in metres (0: the largest with at most 2.5M points in the "
+                  "densest tile)");
     cl.addOption (
         "halo",
         halo,

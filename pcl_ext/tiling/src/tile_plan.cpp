@@ -10,6 +10,7 @@
 
 #include <pcl/console/print.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -197,6 +198,79 @@ suggestTileSize (const Eigen::Vector2d& min,
     if (step * decade >= raw)
       return step * decade;
   return 10.0 * decade;
+}
+
+double
+fitTileSize (const TilePlan& plan, std::uint64_t max_points_per_tile)
+{
+  const std::uint64_t points = plan.getTotalPoints();
+  const double uniform =
+      suggestTileSize (plan.min, plan.max, points, max_points_per_tile);
+  // The cell: 1, 2 or 5 times a power of ten, at most a sixteenth of the uniform size.
+  const double target = uniform / 16.0;
+  double cell = std::pow (10.0, std::floor (std::log10 (target)));
+  for (const double step : {2.0, 5.0})
+    if (step * std::pow (10.0, std::floor (std::log10 (target))) <= target)
+      cell = step * std::pow (10.0, std::floor (std::log10 (target)));
+  const auto first_x = static_cast<std::int64_t> (std::floor (plan.min.x() / cell));
+  const auto first_y = static_cast<std::int64_t> (std::floor (plan.min.y() / cell));
+  const auto columns =
+      static_cast<std::int64_t> (std::floor (plan.max.x() / cell)) - first_x + 1;
+  const auto rows =
+      static_cast<std::int64_t> (std::floor (plan.max.y() / cell)) - first_y + 1;
+  if (!(cell > 0.0) || columns <= 0 || rows <= 0 || columns * rows > (1LL << 26))
+    return uniform;
+  std::vector<std::uint64_t> counts (static_cast<std::size_t> (columns * rows), 0);
+  pcl::PCLPointCloud2 chunk;
+  for (const auto& input : plan.inputs) {
+    PointFileChunks file;
+    file.open (input);
+    file.setOrigin (plan.origin);
+    std::size_t n;
+    while ((n = file.read (kChunkPoints, chunk)) > 0) {
+      const std::uint8_t* xyz = chunk.data.data() + xyzOffset (chunk);
+      for (std::size_t i = 0; i < n; ++i) {
+        float p[3];
+        std::memcpy (p, xyz + i * chunk.point_step, sizeof (p));
+        if (!std::isfinite (p[0]) || !std::isfinite (p[1]) || !std::isfinite (p[2]))
+          continue;
+        const auto cx = std::clamp<std::int64_t> (
+            static_cast<std::int64_t> (std::floor ((plan.origin.x() + p[0]) / cell)) -
+                first_x,
+            0,
+            columns - 1);
+        const auto cy = std::clamp<std::int64_t> (
+            static_cast<std::int64_t> (std::floor ((plan.origin.y() + p[1]) / cell)) -
+                first_y,
+            0,
+            rows - 1);
+        ++counts[static_cast<std::size_t> (cy * columns + cx)];
+      }
+    }
+  }
+  // A tile of m cells a side, laid on multiples of m cells (of the size), sums the
+  // cells whose absolute index divided by m (rounded down) is the tile's.
+  const auto floorDiv = [] (std::int64_t a, std::int64_t b) {
+    return a >= 0 ? a / b : -((-a + b - 1) / b);
+  };
+  std::int64_t best = 1;
+  std::vector<std::uint64_t> tiles;
+  for (std::int64_t m = 2; m <= 64; ++m) {
+    const std::int64_t tx0 = floorDiv (first_x, m), ty0 = floorDiv (first_y, m);
+    const std::int64_t tile_columns = floorDiv (first_x + columns - 1, m) - tx0 + 1;
+    const std::int64_t tile_rows = floorDiv (first_y + rows - 1, m) - ty0 + 1;
+    tiles.assign (static_cast<std::size_t> (tile_columns * tile_rows), 0);
+    for (std::int64_t y = 0; y < rows; ++y)
+      for (std::int64_t x = 0; x < columns; ++x)
+        tiles[static_cast<std::size_t> ((floorDiv (first_y + y, m) - ty0) *
+                                            tile_columns +
+                                        floorDiv (first_x + x, m) - tx0)] +=
+            counts[static_cast<std::size_t> (y * columns + x)];
+    if (*std::max_element (tiles.begin(), tiles.end()) > max_points_per_tile)
+      break;
+    best = m;
+  }
+  return static_cast<double> (best) * cell;
 }
 
 bool

@@ -80,6 +80,17 @@ suggestTileSize (const Eigen::Vector2d& min,
                  std::uint64_t points,
                  std::uint64_t points_per_tile);
 
+/** \brief The largest tile size whose densest tile (tiles laid on multiples of the
+ * size) holds at most \a max_points_per_tile of the points of \a plan's inputs,
+ * counted from the points themselves (one pass over the inputs in chunks): a scan's
+ * density varies by orders of magnitude with the range, where suggestTileSize assumes
+ * it uniform. The size is a whole multiple (1 to 64) of a cell of 1, 2 or 5 times a
+ * power of ten near a sixteenth of suggestTileSize's; the cell itself when even that
+ * holds more. \a plan needs its inputs, counts, origin and box (planTiles).
+ * \throw io::ReadError naming an input that cannot be read */
+double
+fitTileSize (const TilePlan& plan, std::uint64_t max_points_per_tile);
+
 /** \brief Sort the points of every input into the files of the tiles of \a plan in
  * \a folder (tile_<t>.points: each point of a tile's core or halo, see
  * TilePointWriter), reading the inputs in chunks. Points that are not finite go to no
