@@ -212,13 +212,19 @@ fitTileSize (const TilePlan& plan, std::uint64_t max_points_per_tile)
   for (const double step : {2.0, 5.0})
     if (step * std::pow (10.0, std::floor (std::log10 (target))) <= target)
       cell = step * std::pow (10.0, std::floor (std::log10 (target)));
+  // At most 2^26 cells (512 MB of counts); beyond, the uniform size.
+  const double span = (plan.max - plan.min).maxCoeff();
+  if (!(cell > 0.0) || !(span / cell < static_cast<double> (1 << 26)) ||
+      !(std::abs (plan.min.x()) / cell < 1e15) ||
+      !(std::abs (plan.min.y()) / cell < 1e15))
+    return uniform;
   const auto first_x = static_cast<std::int64_t> (std::floor (plan.min.x() / cell));
   const auto first_y = static_cast<std::int64_t> (std::floor (plan.min.y() / cell));
   const auto columns =
       static_cast<std::int64_t> (std::floor (plan.max.x() / cell)) - first_x + 1;
   const auto rows =
       static_cast<std::int64_t> (std::floor (plan.max.y() / cell)) - first_y + 1;
-  if (!(cell > 0.0) || columns <= 0 || rows <= 0 || columns * rows > (1LL << 26))
+  if (columns <= 0 || rows <= 0 || columns * rows > (1LL << 26))
     return uniform;
   std::vector<std::uint64_t> counts (static_cast<std::size_t> (columns * rows), 0);
   pcl::PCLPointCloud2 chunk;
