@@ -6,6 +6,7 @@
 #include <pcl_ext/io/file_output.h>
 #include <pcl_ext/tiling/point_file_chunks.h>
 
+#include <pcl/common/io.h>
 #include <pcl/console/print.h>
 
 #include <cmath>
@@ -17,28 +18,6 @@
 namespace pcl_ext {
 namespace apps {
 namespace {
-/** The rows \a rows of \a chunk, with its fields. */
-void
-selectRows (const pcl::PCLPointCloud2& chunk,
-            const std::vector<std::uint32_t>& rows,
-            pcl::PCLPointCloud2& out)
-{
-  out.header = chunk.header;
-  out.fields = chunk.fields;
-  out.is_bigendian = chunk.is_bigendian;
-  out.is_dense = chunk.is_dense;
-  out.point_step = chunk.point_step;
-  out.height = 1;
-  out.width = static_cast<std::uint32_t> (rows.size());
-  out.row_step = out.width * out.point_step;
-  out.data.resize (static_cast<std::size_t> (out.row_step));
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    std::memcpy (out.data.data() + i * chunk.point_step,
-                 chunk.data.data() +
-                     static_cast<std::size_t> (rows[i]) * chunk.point_step,
-                 chunk.point_step);
-}
-
 std::string
 fileName (const std::string& path)
 {
@@ -105,7 +84,7 @@ TileOutputs::write (const pcl::PCLPointCloud2& chunk,
   const std::uint8_t* xyz = chunk.data.data() + tiling::xyzOffset (chunk);
   // The owner of every row, as the plan found it: the tile whose core box holds the
   // point's coordinates, in double, from the same floats and origin.
-  std::map<std::size_t, std::vector<std::uint32_t>> rows_of_tile;
+  std::map<std::size_t, pcl::Indices> rows_of_tile;
   for (std::size_t i = 0; i < n; ++i) {
     float p[3];
     std::memcpy (p, xyz + i * chunk.point_step, sizeof (p));
@@ -122,11 +101,11 @@ TileOutputs::write (const pcl::PCLPointCloud2& chunk,
       return false;
     }
     if (tile >= first_tile && tile < end_tile)
-      rows_of_tile[tile].push_back (static_cast<std::uint32_t> (i));
+      rows_of_tile[tile].push_back (static_cast<pcl::index_t> (i));
   }
   pcl::PCLPointCloud2 part;
   for (const auto& [tile, rows] : rows_of_tile) {
-    selectRows (chunk, rows, part);
+    pcl::copyPointCloud (chunk, rows, part);
     auto& writer = open_[tile];
     if (!writer) {
       writer = std::make_unique<io::LasWriter>();

@@ -240,6 +240,36 @@ runAll (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
   return done ? 0 : 1;
 }
 
+/** The positional \a name (into \a argument) and -workdir / -threads of a step that
+ * works in an existing work folder, then the folder's plan and method. \return -1 to go
+ * on, else the exit code (message printed) */
+int
+parseWorkdirStep (int argc,
+                  char** argv,
+                  const std::string& name,
+                  const std::string& description,
+                  CommandLine& cl,
+                  CommandLine& plan_options,
+                  std::string& argument,
+                  TileOptions& options,
+                  pcl_ext::tiling::TilePlan& plan,
+                  std::unique_ptr<pcl_ext::apps::TileMethod>& method,
+                  pcl_ext::apps::ResultField& field)
+{
+  cl.addPositional (name, argument, description);
+  options.addTo (cl, false);
+  if (const int code = cl.parse (argc - 1, argv + 1); code >= 0)
+    return code;
+  if (options.workdir.empty()) {
+    std::cerr << "Error: -workdir is required.\n";
+    return 1;
+  }
+  return pcl_ext::apps::loadPlanAndMethod (
+             options.workdir, plan, method, plan_options, field)
+             ? -1
+             : 1;
+}
+
 /** `resume output -workdir D`: the tiles of D that have not run or did not finish, then
  * the merge; under mpirun too. */
 int
@@ -249,21 +279,25 @@ runResume (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
   std::string output;
   TileOptions options;
   CommandLine cl ("pcl_ext_tiles resume", kDescription);
-  cl.addPositional ("output", output, pcl_ext::apps::kOutputFormats);
-  options.addTo (cl, false);
-  if (const int code = cl.parse (argc - 1, argv + 1); code >= 0)
-    return code;
-  if (options.workdir.empty()) {
-    std::cerr << "Error: -workdir is required.\n";
-    return 1;
-  }
+  CommandLine plan_options ("pcl_ext_tiles", "The options of the plan.");
   pcl_ext::tiling::TilePlan plan;
   std::unique_ptr<pcl_ext::apps::TileMethod> method;
   pcl_ext::apps::ResultField field ("", "", "");
-  CommandLine plan_options ("pcl_ext_tiles", "The options of the plan.");
-  bool ok = pcl_ext::apps::loadPlanAndMethod (
-                options.workdir, plan, method, plan_options, field) &&
-            field.checkOutput (output);
+  const int code = parseWorkdirStep (argc,
+                                     argv,
+                                     "output",
+                                     pcl_ext::apps::kOutputFormats,
+                                     cl,
+                                     plan_options,
+                                     output,
+                                     options,
+                                     plan,
+                                     method,
+                                     field);
+  // Every process parses the same arguments and folder: all return here or none.
+  if (code >= 0)
+    return code;
+  bool ok = field.checkOutput (output);
   // Every process lists the same tiles: all list before any runs one.
   const auto missing =
       ok ? pcl_ext::tiling::findTilesNotDone (options.workdir, plan.getGrid().size())
@@ -286,22 +320,23 @@ runStep (int argc, char** argv)
   std::string argument;
   TileOptions options;
   CommandLine cl ("pcl_ext_tiles " + step, kDescription);
-  cl.addPositional (
-      step == "merge" ? "output" : "I", argument, "output file or tile index");
-  options.addTo (cl, false);
-  if (const int code = cl.parse (argc - 1, argv + 1); code >= 0)
-    return code;
-  if (options.workdir.empty()) {
-    std::cerr << "Error: -workdir is required.\n";
-    return 1;
-  }
+  CommandLine plan_options ("pcl_ext_tiles", "The options of the plan.");
   pcl_ext::tiling::TilePlan plan;
   std::unique_ptr<pcl_ext::apps::TileMethod> method;
   pcl_ext::apps::ResultField field ("", "", "");
-  CommandLine plan_options ("pcl_ext_tiles", "The options of the plan.");
-  if (!pcl_ext::apps::loadPlanAndMethod (
-          options.workdir, plan, method, plan_options, field))
-    return 1;
+  if (const int code = parseWorkdirStep (argc,
+                                         argv,
+                                         step == "merge" ? "output" : "I",
+                                         "output file or tile index",
+                                         cl,
+                                         plan_options,
+                                         argument,
+                                         options,
+                                         plan,
+                                         method,
+                                         field);
+      code >= 0)
+    return code;
   if (step == "merge")
     return field.checkOutput (argument) &&
                    pcl_ext::apps::mergeStep (
