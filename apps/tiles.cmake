@@ -7,10 +7,12 @@ pcl_ext_add_app(tiles
     src/tiles/tile_outputs.cpp
     src/tiles/tile_cloud.cpp
     src/tiles/tile_scheduler.cpp
+    src/tiles/tile_method.cpp
     src/tiles/variance_tiles.cpp
     src/tiles/classify_variance_tiles.cpp
     src/tiles/segment_variance_tiles.cpp
-  DEPENDS pcl_ext::classification pcl_ext::segmentation pcl_ext::tiling pcl_ext_apps_common pcl_ext::io)
+    src/tiles/crf_classify_tiles.cpp
+  DEPENDS pcl_ext_crf_app_inputs pcl_ext::classification pcl_ext::segmentation pcl_ext::tiling pcl_ext_apps_common pcl_ext::io)
 find_package(MPI COMPONENTS CXX)
 if(MPI_CXX_FOUND)
   target_link_libraries(pcl_ext_tiles PRIVATE MPI::MPI_CXX)

@@ -110,12 +110,7 @@ main (int argc, char** argv)
       "& Suter 2008) and writes its points and fields, in the "
       "input's coordinates, with the class id in the field "
       "'crf_class'.");
-  pcl_ext::apps::ResultField result (
-      "crf_class",
-      "class id (1.. in the model's order)",
-      "also write the classes as ASPRS codes into the LAS Classification, mapped by "
-      "class name (ground 2, vegetation 5, building / facade 6, wire 14, ...; classes "
-      "without a code: 1)");
+  pcl_ext::apps::ResultField result = pcl_ext::apps::crfClassField();
   cl.addPositional ("model.txt", model_path, "a model written by pcl_ext_crf_train");
   cl.addPositional ("input",
                     input,

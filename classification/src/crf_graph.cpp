@@ -5,12 +5,12 @@
 #include "crf_internal.h"
 
 #include <pcl_ext/common/parallel.h>
+#include <pcl_ext/common/random.h>
 
 #include <pcl/console/print.h>
 
 #include <algorithm>
 #include <chrono>
-#include <random>
 
 namespace pcl_ext {
 namespace crf {
@@ -23,12 +23,12 @@ msSince (std::chrono::steady_clock::time_point t0)
       .count();
 }
 
-/** m members of \a sv other than its mid-point, drawn with a generator seeded per
- * super-voxel so that the choice does not depend on the order super-voxels are
- * processed in. */
+/** m members of \a sv other than its mid-point, drawn with a stream seeded by the
+ * mid-point's position, so that the choice depends neither on the order super-voxels
+ * are processed in nor on the rest of the cloud (a tile draws the whole cloud's). */
 void
-pickLocalPoints (const Supervoxel& sv,
-                 std::size_t v,
+pickLocalPoints (const pcl::PointCloud<pcl::PointXYZ>& cloud,
+                 const Supervoxel& sv,
                  std::uint64_t seed,
                  int m,
                  std::vector<pcl::index_t>& out)
@@ -38,10 +38,11 @@ pickLocalPoints (const Supervoxel& sv,
   for (const auto i : sv.members)
     if (i != sv.seed)
       pool.push_back (i);
-  std::mt19937_64 rng (seed ^ (0x9E3779B97F4A7C15ull * (v + 1)));
+  const auto& mid = cloud[static_cast<std::size_t> (sv.seed)];
+  RandomStream rng (hashPosition (mid.x, mid.y, mid.z, seed));
   const std::size_t take = std::min (pool.size(), static_cast<std::size_t> (m));
   for (std::size_t j = 0; j < take; ++j) {
-    std::swap (pool[j], pool[j + rng() % (pool.size() - j)]);
+    std::swap (pool[j], pool[j + rng.index (pool.size() - j)]);
     out.push_back (pool[j]);
   }
 }
@@ -143,8 +144,8 @@ buildGraph (const CrfInput& input,
   std::vector<std::vector<pcl::index_t>> picked (S);
   if (local)
     for (std::size_t v = 0; v < S; ++v)
-      pickLocalPoints (supervoxels.supervoxels[v],
-                       v,
+      pickLocalPoints (*input.xyz,
+                       supervoxels.supervoxels[v],
                        settings.supervoxels.seed,
                        settings.local_edges,
                        picked[v]);

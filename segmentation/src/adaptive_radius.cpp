@@ -2,13 +2,13 @@
  * pcl_ext: the adaptive super-voxel radius (Lim & Suter 2008, eq. 1-4).
  */
 #include <pcl_ext/common/covariance.h>
+#include <pcl_ext/common/random.h>
 #include <pcl_ext/segmentation/adaptive_radius.h>
 
 #include <pcl/console/print.h>
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 namespace pcl_ext {
 namespace {
@@ -136,50 +136,93 @@ AdaptiveRadiusEstimator::initialize (
   return true;
 }
 
-double
-AdaptiveRadiusEstimator::estimateNoise() const
+std::uint64_t
+noiseSampleKey (const pcl::PointXYZ& point)
 {
-  std::mt19937_64 rng (1);
-  const std::size_t samples = std::min<std::size_t> (512, finite_);
-  const std::size_t k = static_cast<std::size_t> (parameters_.initial_k);
-  std::vector<std::pair<double, double>> flat_and_rms;
-  std::vector<double> spacing;
-  pcl::Indices nn (k);
-  std::vector<float> d2 (k);
-  for (std::size_t s = 0; s < samples; ++s) {
-    const std::size_t pos = rng() % finite_;
-    const std::size_t found =
-        tree_.nearestKSearch (tree_.point (pos), k, nn.data(), d2.data());
-    Eigen::Matrix3d cov;
-    Eigen::Vector3d c;
-    EigenDecomposition eig;
-    if (found < 3 ||
-        computeLocalCovariance (*cloud_, nn.begin(), nn.begin() + found, cov, c) < 3 ||
-        !computeEigenDecomposition (cov, eig))
-      continue;
-    const double total = eig.values.sum();
-    if (total <= 0.0)
-      continue;
-    flat_and_rms.emplace_back (eig.values (0) / total, std::sqrt (eig.values (0)));
-    spacing.push_back (std::sqrt (d2[found - 1]));
-  }
-  if (flat_and_rms.empty())
+  return hashPosition (point.x, point.y, point.z, 0x6e6f697365ULL);
+}
+
+double
+noiseFromSamples (std::vector<NoiseSample> samples)
+{
+  if (samples.empty())
     return 0.0;
-  std::sort (flat_and_rms.begin(), flat_and_rms.end());
-  const std::size_t flattest = std::max<std::size_t> (1, flat_and_rms.size() / 10);
-  std::vector<double> rms;
+  std::sort (samples.begin(), samples.end(), [] (const auto& a, const auto& b) {
+    return a.flatness < b.flatness || (a.flatness == b.flatness && a.rms < b.rms);
+  });
+  const std::size_t flattest = std::max<std::size_t> (1, samples.size() / 10);
+  std::vector<float> rms;
   for (std::size_t i = 0; i < flattest; ++i)
-    rms.push_back (flat_and_rms[i].second);
+    rms.push_back (samples[i].rms);
   std::nth_element (rms.begin(), rms.begin() + rms.size() / 2, rms.end());
   double sigma = rms[rms.size() / 2];
-  // A noise-free cloud would make every radius collapse: fall back to 1 % of the
-  // typical k-neighbourhood size, which still lets curvature decide.
   if (!(sigma > 0.0)) {
+    std::vector<float> spacing;
+    for (const auto& s : samples)
+      spacing.push_back (s.spacing);
     std::nth_element (
         spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
     sigma = 0.01 * spacing[spacing.size() / 2];
   }
   return sigma;
+}
+
+std::vector<pcl::index_t>
+AdaptiveRadiusEstimator::selectNoiseSamplePoints (
+    const std::vector<char>* eligible) const
+{
+  std::vector<std::pair<std::uint64_t, pcl::index_t>> keyed;
+  for (std::size_t i = 0; i < cloud_->size(); ++i) {
+    const auto& p = (*cloud_)[i];
+    if ((eligible && !(*eligible)[i]) || !std::isfinite (p.x) || !std::isfinite (p.y) ||
+        !std::isfinite (p.z))
+      continue;
+    keyed.emplace_back (noiseSampleKey (p), static_cast<pcl::index_t> (i));
+  }
+  const std::size_t n = std::min (kNoiseSamples, keyed.size());
+  std::partial_sort (keyed.begin(), keyed.begin() + n, keyed.end());
+  std::vector<pcl::index_t> chosen (n);
+  for (std::size_t i = 0; i < n; ++i)
+    chosen[i] = keyed[i].second;
+  return chosen;
+}
+
+bool
+AdaptiveRadiusEstimator::measureNoiseSample (pcl::index_t index,
+                                             NoiseSample& sample) const
+{
+  const std::size_t k = static_cast<std::size_t> (parameters_.initial_k);
+  pcl::Indices nn (k);
+  std::vector<float> d2 (k);
+  const auto& p = (*cloud_)[static_cast<std::size_t> (index)];
+  const float q[3] = {p.x, p.y, p.z};
+  const std::size_t found = tree_.nearestKSearch (q, k, nn.data(), d2.data());
+  Eigen::Matrix3d cov;
+  Eigen::Vector3d c;
+  EigenDecomposition eig;
+  if (found < 3 ||
+      computeLocalCovariance (*cloud_, nn.begin(), nn.begin() + found, cov, c) < 3 ||
+      !computeEigenDecomposition (cov, eig))
+    return false;
+  const double total = eig.values.sum();
+  if (!(total > 0.0))
+    return false;
+  sample.flatness = static_cast<float> (eig.values (0) / total);
+  sample.rms = static_cast<float> (std::sqrt (std::max (0.0, eig.values (0))));
+  sample.spacing = std::sqrt (d2[found - 1]);
+  return true;
+}
+
+double
+AdaptiveRadiusEstimator::estimateNoise() const
+{
+  std::vector<NoiseSample> samples;
+  for (const auto i : selectNoiseSamplePoints()) {
+    NoiseSample s;
+    if (measureNoiseSample (i, s))
+      samples.push_back (s);
+  }
+  return noiseFromSamples (std::move (samples));
 }
 
 float

@@ -2,6 +2,7 @@
  * pcl_ext: adaptive super-voxel over-segmentation (Lim & Suter 2008, section 3.1).
  */
 #include <pcl_ext/common/parallel.h>
+#include <pcl_ext/common/random.h>
 #include <pcl_ext/segmentation/supervoxel_set.h>
 
 #include <pcl/console/print.h>
@@ -9,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <random>
 
 namespace pcl_ext {
 std::size_t
@@ -101,16 +101,23 @@ computeAdaptiveSupervoxels (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& clou
   if (!estimator.initialize (cloud, colours, parameters.radius))
     return false;
 
-  // The order in which points are offered as mid-points: a seeded permutation.
-  std::vector<pcl::index_t> order;
+  // The order in which points are offered as mid-points: by a seeded hash of each
+  // point's coordinates (ties, coincident points, by index). A random permutation, but
+  // one that belongs to the points: any part of the cloud (a tile with its halo) offers
+  // its points in the same relative order as the whole cloud, so its super-voxels away
+  // from its edge are the whole cloud's.
+  std::vector<std::pair<std::uint64_t, pcl::index_t>> keyed;
   for (std::size_t i = 0; i < cloud->size(); ++i) {
     const auto& p = (*cloud)[i];
     if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
-      order.push_back (static_cast<pcl::index_t> (i));
+      keyed.emplace_back (hashPosition (p.x, p.y, p.z, parameters.seed),
+                          static_cast<pcl::index_t> (i));
   }
-  std::mt19937_64 rng (parameters.seed);
-  for (std::size_t i = order.size(); i > 1; --i) // Fisher-Yates: same on every platform
-    std::swap (order[i - 1], order[rng() % i]);
+  std::sort (keyed.begin(), keyed.end());
+  std::vector<pcl::index_t> order (keyed.size());
+  for (std::size_t i = 0; i < keyed.size(); ++i)
+    order[i] = keyed[i].second;
+  keyed = {};
 
   std::vector<char> assigned (cloud->size(), 0);
   const int threads = static_cast<int> (resolveThreadCount (parameters.threads));

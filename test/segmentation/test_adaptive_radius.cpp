@@ -8,8 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 using pcl_ext::AdaptiveRadiusEstimator;
@@ -171,4 +174,50 @@ TEST (AdaptiveSupervoxels, NoiseFromAPlanarPatch)
   ASSERT_TRUE (est.initialize (cloud, {}, pcl_ext::AdaptiveRadiusParameters()));
   EXPECT_GT (est.getNoise(), 0.005);
   EXPECT_LT (est.getNoise(), 0.015);
+}
+
+TEST (AdaptiveRadius, TheNoiseSampleOfACloudIsThatOfItsPartsMerged)
+{
+  // The sample is the points of smallest key, so the sample of the whole cloud is the
+  // smallest keys of the parts' samples (each part read with a margin, so that its own
+  // points' neighbourhoods are the whole cloud's): the same noise constant, exactly.
+  const auto cloud = crf_test::floorAndWall (0.05, 0.003);
+  AdaptiveRadiusParameters p;
+  AdaptiveRadiusEstimator whole;
+  ASSERT_TRUE (whole.initialize (cloud, {}, p));
+  const double sigma = whole.getNoise();
+  // The flattest tenth of the neighbourhoods puts it below the noise, but not far.
+  EXPECT_GT (sigma, 0.0015);
+  EXPECT_LT (sigma, 0.003);
+  EXPECT_EQ (whole.selectNoiseSamplePoints().size(), pcl_ext::kNoiseSamples);
+
+  std::vector<std::pair<std::uint64_t, pcl_ext::NoiseSample>> merged;
+  for (const bool left : {true, false}) {
+    auto part = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+    std::vector<char> own;
+    for (const auto& q : *cloud)
+      if (left ? q.y < 2.5f : q.y >= 1.5f) {
+        part->push_back (q);
+        own.push_back (left ? q.y < 2.f : q.y >= 2.f);
+      }
+    AdaptiveRadiusParameters given = p;
+    given.noise = 1.0; // the part must not estimate its own
+    AdaptiveRadiusEstimator estimator;
+    ASSERT_TRUE (estimator.initialize (part, {}, given));
+    for (const auto i : estimator.selectNoiseSamplePoints (&own)) {
+      EXPECT_TRUE (own[static_cast<std::size_t> (i)]);
+      pcl_ext::NoiseSample s;
+      if (estimator.measureNoiseSample (i, s))
+        merged.emplace_back (
+            pcl_ext::noiseSampleKey ((*part)[static_cast<std::size_t> (i)]), s);
+    }
+  }
+  std::sort (merged.begin(), merged.end(), [] (const auto& a, const auto& b) {
+    return a.first < b.first;
+  });
+  std::vector<pcl_ext::NoiseSample> samples;
+  for (std::size_t i = 0; i < pcl_ext::kNoiseSamples; ++i)
+    samples.push_back (merged[i].second);
+  EXPECT_EQ (pcl_ext::noiseFromSamples (samples), sigma);
+  EXPECT_EQ (pcl_ext::noiseFromSamples ({}), 0.0);
 }

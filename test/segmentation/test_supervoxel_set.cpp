@@ -10,6 +10,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 using pcl_ext::SupervoxelParameters;
@@ -115,4 +118,60 @@ TEST (SupervoxelSet, BadInputClearsTheResult)
       SupervoxelParameters(),
       set));
   EXPECT_TRUE (set.empty());
+}
+
+namespace {
+/** The super-voxels of \a cloud by mid-point position: radius and member count; the
+ * noise constant \a noise (0: estimated from \a cloud). */
+std::map<std::tuple<float, float, float>, std::pair<float, std::size_t>>
+byMidPoint (const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud, double noise)
+{
+  SupervoxelParameters p;
+  p.threads = 2;
+  p.radius.noise = noise;
+  SupervoxelSet set;
+  std::map<std::tuple<float, float, float>, std::pair<float, std::size_t>> result;
+  if (!pcl_ext::computeAdaptiveSupervoxels (cloud, {}, p, set))
+    return result;
+  for (const auto& sv : set.supervoxels) {
+    const auto& m = (*cloud)[static_cast<std::size_t> (sv.seed)];
+    result[{m.x, m.y, m.z}] = {sv.radius, sv.members.size()};
+  }
+  return result;
+}
+} // namespace
+
+TEST (SupervoxelSet, TheDrawBelongsToThePointsNotToTheirOrder)
+{
+  // The same points in reverse order give the same super-voxels; a part of the cloud
+  // with a margin around it gives the whole cloud's super-voxels inside it, as the
+  // tiles of pcl_ext_tiles need.
+  const auto cloud = crf_test::floorAndWall (0.05, 0.002);
+  const auto whole = byMidPoint (cloud, 0.0);
+  ASSERT_GT (whole.size(), 20u);
+  auto reversed = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  reversed->assign (cloud->rbegin(), cloud->rend(), 1);
+  EXPECT_TRUE (byMidPoint (reversed, 0.0) == whole);
+
+  auto part = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const auto& q : *cloud)
+    if (q.y < 3.f)
+      part->push_back (q);
+  // The part with the whole cloud's noise constant (pcl_ext_tiles estimates it once).
+  pcl_ext::AdaptiveRadiusEstimator estimator;
+  ASSERT_TRUE (estimator.initialize (cloud, {}, {}));
+  const auto in_part = byMidPoint (part, estimator.getNoise());
+  std::size_t inside = 0;
+  for (const auto& [m, sv] : whole)
+    if (std::get<1> (m) < 1.5f) {
+      ++inside;
+      const auto found = in_part.find (m);
+      ASSERT_NE (found, in_part.end()) << "mid-point at y " << std::get<1> (m);
+      EXPECT_EQ (found->second, sv);
+    }
+  EXPECT_GT (inside, 5u);
+  std::size_t part_inside = 0;
+  for (const auto& [m, sv] : in_part)
+    part_inside += std::get<1> (m) < 1.5f;
+  EXPECT_EQ (part_inside, inside);
 }

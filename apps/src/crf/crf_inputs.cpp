@@ -24,6 +24,23 @@ endsWith (const std::string& s, const std::string& suffix)
 }
 } // namespace
 
+ResultField
+crfClassField (bool asprs)
+{
+  if (!asprs)
+    return ResultField ("crf_class",
+                        "class id (1.. in the model's order)",
+                        "",
+                        "pcl_ext_tiles writes the class ids only; for ASPRS codes in "
+                        "the LAS Classification, run pcl_ext_crf_classify");
+  return ResultField (
+      "crf_class",
+      "class id (1.. in the model's order)",
+      "also write the classes as ASPRS codes into the LAS Classification, mapped by "
+      "class name (ground 2, vegetation 5, building / facade 6, wire 14, ...; classes "
+      "without a code: 1)");
+}
+
 bool
 loadCrfCloud (const std::string& path,
               const io::ClassMapping* mapping,

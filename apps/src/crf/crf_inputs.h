@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <pcl_ext/apps/output.h>
 #include <pcl_ext/classification/crf_model.h>
 #include <pcl_ext/io/class_mapping.h>
 #include <pcl_ext/io/point_file.h>
@@ -23,6 +24,11 @@ struct CrfCloud {
   CrfInput input;
   std::vector<std::uint32_t> labels; ///< empty when the file has no labels
 };
+
+/** \brief The field the CRF's classes are written to (`crf_class`, -output_field), with
+ * -asprs offered when \a asprs (otherwise refused with the reason). */
+ResultField
+crfClassField (bool asprs = true);
 
 /** \brief Read a point file of any format io::loadPointFile reads (x y z, optional
  * rgb/rgba, intensity, label) or an Oakland file (.xyz_label_conf; labels mapped with

@@ -84,14 +84,15 @@ loadTileCloud (const tiling::TilePlan& plan,
                std::size_t tile,
                const NeighbourhoodReach& reach,
                unsigned int threads,
-               TileCloud& result)
+               TileCloud& result,
+               double min_margin)
 {
   const tiling::TileGrid grid = plan.getGrid();
   result = TileCloud();
   result.tile = tile;
   std::vector<std::size_t> tiles;
   std::vector<tiling::TilePoint> points;
-  double margin = plan.halo;
+  double margin = std::max (plan.halo, min_margin);
   for (;;) {
     // The tiles whose cores reach into the margin, then their points within it.
     const auto rings = static_cast<std::size_t> (
@@ -99,6 +100,7 @@ loadTileCloud (const tiling::TilePlan& plan,
     grid.getTilesAround (tile, rings, tiles);
     if (!readTiles (folder, tiles, points))
       return false;
+    const std::size_t read = points.size();
     if (rings > 0)
       points.erase (std::remove_if (points.begin(),
                                     points.end(),
@@ -110,6 +112,9 @@ loadTileCloud (const tiling::TilePlan& plan,
                                     }),
                     points.end());
     result.margin = margin;
+    result.grid = grid;
+    result.origin = plan.origin;
+    result.whole = tiles.size() == grid.size() && points.size() == read;
     result.cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
     result.cloud->resize (points.size());
     result.indices.resize (points.size());
@@ -125,6 +130,14 @@ loadTileCloud (const tiling::TilePlan& plan,
     }
     if (result.core_points == 0)
       return true; // an empty tile: nothing to compute
+    if (!reach.search) {
+      // A method that searches by itself needs more than k points (isolated points
+      // whose neighbours lie beyond the halo).
+      if (result.cloud->size() > static_cast<std::size_t> (reach.k) || result.whole)
+        return true;
+      margin += std::max (reach.radius, 0.05 * plan.tile_size);
+      continue;
+    }
     result.neighbourhoods = pcl::make_shared<pcl_ext::Neighbourhoods<pcl::PointXYZ>>();
     auto& nb = *result.neighbourhoods;
     nb.setInputCloud (result.cloud);

@@ -97,6 +97,16 @@ public:
        const std::map<std::string, std::string>& settings,
        std::vector<std::uint32_t>& labels) = 0;
 
+  /** \brief After estimate() or run() on a tile: the margin around the tile's core
+   * that its result needed, measured on what it computed (0: the checks of getReach()
+   * are enough). A tile whose margin was narrower is loaded again with this margin and
+   * computed again (at worst with the whole cloud). */
+  virtual double
+  getNeededMargin () const
+  {
+    return 0.0;
+  }
+
   /** \brief OpenMP threads of the method (0: all cores). */
   void
   setNumberOfThreads (unsigned int threads)
@@ -113,6 +123,11 @@ std::unique_ptr<TileMethod>
 makeTileMethod (const std::string& name);
 
 /** \brief The names makeTileMethod knows, for the help text. */
-constexpr const char* kTileMethods = "classify_variance, segment_variance";
+constexpr const char* kTileMethods =
+    "classify_variance, segment_variance, crf_classify";
+
+/** \brief Lim & Suter's CRF classification tile by tile (crf_classify_tiles.cpp). */
+std::unique_ptr<TileMethod>
+makeCrfClassifyTiles ();
 } // namespace apps
 } // namespace pcl_ext

@@ -63,14 +63,22 @@ joinArguments (const std::vector<std::string>& args)
 
 /** A halo for \a reach from the first million points of \a input: the 99th percentile
  * of the neighbourhood radii of a sample of them, through every step a result reaches,
- * with a quarter more. A run of a file's points holds fewer neighbours than the whole
- * cloud, so the radii are rather too wide than too narrow; where they are too narrow
- * the tiles widen themselves. */
+ * with a quarter more (and, for a method that searches by itself, its radius added). A
+ * run of a file's points holds fewer neighbours than the whole cloud, so the radii are
+ * rather too wide than too narrow; where they are too narrow the tiles widen
+ * themselves. */
 double
 estimateHalo (const std::string& input,
               const Eigen::Vector3d& origin,
               const NeighbourhoodReach& reach)
 {
+  if (!reach.search) {
+    // The method's own part, and as far as its k-neighbourhoods reach.
+    NeighbourhoodReach k_part = reach;
+    k_part.search = true;
+    k_part.radius = 0.0;
+    return reach.radius + estimateHalo (input, origin, k_part);
+  }
   if (reach.radius > 0.0)
     return 1.25 * reach.hops * reach.radius;
   tiling::PointFileChunks file;
@@ -186,6 +194,12 @@ planStep (const std::string& method_name,
                        0.5 * tile_size);
     if (!tiling::planTiles (inputs, tile_size, halo, plan))
       return false;
+    const NeighbourhoodReach reach = method->getReach();
+    if (!reach.search && plan.halo < reach.radius)
+      std::cerr << "\nWarning: the halo (" << plan.halo << " m) is narrower than "
+                << method_name << "'s reach (" << reach.radius
+                << " m): more points near the tiles' edges will differ from the "
+                   "untiled result; give a larger -tile_size or -halo.\n";
     plan.settings["method"] = method_name;
     plan.settings["arguments"] = joinArguments (method_arguments);
     if (!tiling::TileResults::create (workdir, plan.getTotalPoints()) ||
@@ -248,11 +262,17 @@ estimateStep (const tiling::TilePlan& plan,
     return true;
   TileCloud cloud;
   method.setNumberOfThreads (threads);
-  if (!loadTileCloud (plan, workdir, tile, method.getEstimateReach(), threads, cloud))
-    return false;
   std::map<std::string, std::vector<float>> values;
-  if (!method.estimate (cloud, values))
-    return false;
+  for (double margin = 0.0;;) {
+    if (!loadTileCloud (
+            plan, workdir, tile, method.getEstimateReach(), threads, cloud, margin) ||
+        !method.estimate (cloud, values))
+      return false;
+    const double needed = method.getNeededMargin();
+    if (needed <= cloud.margin || cloud.whole)
+      break;
+    margin = std::max (needed, 1.25 * cloud.margin);
+  }
   for (const auto& [name, v] : values)
     if (!tiling::saveTileValues (workdir, tile, name, v))
       return false;
@@ -282,11 +302,17 @@ tileStep (const tiling::TilePlan& plan,
     return false;
   TileCloud cloud;
   method.setNumberOfThreads (threads);
-  if (!loadTileCloud (plan, workdir, tile, method.getReach(), threads, cloud))
-    return false;
   std::vector<std::uint32_t> labels;
-  if (!method.run (cloud, plan.settings, labels))
-    return false;
+  for (double margin = 0.0;;) {
+    if (!loadTileCloud (
+            plan, workdir, tile, method.getReach(), threads, cloud, margin) ||
+        !method.run (cloud, plan.settings, labels))
+      return false;
+    const double needed = method.getNeededMargin();
+    if (needed <= cloud.margin || cloud.whole)
+      break;
+    margin = std::max (needed, 1.25 * cloud.margin);
+  }
   std::vector<std::uint64_t> core_indices;
   std::vector<std::uint32_t> core_labels;
   std::vector<tiling::HaloLabel> halo;

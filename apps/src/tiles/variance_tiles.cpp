@@ -120,15 +120,5 @@ VarianceTileMethod::applyThreshold (
   classifier.setCurvatureThreshold (std::stod (found->second));
   return true;
 }
-
-std::unique_ptr<TileMethod>
-makeTileMethod (const std::string& name)
-{
-  if (name == "classify_variance")
-    return makeClassifyVarianceTiles();
-  if (name == "segment_variance")
-    return makeSegmentVarianceTiles();
-  return nullptr;
-}
 } // namespace apps
 } // namespace pcl_ext

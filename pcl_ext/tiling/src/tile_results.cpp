@@ -400,6 +400,39 @@ saveTileValues (const std::string& folder,
 }
 
 bool
+loadTileValues (const std::string& folder,
+                std::size_t tile,
+                const std::string& name,
+                std::vector<float>& values)
+{
+  values.clear();
+  const std::string path = valuesPath (folder, tile, name);
+  std::ifstream in (path, std::ios::binary | std::ios::ate);
+  if (!in) {
+    PCL_ERROR ("[pcl_ext::tiling::loadTileValues] %s is missing (tile %zu not "
+               "estimated).\n",
+               path.c_str(),
+               tile);
+    return false;
+  }
+  const std::streamoff size = in.tellg();
+  if (size < 0 || size % static_cast<std::streamoff> (sizeof (float)) != 0) {
+    PCL_ERROR ("[pcl_ext::tiling::loadTileValues] %s is broken.\n", path.c_str());
+    return false;
+  }
+  values.resize (static_cast<std::size_t> (size) / sizeof (float));
+  in.seekg (0);
+  in.read (reinterpret_cast<char*> (values.data()),
+           static_cast<std::streamsize> (size));
+  if (!in) {
+    PCL_ERROR ("[pcl_ext::tiling::loadTileValues] %s is broken.\n", path.c_str());
+    values.clear();
+    return false;
+  }
+  return true;
+}
+
+bool
 nthOfTileValues (const std::string& folder,
                  std::size_t tiles,
                  const std::string& name,

@@ -59,6 +59,32 @@ double
 estimateNoiseFromPlanarPatch (const pcl::PointCloud<pcl::PointXYZ>& cloud,
                               const std::vector<pcl::index_t>& patch);
 
+/** \brief What one sampled neighbourhood tells of the noise (see
+ * AdaptiveRadiusEstimator::estimateNoise). */
+struct NoiseSample {
+  float flatness = 0.f; ///< lambda_0 / (lambda_0 + lambda_1 + lambda_2)
+  float rms = 0.f;      ///< sqrt (lambda_0), the residual off the neighbourhood's plane
+  float spacing = 0.f;  ///< distance to the neighbourhood's farthest point
+};
+
+/** \brief The number of neighbourhoods AdaptiveRadiusEstimator::estimateNoise samples.
+ */
+constexpr std::size_t kNoiseSamples = 512;
+
+/** \brief The order in which points are sampled for the noise: the kNoiseSamples
+ * finite points of smallest key (ties by index) are the sample. A hash of the position,
+ * so that the sample of a cloud cut into parts is the parts' samples merged (the
+ * kNoiseSamples smallest keys of all of them). */
+std::uint64_t
+noiseSampleKey (const pcl::PointXYZ& point);
+
+/** \brief The noise constant from the samples of kNoiseSamples neighbourhoods (those
+ * whose neighbourhood had no plane left out): the median residual of the flattest 10 %,
+ * or, when that is 0 (a cloud without noise, on which every radius would collapse), 1 %
+ * of the median spacing. 0 when \a samples is empty. */
+double
+noiseFromSamples (std::vector<NoiseSample> samples);
+
 /** \brief The adaptive radius of any point of a cloud, with the k-d tree built once.
  *
  * Not templated on the point type: the classes that use it copy xyz and normalised
@@ -114,12 +140,24 @@ public:
     return colours_;
   }
 
-  /** \brief Sigma estimated as the median plane residual of the flattest 10 % of 512
-   * sampled 15-neighbourhoods: a stand-in for "points acquired from a single plane"
-   * when no planar patch is given (pcl_ext addition). Returns 0 when nothing is planar
-   * enough to tell. */
+  /** \brief Sigma estimated as the median plane residual of the flattest 10 % of
+   * kNoiseSamples sampled initial_k-neighbourhoods: a stand-in for "points acquired
+   * from a single plane" when no planar patch is given (pcl_ext addition). The sample:
+   * selectNoiseSamplePoints(); then measureNoiseSample() each, and noiseFromSamples().
+   * Returns 0 when nothing is planar enough to tell. */
   double
   estimateNoise () const;
+
+  /** \brief The finite points of smallest noiseSampleKey (ties by index), at most
+   * kNoiseSamples, in that order; only those with \a eligible[i] != 0 when \a
+   * eligible is given (e.g. a tile's own points). */
+  std::vector<pcl::index_t>
+  selectNoiseSamplePoints (const std::vector<char>* eligible = nullptr) const;
+
+  /** \brief The noise sample of the initial_k-neighbourhood of point \a index.
+   * \return false when it has no plane (too few points, no spread) */
+  bool
+  measureNoiseSample (pcl::index_t index, NoiseSample& sample) const;
 
 private:
   pcl::PointCloud<pcl::PointXYZ>::ConstPtr cloud_;

@@ -66,9 +66,13 @@ struct SupervoxelParameters {
  * section 3.1).
  *
  * Mid-points are drawn at random (seeded) among the points that no super-voxel holds
- * yet; each gets the radius of eq. 1-4 and takes every point within it, so super-voxels
- * may overlap. Candidates are evaluated in fixed batches in parallel and accepted in
- * draw order, so the result depends on the seed only, never on the thread count.
+ * yet, in the order of a seeded hash of each point's coordinates (hashPosition): the
+ * draw belongs to the points, not to their indices, so a part of the cloud with a
+ * margin around it (a tile) draws the super-voxels of the whole cloud away from its
+ * edge, and a shuffled cloud gives the same super-voxels. Each gets the radius of eq.
+ * 1-4 and takes every point within it, so super-voxels may overlap. Candidates are
+ * evaluated in fixed batches in parallel and accepted in draw order, so the result
+ * depends on the seed only, never on the thread count.
  *
  * \param[in] cloud the points (non-finite points are skipped and belong to none)
  * \param[in] colours normalised RGB per point, or empty for no colour factor

@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <initializer_list>
 
 namespace pcl_ext {
 /** \brief SplitMix64 finaliser (Steele, Lea & Flood 2014): a bijective 64-bit mix. */
@@ -22,6 +24,23 @@ inline std::uint64_t
 hashCombine (std::uint64_t a, std::uint64_t b)
 {
   return splitMix64 (a ^ splitMix64 (b + 0x632be59bd9b4e019ULL));
+}
+
+/** \brief Hash of a position's float coordinates (their bits, -0 taken as +0) with
+ * \a seed: a random draw attached to the point itself, the same in any cloud that
+ * holds it, whatever its index or the points around it (a tile of a larger cloud
+ * draws as the whole cloud does). */
+inline std::uint64_t
+hashPosition (float x, float y, float z, std::uint64_t seed)
+{
+  std::uint64_t key = splitMix64 (seed);
+  for (const float c : {x, y, z}) {
+    const float v = c == 0.0f ? 0.0f : c;
+    std::uint32_t bits;
+    std::memcpy (&bits, &v, sizeof (bits));
+    key = hashCombine (key, bits);
+  }
+  return key;
 }
 
 /** \brief A small random stream seeded from a key (SplitMix64).

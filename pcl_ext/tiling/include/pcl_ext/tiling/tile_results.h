@@ -127,6 +127,15 @@ saveTileValues (const std::string& folder,
                 const std::string& name,
                 const std::vector<float>& values);
 
+/** \brief The values saved by saveTileValues for tile \a tile under \a name, all of
+ * them (non-finite ones too), in their order. \return false (PCL_ERROR names the file)
+ * when the file is missing or broken */
+bool
+loadTileValues (const std::string& folder,
+                std::size_t tile,
+                const std::string& name,
+                std::vector<float>& values);
+
 /** \brief The value of rank floor(n * \a fraction) (0-based, at most n - 1) among the n
  * finite values of tiles 0 .. \a tiles - 1 saved under \a name: what std::nth_element
  * gives on all of them together, found in two passes over the files whatever their

@@ -1,0 +1,185 @@
+/*
+ * pcl_ext_tiles crf_classify run as a command: a street scan classified tile by tile
+ * with a model trained on another seed gives pcl_ext_crf_classify's classes on the
+ * whole cloud for at least 99 % of the points, whatever the tile size; the same bytes
+ * over any number of MPI ranks and in steps; models and options it cannot run are
+ * refused without output.
+ */
+#include "../app_test.h"
+
+#include <pcl_ext/io/point_file.h>
+
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/conversions.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace {
+/** The class field of an output, one per point in file order; empty on failure. */
+std::vector<std::uint32_t>
+readClasses (const std::string& path)
+{
+  std::vector<std::uint32_t> classes;
+  pcl_ext::io::PointFile file;
+  try {
+    pcl_ext::io::loadPointFile (path, file);
+  }
+  catch (const std::exception&) {
+    return classes;
+  }
+  const auto& c = file.cloud;
+  for (const auto& f : c.fields)
+    if (f.name == "crf_class" && f.datatype == pcl::PCLPointField::UINT32) {
+      const std::size_t n = static_cast<std::size_t> (c.width) * c.height;
+      classes.resize (n);
+      for (std::size_t i = 0; i < n; ++i)
+        std::memcpy (&classes[i],
+                     c.data.data() + i * c.point_step + f.offset,
+                     sizeof (std::uint32_t));
+    }
+  return classes;
+}
+
+std::vector<char>
+readBytes (const std::string& path)
+{
+  std::ifstream in (path, std::ios::binary);
+  return {std::istreambuf_iterator<char> (in), std::istreambuf_iterator<char>()};
+}
+
+class TilesCrfApp : public pcl_ext::test::AppTest {
+protected:
+  TilesCrfApp() : AppTest (PCL_EXT_TILES_EXE) {}
+
+  void
+  SetUp () override
+  {
+    AppTest::SetUp();
+    if (HasFatalFailure())
+      return;
+    // Training: seed 1 with x y z and the labels only (a model on geometry alone, as
+    // Oakland's); classified: seed 2, every field of the scene kept.
+    for (const int seed : {1, 2}) {
+      const std::string generate = std::string (PCL_EXT_GENERATE_SCENE_EXE) +
+                                   " street '" + path ("s" + std::to_string (seed)) +
+                                   ".pcd' -points 60000 -seed " +
+                                   std::to_string (seed) + " > /dev/null 2>&1";
+      ASSERT_EQ (std::system (generate.c_str()), 0);
+    }
+    pcl::PointCloud<pcl::PointXYZL> labelled;
+    ASSERT_EQ (pcl::io::loadPCDFile (path ("s1.pcd"), labelled), 0);
+    ASSERT_EQ (pcl::io::savePCDFileBinary (path ("train.pcd"), labelled), 0);
+    const std::string train = std::string (PCL_EXT_CRF_TRAIN_EXE) + " -o '" +
+                              path ("model.txt") + "' '" + path ("train.pcd") +
+                              "' -threads 2 > /dev/null 2>&1";
+    ASSERT_EQ (std::system (train.c_str()), 0);
+    const std::string whole = std::string (PCL_EXT_CRF_CLASSIFY_EXE) + " '" +
+                              path ("model.txt") + "' '" + path ("s2.pcd") + "' '" +
+                              path ("whole.pcd") + "' > /dev/null 2>&1";
+    ASSERT_EQ (std::system (whole.c_str()), 0);
+    whole_ = readClasses (path ("whole.pcd"));
+    ASSERT_GT (whole_.size(), 50000u);
+  }
+
+  /** The share of the points of \a output whose class is the untiled one. */
+  double
+  agreement (const std::string& output)
+  {
+    const std::vector<std::uint32_t> tiled = readClasses (path (output));
+    if (tiled.size() != whole_.size())
+      return 0.0;
+    std::size_t same = 0;
+    for (std::size_t i = 0; i < tiled.size(); ++i)
+      same += tiled[i] == whole_[i];
+    return static_cast<double> (same) / static_cast<double> (tiled.size());
+  }
+
+  std::string
+  classify (const std::string& output, const std::string& options)
+  {
+    return "crf_classify '" + path ("s2.pcd") + "' '" + path (output) + "' -model '" +
+           path ("model.txt") + "' " + options;
+  }
+
+  std::vector<std::uint32_t> whole_;
+};
+} // namespace
+
+TEST_F (TilesCrfApp, AnyTileSizeGivesTheWholeCloudsClassesForNearlyEveryPoint)
+{
+  // Tiles of 10 m hold a few thousand points; their halo (5 m, half the tile) is
+  // narrower than the large super-voxels of the sparse parts of the street, so most
+  // tiles widen their margin as the super-voxels they computed ask.
+  for (const std::string& size : {"10", "25", "0"}) {
+    const std::string out = "t" + size + ".pcd";
+    ASSERT_EQ (run (classify (out, "-tile_size " + size + " -threads 1")), 0)
+        << output_;
+    EXPECT_GE (agreement (out), 0.99) << "tile size " << size;
+  }
+  EXPECT_NE (output_.find ("tiles ("), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("t0.pcd.tiles")); // the work folder is removed
+}
+
+TEST_F (TilesCrfApp, StepsGiveTheSameBytesAsOneCommand)
+{
+  ASSERT_EQ (run (classify ("one.pcd", "-tile_size 10 -threads 1")), 0) << output_;
+  const std::string work = " -workdir '" + path ("work") + "'";
+  ASSERT_EQ (run ("plan crf_classify '" + path ("s2.pcd") + "' -model '" +
+                  path ("model.txt") + "' -tile_size 10" + work),
+             0)
+      << output_;
+  ASSERT_EQ (run ("resume '" + path ("steps.pcd") + "'" + work + " -threads 2"), 0)
+      << output_;
+  EXPECT_TRUE (readBytes (path ("one.pcd")) == readBytes (path ("steps.pcd")));
+}
+
+#ifdef PCL_EXT_MPIEXEC
+TEST_F (TilesCrfApp, MpiRanksGiveTheSameBytes)
+{
+  ASSERT_EQ (run (classify ("one.pcd", "-tile_size 10 -threads 1")), 0) << output_;
+  for (const int ranks : {2, 4}) {
+    const std::string out = "mpi" + std::to_string (ranks) + ".pcd";
+    const std::string command = std::string (PCL_EXT_MPIEXEC) +
+                                " --allow-run-as-root --oversubscribe -np " +
+                                std::to_string (ranks) + " " + PCL_EXT_TILES_EXE + " " +
+                                classify (out, "-tile_size 10 -threads 1") + " > '" +
+                                path ("mpi.log") + "' 2>&1";
+    ASSERT_EQ (std::system (command.c_str()), 0) << ranks << " ranks";
+    EXPECT_TRUE (readBytes (path ("one.pcd")) == readBytes (path (out)))
+        << ranks << " ranks";
+  }
+}
+#endif
+
+TEST_F (TilesCrfApp, ModelsAndOptionsItCannotRunAreRefused)
+{
+  EXPECT_EQ (run ("crf_classify '" + path ("s2.pcd") + "' '" + path ("no.pcd") + "'"),
+             1);
+  EXPECT_NE (output_.find ("-model"), std::string::npos) << output_;
+  EXPECT_EQ (run ("crf_classify '" + path ("s2.pcd") + "' '" + path ("no.pcd") +
+                  "' -model '" + path ("missing.txt") + "'"),
+             1);
+  EXPECT_NE (output_.find ("cannot load the model"), std::string::npos) << output_;
+  // A model that reads colour and intensity (the scene's own fields).
+  const std::string train = std::string (PCL_EXT_CRF_TRAIN_EXE) + " -o '" +
+                            path ("colour.txt") + "' '" + path ("s1.pcd") +
+                            "' -threads 2 > /dev/null 2>&1";
+  ASSERT_EQ (std::system (train.c_str()), 0);
+  EXPECT_EQ (run ("crf_classify '" + path ("s2.pcd") + "' '" + path ("no.pcd") +
+                  "' -model '" + path ("colour.txt") + "'"),
+             1);
+  EXPECT_NE (output_.find ("colour and intensity"), std::string::npos) << output_;
+  EXPECT_EQ (run (classify ("no.las", "-asprs")), 1);
+  EXPECT_NE (output_.find ("run pcl_ext_crf_classify"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("no.pcd"));
+  EXPECT_FALSE (exists ("no.las"));
+}
