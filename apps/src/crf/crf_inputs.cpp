@@ -11,6 +11,7 @@
 #include <pcl/conversions.h>
 #include <pcl/point_types.h>
 
+#include <cmath>
 #include <exception>
 
 namespace pcl_ext {
@@ -23,6 +24,38 @@ endsWith (const std::string& s, const std::string& suffix)
          s.compare (s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 } // namespace
+
+void
+readCrfAttributes (const pcl::PCLPointCloud2& blob,
+                   std::vector<Eigen::Vector3f>* colours,
+                   std::vector<float>* intensity)
+{
+  if (colours) {
+    colours->clear();
+    if (pcl::getFieldIndex (blob, "rgb") >= 0 ||
+        pcl::getFieldIndex (blob, "rgba") >= 0) {
+      pcl::PointCloud<pcl::PointXYZRGB> rgb;
+      pcl::fromPCLPointCloud2 (blob, rgb);
+      colours->resize (rgb.size());
+      for (std::size_t i = 0; i < rgb.size(); ++i) {
+        const float sum = static_cast<float> (rgb[i].r) + rgb[i].g + rgb[i].b;
+        (*colours)[i] =
+            sum > 0.f ? Eigen::Vector3f (rgb[i].r / sum, rgb[i].g / sum, rgb[i].b / sum)
+                      : Eigen::Vector3f::Constant (1.f / 3.f);
+      }
+    }
+  }
+  if (intensity) {
+    intensity->clear();
+    if (pcl::getFieldIndex (blob, "intensity") >= 0) {
+      pcl::PointCloud<pcl::PointXYZI> in;
+      pcl::fromPCLPointCloud2 (blob, in);
+      intensity->resize (in.size());
+      for (std::size_t i = 0; i < in.size(); ++i)
+        (*intensity)[i] = std::isfinite (in[i].intensity) ? in[i].intensity : 0.f;
+    }
+  }
+}
 
 ResultField
 crfClassField (bool asprs)
@@ -75,24 +108,7 @@ loadCrfCloud (const std::string& path,
   auto xyz = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   pcl::fromPCLPointCloud2 (blob, *xyz);
   out.input.xyz = xyz;
-  if (pcl::getFieldIndex (blob, "rgb") >= 0 || pcl::getFieldIndex (blob, "rgba") >= 0) {
-    pcl::PointCloud<pcl::PointXYZRGB> rgb;
-    pcl::fromPCLPointCloud2 (blob, rgb);
-    out.input.colours.resize (rgb.size());
-    for (std::size_t i = 0; i < rgb.size(); ++i) {
-      const float sum = static_cast<float> (rgb[i].r) + rgb[i].g + rgb[i].b;
-      out.input.colours[i] =
-          sum > 0.f ? Eigen::Vector3f (rgb[i].r / sum, rgb[i].g / sum, rgb[i].b / sum)
-                    : Eigen::Vector3f::Constant (1.f / 3.f);
-    }
-  }
-  if (pcl::getFieldIndex (blob, "intensity") >= 0) {
-    pcl::PointCloud<pcl::PointXYZI> in;
-    pcl::fromPCLPointCloud2 (blob, in);
-    out.input.intensity.resize (in.size());
-    for (std::size_t i = 0; i < in.size(); ++i)
-      out.input.intensity[i] = std::isfinite (in[i].intensity) ? in[i].intensity : 0.f;
-  }
+  readCrfAttributes (blob, &out.input.colours, &out.input.intensity);
   if (pcl::getFieldIndex (blob, "label") >= 0) {
     std::string why;
     if (!io::getLabelField (blob, "label", out.labels, &why)) {

@@ -30,6 +30,15 @@ struct CrfCloud {
 ResultField
 crfClassField (bool asprs = true);
 
+/** \brief The CRF's colour (rgb / rgba normalised to r, g, b over their sum; a third
+ * each for black) and intensity (0 where not finite) of the points of \a blob, into
+ * whichever of \a colours and \a intensity is given; each left empty when \a blob
+ * has no such field. */
+void
+readCrfAttributes (const pcl::PCLPointCloud2& blob,
+                   std::vector<Eigen::Vector3f>* colours,
+                   std::vector<float>* intensity);
+
 /** \brief Read a point file of any format io::loadPointFile reads (x y z, optional
  * rgb/rgba, intensity, label) or an Oakland file (.xyz_label_conf; labels mapped with
  * \a mapping, which is then required).

@@ -62,13 +62,45 @@ public:
       std::cerr << "Error: cannot load the model " << model_path_ << ".\n";
       return false;
     }
+    return true;
+  }
+
+  std::size_t
+  getAttributeCount () const override
+  {
     const CrfSettings& s = model_.getSettings();
-    if (s.features.colour || s.features.intensity) {
-      std::cerr << "Error: the model uses " << (s.features.colour ? "colour" : "")
-                << (s.features.colour && s.features.intensity ? " and " : "")
-                << (s.features.intensity ? "intensity" : "")
-                << "; pcl_ext_tiles carries x y z only: run pcl_ext_crf_classify.\n";
+    return (s.features.colour ? 3 : 0) + (s.features.intensity ? 1 : 0);
+  }
+
+  /** The model's colour (3 values), then intensity, as pcl_ext_crf_classify reads them
+   * (readCrfAttributes). */
+  bool
+  readAttributes (const pcl::PCLPointCloud2& chunk,
+                  const std::string& input,
+                  std::vector<float>& values) const override
+  {
+    const CrfSettings& s = model_.getSettings();
+    std::vector<Eigen::Vector3f> colours;
+    std::vector<float> intensity;
+    readCrfAttributes (chunk,
+                       s.features.colour ? &colours : nullptr,
+                       s.features.intensity ? &intensity : nullptr);
+    const std::size_t n = static_cast<std::size_t> (chunk.width) * chunk.height;
+    if ((s.features.colour && colours.size() != n) ||
+        (s.features.intensity && intensity.size() != n)) {
+      std::cerr << "\nError: the model uses "
+                << (s.features.colour && colours.size() != n ? "colour (rgb)"
+                                                             : "intensity")
+                << ", which " << input << " does not have.\n";
       return false;
+    }
+    values.clear();
+    values.reserve (n * getAttributeCount());
+    for (std::size_t i = 0; i < n; ++i) {
+      if (s.features.colour)
+        values.insert (values.end(), colours[i].data(), colours[i].data() + 3);
+      if (s.features.intensity)
+        values.push_back (intensity[i]);
     }
     return true;
   }
@@ -225,6 +257,21 @@ public:
     model.setSettings (s);
     CrfInput input;
     input.xyz = tile.cloud;
+    const std::size_t count = tile.attribute_count, n = tile.cloud->size();
+    if (count != getAttributeCount() || tile.attributes.size() != n * count) {
+      std::cerr << "Error: tile " << tile.tile
+                << " does not carry the colour and intensity the model uses (plan "
+                   "again).\n";
+      return false;
+    }
+    if (s.features.colour)
+      for (std::size_t i = 0; i < n; ++i)
+        input.colours.emplace_back (tile.attributes[i * count],
+                                    tile.attributes[i * count + 1],
+                                    tile.attributes[i * count + 2]);
+    if (s.features.intensity)
+      for (std::size_t i = 0; i < n; ++i)
+        input.intensity.push_back (tile.attributes[i * count + count - 1]);
     Eigen::MatrixXf probabilities;
     if (!model.classify (input, labels, probabilities)) {
       std::cerr << "Error: the classification of tile " << tile.tile << " failed.\n";

@@ -14,27 +14,47 @@
 namespace pcl_ext {
 namespace apps {
 namespace {
-/** The points of the tiles \a tiles, each once, in global order. */
+/** The points of the tiles \a tiles, each once, in global order, with their \a count
+ * attributes each (\a attributes, point after point). */
 bool
 readTiles (const std::string& folder,
            const std::vector<std::size_t>& tiles,
-           std::vector<tiling::TilePoint>& points)
+           std::size_t count,
+           std::vector<tiling::TilePoint>& points,
+           std::vector<float>& attributes)
 {
-  points.clear();
-  std::vector<tiling::TilePoint> one;
+  std::vector<tiling::TilePoint> all, one;
+  std::vector<float> all_attributes, one_attributes;
   for (const std::size_t t : tiles) {
-    if (!tiling::readTilePoints (folder, t, one))
+    if (!tiling::readTilePoints (folder, t, one) ||
+        !tiling::readTileAttributes (folder, t, count, one_attributes))
       return false;
-    points.insert (points.end(), one.begin(), one.end());
+    if (one_attributes.size() != one.size() * count) {
+      std::cerr << "Error: the attributes of tile " << t << " in " << folder
+                << " do not match its points.\n";
+      return false;
+    }
+    all.insert (all.end(), one.begin(), one.end());
+    all_attributes.insert (
+        all_attributes.end(), one_attributes.begin(), one_attributes.end());
   }
-  std::sort (points.begin(), points.end(), [] (const auto& a, const auto& b) {
-    return a.index < b.index;
+  std::vector<std::size_t> order (all.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::sort (order.begin(), order.end(), [&all] (std::size_t a, std::size_t b) {
+    return all[a].index < all[b].index;
   });
-  points.erase (
-      std::unique (points.begin(),
-                   points.end(),
-                   [] (const auto& a, const auto& b) { return a.index == b.index; }),
-      points.end());
+  points.clear();
+  attributes.clear();
+  for (const std::size_t i : order) {
+    if (!points.empty() && points.back().index == all[i].index)
+      continue; // a halo point read from two tiles
+    points.push_back (all[i]);
+    attributes.insert (attributes.end(),
+                       all_attributes.begin() + static_cast<std::ptrdiff_t> (i * count),
+                       all_attributes.begin() +
+                           static_cast<std::ptrdiff_t> ((i + 1) * count));
+  }
   return true;
 }
 
@@ -92,25 +112,37 @@ loadTileCloud (const tiling::TilePlan& plan,
   result.tile = tile;
   std::vector<std::size_t> tiles;
   std::vector<tiling::TilePoint> points;
+  std::vector<float> attributes;
+  const auto found = plan.settings.find ("attributes");
+  const std::size_t count =
+      found == plan.settings.end() ? 0 : std::stoul (found->second);
   double margin = std::max (plan.halo, min_margin);
   for (;;) {
     // The tiles whose cores reach into the margin, then their points within it.
     const auto rings = static_cast<std::size_t> (
         std::ceil (std::max (0.0, margin - plan.halo) / plan.tile_size));
     grid.getTilesAround (tile, rings, tiles);
-    if (!readTiles (folder, tiles, points))
+    if (!readTiles (folder, tiles, count, points, attributes))
       return false;
     const std::size_t read = points.size();
-    if (rings > 0)
-      points.erase (std::remove_if (points.begin(),
-                                    points.end(),
-                                    [&] (const tiling::TilePoint& p) {
-                                      return !grid.isWithin (tile,
-                                                             plan.origin.x() + p.x,
-                                                             plan.origin.y() + p.y,
-                                                             margin);
-                                    }),
-                    points.end());
+    if (rings > 0) {
+      std::size_t kept = 0;
+      for (std::size_t i = 0; i < points.size(); ++i)
+        if (grid.isWithin (tile,
+                           plan.origin.x() + points[i].x,
+                           plan.origin.y() + points[i].y,
+                           margin)) {
+          points[kept] = points[i];
+          std::copy_n (attributes.begin() + static_cast<std::ptrdiff_t> (i * count),
+                       count,
+                       attributes.begin() + static_cast<std::ptrdiff_t> (kept * count));
+          ++kept;
+        }
+      points.resize (kept);
+      attributes.resize (kept * count);
+    }
+    result.attribute_count = count;
+    result.attributes = attributes;
     result.margin = margin;
     result.grid = grid;
     result.origin = plan.origin;

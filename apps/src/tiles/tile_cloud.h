@@ -45,8 +45,10 @@ struct TileCloud {
   double margin =
       0.0; ///< the core box widened by this holds the points (the halo or more)
   std::size_t core_points = 0;
-  bool whole = false;    ///< the points are those of the whole cloud
-  tiling::TileGrid grid; ///< the plan's tiles
+  bool whole = false;              ///< the points are those of the whole cloud
+  std::size_t attribute_count = 0; ///< values per point besides x y z (the method's)
+  std::vector<float> attributes;   ///< those values, point after point
+  tiling::TileGrid grid;           ///< the plan's tiles
   Eigen::Vector3d origin = Eigen::Vector3d::Zero(); ///< the plan's origin
 
   /** \brief How far the point at local (x, y) is from the edge of the data loaded

@@ -9,6 +9,8 @@
 #include <pcl_ext/apps/output.h>
 #include <pcl_ext/tiling/merged_results.h>
 
+#include <pcl/PCLPointCloud2.h>
+
 #include <map>
 #include <memory>
 #include <string>
@@ -96,6 +98,25 @@ public:
   run (const TileCloud& tile,
        const std::map<std::string, std::string>& settings,
        std::vector<std::uint32_t>& labels) = 0;
+
+  /** \brief How many values per point the method reads beside x y z (carried in the
+   * tiles' files, TileCloud::attributes); 0 (the default): none. */
+  virtual std::size_t
+  getAttributeCount () const
+  {
+    return 0;
+  }
+
+  /** \brief Those values of the points of a \a chunk of \a input, one point after
+   * another. \return false (message printed) when the input does not have them */
+  virtual bool
+  readAttributes (const pcl::PCLPointCloud2& /*chunk*/,
+                  const std::string& /*input*/,
+                  std::vector<float>& values) const
+  {
+    values.clear();
+    return true;
+  }
 
   /** \brief After estimate() or run() on a tile: the margin around the tile's core
    * that its result needed, measured on what it computed (0: the checks of getReach()

@@ -163,6 +163,7 @@ planPath (const std::string& workdir)
 
 bool
 planStep (const std::string& method_name,
+          const TileMethod& method,
           const std::vector<std::string>& method_arguments,
           const std::vector<std::string>& inputs,
           double tile_size,
@@ -170,12 +171,6 @@ planStep (const std::string& method_name,
           const std::string& workdir,
           tiling::TilePlan& plan)
 {
-  const auto method = makeTileMethod (method_name);
-  if (!method) {
-    std::cerr << "Error: unknown method '" << method_name << "' (" << kTileMethods
-              << ").\n";
-    return false;
-  }
   ::mkdir (workdir.c_str(), 0755);
   struct stat st;
   if (::stat (workdir.c_str(), &st) != 0 || !S_ISDIR (st.st_mode)) {
@@ -190,11 +185,11 @@ planStep (const std::string& method_name,
     if (!(tile_size > 0.0))
       tile_size = tiling::fitTileSize (plan, kPointsPerTile);
     if (halo < 0.0)
-      halo = std::min (estimateHalo (inputs.front(), plan.origin, method->getReach()),
+      halo = std::min (estimateHalo (inputs.front(), plan.origin, method.getReach()),
                        0.5 * tile_size);
     if (!tiling::planTiles (inputs, tile_size, halo, plan))
       return false;
-    const NeighbourhoodReach reach = method->getReach();
+    const NeighbourhoodReach reach = method.getReach();
     if (!reach.search && plan.halo < reach.radius)
       std::cerr << "\nWarning: the halo (" << plan.halo << " m) is narrower than "
                 << method_name << "'s reach (" << reach.radius
@@ -202,8 +197,16 @@ planStep (const std::string& method_name,
                    "untiled result; give a larger -tile_size or -halo.\n";
     plan.settings["method"] = method_name;
     plan.settings["arguments"] = joinArguments (method_arguments);
+    const std::size_t attributes = method.getAttributeCount();
+    plan.settings["attributes"] = std::to_string (attributes);
+    const tiling::ChunkAttributes read_attributes =
+        [&method] (const pcl::PCLPointCloud2& chunk,
+                   const std::string& input,
+                   std::vector<float>& values) {
+          return method.readAttributes (chunk, input, values);
+        };
     if (!tiling::TileResults::create (workdir, plan.getTotalPoints()) ||
-        !tiling::writeTiles (plan, workdir) ||
+        !tiling::writeTiles (plan, workdir, attributes, read_attributes) ||
         !tiling::saveTilePlan (planPath (workdir), plan))
       return false;
   }

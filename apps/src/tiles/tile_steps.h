@@ -25,6 +25,7 @@ planPath (const std::string& workdir);
  * the points sorted into the tiles' files. \return false (message printed) on error */
 bool
 planStep (const std::string& method_name,
+          const TileMethod& method,
           const std::vector<std::string>& method_arguments,
           const std::vector<std::string>& inputs,
           double tile_size,

@@ -222,6 +222,7 @@ runAll (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
   pcl_ext::tiling::TilePlan plan;
   // Rank 0 plans; the others read its plan.
   bool ok = !leader || pcl_ext::apps::planStep (options.method,
+                                                *method,
                                                 arguments,
                                                 inputs,
                                                 options.tile_size,
@@ -393,6 +394,7 @@ main (int argc, char** argv)
     }
     pcl_ext::tiling::TilePlan plan;
     return pcl_ext::apps::planStep (argv[2],
+                                    *method,
                                     arguments,
                                     inputs,
                                     options.tile_size,

@@ -280,10 +280,14 @@ fitTileSize (const TilePlan& plan, std::uint64_t max_points_per_tile)
 }
 
 bool
-writeTiles (const TilePlan& plan, const std::string& folder)
+writeTiles (const TilePlan& plan,
+            const std::string& folder,
+            std::size_t attribute_count,
+            const ChunkAttributes& attributes)
 {
   const TileGrid grid = plan.getGrid();
-  TilePointWriter writer (folder, grid.size());
+  TilePointWriter writer (folder, grid.size(), 4096, attribute_count);
+  std::vector<float> values;
   pcl::PCLPointCloud2 chunk;
   std::vector<std::size_t> near;
   std::uint64_t index = 0;
@@ -301,6 +305,18 @@ writeTiles (const TilePlan& plan, const std::string& folder)
     file.setOrigin (plan.origin);
     std::size_t n;
     while ((n = file.read (kChunkPoints, chunk)) > 0) {
+      if (attribute_count > 0) {
+        if (!attributes || !attributes (chunk, plan.inputs[f], values))
+          return false;
+        if (values.size() != n * attribute_count) {
+          PCL_ERROR ("[pcl_ext::tiling::writeTiles] %s: %zu attribute values for %zu "
+                     "points.\n",
+                     plan.inputs[f].c_str(),
+                     values.size(),
+                     n);
+          return false;
+        }
+      }
       const std::uint8_t* xyz = chunk.data.data() + xyzOffset (chunk);
       for (std::size_t i = 0; i < n; ++i, ++index) {
         TilePoint p;
@@ -322,8 +338,9 @@ writeTiles (const TilePlan& plan, const std::string& folder)
         }
         p.owner = static_cast<std::uint32_t> (owner);
         grid.getTilesNear (x, y, near);
+        const float* a = attribute_count > 0 ? &values[i * attribute_count] : nullptr;
         for (const std::size_t t : near)
-          if (!writer.add (t, p))
+          if (!writer.add (t, p, a))
             return false;
       }
     }

@@ -33,12 +33,21 @@ tilePointsPath (const std::string& folder, std::size_t tile)
   return folder + "/tile_" + std::to_string (tile) + ".points";
 }
 
+std::string
+tileAttributesPath (const std::string& folder, std::size_t tile)
+{
+  return folder + "/tile_" + std::to_string (tile) + ".attributes";
+}
+
 TilePointWriter::TilePointWriter (std::string folder,
                                   std::size_t tiles,
-                                  std::size_t buffer_points)
+                                  std::size_t buffer_points,
+                                  std::size_t attributes)
 : folder_ (std::move (folder))
 , buffer_points_ (buffer_points > 0 ? buffer_points : 1)
+, attributes_ (attributes)
 , buffers_ (tiles)
+, attribute_buffers_ (attributes > 0 ? tiles : 0)
 , counts_ (tiles, 0)
 , started_ (tiles, false)
 {}
@@ -46,11 +55,14 @@ TilePointWriter::TilePointWriter (std::string folder,
 TilePointWriter::~TilePointWriter() = default;
 
 bool
-TilePointWriter::add (std::size_t tile, const TilePoint& point)
+TilePointWriter::add (std::size_t tile, const TilePoint& point, const float* attributes)
 {
   if (failed_)
     return false;
   buffers_[tile].push_back (point);
+  if (attributes_ > 0)
+    attribute_buffers_[tile].insert (
+        attribute_buffers_[tile].end(), attributes, attributes + attributes_);
   ++counts_[tile];
   if (buffers_[tile].size() >= buffer_points_)
     return flush (tile);
@@ -58,19 +70,15 @@ TilePointWriter::add (std::size_t tile, const TilePoint& point)
 }
 
 bool
-TilePointWriter::flush (std::size_t tile)
+TilePointWriter::append (const std::string& path,
+                         bool started,
+                         const std::vector<char>& bytes)
 {
-  const std::string path = tilePointsPath (folder_, tile);
   std::ofstream out (path,
-                     started_[tile] ? std::ios::binary | std::ios::app
-                                    : std::ios::binary | std::ios::trunc);
-  started_[tile] = true;
-  std::vector<char> bytes (buffers_[tile].size() * kRecordBytes);
-  for (std::size_t i = 0; i < buffers_[tile].size(); ++i)
-    encode (buffers_[tile][i], bytes.data() + i * kRecordBytes);
+                     started ? std::ios::binary | std::ios::app
+                             : std::ios::binary | std::ios::trunc);
   out.write (bytes.data(), static_cast<std::streamsize> (bytes.size()));
   out.close();
-  buffers_[tile].clear();
   if (!out) {
     PCL_ERROR (
         "[pcl_ext::tiling::TilePointWriter] cannot write %s (disk full or folder "
@@ -79,6 +87,26 @@ TilePointWriter::flush (std::size_t tile)
     failed_ = true;
   }
   return !failed_;
+}
+
+bool
+TilePointWriter::flush (std::size_t tile)
+{
+  std::vector<char> bytes (buffers_[tile].size() * kRecordBytes);
+  for (std::size_t i = 0; i < buffers_[tile].size(); ++i)
+    encode (buffers_[tile][i], bytes.data() + i * kRecordBytes);
+  buffers_[tile].clear();
+  const bool started = started_[tile];
+  started_[tile] = true;
+  if (!append (tilePointsPath (folder_, tile), started, bytes))
+    return false;
+  if (attributes_ == 0)
+    return true;
+  auto& values = attribute_buffers_[tile];
+  bytes.resize (values.size() * sizeof (float));
+  std::memcpy (bytes.data(), values.data(), bytes.size());
+  values.clear();
+  return append (tileAttributesPath (folder_, tile), started, bytes);
 }
 
 bool
@@ -130,6 +158,31 @@ readTilePoints (const std::string& folder,
       return false;
     }
   }
+  return true;
+}
+bool
+readTileAttributes (const std::string& folder,
+                    std::size_t tile,
+                    std::size_t attributes,
+                    std::vector<float>& values)
+{
+  values.clear();
+  if (attributes == 0)
+    return true;
+  const std::string path = tileAttributesPath (folder, tile);
+  std::vector<char> data;
+  const detail::RecordFileRead read =
+      detail::readRecordFile (path, attributes * sizeof (float), data);
+  if (read != detail::RecordFileRead::Done) {
+    PCL_ERROR ("[pcl_ext::tiling::readTileAttributes] %s %s.\n",
+               path.c_str(),
+               read == detail::RecordFileRead::NotWholeRecords
+                   ? "is not a whole number of points"
+                   : "cannot be read");
+    return false;
+  }
+  values.resize (data.size() / sizeof (float));
+  std::memcpy (values.data(), data.data(), data.size());
   return true;
 }
 } // namespace tiling

@@ -6,9 +6,12 @@
 
 #include <pcl_ext/tiling/tile_grid.h>
 
+#include <pcl/PCLPointCloud2.h>
+
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -91,13 +94,25 @@ suggestTileSize (const Eigen::Vector2d& min,
 double
 fitTileSize (const TilePlan& plan, std::uint64_t max_points_per_tile);
 
+/** \brief Values a method reads beside x y z, per point of a chunk of an input (\a
+ * input names it): \a values gets the chunk's points' values one point after another.
+ * \return false (message printed) when the chunk does not have them */
+using ChunkAttributes = std::function<bool (const pcl::PCLPointCloud2& chunk,
+                                            const std::string& input,
+                                            std::vector<float>& values)>;
+
 /** \brief Sort the points of every input into the files of the tiles of \a plan in
  * \a folder (tile_<t>.points: each point of a tile's core or halo, see
  * TilePointWriter), reading the inputs in chunks. Points that are not finite go to no
- * tile. \throw io::ReadError naming an input that cannot be read \return false
- * (PCL_ERROR) when a point lies outside the plan's box (an input changed since the
- * plan, or a LAS header whose box lies) or a file cannot be written */
+ * tile. With \a attribute_count > 0, \a attributes gives that many values per point,
+ * saved beside (tile_<t>.attributes). \throw io::ReadError naming an input that cannot
+ * be read \return false (PCL_ERROR) when a point lies outside the plan's box (an input
+ * changed since the plan, or a LAS header whose box lies), the attributes cannot be
+ * read or a file cannot be written */
 bool
-writeTiles (const TilePlan& plan, const std::string& folder);
+writeTiles (const TilePlan& plan,
+            const std::string& folder,
+            std::size_t attribute_count = 0,
+            const ChunkAttributes& attributes = {});
 } // namespace tiling
 } // namespace pcl_ext
