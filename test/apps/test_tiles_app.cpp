@@ -6,6 +6,14 @@
  */
 #include "../app_test.h"
 
+#include <pcl_ext/io/cloud_fields.h>
+#include <pcl_ext/io/point_file.h>
+
+#include <pcl/common/io.h>
+#include <pcl/conversions.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -256,6 +264,72 @@ TEST_F (TilesApp, StepsInAnyOrderGiveTheSameOutput)
   expectSameAsWhole ("steps.las");
   EXPECT_EQ (run ("tile " + std::to_string (tiles) + work), 1); // no such tile
   EXPECT_EQ (run ("tile x" + work), 1);
+}
+
+namespace {
+/** Field \a name of every point of \a path (as labels; empty when missing). */
+std::vector<std::uint32_t>
+readField (const std::string& path, const std::string& name)
+{
+  pcl_ext::io::PointFile file;
+  std::vector<std::uint32_t> values;
+  try {
+    pcl_ext::io::loadPointFile (path, file);
+  }
+  catch (const std::exception&) {
+    return values;
+  }
+  pcl_ext::io::getLabelField (file.cloud, name, values);
+  return values;
+}
+} // namespace
+
+TEST_F (TilesApp, InputsWithDifferentFieldsGoIntoOneOutputWithEveryField)
+{
+  // The scene cut in two files: its first half with x y z only, the second with every
+  // field (colour, intensity, truth). Together they are the scene, so the classes are
+  // the untiled tool's on it; the output has every field, 0 where an input lacks it.
+  pcl::PCLPointCloud2 scene;
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("scene.pcd"), scene), 0);
+  const std::size_t n = static_cast<std::size_t> (scene.width) * scene.height;
+  pcl::Indices first, second;
+  for (std::size_t i = 0; i < n; ++i)
+    (i < n / 2 ? first : second).push_back (static_cast<pcl::index_t> (i));
+  pcl::PCLPointCloud2 a, b;
+  pcl::copyPointCloud (scene, first, a);
+  pcl::copyPointCloud (scene, second, b);
+  pcl::PointCloud<pcl::PointXYZ> xyz;
+  pcl::fromPCLPointCloud2 (a, xyz);
+  ASSERT_EQ (pcl::io::savePCDFileBinary (path ("a.pcd"), xyz), 0);
+  ASSERT_EQ (pcl::io::savePCDFile (path ("b.pcd"),
+                                   b,
+                                   Eigen::Vector4f::Zero(),
+                                   Eigen::Quaternionf::Identity(),
+                                   true),
+             0);
+  ASSERT_EQ (run ("classify_variance " + path ("a.pcd") + " " + path ("b.pcd") + " " +
+                  path ("ab.pcd") + " -tile_size 4"),
+             0)
+      << output_;
+  EXPECT_EQ (readField (path ("ab.pcd"), "lv_class"),
+             readField (path ("whole.las"), "lv_class"));
+  const std::vector<std::uint32_t> truth = readField (path ("scene.pcd"), "label");
+  const std::vector<std::uint32_t> written = readField (path ("ab.pcd"), "label");
+  ASSERT_EQ (written.size(), n);
+  std::size_t labelled = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_EQ (written[i], i < n / 2 ? 0u : truth[i]) << "point " << i;
+    labelled += truth[i] != 0;
+  }
+  EXPECT_GT (labelled, n / 4);
+  // The same into LAS (the truth as an extra-bytes dimension).
+  ASSERT_EQ (run ("classify_variance " + path ("a.pcd") + " " + path ("b.pcd") + " " +
+                  path ("ab.las") + " -tile_size 4"),
+             0)
+      << output_;
+  EXPECT_EQ (readField (path ("ab.las"), "lv_class"),
+             readField (path ("whole.las"), "lv_class"));
+  EXPECT_EQ (readField (path ("ab.las"), "label"), written);
 }
 
 TEST_F (TilesApp, BadUsageIsRefusedWithoutOutput)

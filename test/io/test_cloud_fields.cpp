@@ -9,7 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
 
 TEST (CloudFields, ReadsAnyType)
 {
@@ -121,4 +125,102 @@ TEST (CloudFields, WritesFloat)
   pcl::fromPCLPointCloud2 (blob, xyz);
   EXPECT_FLOAT_EQ (xyz[2].x, 2.f);
   EXPECT_FALSE (pcl_ext::io::setFloatField (blob, "probability", {1.f}));
+}
+
+namespace {
+/** A cloud of \a n points with UINT16 fields red green blue (like a LAS file's). */
+pcl::PCLPointCloud2
+lasLikeColours (const std::vector<std::array<std::uint16_t, 3>>& colours)
+{
+  pcl::PCLPointCloud2 cloud;
+  std::uint32_t offset = 0;
+  for (const char* name : {"x", "y", "z"}) {
+    cloud.fields.push_back ({name, offset, pcl::PCLPointField::FLOAT32, 1});
+    offset += 4;
+  }
+  for (const char* name : {"red", "green", "blue"}) {
+    cloud.fields.push_back ({name, offset, pcl::PCLPointField::UINT16, 1});
+    offset += 2;
+  }
+  cloud.point_step = offset;
+  cloud.width = static_cast<std::uint32_t> (colours.size());
+  cloud.height = 1;
+  cloud.row_step = cloud.point_step * cloud.width;
+  cloud.data.assign (cloud.row_step, 0);
+  for (std::size_t i = 0; i < colours.size(); ++i) {
+    const float xyz[3] = {float (i), 0.f, 1.f};
+    std::memcpy (&cloud.data[i * cloud.point_step], xyz, sizeof (xyz));
+    std::memcpy (&cloud.data[i * cloud.point_step + 12], colours[i].data(), 6);
+  }
+  return cloud;
+}
+} // namespace
+
+TEST (CloudFields, CloudsOfDifferentFieldsInOneLayout)
+{
+  // A PCD-like cloud (x y z rgb intensity) and a LAS-like one (x y z red green blue).
+  pcl::PointCloud<pcl::PointXYZRGB> coloured;
+  pcl::PointXYZRGB p;
+  p.x = 1.f;
+  p.y = 2.f;
+  p.z = 3.f;
+  p.r = 10;
+  p.g = 20;
+  p.b = 255;
+  coloured.push_back (p);
+  pcl::PCLPointCloud2 a, intensity;
+  pcl::toPCLPointCloud2 (coloured, a);
+  pcl::PointCloud<pcl::PointXYZI> with_intensity;
+  with_intensity.push_back (pcl::PointXYZI (7.f));
+  pcl::toPCLPointCloud2 (with_intensity, intensity);
+  const pcl::PCLPointCloud2 b = lasLikeColours ({{2570, 5140, 65535}, {0, 257, 512}});
+
+  pcl::PCLPointCloud2 layout;
+  std::string error;
+  ASSERT_TRUE (pcl_ext::io::unionOfFields ({a, b, intensity}, layout, error)) << error;
+  std::vector<std::string> names;
+  for (const auto& f : layout.fields)
+    names.push_back (f.name);
+  EXPECT_EQ (names,
+             (std::vector<std::string>{
+                 "x", "y", "z", "rgb", "red", "green", "blue", "intensity"}));
+  EXPECT_EQ (layout.point_step, 4u * 4 + 3u * 2 + 4u);
+
+  // The packed colour gives the channels (8 bits x 257) and the channels the packed
+  // colour; a field a cloud lacks is 0.
+  pcl::PCLPointCloud2 from_a, from_b;
+  pcl_ext::io::conformToFields (a, layout, from_a);
+  pcl_ext::io::conformToFields (b, layout, from_b);
+  ASSERT_EQ (from_a.width, 1u);
+  ASSERT_EQ (from_b.width, 2u);
+  std::vector<std::uint32_t> values;
+  ASSERT_TRUE (pcl_ext::io::getLabelField (from_a, "red", values));
+  EXPECT_EQ (values, (std::vector<std::uint32_t>{2570}));
+  ASSERT_TRUE (pcl_ext::io::getLabelField (from_a, "blue", values));
+  EXPECT_EQ (values, (std::vector<std::uint32_t>{65535}));
+  ASSERT_TRUE (pcl_ext::io::getLabelField (from_a, "intensity", values));
+  EXPECT_EQ (values, (std::vector<std::uint32_t>{0}));
+  ASSERT_TRUE (pcl_ext::io::getLabelField (from_b, "green", values));
+  EXPECT_EQ (values, (std::vector<std::uint32_t>{5140, 257}));
+  pcl::PointCloud<pcl::PointXYZRGB> back;
+  pcl::fromPCLPointCloud2 (from_b, back);
+  ASSERT_EQ (back.size(), 2u);
+  EXPECT_EQ (back[0].r, 10);
+  EXPECT_EQ (back[0].g, 20);
+  EXPECT_EQ (back[0].b, 255);
+  EXPECT_EQ (back[1].g, 1);
+  EXPECT_EQ (back[1].b, 2);
+  EXPECT_EQ (back[1].x, 1.f);
+  pcl::fromPCLPointCloud2 (from_a, back);
+  EXPECT_EQ (back[0].y, 2.f);
+  EXPECT_EQ (back[0].b, 255);
+
+  // One name, two types: refused, naming the field.
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  labelled.push_back (pcl::PointXYZL());
+  pcl::PCLPointCloud2 l;
+  pcl::toPCLPointCloud2 (labelled, l);
+  l.fields[3].name = "intensity"; // UINT32 where the other has FLOAT32
+  EXPECT_FALSE (pcl_ext::io::unionOfFields ({intensity, l}, layout, error));
+  EXPECT_NE (error.find ("'intensity'"), std::string::npos) << error;
 }

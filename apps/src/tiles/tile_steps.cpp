@@ -3,9 +3,11 @@
  * alone (scheduler array jobs) or one after another.
  */
 #include "tile_steps.h"
+#include "input_fields.h"
 #include "tile_outputs.h"
 
 #include <pcl_ext/apps/command_line.h>
+#include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/file_output.h>
 #include <pcl_ext/io/las_writer.h>
 #include <pcl_ext/io/read_error.h>
@@ -188,6 +190,10 @@ planStep (const std::string& method_name,
       halo = std::min (estimateHalo (inputs.front(), plan.origin, method.getReach()),
                        0.5 * tile_size);
     if (!tiling::planTiles (inputs, tile_size, halo, plan))
+      return false;
+    // Refused now rather than at the merge: inputs whose fields cannot share a file.
+    pcl::PCLPointCloud2 layout;
+    if (!unionOfInputFields (inputs, layout))
       return false;
     const NeighbourhoodReach reach = method.getReach();
     if (!reach.search && plan.halo < reach.radius)
@@ -392,6 +398,11 @@ mergeStep (const tiling::TilePlan& plan,
     first.open (plan.inputs.front());
     io::PointFile like = first.getDescription();
     like.origin = plan.origin;
+    // Inputs with different fields: every field in the output.
+    pcl::PCLPointCloud2 layout, conformed;
+    if (!unionOfInputFields (plan.inputs, layout))
+      return false;
+    like.cloud.fields = layout.fields;
     if (!field.checkInput (like, plan.inputs.front()))
       return false;
     const std::uint64_t min_size = method.getMinSegmentSize();
@@ -423,6 +434,10 @@ mergeStep (const tiling::TilePlan& plan,
       while (merged.read (kChunkPoints, chunk, input, values) > 0) {
         for (auto& v : values)
           v = v == tiling::TileResults::kNoResult ? 0u : (segments ? v + 1 : v);
+        if (!hasLayout (chunk, layout)) {
+          io::conformToFields (chunk, layout, conformed);
+          chunk = std::move (conformed);
+        }
         if (!field.attach (chunk, values))
           return false;
         if (per_tile) {
@@ -439,8 +454,8 @@ mergeStep (const tiling::TilePlan& plan,
         else if (whole.data.empty())
           whole = chunk;
         else if (!pcl::PCLPointCloud2::concatenate (whole, chunk)) {
-          std::cerr << "\nError: the inputs have different fields; write .las tiles "
-                       "one input at a time.\n";
+          std::cerr << "\nError: the chunks of " << plan.inputs[input]
+                    << " cannot be joined to the output.\n";
           return false;
         }
         if (pass_first == 0)

@@ -8,9 +8,11 @@
 #include <pcl/PCLPointField.h>
 #include <pcl/common/io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 namespace pcl_ext {
 namespace io {
@@ -154,6 +156,153 @@ setFloatField (pcl::PCLPointCloud2& cloud,
                const std::vector<float>& values)
 {
   return setScalarField (cloud, name, pcl::PCLPointField::FLOAT32, values);
+}
+bool
+unionOfFields (const std::vector<pcl::PCLPointCloud2>& layouts,
+               pcl::PCLPointCloud2& result,
+               std::string& error)
+{
+  result = pcl::PCLPointCloud2();
+  std::uint32_t offset = 0;
+  for (const auto& layout : layouts)
+    for (const auto& f : layout.fields) {
+      const auto seen =
+          std::find_if (result.fields.begin(),
+                        result.fields.end(),
+                        [&f] (const auto& g) { return g.name == f.name; });
+      const std::uint32_t count = std::max<std::uint32_t> (f.count, 1);
+      if (seen != result.fields.end()) {
+        if (seen->datatype != f.datatype ||
+            std::max<std::uint32_t> (seen->count, 1) != count) {
+          error = "the field '" + f.name + "' has two types (" +
+                  std::to_string (pcl::getFieldSize (seen->datatype)) + " and " +
+                  std::to_string (pcl::getFieldSize (f.datatype)) +
+                  " bytes, or counts " + std::to_string (seen->count) + " and " +
+                  std::to_string (f.count) + ")";
+          return false;
+        }
+        continue;
+      }
+      pcl::PCLPointField copy = f;
+      copy.offset = offset;
+      copy.count = count;
+      offset += pcl::getFieldSize (f.datatype) * count;
+      result.fields.push_back (copy);
+    }
+  result.point_step = offset;
+  return true;
+}
+
+namespace {
+/** \a v (a whole number within the type's range) stored as PCL type \a datatype. */
+void
+writeNumber (double v, std::uint8_t datatype, std::uint8_t* out)
+{
+  const auto put = [out] (auto value) { std::memcpy (out, &value, sizeof (value)); };
+  switch (datatype) {
+  case pcl::PCLPointField::INT8:
+    put (static_cast<std::int8_t> (v));
+    break;
+  case pcl::PCLPointField::UINT8:
+    put (static_cast<std::uint8_t> (v));
+    break;
+  case pcl::PCLPointField::INT16:
+    put (static_cast<std::int16_t> (v));
+    break;
+  case pcl::PCLPointField::UINT16:
+    put (static_cast<std::uint16_t> (v));
+    break;
+  case pcl::PCLPointField::INT32:
+    put (static_cast<std::int32_t> (v));
+    break;
+  case pcl::PCLPointField::UINT32:
+    put (static_cast<std::uint32_t> (v));
+    break;
+  case pcl::PCLPointField::FLOAT64:
+    put (v);
+    break;
+  default:
+    put (static_cast<float> (v));
+  }
+}
+
+const pcl::PCLPointField*
+findField (const pcl::PCLPointCloud2& cloud, const std::string& name)
+{
+  for (const auto& f : cloud.fields)
+    if (f.name == name)
+      return &f;
+  return nullptr;
+}
+} // namespace
+
+void
+conformToFields (const pcl::PCLPointCloud2& cloud,
+                 const pcl::PCLPointCloud2& fields,
+                 pcl::PCLPointCloud2& result)
+{
+  pcl::PCLPointCloud2 out;
+  out.header = cloud.header;
+  out.width = cloud.width;
+  out.height = cloud.height;
+  out.is_bigendian = cloud.is_bigendian;
+  out.is_dense = cloud.is_dense;
+  out.fields = fields.fields;
+  out.point_step = fields.point_step;
+  out.row_step = out.point_step * out.width;
+  out.data.assign (std::size_t (out.row_step) * out.height, 0);
+  // Colour in the other form: packed rgb from red green blue, or the reverse.
+  const pcl::PCLPointField* packed = findField (cloud, "rgb");
+  if (!packed)
+    packed = findField (cloud, "rgba");
+  const pcl::PCLPointField* channels[3] = {
+      findField (cloud, "red"), findField (cloud, "green"), findField (cloud, "blue")};
+  const bool has_channels = channels[0] && channels[1] && channels[2];
+  std::vector<std::pair<const pcl::PCLPointField*, const pcl::PCLPointField*>> copies;
+  std::vector<std::pair<const pcl::PCLPointField*, int>> from_packed; // channel 0-2
+  const pcl::PCLPointField* packed_target = nullptr;
+  for (const auto& f : out.fields) {
+    if (const auto* from = findField (cloud, f.name))
+      copies.emplace_back (from, &f);
+    else if (packed && (f.name == "red" || f.name == "green" || f.name == "blue"))
+      from_packed.emplace_back (&f, f.name == "red" ? 0 : (f.name == "green" ? 1 : 2));
+    else if (has_channels && (f.name == "rgb" || f.name == "rgba") &&
+             pcl::getFieldSize (f.datatype) == 4)
+      packed_target = &f;
+  }
+  const std::size_t n = static_cast<std::size_t> (cloud.width) * cloud.height;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* in = cloud.data.data() + i * cloud.point_step;
+    std::uint8_t* o = out.data.data() + i * out.point_step;
+    for (const auto& [from, to] : copies)
+      std::memcpy (o + to->offset,
+                   in + from->offset,
+                   pcl::getFieldSize (from->datatype) *
+                       std::max<std::uint32_t> (from->count, 1));
+    if (!from_packed.empty()) {
+      std::uint32_t rgb;
+      std::memcpy (&rgb, in + packed->offset, 4);
+      for (const auto& [to, channel] : from_packed) {
+        const double byte = (rgb >> (16 - 8 * channel)) & 0xFFu;
+        const double v = pcl::getFieldSize (to->datatype) == 1 ? byte : byte * 257.0;
+        writeNumber (v, to->datatype, o + to->offset);
+      }
+    }
+    if (packed_target) {
+      std::uint32_t rgb = 0;
+      for (int c = 0; c < 3; ++c) {
+        const double v =
+            detail::readNumber (in + channels[c]->offset, channels[c]->datatype);
+        const double scale =
+            pcl::getFieldSize (channels[c]->datatype) == 1 ? 1.0 : 257.0;
+        const std::uint32_t byte = static_cast<std::uint32_t> (
+            std::clamp (std::isfinite (v) ? v / scale : 0.0, 0.0, 255.0) + 0.5);
+        rgb |= std::min<std::uint32_t> (byte, 255u) << (16 - 8 * c);
+      }
+      std::memcpy (o + packed_target->offset, &rgb, 4);
+    }
+  }
+  result = std::move (out);
 }
 } // namespace io
 } // namespace pcl_ext

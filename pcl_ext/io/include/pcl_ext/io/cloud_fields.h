@@ -49,5 +49,25 @@ bool
 setFloatField (pcl::PCLPointCloud2& cloud,
                const std::string& name,
                const std::vector<float>& values);
+/** \brief The fields of clouds of different layouts in one layout (e.g. the scans of a
+ * project written into one file): those of \a layouts[0] in their order, then each
+ * field of the next layouts not seen yet, packed; no points. Fields of one name must
+ * have one type and count.
+ * \param[out] error the fields of one name and two types, when that fails
+ * \return false when two layouts give a name two types or counts */
+bool
+unionOfFields (const std::vector<pcl::PCLPointCloud2>& layouts,
+               pcl::PCLPointCloud2& result,
+               std::string& error);
+
+/** \brief \a cloud's points in the layout \a fields (e.g. unionOfFields): each field of
+ * \a fields copied from \a cloud's field of that name, 0 where \a cloud has none,
+ * except colour, which is kept whether a cloud holds it packed (`rgb`, `rgba`: 8 bits a
+ * channel) or as `red green blue` (8 bits, or 16 bits as 8 bits x 257). Width, height,
+ * header and is_dense are kept. */
+void
+conformToFields (const pcl::PCLPointCloud2& cloud,
+                 const pcl::PCLPointCloud2& fields,
+                 pcl::PCLPointCloud2& result);
 } // namespace io
 } // namespace pcl_ext

@@ -1,0 +1,52 @@
+/*
+ * pcl_ext_tiles: the fields of several inputs in one output.
+ */
+#include "input_fields.h"
+
+#include <pcl_ext/io/cloud_fields.h>
+#include <pcl_ext/tiling/point_file_chunks.h>
+
+#include <iostream>
+
+namespace pcl_ext {
+namespace apps {
+bool
+unionOfInputFields (const std::vector<std::string>& inputs, pcl::PCLPointCloud2& layout)
+{
+  std::vector<pcl::PCLPointCloud2> layouts;
+  for (const auto& input : inputs) {
+    tiling::PointFileChunks file;
+    file.open (input);
+    pcl::PCLPointCloud2 first;
+    file.read (1, first);
+    layouts.emplace_back();
+    layouts.back().fields = first.fields;
+    layouts.back().point_step = first.point_step;
+    std::string error;
+    if (!io::unionOfFields (layouts, layout, error)) {
+      std::cerr << "\nError: " << input
+                << " and the inputs before it cannot go into one "
+                << "output: " << error << ".\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool
+hasLayout (const pcl::PCLPointCloud2& cloud, const pcl::PCLPointCloud2& layout)
+{
+  if (cloud.point_step != layout.point_step ||
+      cloud.fields.size() != layout.fields.size())
+    return false;
+  for (std::size_t i = 0; i < cloud.fields.size(); ++i) {
+    const auto& a = cloud.fields[i];
+    const auto& b = layout.fields[i];
+    if (a.name != b.name || a.offset != b.offset || a.datatype != b.datatype ||
+        a.count != b.count)
+      return false;
+  }
+  return true;
+}
+} // namespace apps
+} // namespace pcl_ext
