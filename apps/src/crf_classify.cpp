@@ -104,6 +104,7 @@ main (int argc, char** argv)
   std::string model_path, input, output, png, classes_file, probability_field;
   bool truth = false;
   unsigned int threads = 0;
+  int draws = 0;
   pcl_ext::apps::CommandLine cl (
       "pcl_ext_crf_classify",
       "Classifies a cloud with a multi-scale CRF model (Lim "
@@ -122,6 +123,10 @@ main (int argc, char** argv)
   cl.addOption (
       "classes", classes_file, "class file mapping the input's labels (Oakland)");
   cl.addOption ("threads", threads, "threads (0: all cores)");
+  cl.addOption ("draws",
+                draws,
+                "over-segmentations averaged (0: the model's; 1: one draw, the "
+                "paper's)");
   cl.addOption ("probability_field",
                 probability_field,
                 "also write each point's probability of its class (float, 0 for "
@@ -146,6 +151,10 @@ main (int argc, char** argv)
   }
   pcl_ext::CrfSettings settings = model.getSettings();
   settings.threads = threads;
+  if (draws != 0)
+    settings.draws = draws;
+  if (!pcl_ext::checkCrfSettings (settings, "pcl_ext_crf_classify"))
+    return 1;
   model.setSettings (settings);
   pcl_ext::io::ClassMapping mapping;
   if (!classes_file.empty()) {
@@ -189,11 +198,13 @@ main (int argc, char** argv)
   timer.done (labels.size());
   const auto& st = model.getStatistics();
   std::printf (
-      "  super-voxels %.0f ms, features %.0f ms, inference %.0f ms (%zu super-voxels, "
-      "BP %d sweeps%s)\n",
+      "  super-voxels %.0f ms, features %.0f ms, inference %.0f ms (%d draw%s; the "
+      "first: %zu super-voxels; BP at most %d sweeps%s)\n",
       st.supervoxels_ms,
       st.features_ms,
       st.inference_ms,
+      model.getSettings().draws,
+      model.getSettings().draws == 1 ? "" : "s",
       st.supervoxels,
       st.iterations,
       st.converged ? ", converged" : ", not converged");

@@ -23,7 +23,7 @@ main (int argc, char** argv)
   double sigma = 1.0, noise = 0.0, min_radius = 0.5;
   int ground_reach = 3;
   int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200, knots = 2;
-  int rounds = 200, depth = 6;
+  int rounds = 200, depth = 6, draws = pcl_ext::CrfSettings().draws;
   double eta = 0.1;
   unsigned int threads = 0, seed = 1;
   bool no_balance = false;
@@ -83,6 +83,10 @@ main (int argc, char** argv)
   cl.addOption ("l", regional_edges, "regional edges per super-voxel");
   cl.addOption ("iterations", iterations, "maximum L-BFGS iterations");
   cl.addOption ("seed", seed, "seed of the super-voxel mid-points and local points");
+  cl.addOption ("draws",
+                draws,
+                "over-segmentations the model averages at classification (seeds seed, "
+                "seed + 1, ...); training uses the first");
   cl.addOption ("threads", threads, "threads (0: all cores)");
   cl.addSwitch (
       "no_balance", no_balance, "do not weight training nodes by class frequency");
@@ -180,6 +184,7 @@ main (int argc, char** argv)
   s.supervoxels.radius.min_radius = min_radius;
   s.supervoxels.adjacency = regional_edges;
   s.supervoxels.seed = seed;
+  s.draws = draws;
   s.local_edges = local_edges;
   s.max_training_iterations = iterations;
   s.threads = threads;

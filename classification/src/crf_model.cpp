@@ -103,6 +103,8 @@ checkCrfSettings (const CrfSettings& s, const char* caller)
     bad = "the number of regional neighbours l must be >= 0";
   else if (s.local_edges < 0)
     bad = "the number of local edges m must be >= 0";
+  else if (s.draws < 1 || s.draws > 64)
+    bad = "the number of draws must be in [1, 64]";
   else if (!(s.sigma > 0.0) || !std::isfinite (s.sigma))
     bad = "the prior's sigma must be positive and finite";
   else if (s.spline_knots < 1 || s.spline_knots > 64)
@@ -472,6 +474,7 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
   settings_.features.intensity = settings.features.intensity;
   trained_ = true;
   last_supervoxels_ = std::move (last);
+  last_draws_.clear();
   statistics_ = stats;
   return true;
 }
@@ -504,59 +507,107 @@ MultiscaleCrfModel::classify (const CrfInput& input,
                settings_.features.intensity ? "intensity" : "");
     return false;
   }
+  // Each draw of the super-voxels classified on its own (eq. 11), the points' class
+  // probabilities averaged over the draws.
   CrfStatistics stats;
-  crf::Graph graph;
-  Eigen::MatrixXf raw;
-  SupervoxelSet svs;
-  if (!crf::buildGraph (input, settings_, svs, raw, graph, stats))
-    return false;
-  crf::finishGraph (raw, weights_->mean, weights_->scale, graph);
-  if (weights_->node_model == CrfNodeModel::BoostedTrees) {
-    std::string error;
-    if (!crf::boostedNodeInputs (
-            weights_->boosters, class_ids_.size(), settings_.threads, graph, error)) {
-      PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::classify] %s.\n", error.c_str());
-      return false;
-    }
-  }
-  else
-    crf::expandFeatures (weights_->expansion, weights_->knots, graph);
-  auto t0 = std::chrono::steady_clock::now();
-  Eigen::MatrixXf marginals;
-  crf::beliefPropagation (
-      graph, *weights_, settings_, marginals, stats.iterations, stats.converged);
-  // Eq. 11: a point in several super-voxels takes the label maximising the product of
-  // their probabilities (summed logs, normalised into per-point probabilities).
   const std::size_t N = input.xyz->size();
   const Eigen::Index C = static_cast<Eigen::Index> (class_ids_.size());
+  Eigen::MatrixXd sum = Eigen::MatrixXd::Zero (static_cast<Eigen::Index> (N), C);
+  std::vector<char> covered (N, 0);
+  last_draws_.clear();
+  const std::size_t draws = static_cast<std::size_t> (settings_.draws);
+  std::vector<crf::Graph> graphs (draws);
+  std::vector<SupervoxelSet> sets (draws);
+  std::vector<CrfStatistics> st (draws);
+  std::vector<Eigen::MatrixXf> marginals (draws);
+  for (std::size_t d = 0; d < draws; ++d) {
+    CrfSettings draw = settings_;
+    draw.supervoxels.seed = settings_.supervoxels.seed + d;
+    Eigen::MatrixXf raw;
+    if (!crf::buildGraph (input, draw, sets[d], raw, graphs[d], st[d]))
+      return false;
+    crf::finishGraph (raw, weights_->mean, weights_->scale, graphs[d]);
+    if (weights_->node_model == CrfNodeModel::BoostedTrees) {
+      std::string error;
+      if (!crf::boostedNodeInputs (weights_->boosters,
+                                   class_ids_.size(),
+                                   settings_.threads,
+                                   graphs[d],
+                                   error)) {
+        PCL_ERROR ("[pcl_ext::MultiscaleCrfModel::classify] %s.\n", error.c_str());
+        return false;
+      }
+    }
+    else
+      crf::expandFeatures (weights_->expansion, weights_->knots, graphs[d]);
+  }
+  // The draws' belief propagations side by side, one thread each (the result of each
+  // does not depend on its threads): a small graph's sweeps run on one thread anyway.
+  const int threads = static_cast<int> (resolveThreadCount (settings_.threads));
+  const auto bp_start = std::chrono::steady_clock::now();
+#pragma omp parallel for num_threads(std::min(threads, settings_.draws))               \
+    schedule(dynamic, 1)
+  for (std::ptrdiff_t d = 0; d < static_cast<std::ptrdiff_t> (draws); ++d) {
+    crf::beliefPropagation (graphs[d],
+                            *weights_,
+                            settings_,
+                            marginals[d],
+                            st[d].iterations,
+                            st[d].converged);
+  }
+  stats.inference_ms = msSince (bp_start);
+  for (std::size_t d = 0; d < draws; ++d) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const SupervoxelSet& svs = sets[d];
+    // Eq. 11: a point in several super-voxels takes the label maximising the product
+    // of their probabilities (summed logs, normalised into per-point probabilities).
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t> (N); ++i) {
+      const std::size_t b = svs.membership_offsets[i],
+                        e = svs.membership_offsets[i + 1];
+      if (b == e)
+        continue;
+      Eigen::VectorXd logp = Eigen::VectorXd::Zero (C);
+      for (std::size_t k = b; k < e; ++k)
+        logp += marginals[d]
+                    .row (svs.membership[k])
+                    .transpose()
+                    .cast<double>()
+                    .cwiseMax (1e-30)
+                    .array()
+                    .log()
+                    .matrix();
+      const Eigen::VectorXd p = (logp.array() - logp.maxCoeff()).exp().matrix();
+      sum.row (i) += (p / p.sum()).transpose();
+      covered[static_cast<std::size_t> (i)] = 1;
+    }
+    stats.supervoxels_ms += st[d].supervoxels_ms;
+    stats.features_ms += st[d].features_ms;
+    stats.inference_ms += msSince (t0);
+    stats.iterations = std::max (stats.iterations, st[d].iterations);
+  }
+  stats.supervoxels = st[0].supervoxels;
+  stats.local_points = st[0].local_points;
+  stats.local_edges = st[0].local_edges;
+  stats.regional_edges = st[0].regional_edges;
+  stats.converged = std::all_of (
+      st.begin(), st.end(), [] (const CrfStatistics& x) { return x.converged; });
+  last_marginals_ = std::move (marginals[0]);
+  last_draws_ = std::move (sets);
   probabilities = Eigen::MatrixXf::Zero (static_cast<Eigen::Index> (N), C);
   labels.assign (N, 0);
-#pragma omp parallel for num_threads(                                                  \
-    static_cast <int> (resolveThreadCount(settings_.threads))) schedule(static)
-  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t> (N); ++i) {
-    const std::size_t b = svs.membership_offsets[i], e = svs.membership_offsets[i + 1];
-    if (b == e)
+  for (std::size_t i = 0; i < N; ++i) {
+    if (!covered[i])
       continue;
-    Eigen::VectorXd logp = Eigen::VectorXd::Zero (C);
-    for (std::size_t k = b; k < e; ++k)
-      logp += marginals.row (svs.membership[k])
-                  .transpose()
-                  .cast<double>()
-                  .cwiseMax (1e-30)
-                  .array()
-                  .log()
-                  .matrix();
+    const Eigen::Index row = static_cast<Eigen::Index> (i);
     Eigen::Index best;
-    const double mx = logp.maxCoeff (&best);
-    const Eigen::VectorXd p = (logp.array() - mx).exp().matrix();
-    probabilities.row (i) = (p / p.sum()).transpose().cast<float>();
+    sum.row (row).maxCoeff (&best);
+    probabilities.row (row) = (sum.row (row) / settings_.draws).cast<float>();
     labels[i] = class_ids_[best];
   }
-  stats.inference_ms = msSince (t0);
   stats.points = N;
   statistics_ = stats;
-  last_supervoxels_ = std::move (svs);
-  last_marginals_ = std::move (marginals);
+  last_supervoxels_ = last_draws_.front();
   return true;
 }
 } // namespace pcl_ext

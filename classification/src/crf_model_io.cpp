@@ -198,7 +198,7 @@ MultiscaleCrfModel::toText() const
       << num (r.noise) << ' ' << num (r.c1) << ' ' << num (r.c2) << ' '
       << num (r.epsilon) << ' ' << num (r.colour_weight) << ' ' << num (r.min_radius)
       << ' ' << num (r.max_radius) << ' ' << s.supervoxels.adjacency << ' '
-      << s.supervoxels.seed << '\n';
+      << s.supervoxels.seed << ' ' << s.draws << '\n';
   out << "local_edges " << s.local_edges << '\n';
   out << "ground " << num (s.features.up.x()) << ' ' << num (s.features.up.y()) << ' '
       << num (s.features.up.z()) << ' ' << num (s.features.ground_cell) << ' '
@@ -319,7 +319,12 @@ MultiscaleCrfModel::parseModel (const std::string& text, const std::string& sour
     if (!parseCrfMode (rd.word (1), s.mode))
       return rd.fail ("unknown mode '" + rd.word (1) + "' (node, crf or mcrf)");
     double v[12];
-    if (!rd.next ("supervoxels") || !rd.expect ("supervoxels", 14))
+    // 15 values; 14 in a model written before the draws (one draw).
+    if (!rd.next ("supervoxels") ||
+        !rd.expect ("supervoxels", rd.size() == 15 ? 14 : 15))
+      return false;
+    s.draws = 1;
+    if (rd.size() == 16 && !rd.integer (15, s.draws, 1, 64))
       return false;
     if (!rd.integer (1, r.initial_k, 3, 1 << 20) ||
         !rd.integer (3, r.max_iterations, 1, 1 << 20) ||

@@ -108,7 +108,11 @@ TEST (MultiscaleCrf, StreetTrainOnOneSeedTestOnAnother)
 
 TEST (MultiscaleCrf, ProbabilitiesFollowEquation11)
 {
-  MultiscaleCrfModel& m = trained (CrfMode::MultiscaleCrf);
+  // One draw of the super-voxels: eq. 11 on its marginals.
+  MultiscaleCrfModel m = trained (CrfMode::MultiscaleCrf);
+  pcl_ext::CrfSettings one = m.getSettings();
+  one.draws = 1;
+  m.setSettings (one);
   std::vector<std::uint32_t> labels;
   Eigen::MatrixXf prob;
   ASSERT_TRUE (m.classify (street (2).input, labels, prob));
@@ -132,6 +136,50 @@ TEST (MultiscaleCrf, ProbabilitiesFollowEquation11)
     logp.maxCoeff (&best);
     EXPECT_EQ (labels[i], m.getClassLabels()[best]);
   }
+}
+
+TEST (MultiscaleCrf, DrawsAverageTheProbabilitiesOfOneDrawPerSeed)
+{
+  // Three draws: each point's probabilities are the mean of those of three one-draw
+  // classifications with seeds s, s + 1, s + 2, and its class the most probable.
+  const MultiscaleCrfModel& trained_model = trained (CrfMode::MultiscaleCrf);
+  MultiscaleCrfModel m = trained_model;
+  pcl_ext::CrfSettings s = m.getSettings();
+  s.draws = 3;
+  m.setSettings (s);
+  std::vector<std::uint32_t> labels;
+  Eigen::MatrixXf prob;
+  ASSERT_TRUE (m.classify (street (2).input, labels, prob));
+  ASSERT_EQ (m.getDrawSupervoxels().size(), 3u);
+  Eigen::MatrixXf mean = Eigen::MatrixXf::Zero (prob.rows(), prob.cols());
+  std::vector<std::vector<std::uint32_t>> single (3);
+  for (int d = 0; d < 3; ++d) {
+    MultiscaleCrfModel one = trained_model;
+    pcl_ext::CrfSettings o = s;
+    o.draws = 1;
+    o.supervoxels.seed = s.supervoxels.seed + static_cast<std::uint64_t> (d);
+    one.setSettings (o);
+    Eigen::MatrixXf p;
+    ASSERT_TRUE (one.classify (street (2).input, single[d], p));
+    mean += p / 3.f;
+    // The draws differ: their super-voxels do.
+    EXPECT_EQ (one.getSupervoxels().size(), m.getDrawSupervoxels()[d].size());
+  }
+  EXPECT_NE (single[0], single[1]);
+  EXPECT_LT ((prob - mean).cwiseAbs().maxCoeff(), 1e-5f);
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    Eigen::Index best;
+    prob.row (static_cast<Eigen::Index> (i)).maxCoeff (&best);
+    EXPECT_EQ (labels[i], m.getClassLabels()[best]);
+    changed += labels[i] != single[0][i];
+  }
+  EXPECT_GT (changed, 0u);
+  // The averaged draws are at least as accurate as the first draw alone.
+  pcl_ext::ClassificationMetrics averaged, first;
+  pcl_ext::evaluateClassification (labels, street (2).labels, averaged);
+  pcl_ext::evaluateClassification (single[0], street (2).labels, first);
+  EXPECT_GE (averaged.overall_accuracy, first.overall_accuracy - 0.002);
 }
 
 TEST (MultiscaleCrf, DeterministicForAnyThreadCount)
@@ -206,12 +254,20 @@ TEST (MultiscaleCrf, MalformedModelFilesAreRefused)
       {"no expansion line", replaced ("node_expansion linear 2\n", "")},
       {"no edge scale", replaced ("edge_scale ", "edge_scales ")},
       {"negative edge scale", replaced ("edge_scale ", "edge_scale -")},
+      {"no draws", replaced (" 4 1 3\nlocal_edges", " 4 1 0\nlocal_edges")},
+      {"too many draws", replaced (" 4 1 3\nlocal_edges", " 4 1 65\nlocal_edges")},
   };
   for (const auto& [name, text] : cases) {
     MultiscaleCrfModel m;
     EXPECT_FALSE (m.parseModel (text, name)) << name;
     EXPECT_FALSE (m.isTrained()) << name;
   }
+  // A model written before the draws (14 values on the super-voxels line) has one.
+  MultiscaleCrfModel older;
+  ASSERT_TRUE (older.parseModel (replaced (" 4 1 3\nlocal_edges", " 4 1\nlocal_edges"),
+                                 "older"));
+  EXPECT_EQ (older.getSettings().draws, 1);
+  EXPECT_EQ (trained (CrfMode::MultiscaleCrf).getSettings().draws, 3);
   MultiscaleCrfModel m;
   EXPECT_FALSE (m.loadModel (tempPath ("no_such_model.txt")));
   // A good model stays when a bad one is loaded over it.

@@ -277,7 +277,8 @@ public:
       std::cerr << "Error: the classification of tile " << tile.tile << " failed.\n";
       return false;
     }
-    needed_margin_ = neededMargin (tile, model.getSupervoxels());
+    for (const auto& draw : model.getDrawSupervoxels())
+      needed_margin_ = std::max (needed_margin_, neededMargin (tile, draw));
     return true;
   }
 

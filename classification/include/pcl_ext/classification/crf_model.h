@@ -112,6 +112,14 @@ struct CrfSettings {
    * defaultCrfSupervoxelParameters; 0: the paper's). */
   SupervoxelParameters supervoxels = defaultCrfSupervoxelParameters();
   int local_edges = 4; ///< m, local edges per super-voxel (paper: 4); >= 0
+  /** Over-segmentations averaged at classification (pcl_ext addition): the super-voxels
+   * are drawn with seeds seed, seed + 1, ..., each draw is classified (its graph,
+   * belief propagation, eq. 11) and each point takes the class of highest mean
+   * probability over the draws. Training uses the draw of seed. A single draw's labels
+   * depend on where its mid-points fell; averaging draws removes most of that
+   * (docs/lim_suter.md has the cross-validation). [1, 64]; a model file without it
+   * has 1. */
+  int draws = 3;
   /** Colour / intensity are decided at training. features.scales: empty (the default)
    * is the paper's single-scale set; defaultFeatureScales() adds the multi-scale
    * features (pcl_ext addition, at a much higher feature cost; not the default, as its
@@ -178,6 +186,10 @@ struct CrfStatistics {
  * shape, angle, height and dimension features over each super-voxel and its regional
  * neighbours are added (pcl_ext addition, after CGAL's Cluster_mean_of_feature). The
  * model file stores the feature set, and a model of another set is refused.
+ *
+ * Draws (CrfSettings::draws, pcl_ext addition): classify() averages the per-point
+ * probabilities of several draws of the super-voxels (seeds seed, seed + 1, ...), each
+ * classified on its own; train() uses the draw of seed.
  *
  * Node model (CrfSettings::node_model, pcl_ext addition): the paper's logistic
  * regression by default, or gradient-boosted trees (XGBoost), one booster for the
@@ -308,14 +320,24 @@ public:
   std::vector<std::string>
   getFeatureNames () const;
 
-  /** \brief The super-voxels of the last train() (its last input) or classify(). */
+  /** \brief The super-voxels of the last train() (its last input) or classify() (its
+   * first draw). */
   const SupervoxelSet&
   getSupervoxels () const
   {
     return last_supervoxels_;
   }
 
-  /** \brief Super-voxel marginals of the last classify() (rows: super-voxels). */
+  /** \brief The super-voxels of every draw of the last classify() (CrfSettings::draws).
+   */
+  const std::vector<SupervoxelSet>&
+  getDrawSupervoxels () const
+  {
+    return last_draws_;
+  }
+
+  /** \brief Super-voxel marginals of the last classify()'s first draw (rows: its
+   * super-voxels). */
   const Eigen::MatrixXf&
   getSupervoxelProbabilities () const
   {
@@ -360,6 +382,7 @@ private:
   std::unique_ptr<Weights> weights_;
   bool trained_ = false;
   SupervoxelSet last_supervoxels_;
+  std::vector<SupervoxelSet> last_draws_;
   Eigen::MatrixXf last_marginals_;
   CrfStatistics statistics_;
 };
