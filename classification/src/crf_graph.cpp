@@ -15,14 +15,6 @@
 namespace pcl_ext {
 namespace crf {
 namespace {
-double
-msSince (std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now() -
-                                                    t0)
-      .count();
-}
-
 /** m members of \a sv other than its mid-point, drawn with a stream seeded by the
  * mid-point's position, so that the choice depends neither on the order super-voxels
  * are processed in nor on the rest of the cloud (a tile draws the whole cloud's). */

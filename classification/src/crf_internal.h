@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -262,5 +263,18 @@ fitEdgeScale (const Graph& graph,
               const MultiscaleCrfModel::Weights& w,
               const std::vector<double>& node_weights,
               const CrfSettings& settings);
+/** Milliseconds since \a t0. */
+inline double
+msSince (std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now() -
+                                                    t0)
+      .count();
+}
+
+/** Whether \a in is a cloud train() or classify() (\a caller) can read; PCL_ERROR when
+ * not. */
+bool
+checkInput (const CrfInput& in, const char* caller);
 } // namespace crf
 } // namespace pcl_ext
