@@ -19,7 +19,8 @@ main (int argc, char** argv)
 {
   std::string output, classes_file,
       mode_text = "mcrf", scales_text = "none", expansion_text = "linear",
-      node_model_text = "logistic", ground_text = "lowest_in_block";
+      node_model_text = "logistic", ground_text = "lowest_in_block",
+      training_text = "staged";
   double sigma = 1.0, noise = 0.0, min_radius = 0.5;
   int ground_reach = 3;
   int max_k = 60, local_edges = 4, regional_edges = 4, iterations = 200, knots = 2;
@@ -50,6 +51,12 @@ main (int argc, char** argv)
                 node_model_text,
                 "classifier of the node potentials: logistic (the paper's "
                 "multinomial logistic regression) or boosted_trees (XGBoost)");
+  cl.addOption ("training",
+                training_text,
+                "staged (node weights, then edge weights on the node fit's "
+                "probabilities, then the edges' weight at inference) or "
+                "pseudo_likelihood (the paper's eq. 9: all weights at once given the "
+                "neighbours' true labels)");
   cl.addOption ("rounds", rounds, "boosting rounds (boosted_trees)");
   cl.addOption ("depth", depth, "maximum tree depth (boosted_trees)");
   cl.addOption ("eta", eta, "learning rate of the boosting (boosted_trees)");
@@ -112,15 +119,18 @@ main (int argc, char** argv)
   pcl_ext::CrfNodeExpansion expansion;
   pcl_ext::CrfNodeModel node_model;
   pcl_ext::GroundEstimate ground;
+  pcl_ext::CrfTraining training;
   if (output.empty() || inputs.empty() || !pcl_ext::parseCrfMode (mode_text, mode) ||
       !pcl_ext::parseCrfNodeModel (node_model_text, node_model) ||
       !pcl_ext::parseCrfNodeExpansion (expansion_text, expansion) ||
-      !pcl_ext::parseGroundEstimate (ground_text, ground)) {
+      !pcl_ext::parseGroundEstimate (ground_text, ground) ||
+      !pcl_ext::parseCrfTraining (training_text, training)) {
     std::cerr
         << "pcl_ext_crf_train: need -o model.txt, at least one training cloud, a mode "
            "among node, crf, mcrf, a node model among boosted_trees, logistic, an "
-           "expansion among linear, spline, spline_products "
-           "and a ground among lowest_in_block, opening (see -h)\n";
+           "expansion among linear, spline, spline_products, a ground among "
+           "lowest_in_block, opening and a training among staged, pseudo_likelihood "
+           "(see -h)\n";
     return 1;
   }
   if (!pcl_ext::io::checkWritable (output))
@@ -159,6 +169,7 @@ main (int argc, char** argv)
   s.sigma = sigma;
   s.node_expansion = expansion;
   s.node_model = node_model;
+  s.training = training;
   s.boost_rounds = rounds;
   s.boost_depth = depth;
   s.boost_eta = eta;

@@ -95,6 +95,24 @@ parseCrfNodeModel (const std::string& text, CrfNodeModel& model)
                       model);
 }
 
+const char*
+crfTrainingName (CrfTraining training)
+{
+  return training == CrfTraining::Staged ? "staged" : "pseudo_likelihood";
+}
+
+bool
+parseCrfTraining (const std::string& text, CrfTraining& training)
+{
+  if (text == "staged")
+    training = CrfTraining::Staged;
+  else if (text == "pseudo_likelihood")
+    training = CrfTraining::PseudoLikelihood;
+  else
+    return false;
+  return true;
+}
+
 bool
 checkCrfSettings (const CrfSettings& s, const char* caller)
 {
@@ -127,6 +145,10 @@ checkCrfSettings (const CrfSettings& s, const char* caller)
            s.boost_depth > 32 || !(s.boost_eta > 0.0 && s.boost_eta <= 1.0))
     bad = "the boosted trees need rounds in [1, 10000], a depth in [1, 32] and a "
           "learning rate in (0, 1]";
+  else if (s.node_model == CrfNodeModel::BoostedTrees &&
+           s.training == CrfTraining::PseudoLikelihood)
+    bad = "the paper's pseudo-likelihood training fits logistic node weights, not "
+          "boosted trees";
   else if (s.node_model == CrfNodeModel::BoostedTrees &&
            s.node_expansion != CrfNodeExpansion::Linear)
     bad = "the spline expansions are inputs of the logistic node model, not of the "
@@ -410,7 +432,20 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
                                     theta,
                                     converged,
                                     value);
-  if (settings.mode != CrfMode::NodeOnly) {
+  const bool paper = settings.training == CrfTraining::PseudoLikelihood &&
+                     settings.mode != CrfMode::NodeOnly;
+  if (paper) {
+    // Eq. 9: every weight at once, each node scored given its neighbours' true labels
+    // (unlabelled neighbours send nothing), from the node-only fit.
+    Eigen::MatrixXd labels = Eigen::MatrixXd::Zero (
+        static_cast<Eigen::Index> (C), static_cast<Eigen::Index> (graph.size()));
+    for (std::size_t n = 0; n < graph.size(); ++n)
+      if (graph.labels[n] >= 0)
+        labels (graph.labels[n], static_cast<Eigen::Index> (n)) = 1.0;
+    iterations += crf::trainWeights (
+        graph, node_weights, labels, C, settings, false, theta, converged, value);
+  }
+  else if (settings.mode != CrfMode::NodeOnly) {
     // Stage 2: the edge weights, with the node weights held at stage 1. Each node hears
     // from its neighbours the message BP's first sweep sends, computed from their
     // stage-1 class probabilities (stacked pseudo-likelihood). The node weights stay
@@ -449,7 +484,7 @@ MultiscaleCrfModel::train (const std::vector<CrfInput>& inputs,
       theta, C, static_cast<std::size_t> (Dn), static_cast<std::size_t> (D), w);
   // Stage 3: the weight of the edges against the nodes at inference (see crf_model.h).
   w.edge_scale = settings.edge_scale > 0.0 ? settings.edge_scale : 1.0;
-  if (settings.mode != CrfMode::NodeOnly && settings.edge_scale == 0.0)
+  if (settings.mode != CrfMode::NodeOnly && settings.edge_scale == 0.0 && !paper)
     w.edge_scale = crf::fitEdgeScale (graph, w, node_weights, settings);
   stats.training_ms = crf::msSince (t0);
   stats.iterations = iterations;

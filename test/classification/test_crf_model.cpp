@@ -416,6 +416,34 @@ TEST (MultiscaleCrf, BadClassificationInput)
   EXPECT_NE (labels[11], 0u);
 }
 
+TEST (MultiscaleCrf, PaperTrainingFitsEveryWeightAtOnceWithoutAnEdgeScale)
+{
+  // Eq. 9: the pseudo-likelihood of the model inference runs, every weight at once
+  // given the neighbours' true labels; the edges' weight at inference stays 1.
+  MultiscaleCrfModel paper;
+  pcl_ext::CrfSettings s = paper.getSettings();
+  s.training = pcl_ext::CrfTraining::PseudoLikelihood;
+  paper.setSettings (s);
+  ASSERT_TRUE (paper.train ({street (1).input}, {street (1).labels}));
+  EXPECT_NE (paper.toText().find ("\nedge_scale 1\n"), std::string::npos);
+  const std::string staged = trained (CrfMode::MultiscaleCrf).toText();
+  EXPECT_NE (paper.toText(), staged);
+  pcl_ext::ClassificationMetrics metrics;
+  const double oa = accuracy (paper, street (2), &metrics);
+  std::printf ("street mcrf, paper's training: overall accuracy %.4f, macro F1 %.4f\n",
+               oa,
+               metrics.macro_f1);
+  EXPECT_GE (oa, 0.95);
+  // Boosted trees are not the paper's node weights.
+  s.node_model = pcl_ext::CrfNodeModel::BoostedTrees;
+  EXPECT_FALSE (pcl_ext::checkCrfSettings (s, "test"));
+  pcl_ext::CrfTraining t;
+  EXPECT_TRUE (pcl_ext::parseCrfTraining ("pseudo_likelihood", t));
+  EXPECT_EQ (t, pcl_ext::CrfTraining::PseudoLikelihood);
+  EXPECT_STREQ (pcl_ext::crfTrainingName (t), "pseudo_likelihood");
+  EXPECT_FALSE (pcl_ext::parseCrfTraining ("joint", t));
+}
+
 // Both node models: the paper's logistic regression (the default) and the boosted
 // trees, each the same model for one and two threads, and the boosted trees' file
 // refused when its boosters are damaged or missing.

@@ -76,6 +76,27 @@ crfNodeModelName (CrfNodeModel model);
 bool
 parseCrfNodeModel (const std::string& text, CrfNodeModel& model);
 
+/** \brief How the weights are trained (see MultiscaleCrfModel, "Training").
+ *
+ * Staged (pcl_ext's, the default): the node weights alone, then the edge weights by a
+ * stacked pseudo-likelihood with the node weights held and the neighbours' stage-1
+ * class probabilities as context, then the edges' weight at inference (stage 3).
+ * PseudoLikelihood (the paper's eq. 9): every weight at once, maximising the penalised
+ * pseudo-likelihood with the neighbours' true labels as context, and the model that
+ * inference runs is that one (edge weight 1 at inference, no stage 3). */
+enum class CrfTraining {
+  Staged,          ///< pcl_ext's three stages
+  PseudoLikelihood ///< the paper's eq. 9, all weights jointly
+};
+
+/** \brief "staged", "pseudo_likelihood". */
+const char*
+crfTrainingName (CrfTraining training);
+
+/** \brief Parses "staged", "pseudo_likelihood"; false for anything else. */
+bool
+parseCrfTraining (const std::string& text, CrfTraining& training);
+
 /** \brief A cloud as the CRF sees it: xyz (non-finite points are skipped), normalised
  * RGB and intensity per point (each empty when absent). */
 struct CrfInput {
@@ -134,6 +155,9 @@ struct CrfSettings {
    * BoostedTrees gave the better node-only model but the worse mCRF in cross-validation
    * between Oakland chunks (docs/lim_suter.md has the figures of both). */
   CrfNodeModel node_model = CrfNodeModel::Logistic;
+  /** How the weights are trained (a training setting, not stored in the model file);
+   * PseudoLikelihood needs the logistic node model. */
+  CrfTraining training = CrfTraining::Staged;
   int boost_rounds = 200; ///< boosting rounds (BoostedTrees); [1, 10000]
   int boost_depth = 6;    ///< maximum tree depth (BoostedTrees); [1, 32]
   double boost_eta = 0.1; ///< learning rate (BoostedTrees); (0, 1]
@@ -210,6 +234,11 @@ struct CrfStatistics {
  * softplus, which keeps every edge associative: the text's linear form let edges turn
  * repulsive on feature combinations unseen in training, and loopy BP then collapsed
  * whole classes on real data.
+ *
+ * Training (CrfSettings::training): CrfTraining::PseudoLikelihood is the paper's eq. 9
+ * as printed (every weight at once, each node given its neighbours' true labels, edge
+ * weight 1 at inference); it collapses on Oakland in cross-validation
+ * (docs/lim_suter.md), so the default is pcl_ext's staged fit, described here.
  *
  * Training (eq. 9) maximises a pseudo-likelihood, not the likelihood, whose partition
  * function over a loopy graph is intractable, minus |lambda|^2 / (2 sigma^2), by L-BFGS
