@@ -55,26 +55,6 @@ printMetrics (const pcl_ext::ClassificationMetrics& m)
       m.ignored_points);
 }
 
-/** The ASPRS code of each class id of the model (1, unclassified, for the classes
- * without a code, which are printed, and for ids the model does not name). */
-std::map<std::uint32_t, std::uint32_t>
-asprsCodes (const std::map<std::uint32_t, std::string>& names)
-{
-  std::map<std::uint32_t, std::uint32_t> codes;
-  std::string unmapped;
-  for (const auto& [id, name] : names) {
-    const int code = pcl_ext::apps::asprsClass (name);
-    codes[id] = code >= 0 ? static_cast<std::uint32_t> (code) : 1u;
-    if (code < 0)
-      unmapped += (unmapped.empty() ? "" : ", ") + name;
-    std::cout << "  class " << id << " " << name << " -> ASPRS " << codes[id] << '\n';
-  }
-  if (!unmapped.empty())
-    std::cout << "  no ASPRS code for " << unmapped
-              << ": written as 1 (unclassified) in Classification\n";
-  return codes;
-}
-
 /** The points of each class of the model (and those left unlabelled, non-finite). */
 void
 printClassCounts (const std::vector<std::uint32_t>& labels,
@@ -225,7 +205,7 @@ main (int argc, char** argv)
   }
   printClassCounts (labels, model.getClassNames());
   if (result.asprs()) {
-    const auto codes = asprsCodes (model.getClassNames());
+    const auto codes = pcl_ext::apps::crfAsprsCodes (model.getClassNames());
     std::vector<std::uint32_t> asprs (labels.size(), 1);
     for (std::size_t i = 0; i < labels.size(); ++i)
       if (const auto it = codes.find (labels[i]); it != codes.end())

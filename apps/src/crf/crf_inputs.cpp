@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <exception>
+#include <iostream>
 
 namespace pcl_ext {
 namespace apps {
@@ -57,15 +58,27 @@ readCrfAttributes (const pcl::PCLPointCloud2& blob,
   }
 }
 
-ResultField
-crfClassField (bool asprs)
+std::map<std::uint32_t, std::uint32_t>
+crfAsprsCodes (const std::map<std::uint32_t, std::string>& names)
 {
-  if (!asprs)
-    return ResultField ("crf_class",
-                        "class id (1.. in the model's order)",
-                        "",
-                        "pcl_ext_tiles writes the class ids only; for ASPRS codes in "
-                        "the LAS Classification, run pcl_ext_crf_classify");
+  std::map<std::uint32_t, std::uint32_t> codes;
+  std::string unmapped;
+  for (const auto& [id, name] : names) {
+    const int code = asprsClass (name);
+    codes[id] = code >= 0 ? static_cast<std::uint32_t> (code) : 1u;
+    if (code < 0)
+      unmapped += (unmapped.empty() ? "" : ", ") + name;
+    std::cout << "  class " << id << " " << name << " -> ASPRS " << codes[id] << '\n';
+  }
+  if (!unmapped.empty())
+    std::cout << "  no ASPRS code for " << unmapped
+              << ": written as 1 (unclassified) in Classification\n";
+  return codes;
+}
+
+ResultField
+crfClassField ()
+{
   return ResultField (
       "crf_class",
       "class id (1.. in the model's order)",

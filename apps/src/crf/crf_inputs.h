@@ -11,6 +11,8 @@
 
 #include <pcl/PCLPointCloud2.h>
 
+#include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -25,10 +27,10 @@ struct CrfCloud {
   std::vector<std::uint32_t> labels; ///< empty when the file has no labels
 };
 
-/** \brief The field the CRF's classes are written to (`crf_class`, -output_field), with
- * -asprs offered when \a asprs (otherwise refused with the reason). */
+/** \brief The field the CRF's classes are written to (`crf_class`, -output_field), and
+ * -asprs (ASPRS codes in a LAS output's Classification, by class name). */
 ResultField
-crfClassField (bool asprs = true);
+crfClassField ();
 
 /** \brief The CRF's colour (rgb / rgba normalised to r, g, b over their sum; a third
  * each for black) and intensity (0 where not finite) of the points of \a blob, into
@@ -38,6 +40,12 @@ void
 readCrfAttributes (const pcl::PCLPointCloud2& blob,
                    std::vector<Eigen::Vector3f>* colours,
                    std::vector<float>* intensity);
+
+/** \brief The ASPRS code of each class id of a model (by its name, asprsClass; 1,
+ * unclassified, for the classes without a code), each printed on stdout with the
+ * classes left at 1. */
+std::map<std::uint32_t, std::uint32_t>
+crfAsprsCodes (const std::map<std::uint32_t, std::string>& names);
 
 /** \brief Read a point file of any format io::loadPointFile reads (x y z, optional
  * rgb/rgba, intensity, label) or an Oakland file (.xyz_label_conf; labels mapped with

@@ -108,13 +108,26 @@ public:
   ResultField
   makeResultField () const override
   {
-    return crfClassField (false);
+    return crfClassField();
   }
 
   tiling::MergedResults::Kind
   getKind () const override
   {
     return tiling::MergedResults::Kind::PerPoint;
+  }
+
+  /** The codes by the model's class names (crfAsprsCodes, printed the first time). */
+  bool
+  toAsprs (std::vector<std::uint32_t>& values) override
+  {
+    if (asprs_.empty())
+      asprs_ = crfAsprsCodes (model_.getClassNames());
+    for (auto& v : values) {
+      const auto it = asprs_.find (v);
+      v = it != asprs_.end() ? it->second : 1u;
+    }
+    return true;
   }
 
   NeighbourhoodReach
@@ -338,6 +351,7 @@ private:
   std::string model_path_;
   MultiscaleCrfModel model_;
   double needed_margin_ = 0.0;
+  std::map<std::uint32_t, std::uint32_t> asprs_;
 };
 } // namespace
 

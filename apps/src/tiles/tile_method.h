@@ -118,6 +118,15 @@ public:
     return true;
   }
 
+  /** \brief With -asprs (when the method's result field offers it): \a values, the
+   * merged results of a chunk's points, replaced by their ASPRS codes. \return false
+   * when the method has none */
+  virtual bool
+  toAsprs (std::vector<std::uint32_t>& /*values*/)
+  {
+    return false;
+  }
+
   /** \brief After estimate() or run() on a tile: the margin around the tile's core
    * that its result needed, measured on what it computed (0: the checks of getReach()
    * are enough). A tile whose margin was narrower is loaded again with this margin and

@@ -411,7 +411,7 @@ mergeStep (const tiling::TilePlan& plan,
     TileOutputs tile_outputs (output, grid, plan.origin, like_las);
     io::LasWriter writer;
     pcl::PCLPointCloud2 chunk, whole;
-    std::vector<std::uint32_t> values;
+    std::vector<std::uint32_t> values, codes;
     std::uint64_t points = 0;
     // One file per tile: a pass over the inputs for as many tiles as files may be
     // open at once (all of them, mostly).
@@ -440,6 +440,12 @@ mergeStep (const tiling::TilePlan& plan,
         }
         if (!field.attach (chunk, values))
           return false;
+        if (field.asprs()) {
+          codes = values;
+          if (!method.toAsprs (codes) ||
+              !io::setLabelField (chunk, "classification", codes))
+            return false;
+        }
         if (per_tile) {
           if (!tile_outputs.write (chunk, pass_first, pass_first + tiles_per_pass))
             return false;
