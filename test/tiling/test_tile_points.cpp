@@ -61,3 +61,34 @@ TEST (TilePoints, BrokenFilesAreRefused)
   EXPECT_FALSE (unwritable.finish());
   testing::internal::GetCapturedStderr();
 }
+
+TEST (TilePoints, AttributesFollowThePointsAndBrokenOnesAreRefused)
+{
+  const std::string dir = freshFolder ("tile_attributes");
+  {
+    pcl_ext::tiling::TilePointWriter writer (dir, 2, 3, 2);
+    for (std::uint64_t i = 0; i < 10; ++i) {
+      const float values[2] = {float (i), -float (i)};
+      ASSERT_TRUE (writer.add (i % 2, {i, 0, 0, 0, 0}, values));
+    }
+    ASSERT_TRUE (writer.finish());
+  }
+  std::vector<TilePoint> points;
+  std::vector<float> values;
+  ASSERT_TRUE (pcl_ext::tiling::readTilePoints (dir, 1, points));
+  ASSERT_TRUE (pcl_ext::tiling::readTileAttributes (dir, 1, 2, values));
+  ASSERT_EQ (values.size(), 2 * points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    EXPECT_EQ (values[2 * i], float (points[i].index));
+    EXPECT_EQ (values[2 * i + 1], -float (points[i].index));
+  }
+  ASSERT_TRUE (pcl_ext::tiling::readTileAttributes (dir, 1, 0, values));
+  EXPECT_TRUE (values.empty()); // no attributes asked: none read
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (pcl_ext::tiling::readTileAttributes (dir, 7, 2, values)); // missing
+  std::ofstream (pcl_ext::tiling::tileAttributesPath (dir, 0), std::ios::binary)
+      << "abcde";
+  EXPECT_FALSE (pcl_ext::tiling::readTileAttributes (dir, 0, 2, values)); // 5 bytes
+  EXPECT_TRUE (values.empty());
+  testing::internal::GetCapturedStderr();
+}

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <random>
 
@@ -149,4 +150,23 @@ TEST (TileResults, TilesNotRunAreFound)
   EXPECT_EQ (pcl_ext::tiling::describeTileStart (dir, 2), "");
   EXPECT_EQ (pcl_ext::tiling::findTilesNotDone (dir, 5),
              (std::vector<std::size_t>{0, 4}));
+}
+
+TEST (TileResults, TileValuesReadBackWithNonFiniteOnesAndBrokenFilesRefused)
+{
+  const std::string dir = freshFolder ("tile_values");
+  const std::vector<float> saved{1.5f, std::numeric_limits<float>::quiet_NaN(), -2.f};
+  ASSERT_TRUE (pcl_ext::tiling::saveTileValues (dir, 3, "noise_rms", saved));
+  std::vector<float> values;
+  ASSERT_TRUE (pcl_ext::tiling::loadTileValues (dir, 3, "noise_rms", values));
+  ASSERT_EQ (values.size(), 3u);
+  EXPECT_EQ (values[0], 1.5f);
+  EXPECT_TRUE (std::isnan (values[1])); // kept, unlike nthOfTileValues
+  EXPECT_EQ (values[2], -2.f);
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (pcl_ext::tiling::loadTileValues (dir, 4, "noise_rms", values));
+  EXPECT_TRUE (values.empty());
+  std::ofstream (dir + "/tile_5.noise_rms", std::ios::binary) << "abcdef";
+  EXPECT_FALSE (pcl_ext::tiling::loadTileValues (dir, 5, "noise_rms", values));
+  testing::internal::GetCapturedStderr();
 }

@@ -226,13 +226,12 @@ writeNumber (double v, std::uint8_t datatype, std::uint8_t* out)
   }
 }
 
+/** The field \a name of \a cloud (pcl::getFieldIndex), or null. */
 const pcl::PCLPointField*
 findField (const pcl::PCLPointCloud2& cloud, const std::string& name)
 {
-  for (const auto& f : cloud.fields)
-    if (f.name == name)
-      return &f;
-  return nullptr;
+  const int index = pcl::getFieldIndex (cloud, name);
+  return index < 0 ? nullptr : &cloud.fields[static_cast<std::size_t> (index)];
 }
 } // namespace
 
