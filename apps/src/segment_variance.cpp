@@ -162,10 +162,14 @@ main (int argc, char** argv)
         *cloud, pcl_ext::visualization::colourByLabel (ids))});
     view.legend.push_back (
         {"unsegmented", pcl_ext::visualization::colourByLabel ({0u}).front()});
-    if (!intersections.empty())
+    // With -intersections: the intersection points in black, larger, on top of the
+    // segments (the re-integration alone computes them too, but they are not asked
+    // for).
+    const bool show_intersections =
+        !intersections_path.empty() && !intersections.empty();
+    if (show_intersections)
       view.legend.push_back ({"local intersection", {0, 0, 0}});
-    // Intersection points in black, larger, on top of the segments.
-    if (!intersections.empty())
+    if (show_intersections)
       view.layers.push_back (
           {pcl_ext::visualization::makeColouredCloud (
                intersections,

@@ -33,10 +33,17 @@ public:
   {
     if (!options_.valid (cl) || !checkClassification())
       return false;
+    if (!cl.given ("reintegrate") && options_.intersections_path.empty() &&
+        options_.reintegrate) {
+      // Section 4 by default in pcl_ext_segment_variance; not yet tile by tile.
+      std::cout << "Note: pcl_ext_tiles segment_variance runs sections 2 and 3 (as "
+                   "pcl_ext_segment_variance -no_reintegrate): section 4's "
+                   "re-integration does not run tile by tile yet.\n";
+      options_.reintegrate = false;
+    }
     if (options_.intersects()) {
       std::cerr << "Error: pcl_ext_tiles segment_variance cannot run section 4 (the "
-                   "local intersections and -reintegrate, also on with -preset "
-                   "derived) yet: give -no_reintegrate, or run "
+                   "local intersections and -reintegrate) yet: run "
                    "pcl_ext_segment_variance.\n";
       return false;
     }

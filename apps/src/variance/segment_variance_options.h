@@ -27,7 +27,8 @@ struct SegmentVarianceOptions {
   double max_distance_factor = 3.0;
   double parallel_angle = 10.0; ///< degrees
   std::string intersections_path;
-  bool reintegrate = false; ///< after valid(): -reintegrate or -preset derived
+  bool reintegrate =
+      false; ///< after valid(): on unless -no_reintegrate or -preset paper
   bool keep_out = false;
   VarianceClassificationOptions classification;
 
@@ -59,11 +60,12 @@ struct SegmentVarianceOptions {
         "reintegrate",
         reintegrate,
         "put edge and boundary points into the segment whose local plane they fit "
-        "(section 4) before writing the output (on with -preset derived)");
+        "(section 4) before writing the output (the default; off with -preset "
+        "paper)");
     cl.addSwitch ("no_reintegrate",
                   keep_out,
-                  "with -preset derived: leave the edge and boundary points out of the "
-                  "segments (section 3 alone)");
+                  "leave the edge and boundary points out of the segments (section 3 "
+                  "alone, as -preset paper)");
     cl.addOption (
         "parallel_angle",
         parallel_angle,
@@ -105,10 +107,10 @@ struct SegmentVarianceOptions {
       std::cerr << "Error: give -reintegrate or -no_reintegrate, not both.\n";
       return false;
     }
-    // Section 4's re-integration with -preset derived: it keeps in the segments the
-    // crease and border bands the classification leaves out (docs/belton_lichti.md has
-    // the figures).
-    reintegrate = reintegrate || (!keep_out && classification.preset == "derived");
+    // Section 4's re-integration unless the paper's settings are asked for: it keeps in
+    // the segments the crease and border bands the classification leaves out
+    // (docs/belton_lichti.md has the figures).
+    reintegrate = reintegrate || (!keep_out && classification.preset != "paper");
     return true;
   }
 

@@ -35,10 +35,10 @@ struct VarianceClassificationOptions {
     cl.addOption (
         "preset",
         preset,
-        "'paper': the paper's settings (the defaults); 'derived': the noise "
-        "estimated from the cloud and removed, the curvature threshold at the "
-        "median curvature and, when segmenting, section 4's re-integration; the "
-        "other options still override them");
+        "'paper': the paper's settings (when segmenting, no re-integration); "
+        "'derived': the noise estimated from the cloud and removed and the "
+        "curvature threshold at the median curvature; the other options still "
+        "override them");
     cl.addSwitch ("v",
                   verbose,
                   "print the noise and spacing estimated from the cloud and the "
@@ -48,7 +48,8 @@ struct VarianceClassificationOptions {
                   "curvature (eq. 4) threshold; 0: factor * median curvature");
     cl.addOption ("curvature_factor",
                   curvature_factor,
-                  "multiple of the median curvature when the threshold is 0");
+                  "multiple of the median curvature when the threshold is 0 "
+                  "(-preset derived: 1)");
     cl.addOption ("variance_threshold",
                   variance_threshold,
                   "variance of curvature tolerance (eq. 5)");
