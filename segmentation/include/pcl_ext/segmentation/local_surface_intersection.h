@@ -15,6 +15,7 @@
 #include <pcl/point_types.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace pcl_ext {
@@ -295,6 +296,8 @@ protected:
   struct SearchBuffers {
     pcl::Indices indices;
     std::vector<float> sqr_distances;
+    /** (squared distance, point) of the nearest point of each segment so far */
+    std::vector<std::pair<float, pcl::index_t>> nearest;
   };
 
   bool
@@ -309,7 +312,7 @@ protected:
   reachOf (pcl::index_t i) const;
 
   /** \brief Nearest segmented surface point of each segment other than \a own within
-   * the reach of point \a i, closest first. */
+   * the reach of point \a i, closest first (equal distances: smaller index first). */
   void
   nearestOfEachSegment (pcl::index_t i,
                         std::uint32_t own,

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <utility>
 
 namespace pcl_ext {
 namespace detail {
@@ -151,20 +152,30 @@ pcl_ext::LocalSurfaceIntersection<PointT>::nearestOfEachSegment (
   const double reach = reachOf (i);
   if (!(reach > 0.0) || !reach_tree_->getInputCloud())
     return;
-  // Sorted results: the first point seen of each segment is its nearest.
+  // Unsorted results (the reach holds many border points; only each segment's nearest
+  // is wanted): the minimum per segment, by distance and then index.
   reach_tree_->radiusSearch (
       (*input_)[i], reach, buffers.indices, buffers.sqr_distances);
-  for (const pcl::index_t j : buffers.indices) {
+  auto& best = buffers.nearest;
+  best.clear();
+  for (std::size_t r = 0; r < buffers.indices.size(); ++r) {
+    const pcl::index_t j = buffers.indices[r];
     const std::uint32_t s = segmentOf (j);
     if (j == i || s == own)
       continue;
-    const bool seen =
-        std::any_of (nearest.begin(), nearest.end(), [this, s] (pcl::index_t m) {
-          return segmentOf (m) == s;
+    const std::pair<float, pcl::index_t> candidate (buffers.sqr_distances[r], j);
+    const auto same =
+        std::find_if (best.begin(), best.end(), [this, s] (const auto& b) {
+          return segmentOf (b.second) == s;
         });
-    if (!seen)
-      nearest.push_back (j);
+    if (same == best.end())
+      best.push_back (candidate);
+    else if (candidate < *same)
+      *same = candidate;
   }
+  std::sort (best.begin(), best.end());
+  for (const auto& b : best)
+    nearest.push_back (b.second);
 }
 
 template <typename PointT>
@@ -436,7 +447,7 @@ pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersect
     deinitCompute();
     return false;
   }
-  reach_tree_.reset (new search::NanoflannKdTree<PointT>);
+  reach_tree_.reset (new search::NanoflannKdTree<PointT> (false));
   if (!border->empty())
     reach_tree_->setInputCloud (input_, border);
 
