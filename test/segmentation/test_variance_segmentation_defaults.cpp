@@ -1,0 +1,122 @@
+/*
+ * Belton & Lichti's segmentation with the defaults of pcl_ext_segment_variance (k = 50,
+ * the classification's defaults, region growing, section 4's re-integration, segments
+ * of at least 50 points) on generated indoor scenes at seeds that were not used to
+ * choose them, against pcl::RegionGrowing as PCL's region-growing tutorial sets it
+ * (normals of 50 neighbours, growing over 30, smoothness 3 degrees, curvature
+ * threshold 1.0, segments of at least 50 points). Nothing is taken from the generator
+ * but the truth. The figures of every family and seed are in docs/belton_lichti.md.
+ */
+#include <pcl_ext/classification/variance_segmentation.h>
+#include <pcl_ext/evaluation/segmentation_metrics.h>
+#include <pcl_ext/segmentation/local_surface_intersection.h>
+#include <pcl_ext/segmentation/variance_region_growing.h>
+#include <pcl_ext/simulation/scenes.h>
+
+#include <pcl/features/normal_3d_omp.h>
+#include <pcl/search/kdtree.h>
+#include <pcl/segmentation/region_growing.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <vector>
+
+namespace {
+using Point = pcl::PointXYZ;
+using Cloud = pcl::PointCloud<Point>;
+
+constexpr std::uint64_t kUnseenSeeds[] = {5, 9};
+constexpr unsigned int kMinSize = 50; // pcl_ext_segment_variance's -min_size
+constexpr unsigned int kThreads = 2;
+
+/** The segment of every point as pcl_ext_segment_variance gives it with its defaults
+ * (0: none). */
+std::vector<std::uint32_t>
+segmentWithDefaults (const Cloud::ConstPtr& cloud)
+{
+  auto nb = pcl::make_shared<pcl_ext::Neighbourhoods<Point>>();
+  nb->setInputCloud (cloud);
+  nb->setKSearch (50);
+  nb->setNumberOfThreads (kThreads);
+  nb->setStoreSquaredDistances (false);
+  EXPECT_TRUE (nb->compute());
+  pcl_ext::LocalVarianceClassification<Point> classifier;
+  classifier.setNumberOfThreads (kThreads);
+  pcl_ext::VarianceRegionGrowing<Point> rg;
+  rg.setInputCloud (cloud);
+  rg.setNeighbourhoods (nb);
+  rg.setMinClusterSize (kMinSize);
+  rg.setNumberOfThreads (kThreads);
+  std::vector<pcl::PointIndices> clusters;
+  pcl_ext::segmentByLocalVariance (classifier, rg, clusters);
+  EXPECT_FALSE (clusters.empty());
+  auto labels = pcl::make_shared<pcl::PointCloud<pcl::Label>>();
+  rg.getSegmentLabels (*labels);
+  pcl_ext::LocalSurfaceIntersection<Point> lsi;
+  lsi.setInputCloud (cloud);
+  lsi.setNeighbourhoods (nb);
+  lsi.setSegmentLabels (labels);
+  lsi.setPointClasses (rg.getInputClasses());
+  lsi.setNumberOfThreads (kThreads);
+  pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> intersections;
+  pcl::PointCloud<pcl::Label> reintegrated;
+  EXPECT_TRUE (lsi.compute (intersections, reintegrated));
+  std::vector<std::uint32_t> ids;
+  for (const auto& l : reintegrated)
+    ids.push_back (l.label);
+  return ids;
+}
+
+/** pcl::RegionGrowing as PCL's tutorial chains it. */
+std::vector<pcl::PointIndices>
+segmentWithPcl (const Cloud::ConstPtr& cloud)
+{
+  auto tree = pcl::make_shared<pcl::search::KdTree<Point>>();
+  auto normals = pcl::make_shared<pcl::PointCloud<pcl::Normal>>();
+  pcl::NormalEstimationOMP<Point, pcl::Normal> ne (kThreads);
+  ne.setInputCloud (cloud);
+  ne.setSearchMethod (tree);
+  ne.setKSearch (50);
+  ne.compute (*normals);
+  pcl::RegionGrowing<Point, pcl::Normal> rg;
+  rg.setInputCloud (cloud);
+  rg.setInputNormals (normals);
+  rg.setSearchMethod (tree);
+  rg.setNumberOfNeighbours (30);
+  rg.setSmoothnessThreshold (3.0 * M_PI / 180.0);
+  rg.setCurvatureThreshold (1.0);
+  rg.setMinClusterSize (kMinSize);
+  std::vector<pcl::PointIndices> clusters;
+  rg.extract (clusters);
+  return clusters;
+}
+} // namespace
+
+// The goal on indoor (at least 0.70), and ahead of pcl::RegionGrowing (the goal
+// of 0.10 ahead is not met: 0.035 and 0.063 at these seeds).
+TEST (VarianceSegmentationDefaults, IndoorUnseenSeedsAheadOfPclRegionGrowing)
+{
+  for (const auto seed : kUnseenSeeds) {
+    pcl_ext::simulation::SceneParameters parameters;
+    parameters.seed = seed;
+    pcl_ext::simulation::SyntheticScene scene;
+    ASSERT_TRUE (pcl_ext::simulation::generateScene ("indoor", parameters, scene));
+    auto cloud = pcl::make_shared<Cloud>();
+    std::vector<std::uint32_t> truth;
+    for (const auto& p : scene.cloud) {
+      cloud->push_back (Point (p.x, p.y, p.z));
+      truth.push_back (p.segment);
+    }
+    pcl_ext::SegmentationMetrics ours, pcl;
+    ASSERT_TRUE (
+        pcl_ext::evaluateSegmentation (segmentWithDefaults (cloud), truth, ours));
+    ASSERT_TRUE (pcl_ext::evaluateSegmentation (segmentWithPcl (cloud), truth, pcl));
+    std::printf ("indoor seed %d: pcl_ext %.3f, pcl::RegionGrowing %.3f\n",
+                 static_cast<int> (seed),
+                 ours.mean_best_iou,
+                 pcl.mean_best_iou);
+    EXPECT_GE (ours.mean_best_iou, 0.70) << "seed " << seed;
+    EXPECT_GT (ours.mean_best_iou, pcl.mean_best_iou) << "seed " << seed;
+  }
+}
