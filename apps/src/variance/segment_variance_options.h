@@ -56,12 +56,11 @@ struct SegmentVarianceOptions {
         "also write the local intersection points of the segments (section 4) to this "
         "file (.pcd, .ply or .las; input's frame): x y z, segment_a, segment_b and the "
         "two surface points index_a, index_b");
-    cl.addSwitch (
-        "reintegrate",
-        reintegrate,
-        "put edge and boundary points into the segment whose local plane they fit "
-        "(section 4) before writing the output (the default; off with -preset "
-        "paper)");
+    cl.addSwitch ("reintegrate",
+                  reintegrate,
+                  "with -preset paper: still put the edge and boundary points into the "
+                  "segment whose local plane they fit (section 4, which runs by "
+                  "default)");
     cl.addSwitch ("no_reintegrate",
                   keep_out,
                   "leave the edge and boundary points out of the segments (section 3 "
