@@ -6,6 +6,7 @@
  */
 #include "../app_test.h"
 
+#include <pcl_ext/common/random.h>
 #include <pcl_ext/io/cloud_fields.h>
 #include <pcl_ext/io/point_file.h>
 
@@ -499,4 +500,45 @@ TEST_F (TilesApp, SlurmScriptRunsTheStepsAsArrayJobsOrHere)
   std::filesystem::remove (path ("slurm.las"));
   ASSERT_EQ (std::system (("PATH=/usr/bin:/bin " + script + job).c_str()), 0);
   expectSameAsWhole ("slurm.las");
+}
+
+TEST_F (TilesApp, TheCurvatureFactorChosenFromTheWholeCloudsNoise)
+{
+  // A floor and a box, 5 cm apart with 1.5 cm of noise: a range camera's share (above
+  // 0.2 spacings), for which the classifier takes the median curvature itself as the
+  // threshold; the tiles choose it from the whole cloud's noise sample, as untiled.
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  pcl_ext::RandomStream noise (7);
+  const auto add = [&] (double x, double y, double z, int axis) {
+    double p[3] = {x, y, z};
+    p[axis] +=
+        0.015 * (noise.uniform() + noise.uniform() + noise.uniform() - 1.5) * 2.0;
+    cloud.push_back (pcl::PointXYZ (static_cast<float> (p[0]),
+                                    static_cast<float> (p[1]),
+                                    static_cast<float> (p[2])));
+  };
+  for (int i = 0; i < 120; ++i)
+    for (int j = 0; j < 120; ++j)
+      add (i * 0.05, j * 0.05, 0.0, 2);
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j) {
+      add (2.0 + i * 0.05, 2.0 + j * 0.05, 1.0, 2); // the lid
+      add (2.0 + i * 0.05, 2.0, j * 0.05, 1);       // two sides
+      add (2.0, 2.0 + i * 0.05, j * 0.05, 0);
+    }
+  ASSERT_EQ (pcl::io::savePCDFileBinary (path ("noisy.pcd"), cloud), 0);
+  const std::string whole = std::string (PCL_EXT_CLASSIFY_VARIANCE_EXE) + " '" +
+                            path ("noisy.pcd") + "' '" + path ("noisy_whole.las") +
+                            "' -v > '" + path ("whole.log") + "' 2>&1";
+  ASSERT_EQ (std::system (whole.c_str()), 0);
+  std::ifstream log (path ("whole.log"));
+  const std::string text ((std::istreambuf_iterator<char> (log)),
+                          std::istreambuf_iterator<char>());
+  ASSERT_NE (text.find ("(1 x the median curvature)"), std::string::npos) << text;
+  whole_ = readLas (path ("noisy_whole.las"));
+  ASSERT_EQ (run ("classify_variance " + path ("noisy.pcd") + " " + path ("n2.las") +
+                  " -tile_size 2 -threads 1"),
+             0)
+      << output_;
+  expectSameAsWhole ("n2.las");
 }

@@ -471,8 +471,8 @@ TEST (LocalVarianceClassificationBadInput, BadParametersGiveEmptyOutput)
   expectEmpty ("negative noise");
   c.setNoiseStandardDeviation (std::numeric_limits<double>::quiet_NaN());
   expectEmpty ("NaN noise");
-  c.setCurvatureThresholdFactor (0.0);
-  expectEmpty ("zero factor");
+  c.setCurvatureThresholdFactor (-1.0); // 0 is valid: chosen from the cloud
+  expectEmpty ("negative factor");
   c.setConfidence (1.0);
   expectEmpty ("confidence 1");
   c.setTests (0);

@@ -296,7 +296,7 @@ TEST (SegmentByLocalVariance, NoCloudAndNonsenseParameters)
   EXPECT_TRUE (fails ([] (Classifier& c, Growing&) { c.setVarianceThreshold (-1.0); }));
   EXPECT_TRUE (fails ([] (Classifier& c, Growing&) { c.setCurvatureThreshold (NAN); }));
   EXPECT_TRUE (
-      fails ([] (Classifier& c, Growing&) { c.setCurvatureThresholdFactor (0.0); }));
+      fails ([] (Classifier& c, Growing&) { c.setCurvatureThresholdFactor (-1.0); }));
   EXPECT_TRUE (fails ([] (Classifier& c, Growing&) { c.setConfidence (1.0); }));
   EXPECT_TRUE (fails ([] (Classifier&, Growing& rg) { rg.setKSearch (2); }));
   EXPECT_TRUE (fails ([] (Classifier&, Growing& rg) { rg.setKSearch (100000); }));

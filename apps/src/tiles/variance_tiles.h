@@ -14,7 +14,10 @@ namespace apps {
 /** \brief A method on Belton & Lichti's classification: when the curvature threshold is
  * derived (factor x the median curvature kappa, eq. 4, of every point), every tile
  * saves its core points' kappa (estimate()), and the median over all tiles gives the
- * threshold every tile then uses (reduce(), applyThreshold()), as untiled. */
+ * threshold every tile then uses (reduce(), applyThreshold()), as untiled. When the
+ * factor is chosen from the cloud, every tile also saves its part of the whole cloud's
+ * noise sample (pcl_ext::estimateNoiseFromSample), and reduce() chooses it as the
+ * classifier does. */
 class VarianceTileMethod : public TileMethod {
 public:
   NeighbourhoodReach
@@ -67,7 +70,8 @@ protected:
                   const std::map<std::string, std::string>& settings) const;
 
 private:
-  double curvature_factor_ = 3.0; ///< the classifier's, after the options
+  double curvature_factor_ =
+      0.0; ///< the classifier's after the options (0: from the cloud)
 };
 
 /** \brief The adapters of pcl_ext_classify_variance and pcl_ext_segment_variance. */

@@ -17,7 +17,7 @@ namespace apps {
  * additions), with the defaults of LocalVarianceClassification. */
 struct VarianceClassificationOptions {
   double curvature_threshold = 0.0;
-  double curvature_factor = 3.0;
+  double curvature_factor = 0.0;
   double variance_threshold = 1e-4;
   double confidence = 0.95;
   double noise_sigma = 0.0;
@@ -48,8 +48,9 @@ struct VarianceClassificationOptions {
                   "curvature (eq. 4) threshold; 0: factor * median curvature");
     cl.addOption ("curvature_factor",
                   curvature_factor,
-                  "multiple of the median curvature when the threshold is 0 "
-                  "(-preset derived: 1)");
+                  "multiple of the median curvature when the threshold is 0 (0: "
+                  "from the cloud: 1 where the noise exceeds 0.2 point spacings, a "
+                  "range camera's, else 3; -preset paper 3, -preset derived 1)");
     cl.addOption ("variance_threshold",
                   variance_threshold,
                   "variance of curvature tolerance (eq. 5)");
@@ -106,7 +107,7 @@ struct VarianceClassificationOptions {
     else if (preset == "derived")
       classifier.setDerivedSettings();
     classifier.setCurvatureThreshold (curvature_threshold);
-    if (preset != "derived" || given_factor)
+    if (given_factor)
       classifier.setCurvatureThresholdFactor (curvature_factor);
     classifier.setVarianceThreshold (variance_threshold);
     classifier.setConfidence (confidence);
@@ -131,7 +132,9 @@ struct VarianceClassificationOptions {
                 << ", point spacing " << e.spacing << " (from " << e.used
                 << " of the flattest neighbourhoods, median curvature "
                 << e.flat_curvature << ")"
-                << (classifier.getNoiseStandardDeviationUsed() == 0.0 && e.sigma > 0.0
+                << (classifier.getNoiseEstimation() &&
+                            classifier.getNoiseStandardDeviationUsed() == 0.0 &&
+                            e.sigma > 0.0
                         ? "; noise above 0.2 spacings: not removed"
                         : "")
                 << "\n";
@@ -140,9 +143,12 @@ struct VarianceClassificationOptions {
                 << "): none removed, the paper's eq. 4-6\n";
     std::cout << "Used: noise sigma " << classifier.getNoiseStandardDeviationUsed()
               << (noise_given ? " (given)" : "") << ", curvature threshold "
-              << classifier.getCurvatureThresholdUsed() << ", variance threshold "
-              << classifier.getVarianceThreshold() << ", confidence "
-              << classifier.getConfidence() << "\n";
+              << classifier.getCurvatureThresholdUsed();
+    if (classifier.getCurvatureThresholdFactorUsed() > 0.0)
+      std::cout << " (" << classifier.getCurvatureThresholdFactorUsed()
+                << " x the median curvature)";
+    std::cout << ", variance threshold " << classifier.getVarianceThreshold()
+              << ", confidence " << classifier.getConfidence() << "\n";
     std::cout.precision (precision);
   }
 };

@@ -144,10 +144,14 @@ public:
   }
 
   /** \brief Multiple of the median kappa used when the curvature threshold is 0.
-   * Default 3; valid: > 0. On a range camera's frames (a few millimetres between
-   * points) the crease points of boxes lie below 3 times the median, are never
-   * re-checked by eq. 5, and boxes and table grow into one segment: setDerivedSettings
-   * uses 1. */
+   * Valid: >= 0. Default 0: chosen from the cloud (curvatureFactorFor): 3, or 1 where
+   * the noise estimated from the cloud exceeds kMaxNoiseToSpacing point spacings (a
+   * range camera's frames). On such frames the crease points of boxes lie below 3
+   * times the median, are never re-checked by eq. 5, and boxes and table grow into one
+   * segment; on a scanner's cloud, where the noise is a small share of the spacing, 1
+   * would have eq. 5 re-check the noisy faces too. setPaperSettings uses 3,
+   * setDerivedSettings 1. getCurvatureThresholdFactorUsed() gives the last
+   * classify()'s. */
   void
   setCurvatureThresholdFactor (double factor)
   {
@@ -158,6 +162,24 @@ public:
   getCurvatureThresholdFactor () const
   {
     return curvature_factor_;
+  }
+
+  /** \brief The factor of setCurvatureThresholdFactor when it is chosen from the cloud,
+   * given the cloud's noise \a estimate: 1 when the estimate is valid and its noise
+   * exceeds kMaxNoiseToSpacing spacings, else 3. */
+  static double
+  curvatureFactorFor (const NoiseEstimate& estimate)
+  {
+    return estimate.valid && estimate.sigma > kMaxNoiseToSpacing * estimate.spacing
+               ? 1.0
+               : 3.0;
+  }
+
+  /** \brief The factor the last classify() used (0 when the threshold was set). */
+  double
+  getCurvatureThresholdFactorUsed () const
+  {
+    return curvature_factor_used_;
   }
 
   /** \brief The curvature threshold the last classify() used (derived or set). */
@@ -237,9 +259,10 @@ public:
   static constexpr double kMaxNoiseToSpacing = 0.2;
 
   /** \brief Estimate the noise sigma of setNoiseStandardDeviation from the cloud
-   * (pcl_ext::estimateNoiseAndSpacing over a sample of up to 20,000 of the
-   * neighbourhoods). Default false (setDerivedSettings turns it on);
-   * setNoiseStandardDeviation turns it off. When the
+   * (pcl_ext::estimateNoiseFromSample over the neighbourhoods of the points of the
+   * smallest position keys, pcl_ext::noiseSampleKeyOf: about 20,000, the same points
+   * whatever the order of the cloud or the parts it is cut into). Default false
+   * (setDerivedSettings turns it on); setNoiseStandardDeviation turns it off. When the
    * cloud does not let it estimate the noise, classify() says why (PCL_WARN) and
    * removes none: the paper's eq. 4-6. Noise above kMaxNoiseToSpacing point spacings
    * (a range camera's, where the spacing is about the noise) is not removed either: a
@@ -402,10 +425,15 @@ protected:
   double
   deriveCurvatureThreshold () const;
 
-  /** \brief setNoiseEstimation: estimates the noise from a sample of the rows. */
+  /** \brief The noise and spacing of the cloud from its noise sample
+   * (setNoiseEstimation, or the curvature factor chosen from the cloud). */
   template <bool dense>
   void
   estimateNoise (const Neighbourhoods<PointT>& nb);
+
+  /** \brief The noise sigma to remove from the estimate (setNoiseEstimation). */
+  void
+  removeEstimatedNoise ();
 
   /** \brief setCreaseAngle: cosine of the widest angle between two normals of a row. */
   template <typename Row>
@@ -413,7 +441,8 @@ protected:
   widestNormalCosine (const Row& nn, const Eigen::Vector3f& own) const;
 
   double curvature_threshold_ = 0.0;
-  double curvature_factor_ = 3.0;
+  double curvature_factor_ = 0.0;
+  double curvature_factor_used_ = 0.0;
   double curvature_threshold_used_ = 0.0;
   double variance_threshold_ = 1e-4;
   double noise_sigma_ = 0.0;

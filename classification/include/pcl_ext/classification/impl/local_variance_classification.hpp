@@ -5,6 +5,7 @@
 
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/common/indices.h>
+#include <pcl_ext/common/noise_sample.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/features/local_variance.h>
 
@@ -36,8 +37,9 @@ pcl_ext::LocalVarianceClassification<PointT>::checkParameters() const
         curvature_threshold_);
     return false;
   }
-  if (!(curvature_factor_ > 0.0) || !std::isfinite (curvature_factor_)) {
-    PCL_ERROR ("%s curvature threshold factor = %g; it must be finite and > 0.\n",
+  if (!(curvature_factor_ >= 0.0) || !std::isfinite (curvature_factor_)) {
+    PCL_ERROR ("%s curvature threshold factor = %g; it must be finite and >= 0 (0: "
+               "chosen from the cloud).\n",
                name,
                curvature_factor_);
     return false;
@@ -123,28 +125,50 @@ void
 pcl_ext::LocalVarianceClassification<PointT>::estimateNoise (
     const Neighbourhoods<PointT>& nb)
 {
-  // An even sample of the rows: the estimate takes medians, which a few thousand
-  // neighbourhoods fix well, and the covariances are computed again in pass 1.
-  constexpr std::size_t kSample = 20000;
+  // The rows of the points of smallest position key (a few thousand neighbourhoods
+  // fix the medians well; the covariances are computed again in pass 1): the sample
+  // does not depend on the order of the points, and the tiles of a cloud give it.
   const std::size_t rows = indices_->size();
-  const std::size_t stride = std::max<std::size_t> (1, rows / kSample);
-  const std::ptrdiff_t samples =
-      static_cast<std::ptrdiff_t> ((rows + stride - 1) / stride);
-  std::vector<NeighbourhoodSpread> spreads (static_cast<std::size_t> (samples));
+  const auto keyOf = [this] (std::size_t r, std::uint64_t& key) {
+    const PointT& p = (*input_)[(*indices_)[r]];
+    if (!dense && !pcl::isFinite (p))
+      return false;
+    key = noiseSampleKeyOf (p.x, p.y, p.z);
+    return true;
+  };
+  NoiseSampleCut cut;
+  std::uint64_t key = 0;
+  for (std::size_t r = 0; r < rows; ++r)
+    if (keyOf (r, key))
+      cut.add (key);
+  std::vector<KeyedSpread> sample;
+  for (std::size_t r = 0; r < rows && !cut.empty(); ++r)
+    if (keyOf (r, key) && key <= cut.get()) {
+      KeyedSpread k;
+      k.key = key;
+      k.spread.size = r; // the row, until the spread is computed
+      sample.push_back (k);
+    }
+  const std::ptrdiff_t samples = static_cast<std::ptrdiff_t> (sample.size());
 #pragma omp parallel for num_threads(resolveThreadCount(threads_))                     \
-    schedule(dynamic, 256) default(none) shared(nb, stride, samples, spreads)
+    schedule(dynamic, 256) default(none) shared(nb, samples, sample)
   for (std::ptrdiff_t i = 0; i < samples; ++i) {
-    const std::size_t r = static_cast<std::size_t> (i) * stride;
-    if (!dense && !pcl::isFinite ((*input_)[(*indices_)[r]]))
-      continue;
-    const auto nn = nb[r];
+    auto& spread = sample[static_cast<std::size_t> (i)].spread;
+    const auto nn = nb[spread.size];
     LocalCovariance local;
+    spread.size = 0;
     if (!computeNeighbourhoodCovariance (*input_, nn.begin(), nn.end(), local))
       continue;
-    spreads[static_cast<std::size_t> (i)].values = local.eigen.values;
-    spreads[static_cast<std::size_t> (i)].size = local.size;
+    spread.values = local.eigen.values;
+    spread.size = local.size;
   }
-  noise_estimate_ = estimateNoiseAndSpacing (spreads);
+  noise_estimate_ = estimateNoiseFromSample (std::move (sample));
+}
+
+template <typename PointT>
+void
+pcl_ext::LocalVarianceClassification<PointT>::removeEstimatedNoise()
+{
   if (noise_estimate_.valid &&
       noise_estimate_.sigma > kMaxNoiseToSpacing * noise_estimate_.spacing) {
     // Noise near the spacing (a range camera, not a scanner): the few-centimetre
@@ -186,7 +210,7 @@ pcl_ext::LocalVarianceClassification<PointT>::deriveCurvatureThreshold() const
     return 0.0;
   auto middle = values.begin() + values.size() / 2;
   std::nth_element (values.begin(), middle, values.end());
-  return curvature_factor_ * static_cast<double> (*middle);
+  return curvature_factor_used_ * static_cast<double> (*middle);
 }
 
 template <typename PointT>
@@ -350,12 +374,20 @@ pcl_ext::LocalVarianceClassification<PointT>::classify (
     normals_.clear();
   noise_estimate_ = NoiseEstimate();
   noise_sigma_used_ = noise_sigma_;
-  if (estimate_noise_) {
+  const bool threshold_derived =
+      (tests_ & CURVATURE_TEST) && curvature_threshold_ == 0.0;
+  if (estimate_noise_ || (threshold_derived && curvature_factor_ == 0.0)) {
     if (input_->is_dense)
       estimateNoise<true> (*nb);
     else
       estimateNoise<false> (*nb);
   }
+  if (estimate_noise_)
+    removeEstimatedNoise();
+  curvature_factor_used_ = !threshold_derived ? 0.0
+                           : curvature_factor_ > 0.0
+                               ? curvature_factor_
+                               : curvatureFactorFor (noise_estimate_);
   if (input_->is_dense)
     computeCovariances<true> (*nb);
   else

@@ -1,0 +1,83 @@
+/*
+ * Tests of the noise sample chosen by position: its cut and the estimate of a cloud
+ * from the samples of its parts.
+ */
+#include <pcl_ext/common/noise_sample.h>
+#include <pcl_ext/common/random.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace {
+/** \a n keyed neighbourhoods of a plane with noise sigma 0.002 and spacing 0.02 (the
+ * eigenvalues of a disc of k = 50 points), each with a random key. */
+std::vector<pcl_ext::KeyedSpread>
+planeSpreads (std::size_t n, std::uint64_t seed)
+{
+  pcl_ext::RandomStream rng (seed);
+  std::vector<pcl_ext::KeyedSpread> spreads (n);
+  for (auto& s : spreads) {
+    s.key = rng.next();
+    const double l0 = 0.002 * 0.002 * (0.8 + 0.4 * rng.uniform());
+    const double r2 = 50 * 0.02 * 0.02 / M_PI;
+    s.spread.values = Eigen::Vector3d (l0, r2 / 4 * 0.9, r2 / 4 * 1.1);
+    s.spread.size = 50;
+  }
+  return spreads;
+}
+} // namespace
+
+TEST (NoiseSample, TheCutKeepsTheSmallestKeysAndEveryTie)
+{
+  pcl_ext::NoiseSampleCut cut;
+  EXPECT_TRUE (cut.empty());
+  for (std::uint64_t k = 0; k < 3 * pcl_ext::kNoiseSampleSize; ++k)
+    cut.add (3 * pcl_ext::kNoiseSampleSize - k); // descending
+  EXPECT_EQ (cut.get(), pcl_ext::kNoiseSampleSize);
+  pcl_ext::NoiseSampleCut few;
+  for (const std::uint64_t k : {7u, 3u, 9u})
+    few.add (k);
+  EXPECT_EQ (few.get(), 9u); // fewer keys than the sample: all of them
+}
+
+TEST (NoiseSample, PartsGiveTheWholeCloudsEstimateInAnyOrder)
+{
+  const std::size_t part_size = pcl_ext::kNoiseSampleSize * 3 / 2;
+  const auto all = planeSpreads (3 * part_size, 11);
+  const pcl_ext::NoiseEstimate whole = pcl_ext::estimateNoiseFromSample (all);
+  ASSERT_TRUE (whole.valid) << whole.reason;
+  EXPECT_NEAR (whole.sigma, 0.002, 0.0004);
+  EXPECT_NEAR (whole.spacing, 0.02, 0.002);
+  // Three parts, each keeping only the keys at most its own cut (as a tile saves its
+  // sample), merged in reverse order: the whole cloud's estimate, bit for bit.
+  std::vector<pcl_ext::KeyedSpread> merged;
+  for (std::size_t part = 3; part-- > 0;) {
+    const auto first = all.begin() + static_cast<std::ptrdiff_t> (part * part_size);
+    const std::vector<pcl_ext::KeyedSpread> own (
+        first, first + static_cast<std::ptrdiff_t> (part_size));
+    pcl_ext::NoiseSampleCut cut;
+    for (const auto& s : own)
+      cut.add (s.key);
+    for (auto it = own.rbegin(); it != own.rend(); ++it)
+      if (it->key <= cut.get())
+        merged.push_back (*it);
+  }
+  EXPECT_LT (merged.size(), all.size());
+  const pcl_ext::NoiseEstimate from_parts = pcl_ext::estimateNoiseFromSample (merged);
+  EXPECT_EQ (from_parts.sigma, whole.sigma);
+  EXPECT_EQ (from_parts.spacing, whole.spacing);
+  EXPECT_EQ (from_parts.used, whole.used);
+}
+
+TEST (NoiseSample, KeysDependOnThePositionOnly)
+{
+  EXPECT_EQ (pcl_ext::noiseSampleKeyOf (1.f, 2.f, 3.f),
+             pcl_ext::noiseSampleKeyOf (1.f, 2.f, 3.f));
+  EXPECT_NE (pcl_ext::noiseSampleKeyOf (1.f, 2.f, 3.f),
+             pcl_ext::noiseSampleKeyOf (1.f, 2.f, 3.0001f));
+  EXPECT_EQ (pcl_ext::noiseSampleKeyOf (0.f, 0.f, 0.f),
+             pcl_ext::noiseSampleKeyOf (-0.f, 0.f, 0.f)); // one zero
+}
