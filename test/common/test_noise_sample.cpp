@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -80,4 +81,18 @@ TEST (NoiseSample, KeysDependOnThePositionOnly)
              pcl_ext::noiseSampleKeyOf (1.f, 2.f, 3.0001f));
   EXPECT_EQ (pcl_ext::noiseSampleKeyOf (0.f, 0.f, 0.f),
              pcl_ext::noiseSampleKeyOf (-0.f, 0.f, 0.f)); // one zero
+}
+
+TEST (NoiseSample, TooFewOrUnusableNeighbourhoodsGiveNoEstimate)
+{
+  const pcl_ext::NoiseEstimate none = pcl_ext::estimateNoiseFromSample ({});
+  EXPECT_FALSE (none.valid);
+  EXPECT_FALSE (none.reason.empty());
+  auto spreads = planeSpreads (pcl_ext::kNoiseSampleSize, 3);
+  for (auto& s : spreads) // NaN eigenvalues and empty neighbourhoods: not usable
+    s.spread.values[0] = std::numeric_limits<double>::quiet_NaN();
+  spreads[0].spread = pcl_ext::NeighbourhoodSpread();
+  const pcl_ext::NoiseEstimate unusable = pcl_ext::estimateNoiseFromSample (spreads);
+  EXPECT_FALSE (unusable.valid);
+  EXPECT_TRUE (std::isnan (unusable.sigma));
 }

@@ -3,6 +3,7 @@
  * model and result of pcl_ext_crf_classify.
  */
 #include "../crf/crf_inputs.h"
+#include "tile_keys.h"
 #include "tile_method.h"
 
 #include <pcl_ext/segmentation/adaptive_radius.h>
@@ -171,9 +172,7 @@ public:
     for (const auto i : estimator.selectNoiseSamplePoints (&core)) {
       const std::uint64_t key =
           noiseSampleKey ((*tile.cloud)[static_cast<std::size_t> (i)]);
-      values[kKeyParts[0]].push_back (static_cast<float> (key >> 42));
-      values[kKeyParts[1]].push_back (static_cast<float> ((key >> 20) & 0x3FFFFF));
-      values[kKeyParts[2]].push_back (static_cast<float> (key & 0xFFFFF));
+      appendKey (values, kKeyParts, key);
       NoiseSample s;
       const bool plane = estimator.measureNoiseSample (i, s);
       values[kFlatness].push_back (plane ? s.flatness : NAN);
@@ -217,9 +216,7 @@ public:
       }
       for (std::size_t i = 0; i < n; ++i) {
         Keyed k;
-        k.key = (static_cast<std::uint64_t> (parts[0][i]) << 42) |
-                (static_cast<std::uint64_t> (parts[1][i]) << 20) |
-                static_cast<std::uint64_t> (parts[2][i]);
+        k.key = keyAt (parts, i);
         k.tile = t;
         k.rank = i;
         k.plane = std::isfinite (flatness[i]);

@@ -3,6 +3,7 @@
  * tile.
  */
 #include "variance_tiles.h"
+#include "tile_keys.h"
 
 #include <pcl_ext/common/noise_sample.h>
 #include <pcl_ext/features/local_variance.h>
@@ -42,9 +43,7 @@ saveNoiseSample (const TileCloud& tile,
     const std::uint64_t key = noiseSampleKeyOf (cloud[i].x, cloud[i].y, cloud[i].z);
     if (key > cut.get())
       continue;
-    values[kKeyParts[0]].push_back (static_cast<float> (key >> 42));
-    values[kKeyParts[1]].push_back (static_cast<float> ((key >> 20) & 0x3FFFFF));
-    values[kKeyParts[2]].push_back (static_cast<float> (key & 0xFFFFF));
+    appendKey (values, kKeyParts, key);
     NeighbourhoodSpread spread;
     const std::ptrdiff_t row = nb.getRowOfPoint (static_cast<pcl::index_t> (i));
     LocalCovariance local;
@@ -91,9 +90,7 @@ loadNoiseSample (const std::string& folder,
     }
     for (std::size_t i = 0; i < n; ++i) {
       KeyedSpread k;
-      k.key = (static_cast<std::uint64_t> (parts[0][i]) << 42) |
-              (static_cast<std::uint64_t> (parts[1][i]) << 20) |
-              static_cast<std::uint64_t> (parts[2][i]);
+      k.key = keyAt (parts, i);
       k.spread.values = Eigen::Vector3d (spread[0][i], spread[1][i], spread[2][i]);
       k.spread.size = static_cast<std::size_t> (spread[3][i]);
       sample.push_back (k);

@@ -142,23 +142,22 @@ pcl_ext::LocalVarianceClassification<PointT>::estimateNoise (
     if (keyOf (r, key))
       cut.add (key);
   std::vector<KeyedSpread> sample;
+  std::vector<std::size_t> sample_rows;
   for (std::size_t r = 0; r < rows && !cut.empty(); ++r)
     if (keyOf (r, key) && key <= cut.get()) {
-      KeyedSpread k;
-      k.key = key;
-      k.spread.size = r; // the row, until the spread is computed
-      sample.push_back (k);
+      sample.emplace_back();
+      sample.back().key = key;
+      sample_rows.push_back (r);
     }
   const std::ptrdiff_t samples = static_cast<std::ptrdiff_t> (sample.size());
 #pragma omp parallel for num_threads(resolveThreadCount(threads_))                     \
-    schedule(dynamic, 256) default(none) shared(nb, samples, sample)
+    schedule(dynamic, 256) default(none) shared(nb, samples, sample, sample_rows)
   for (std::ptrdiff_t i = 0; i < samples; ++i) {
-    auto& spread = sample[static_cast<std::size_t> (i)].spread;
-    const auto nn = nb[spread.size];
+    const auto nn = nb[sample_rows[static_cast<std::size_t> (i)]];
     LocalCovariance local;
-    spread.size = 0;
     if (!computeNeighbourhoodCovariance (*input_, nn.begin(), nn.end(), local))
-      continue;
+      continue; // unusable: zero eigenvalues and size, still counted in the cut
+    auto& spread = sample[static_cast<std::size_t> (i)].spread;
     spread.values = local.eigen.values;
     spread.size = local.size;
   }
