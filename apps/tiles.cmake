@@ -4,6 +4,7 @@ pcl_ext_add_app(tiles
   SOURCES
     src/tiles/tiles.cpp
     src/tiles/tile_steps.cpp
+    src/tiles/second_pass_steps.cpp
     src/tiles/tile_outputs.cpp
     src/tiles/input_fields.cpp
     src/tiles/tile_cloud.cpp
@@ -12,6 +13,7 @@ pcl_ext_add_app(tiles
     src/tiles/variance_tiles.cpp
     src/tiles/classify_variance_tiles.cpp
     src/tiles/segment_variance_tiles.cpp
+    src/tiles/reintegration_margin.cpp
     src/tiles/crf_classify_tiles.cpp
   DEPENDS pcl_ext_crf_app_inputs pcl_ext::classification pcl_ext::segmentation pcl_ext::tiling pcl_ext_apps_common pcl_ext::io)
 find_package(MPI COMPONENTS CXX)

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# pcl_ext_tiles on a cluster without MPI: the plan here, then the estimates and the tiles as
-# Slurm array jobs (one task per tile; tile 0 alone first, as it reduces the estimates into the
-# plan), then the merge, each job waiting for the one before.
+# pcl_ext_tiles on a cluster without MPI: the plan here, then the estimates, the tiles and the
+# tiles' second pass (segment_variance's section 4; nothing for the other methods) as Slurm
+# array jobs (one task per tile; tile 0 alone first in a pass whose first task reduces what the
+# tiles before it saved: the estimates into the plan, the segments joined), then the merge,
+# each job waiting for the one before.
 # Without sbatch the same steps run here, one after another.
 #
 #   scripts/tiles_slurm.sh METHOD OUTPUT INPUT... [-- OPTIONS]
@@ -58,6 +60,9 @@ if [ "$tiles" -eq 0 ]; then
   exit 1
 fi
 last=$((tiles - 1))
+# A method with a second pass over the tiles has its results file in the plan's folder.
+second_pass=0
+[ -e "$workdir/refined.bin" ] && second_pass=1
 
 if ! command -v sbatch >/dev/null 2>&1; then
   echo "sbatch not found: running the $tiles tiles here, one after another."
@@ -67,6 +72,11 @@ if ! command -v sbatch >/dev/null 2>&1; then
   for t in $(seq 0 "$last"); do
     "$tool" tile "$t" -workdir "$workdir" -threads "${threads:-0}"
   done
+  if [ "$second_pass" -eq 1 ]; then
+    for t in $(seq 0 "$last"); do
+      "$tool" refine "$t" -workdir "$workdir" -threads "${threads:-0}"
+    done
+  fi
   exec "$tool" merge "$output" -workdir "$workdir"
 fi
 
@@ -87,8 +97,22 @@ if [ "$last" -ge 1 ]; then
     --wrap="$(q "$tool") tile \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads")
   tile="${rest%%;*}"
 fi
+# The second pass: tile 0 alone first (it joins the segments the others read), then the rest.
+refine="$tile"
+if [ "$second_pass" -eq 1 ]; then
+  refine_first=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_refine \
+    --dependency="afterok:$tile" \
+    --wrap="$(q "$tool") refine 0 -workdir $(q "$workdir") -threads $task_threads")
+  refine="${refine_first%%;*}"
+  if [ "$last" -ge 1 ]; then
+    refine_rest=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_refine --array="1-$last" \
+      --dependency="afterok:$refine" \
+      --wrap="$(q "$tool") refine \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads")
+    refine="${refine_rest%%;*}"
+  fi
+fi
 merge=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_merge \
-  --dependency="afterok:$tile" \
+  --dependency="afterok:$refine" \
   --wrap="$(q "$tool") merge $(q "$output") -workdir $(q "$workdir")")
-echo "Submitted: estimates ${estimate%%;*} (array 0-$last), tile 0 ${first%%;*}, tiles $tile, merge ${merge%%;*}."
+echo "Submitted: estimates ${estimate%%;*} (array 0-$last), tile 0 ${first%%;*}, tiles $tile,$([ "$second_pass" -eq 1 ] && echo " second pass $refine,") merge ${merge%%;*}."
 echo "After a failure: $tool resume $output -workdir $workdir"

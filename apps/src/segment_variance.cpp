@@ -112,13 +112,10 @@ main (int argc, char** argv)
   pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> intersections;
   if (intersect) {
     pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ> lsi;
-    lsi.setInputCloud (cloud);
-    lsi.setNeighbourhoods (nb);
+    options.configure (cloud, nb, threads, lsi);
     lsi.setSegmentLabels (pcl::make_shared<pcl::PointCloud<pcl::Label>> (labels));
     lsi.setPointClasses (
         pcl::make_shared<pcl::PointCloud<pcl::Label>> (*rg.getInputClasses()));
-    lsi.setParallelAngleThreshold (options.parallel_angle * M_PI / 180.0);
-    lsi.setNumberOfThreads (threads);
     pcl::PointCloud<pcl::Label> reintegrated;
     pcl_ext::apps::StageTimer stage ("Intersecting segments");
     if (!lsi.compute (intersections, reintegrated)) {

@@ -5,6 +5,7 @@
  * bad input is refused without output.
  */
 #include "../app_test.h"
+#include "sbatch_shim.h"
 
 #include <pcl_ext/common/random.h>
 #include <pcl_ext/io/cloud_fields.h>
@@ -452,24 +453,7 @@ TEST_F (TilesApp, SlurmScriptRunsTheStepsAsArrayJobsOrHere)
   // array in turn), then without sbatch: the untiled tool's bytes both times, and the
   // jobs are the estimates over every tile, tile 0 alone, then the other tiles.
   const std::string shims = path ("shims");
-  std::filesystem::create_directories (shims);
-  {
-    std::ofstream sbatch (shims + "/sbatch");
-    sbatch
-        << "#!/bin/bash\n"
-           "array=''; wrap=''\n"
-           "for a in \"$@\"; do case \"$a\" in --array=*) array=\"${a#--array=}\";; "
-           "--wrap=*) wrap=\"${a#--wrap=}\";; esac; done\n"
-           "echo \"array=${array:-none} ${wrap%% -workdir*}\" >> \"$(dirname "
-           "\"$0\")/sbatch.log\"\n"
-           "if [ -n \"$array\" ]; then\n"
-           "  for i in $(seq \"${array%-*}\" \"${array#*-}\"); do\n"
-           "    SLURM_ARRAY_TASK_ID=$i bash -c \"$wrap\" > /dev/null 2>&1 || exit 1\n"
-           "  done\n"
-           "else bash -c \"$wrap\" > /dev/null 2>&1 || exit 1; fi\n"
-           "echo 4242\n";
-  }
-  std::filesystem::permissions (shims + "/sbatch", std::filesystem::perms::owner_all);
+  pcl_ext::test::writeSbatchShim (shims);
   const std::string script = std::string ("PCL_EXT_TILES=") + PCL_EXT_TILES_EXE +
                              " bash " + PCL_EXT_SOURCE_DIR + "/scripts/tiles_slurm.sh";
   const std::string job = " classify_variance '" + path ("slurm.las") + "' '" +
@@ -477,10 +461,7 @@ TEST_F (TilesApp, SlurmScriptRunsTheStepsAsArrayJobsOrHere)
                           path ("slurm.log") + "' 2>&1";
   ASSERT_EQ (std::system (("PATH=" + shims + ":$PATH " + script + job).c_str()), 0);
   expectSameAsWhole ("slurm.las");
-  std::ifstream log (shims + "/sbatch.log");
-  std::vector<std::string> jobs;
-  for (std::string line; std::getline (log, line);)
-    jobs.push_back (line);
+  const std::vector<std::string> jobs = pcl_ext::test::sbatchJobs (shims);
   ASSERT_EQ (jobs.size(), 4u);
   EXPECT_EQ (jobs[0].rfind ("array=0-", 0), 0u) << jobs[0];
   EXPECT_NE (jobs[0].find (" estimate $SLURM_ARRAY_TASK_ID"), std::string::npos);

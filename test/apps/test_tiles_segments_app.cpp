@@ -2,11 +2,13 @@
  * pcl_ext_tiles segment_variance run as a command: generated scenes segmented tile by
  * tile, in one command, in steps and shared among MPI ranks, give the segments of
  * pcl_ext_segment_variance on the whole cloud (the same partition of the points, and
- * the same ids: largest first); a wall across four tiles' corner is one segment; a tile
- * that owns no point, a tile of one point and points without coordinates change
+ * the same ids: largest first), with section 4's re-integration (the default, a second
+ * pass over the tiles) and without it; a wall across four tiles' corner is one segment;
+ * a tile that owns no point, a tile of one point and points without coordinates change
  * nothing.
  */
 #include "../app_test.h"
+#include "sbatch_shim.h"
 
 #include <pcl_ext/io/point_file.h>
 
@@ -96,10 +98,10 @@ class TilesSegmentsApp : public pcl_ext::test::AppTest {
 protected:
   TilesSegmentsApp() : AppTest (PCL_EXT_TILES_EXE) {}
 
-  /** Generate \a scene (60,000 points) and segment it whole, with sections 2 and 3
-   * (-no_reintegrate): what pcl_ext_tiles segment_variance runs by default. */
+  /** Generate \a scene (60,000 points) and segment it whole with \a options (none:
+   * the defaults, section 4's re-integration included). */
   void
-  makeScene (const std::string& scene)
+  makeScene (const std::string& scene, const std::string& options = "")
   {
     const std::string generate = std::string (PCL_EXT_GENERATE_SCENE_EXE) + " " +
                                  scene + " '" + path ("scene.pcd") +
@@ -107,7 +109,7 @@ protected:
     ASSERT_EQ (std::system (generate.c_str()), 0);
     const std::string whole = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " '" +
                               path ("scene.pcd") + "' '" + path ("whole.las") +
-                              "' -output_field seg -no_reintegrate > /dev/null 2>&1";
+                              "' -output_field seg " + options + " > /dev/null 2>&1";
     ASSERT_EQ (std::system (whole.c_str()), 0);
     whole_ = readSegments (path ("whole.las"));
     ASSERT_FALSE (whole_.ids.empty());
@@ -146,15 +148,43 @@ TEST_F (TilesSegmentsApp, AnyTileSizeGivesTheWholeCloudsSegments)
   expectSameAsWhole ("t7.las");
 }
 
+TEST_F (TilesSegmentsApp, SectionsTwoAndThreeAloneWithNoReintegrate)
+{
+  makeScene ("indoor", "-no_reintegrate");
+  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3 -no_reintegrate"), 0) << output_;
+  expectSameAsWhole ("t3.las");
+  EXPECT_EQ (output_.find ("second pass"), std::string::npos) << output_;
+  // The defaults re-integrate edge and boundary points: more points in segments.
+  ASSERT_EQ (runTiled ("d3.las", "-tile_size 3"), 0) << output_;
+  EXPECT_NE (output_.find ("second pass"), std::string::npos) << output_;
+  const Segments reintegrated = readSegments (path ("d3.las"));
+  ASSERT_EQ (reintegrated.ids.size(), whole_.ids.size());
+  std::size_t before = 0, after = 0;
+  for (std::size_t i = 0; i < whole_.ids.size(); ++i) {
+    before += whole_.ids[i] != 0;
+    after += reintegrated.ids[i] != 0;
+    // A point segmented by sections 2 and 3 keeps its segment.
+    if (whole_.ids[i] != 0)
+      ASSERT_NE (reintegrated.ids[i], 0u);
+  }
+  EXPECT_GT (after, before + whole_.ids.size() / 20);
+}
+
 TEST_F (TilesSegmentsApp, AWallAcrossFourTilesCornerIsOneSegment)
 {
   // The room's wall y = 0 lies on a row of tile borders (tiles on multiples of 3 m),
   // its points on both sides of it (range noise); x = 3 is a column of borders. Its
-  // points around the corner (3, 0) lie in four tiles, and are one segment.
+  // points around the corner (3, 0) lie in four tiles, and are one segment after
+  // section 3 (the tiles' segments joined through their halos). Section 4 (the
+  // default) keeps that segment's points in it, also in all four tiles; it may give a
+  // few of the wall's edge points to a segment they fit better, as untiled.
   makeScene ("indoor");
-  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3"), 0) << output_;
+  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3 -no_reintegrate"), 0) << output_;
+  ASSERT_EQ (runTiled ("d3.las", "-tile_size 3"), 0) << output_;
   const Segments tiled = readSegments (path ("t3.las"));
+  const Segments reintegrated = readSegments (path ("d3.las"));
   ASSERT_EQ (tiled.ids.size(), whole_.ids.size());
+  ASSERT_EQ (reintegrated.ids.size(), whole_.ids.size());
   std::set<std::uint32_t> ids;
   std::size_t in_quadrant[4] = {};
   for (std::size_t i = 0; i < tiled.ids.size(); ++i) {
@@ -163,6 +193,7 @@ TEST_F (TilesSegmentsApp, AWallAcrossFourTilesCornerIsOneSegment)
         tiled.ids[i] == 0)
       continue;
     ids.insert (tiled.ids[i]);
+    EXPECT_EQ (reintegrated.ids[i], tiled.ids[i]) << i;
     ++in_quadrant[(x >= 3.0f ? 1 : 0) + (y >= 0.0f ? 2 : 0)];
   }
   for (int q = 0; q < 4; ++q)
@@ -187,8 +218,40 @@ TEST_F (TilesSegmentsApp, StepsInAnyOrderGiveTheSameSegments)
   ASSERT_EQ (run ("merge " + path ("early.las") + work), 1); // no tile has run
   for (std::size_t t = tiles; t-- > 0;)
     ASSERT_EQ (run ("tile " + std::to_string (t) + work + " -threads 2"), 0) << output_;
+  // Section 4: a second pass over the tiles, after all of them.
+  ASSERT_EQ (run ("merge " + path ("early.las") + work), 1);
+  EXPECT_NE (output_.find ("refine I"), std::string::npos) << output_;
+  for (std::size_t t = tiles; t-- > 0;)
+    ASSERT_EQ (run ("refine " + std::to_string (t) + work), 0) << output_;
   ASSERT_EQ (run ("merge " + path ("steps.las") + work), 0) << output_;
   expectSameAsWhole ("steps.las");
+}
+
+TEST_F (TilesSegmentsApp, SlurmScriptRunsTheSecondPassAfterTheTiles)
+{
+  // scripts/tiles_slurm.sh with a stand-in sbatch: estimates, tile 0, the other tiles,
+  // then the second pass (tile 0 alone, as it joins the segments, then the others) and
+  // the merge; the untiled tool's bytes.
+  makeScene ("indoor");
+  const std::string shims = path ("shims");
+  pcl_ext::test::writeSbatchShim (shims);
+  const std::string command =
+      "PATH=" + shims + ":$PATH PCL_EXT_TILES=" + PCL_EXT_TILES_EXE + " bash " +
+      PCL_EXT_SOURCE_DIR + "/scripts/tiles_slurm.sh segment_variance '" +
+      path ("slurm.las") + "' '" + path ("scene.pcd") +
+      "' -- -output_field seg -tile_size 4 > '" + path ("slurm.log") + "' 2>&1";
+  ASSERT_EQ (std::system (command.c_str()), 0);
+  expectSameAsWhole ("slurm.las");
+  const std::vector<std::string> jobs = pcl_ext::test::sbatchJobs (shims);
+  ASSERT_EQ (jobs.size(), 6u);
+  EXPECT_NE (jobs[0].find (" estimate $SLURM_ARRAY_TASK_ID"), std::string::npos);
+  EXPECT_NE (jobs[1].find (" tile 0"), std::string::npos) << jobs[1];
+  EXPECT_NE (jobs[2].find (" tile $SLURM_ARRAY_TASK_ID"), std::string::npos);
+  EXPECT_EQ (jobs[3].rfind ("array=none ", 0), 0u) << jobs[3];
+  EXPECT_NE (jobs[3].find (" refine 0"), std::string::npos) << jobs[3];
+  EXPECT_EQ (jobs[4].rfind ("array=1-", 0), 0u) << jobs[4];
+  EXPECT_NE (jobs[4].find (" refine $SLURM_ARRAY_TASK_ID"), std::string::npos);
+  EXPECT_NE (jobs[5].find (" merge "), std::string::npos) << jobs[5];
 }
 
 TEST_F (TilesSegmentsApp, ATileThatOwnsNoPointChangesNothing)
@@ -225,8 +288,7 @@ TEST_F (TilesSegmentsApp, ATileOfOnePointAndPointsWithoutCoordinates)
   pcd.close();
   const std::string whole = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " '" +
                             path ("scene.pcd") + "' '" + path ("whole.pcd") +
-                            "' -output_field seg -no_reintegrate > '" +
-                            path ("whole.log") + "' 2>&1";
+                            "' -output_field seg > '" + path ("whole.log") + "' 2>&1";
   ASSERT_EQ (std::system (whole.c_str()), 0);
   whole_ = readSegments (path ("whole.pcd"));
   ASSERT_EQ (whole_.ids.size(), points.size());
@@ -259,12 +321,8 @@ TEST_F (TilesSegmentsApp, WhatCannotRunTileByTileIsRefused)
   const std::string generate = std::string (PCL_EXT_GENERATE_SCENE_EXE) + " cubes '" +
                                path ("scene.pcd") + "' -points 2000 > /dev/null 2>&1";
   ASSERT_EQ (std::system (generate.c_str()), 0);
-  EXPECT_EQ (runTiled ("a.las", "-reintegrate"), 1);
-  EXPECT_NE (output_.find ("section 4"), std::string::npos) << output_;
-  // By default the tool says that section 4 does not run.
-  EXPECT_EQ (runTiled ("b.las", ""), 0);
-  EXPECT_NE (output_.find ("-no_reintegrate"), std::string::npos) << output_;
   EXPECT_EQ (runTiled ("a.las", "-intersections " + path ("i.pcd")), 1);
+  EXPECT_NE (output_.find ("-intersections"), std::string::npos) << output_;
   EXPECT_EQ (runTiled ("a.las", "-preset derived"), 1); // the noise
   EXPECT_EQ (runTiled ("a.las", "-min_size 0"), 1);
   EXPECT_FALSE (exists ("a.las"));

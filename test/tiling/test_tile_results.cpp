@@ -51,6 +51,55 @@ TEST (TileResults, TilesWriteTheirPointsAnywhereInTheFile)
   testing::internal::GetCapturedStderr();
 }
 
+TEST (TileResults, NamedResultsAreFilesOfTheirOwnReadAtAnyPoints)
+{
+  // A method's second set of values per point (the classes beside the segments) in its
+  // own file; readAt reads runs and single points in any order.
+  const std::string dir = freshFolder ("tile_named_results");
+  ASSERT_TRUE (TileResults::create (dir, 1000));
+  ASSERT_TRUE (TileResults::create (dir, 1000, "values"));
+  std::vector<std::uint64_t> indices;
+  std::vector<std::uint32_t> values;
+  for (std::uint64_t i = 100; i < 400; ++i) {
+    indices.push_back (i);
+    values.push_back (static_cast<std::uint32_t> (3 * i));
+  }
+  ASSERT_TRUE (TileResults::write (dir, indices, values, "values"));
+  std::vector<std::uint32_t> read;
+  const std::vector<std::uint64_t> at{399, 5, 100, 101, 102, 250, 999};
+  ASSERT_TRUE (TileResults::readAt (dir, at, read, "values"));
+  EXPECT_EQ (
+      read,
+      (std::vector<std::uint32_t>{
+          1197, TileResults::kNoResult, 300, 303, 306, 750, TileResults::kNoResult}));
+  ASSERT_TRUE (TileResults::readAt (dir, at, read)); // the results: untouched
+  EXPECT_EQ (read, std::vector<std::uint32_t> (at.size(), TileResults::kNoResult));
+  EXPECT_NE (TileResults::pathIn (dir, "values"), TileResults::pathIn (dir));
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (TileResults::readAt (dir, {1000}, read, "values")); // beyond the points
+  EXPECT_TRUE (read.empty());
+  EXPECT_FALSE (TileResults::readAt (dir, {0}, read, "none"));
+  testing::internal::GetCapturedStderr();
+}
+
+TEST (TileResults, SegmentIdsRoundTrip)
+{
+  const std::string dir = freshFolder ("tile_ids");
+  const std::vector<std::uint32_t> saved{4, 0xFFFFFFFFu, 0, 17};
+  ASSERT_TRUE (pcl_ext::tiling::saveSegmentIds (dir, 2, saved));
+  ASSERT_TRUE (pcl_ext::tiling::saveSegmentIds (dir, 3, {}));
+  std::vector<std::uint32_t> loaded;
+  ASSERT_TRUE (pcl_ext::tiling::loadSegmentIds (dir, 2, loaded));
+  EXPECT_EQ (loaded, saved);
+  ASSERT_TRUE (pcl_ext::tiling::loadSegmentIds (dir, 3, loaded));
+  EXPECT_TRUE (loaded.empty());
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (pcl_ext::tiling::loadSegmentIds (dir, 4, loaded)); // not joined
+  std::ofstream (dir + "/tile_5.ids") << "abc";                    // not whole records
+  EXPECT_FALSE (pcl_ext::tiling::loadSegmentIds (dir, 5, loaded));
+  testing::internal::GetCapturedStderr();
+}
+
 TEST (TileResults, HaloLabelsRoundTrip)
 {
   const std::string dir = freshFolder ("tile_halo");
@@ -148,6 +197,16 @@ TEST (TileResults, TilesNotRunAreFound)
   EXPECT_NE (start.find (" UTC"), std::string::npos) << start;
   ASSERT_TRUE (pcl_ext::tiling::markTileDone (dir, 2));
   EXPECT_EQ (pcl_ext::tiling::describeTileStart (dir, 2), "");
+  EXPECT_EQ (pcl_ext::tiling::findTilesNotDone (dir, 5),
+             (std::vector<std::size_t>{0, 4}));
+  // A second pass is marked apart from the first.
+  EXPECT_EQ (pcl_ext::tiling::findTilesNotDone (dir, 3, "refined"),
+             (std::vector<std::size_t>{0, 1, 2}));
+  ASSERT_TRUE (pcl_ext::tiling::markTileStarted (dir, 1));
+  ASSERT_TRUE (pcl_ext::tiling::markTileDone (dir, 1, "refined"));
+  EXPECT_EQ (pcl_ext::tiling::describeTileStart (dir, 1), "");
+  EXPECT_EQ (pcl_ext::tiling::findTilesNotDone (dir, 3, "refined"),
+             (std::vector<std::size_t>{0, 2}));
   EXPECT_EQ (pcl_ext::tiling::findTilesNotDone (dir, 5),
              (std::vector<std::size_t>{0, 4}));
 }

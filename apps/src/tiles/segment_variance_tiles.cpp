@@ -3,6 +3,7 @@
  * options and result of pcl_ext_segment_variance.
  */
 #include "../variance/segment_variance_options.h"
+#include "reintegration_margin.h"
 #include "variance_tiles.h"
 
 #include <pcl_ext/apps/output.h>
@@ -19,7 +20,13 @@ namespace {
  * are the whole cloud's links, and every link has its seed in exactly one tile. The
  * halo points they reach carry the tile's segment to the merge, which joins it with the
  * owner's segment of the point (SegmentMerge); the minimum size applies to the joined
- * segments, counted over all tiles, and the ids go largest first, as untiled. */
+ * segments, counted over all tiles, and the ids go largest first, as untiled.
+ *
+ * Section 4's re-integration (on by default, as in pcl_ext_segment_variance) is a
+ * second pass: each tile keeps its core points' classes, the joined segments are
+ * numbered over the whole cloud, and each tile then re-integrates its own edge and
+ * boundary points into those segments with the whole cloud's segments and classes
+ * around it, its margin as wide as neededReintegrationMargin says. */
 class SegmentVarianceTiles : public VarianceTileMethod {
 public:
   void
@@ -33,17 +40,9 @@ public:
   {
     if (!options_.valid (cl) || !checkClassification())
       return false;
-    if (!cl.given ("reintegrate") && options_.intersections_path.empty() &&
-        options_.reintegrate) {
-      // Section 4 by default in pcl_ext_segment_variance; not yet tile by tile.
-      std::cout << "Note: pcl_ext_tiles segment_variance runs sections 2 and 3 (as "
-                   "pcl_ext_segment_variance -no_reintegrate): section 4's "
-                   "re-integration does not run tile by tile yet.\n";
-      options_.reintegrate = false;
-    }
-    if (options_.intersects()) {
-      std::cerr << "Error: pcl_ext_tiles segment_variance cannot run section 4 (the "
-                   "local intersections and -reintegrate) yet: run "
+    if (!options_.intersections_path.empty()) {
+      std::cerr << "Error: pcl_ext_tiles segment_variance cannot write the local "
+                   "intersection points (-intersections) yet: run "
                    "pcl_ext_segment_variance.\n";
       return false;
     }
@@ -86,6 +85,8 @@ public:
   {
     labels.assign (tile.cloud ? tile.cloud->size() : 0,
                    tiling::SegmentMerge::kNoSegment);
+    classes_.assign (labels.size(), 0);
+    needed_margin_ = surface_radius_ = 0.0;
     if (tile.core_points == 0)
       return true;
     if (!tile.neighbourhoods || tile.neighbourhoods->empty()) {
@@ -104,6 +105,22 @@ public:
     if (classes->size() != tile.cloud->size()) {
       std::cerr << "Error: the classification of tile " << tile.tile << " failed.\n";
       return false;
+    }
+    classes_.resize (classes->size());
+    for (std::size_t i = 0; i < classes->size(); ++i) {
+      classes_[i] = (*classes)[i].label;
+      // The core's largest surface neighbourhood: what bounds the reach of its points
+      // in another tile's re-integration.
+      const std::ptrdiff_t row =
+          tile.neighbourhoods->getRowOfPoint (static_cast<pcl::index_t> (i));
+      if (tile.core[i] &&
+          classes_[i] == static_cast<std::uint32_t> (PointClass::Surface) && row >= 0 &&
+          (*tile.neighbourhoods)[static_cast<std::size_t> (row)].size() > 0)
+        surface_radius_ = std::max (
+            surface_radius_,
+            std::sqrt (static_cast<double> (tile.neighbourhoods->getSquaredDistance (
+                static_cast<std::size_t> (row),
+                (*tile.neighbourhoods)[static_cast<std::size_t> (row)].size() - 1))));
     }
     bool surface = false;
     for (std::size_t i = 0; i < classes->size() && !surface; ++i)
@@ -139,6 +156,91 @@ public:
     return true;
   }
 
+  bool
+  needsRefine () const override
+  {
+    return options_.reintegrate;
+  }
+
+  const std::vector<std::uint32_t>*
+  getRefineValues () const override
+  {
+    return &classes_;
+  }
+
+  double
+  getRefineRadius () const override
+  {
+    return surface_radius_;
+  }
+
+  double
+  getRefineHops () const override
+  {
+    // F + 2 F + 1 neighbourhood radii (neededReintegrationMargin), F the reach factor,
+    // where the radii vary little.
+    return 3.0 * pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ>().getReachFactor() +
+           1.0;
+  }
+
+  bool
+  refine (const TileCloud& tile,
+          const std::vector<std::uint32_t>& segments,
+          const std::vector<std::uint32_t>& classes,
+          const std::vector<float>& tile_radii,
+          std::vector<std::uint32_t>& labels) override
+  {
+    labels = segments;
+    needed_margin_ = 0.0;
+    if (tile.core_points == 0 || !tile.neighbourhoods || tile.neighbourhoods->empty())
+      return true;
+    pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ> lsi;
+    options_.configure (tile.cloud, tile.neighbourhoods, threads_, lsi);
+    needed_margin_ = neededReintegrationMargin (
+        tile, segments, classes, tile_radii, lsi.getReachFactor());
+    const auto surface = static_cast<std::uint32_t> (PointClass::Surface);
+    const auto edge = static_cast<std::uint32_t> (PointClass::Edge);
+    const auto boundary = static_cast<std::uint32_t> (PointClass::Boundary);
+    bool into = false, examined = false;
+    auto ids = pcl::make_shared<pcl::PointCloud<pcl::Label>>();
+    auto point_classes = pcl::make_shared<pcl::PointCloud<pcl::Label>>();
+    ids->resize (segments.size());
+    point_classes->resize (segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const bool segmented = segments[i] != tiling::SegmentMerge::kNoSegment;
+      (*ids)[i].label = segmented ? segments[i] + 1 : 0;
+      (*point_classes)[i].label = classes[i];
+      const bool finite = pcl::isFinite ((*tile.cloud)[i]);
+      into = into || (segmented && classes[i] == surface && finite);
+      examined = examined || (tile.core[i] && !segmented && finite &&
+                              (classes[i] == edge || classes[i] == boundary));
+    }
+    // No segment to re-integrate into within the data, or nothing of the tile's own
+    // to re-integrate: the segments stay (LocalSurfaceIntersection would refuse the
+    // former).
+    if (!into || !examined)
+      return true;
+    lsi.setSegmentLabels (ids);
+    lsi.setPointClasses (point_classes);
+    pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> intersections;
+    pcl::PointCloud<pcl::Label> reintegrated;
+    if (!lsi.compute (intersections, reintegrated) ||
+        reintegrated.size() != segments.size()) {
+      std::cerr << "Error: the re-integration of tile " << tile.tile << " failed.\n";
+      return false;
+    }
+    for (std::size_t i = 0; i < segments.size(); ++i)
+      labels[i] = reintegrated[i].label == 0 ? tiling::SegmentMerge::kNoSegment
+                                             : reintegrated[i].label - 1;
+    return true;
+  }
+
+  double
+  getNeededMargin () const override
+  {
+    return needed_margin_;
+  }
+
 protected:
   const VarianceClassificationOptions&
   getClassificationOptions () const override
@@ -148,6 +250,9 @@ protected:
 
 private:
   SegmentVarianceOptions options_;
+  std::vector<std::uint32_t> classes_; ///< of every point of the last run()
+  double surface_radius_ = 0.0;        ///< of the last run()
+  double needed_margin_ = 0.0;         ///< of the last refine()
 };
 } // namespace
 

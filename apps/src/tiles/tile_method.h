@@ -99,6 +99,59 @@ public:
        const std::map<std::string, std::string>& settings,
        std::vector<std::uint32_t>& labels) = 0;
 
+  /** \brief Whether the method makes a second pass over the tiles once every tile has
+   * run and their segments are joined across the tiles (refine()): a step whose result
+   * at a point reads the whole cloud's segments around it. */
+  virtual bool
+  needsRefine () const
+  {
+    return false;
+  }
+
+  /** \brief For refine(): a value of every point of the tile of the last run() (its
+   * halo included; only the core's are kept, e.g. the classes), or null. */
+  virtual const std::vector<std::uint32_t>*
+  getRefineValues () const
+  {
+    return nullptr;
+  }
+
+  /** \brief After run(): the largest neighbourhood radius among the tile's own points
+   * that refine() reads beyond a point's neighbourhood (what bounds the reach of the
+   * points another tile's second pass did not load); 0 for none. */
+  virtual double
+  getRefineRadius () const
+  {
+    return 0.0;
+  }
+
+  /** \brief How far a point's result in refine() reaches, in neighbourhood radii: the
+   * tiles of the second pass start with the plan's halo times this over getReach()'s
+   * hops, and widen themselves where it is short (getNeededMargin()). */
+  virtual double
+  getRefineHops () const
+  {
+    return 1.0;
+  }
+
+  /** \brief The second pass on \a tile, loaded with the k-neighbourhoods of getReach():
+   * \a segments is the whole cloud's segment of every point (numbered over the whole
+   * cloud, tiling::SegmentMerge::kNoSegment for none), \a values what getRefineValues()
+   * gave for it in its owner's run, \a tile_radii what getRefineRadius() gave for each
+   * tile of the plan; \a labels the segments after the pass, one per point (only the
+   * core's are kept). getNeededMargin() then says whether the tile needed a wider
+   * margin. \return false on error (message printed) */
+  virtual bool
+  refine (const TileCloud& /*tile*/,
+          const std::vector<std::uint32_t>& segments,
+          const std::vector<std::uint32_t>& /*values*/,
+          const std::vector<float>& /*tile_radii*/,
+          std::vector<std::uint32_t>& labels)
+  {
+    labels = segments;
+    return true;
+  }
+
   /** \brief How many values per point the method reads beside x y z (carried in the
    * tiles' files, TileCloud::attributes); 0 (the default): none. */
   virtual std::size_t

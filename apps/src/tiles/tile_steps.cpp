@@ -3,6 +3,7 @@
  * alone (scheduler array jobs) or one after another.
  */
 #include "tile_steps.h"
+#include "second_pass_steps.h"
 #include "input_fields.h"
 #include "tile_outputs.h"
 
@@ -211,6 +212,10 @@ planStep (const std::string& method_name,
                    std::vector<float>& values) {
           return method.readAttributes (chunk, input, values);
         };
+    if (method.needsRefine() &&
+        (!tiling::TileResults::create (workdir, plan.getTotalPoints(), kRefineValues) ||
+         !tiling::TileResults::create (workdir, plan.getTotalPoints(), kRefined)))
+      return false;
     if (!tiling::TileResults::create (workdir, plan.getTotalPoints()) ||
         !tiling::writeTiles (plan, workdir, attributes, read_attributes) ||
         !tiling::saveTilePlan (planPath (workdir), plan))
@@ -323,17 +328,29 @@ tileStep (const tiling::TilePlan& plan,
     margin = std::max (needed, 1.25 * cloud.margin);
   }
   std::vector<std::uint64_t> core_indices;
-  std::vector<std::uint32_t> core_labels;
+  std::vector<std::uint32_t> core_labels, core_values;
   std::vector<tiling::HaloLabel> halo;
+  const std::vector<std::uint32_t>* values =
+      method.needsRefine() ? method.getRefineValues() : nullptr;
   for (std::size_t i = 0; i < labels.size(); ++i) {
     if (cloud.core[i]) {
       core_indices.push_back (cloud.indices[i]);
       core_labels.push_back (labels[i]);
+      if (values)
+        core_values.push_back (i < values->size() ? (*values)[i]
+                                                  : tiling::TileResults::kNoResult);
     }
     else if (labels[i] != tiling::SegmentMerge::kNoSegment)
       halo.push_back ({cloud.indices[i], cloud.owners[i], labels[i]});
   }
-  if (!tiling::TileResults::write (workdir, core_indices, core_labels))
+  if (!tiling::TileResults::write (workdir, core_indices, core_labels) ||
+      (values &&
+       (!tiling::TileResults::write (
+            workdir, core_indices, core_values, kRefineValues) ||
+        !tiling::saveTileValues (workdir,
+                                 tile,
+                                 kRefineRadius,
+                                 {static_cast<float> (method.getRefineRadius())}))))
     return false;
   if (method.getKind() == tiling::MergedResults::Kind::Segments &&
       (!tiling::saveHaloLabels (workdir, tile, halo) ||
@@ -353,10 +370,15 @@ tileStep (const tiling::TilePlan& plan,
 }
 
 void
-reportTilesNotDone (const std::string& workdir, const std::vector<std::size_t>& missing)
+reportTilesNotDone (const std::string& workdir,
+                    const std::vector<std::size_t>& missing,
+                    const std::string& pass)
 {
+  const bool second = pass == kRefined;
   std::cerr << "Error: " << missing.size() << " tile(s) of " << workdir
-            << " have not run or did not finish:";
+            << (second
+                    ? " have not run their second pass ('refine') or did not finish it:"
+                    : " have not run or did not finish:");
   for (std::size_t i = 0; i < missing.size() && i < 20; ++i)
     std::cerr << " " << missing[i];
   std::cerr << (missing.size() > 20 ? " ..." : "") << ".\n";
@@ -367,7 +389,8 @@ reportTilesNotDone (const std::string& workdir, const std::vector<std::size_t>& 
       std::cerr << "  tile " << t << " was started by " << start
                 << " and did not finish (the process stopped or died)\n";
   }
-  std::cerr << "Run 'pcl_ext_tiles tile I -workdir " << workdir
+  std::cerr << "Run 'pcl_ext_tiles " << (second ? "refine" : "tile") << " I -workdir "
+            << workdir
             << "' for each, then merge again; or 'pcl_ext_tiles resume OUTPUT -workdir "
             << workdir << "' (under mpirun too) runs them all and merges.\n";
 }
@@ -379,13 +402,19 @@ mergeStep (const tiling::TilePlan& plan,
            const std::string& workdir,
            const std::string& output)
 {
-  const auto missing = tiling::findTilesNotDone (workdir, plan.getGrid().size());
-  if (!missing.empty()) {
-    reportTilesNotDone (workdir, missing);
-    return false;
+  const std::string pass = lastPassOf (method);
+  for (const std::string& p : {std::string ("done"), pass}) {
+    const auto missing = tiling::findTilesNotDone (workdir, plan.getGrid().size(), p);
+    if (!missing.empty()) {
+      reportTilesNotDone (workdir, missing, p);
+      return false;
+    }
   }
   StageTimer timer ("Merging into " + output);
   const bool segments = method.getKind() == tiling::MergedResults::Kind::Segments;
+  // After a second pass the segments are numbered over the whole cloud already.
+  const bool refined = method.needsRefine();
+  const auto kind = refined ? tiling::MergedResults::Kind::PerPoint : method.getKind();
   const bool las = io::fileExtension (output) == "las";
   const bool per_tile = TileOutputs::isPattern (output);
   if (per_tile && !las) {
@@ -405,7 +434,7 @@ mergeStep (const tiling::TilePlan& plan,
     like.cloud.fields = layout.fields;
     if (!field.checkInput (like, plan.inputs.front()))
       return false;
-    const std::uint64_t min_size = method.getMinSegmentSize();
+    const std::uint64_t min_size = refined ? 0 : method.getMinSegmentSize();
     const tiling::TileGrid grid = plan.getGrid();
     const io::LasFileInfo* like_las = like.las ? &*like.las : nullptr;
     TileOutputs tile_outputs (output, grid, plan.origin, like_las);
@@ -423,7 +452,9 @@ mergeStep (const tiling::TilePlan& plan,
       tiling::MergedResults merged;
       if (segments && min_size > 0)
         merged.setSegmentsBySize (min_size);
-      if (!merged.open (plan, workdir, method.getKind()))
+      if (refined)
+        merged.setResultsName (kRefined);
+      if (!merged.open (plan, workdir, kind))
         return false;
       if (segments && min_size > 0 && merged.getNumberOfSegments() == 0) {
         std::cerr << "\nError: no segment of at least " << min_size << " points.\n";

@@ -65,11 +65,13 @@ tileStep (const tiling::TilePlan& plan,
           std::size_t tile,
           unsigned int threads);
 
-/** \brief Print which tiles of \a workdir have not run or did not finish (\a missing),
- * naming the process that started each unfinished one, and how to complete the run. */
+/** \brief Print which tiles of \a workdir have not run or did not finish pass \a pass
+ * (\a missing), naming the process that started each unfinished one, and how to
+ * complete the run. */
 void
 reportTilesNotDone (const std::string& workdir,
-                    const std::vector<std::size_t>& missing);
+                    const std::vector<std::size_t>& missing,
+                    const std::string& pass = "done");
 
 /** \brief Write \a output: every input point with its fields and the merged result in
  * \a field's field, in the inputs' coordinates. */

@@ -2,6 +2,7 @@
  * pcl_ext_tiles: a method over a cloud larger than memory, tile by tile with halos,
  * with the result of the method's own tool on the whole cloud.
  */
+#include "second_pass_steps.h"
 #include "tile_scheduler.h"
 #include "tile_steps.h"
 
@@ -31,9 +32,11 @@ constexpr const char* kDescription =
     "99 % of the points get pcl_ext_crf_classify's class). An output named "
     "with a '#' (out_#.las) gives one LAS file per tile, '#' its number, and an index "
     "of the files with their boxes (out_index.csv). Steps for scheduler "
-    "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D' and "
-    "'tile I -workdir D' for every tile I, then 'merge output -workdir D'; 'resume "
-    "output -workdir D' runs the tiles that have not run or did not finish (a process "
+    "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D', "
+    "'tile I -workdir D' and (segment_variance's section 4, a second pass over the "
+    "tiles once their segments are joined) 'refine I -workdir D' for every tile I, "
+    "each step for all tiles before the next, then 'merge output -workdir D'; "
+    "'resume output -workdir D' runs what has not run or did not finish (a process "
     "that died), then merges.";
 
 /** The tool's own options, kept out of the method's. */
@@ -184,6 +187,29 @@ runTiles (pcl_ext::apps::TileScheduler& scheduler,
                 << " s\n";
   }
   ok = scheduler.allOk (ok);
+  if (ok && method.needsRefine()) {
+    // The second pass: the segments joined once, then the tiles that have not run it
+    // (every process lists the same ones before any runs one).
+    ok = scheduler.allOk (!leader ||
+                          pcl_ext::apps::joinStep (plan, method, options.workdir));
+    const auto to_refine =
+        ok ? pcl_ext::tiling::findTilesNotDone (
+                 options.workdir, tiles, pcl_ext::apps::lastPassOf (method))
+           : std::vector<std::size_t>();
+    ok = scheduler.allOk (ok);
+    scheduler.startPhase (to_refine.size());
+    while (ok && scheduler.next (phase_index)) {
+      const std::size_t tile = to_refine[phase_index];
+      ok = pcl_ext::apps::refineStep (
+          plan, method, options.workdir, tile, options.threads);
+      if (!ok)
+        std::cerr << "Error: the second pass of tile " << tile
+                  << " failed; the work folder " << options.workdir
+                  << " is kept: run 'pcl_ext_tiles refine " << tile << " -workdir "
+                  << options.workdir << "', then 'merge', or 'resume'.\n";
+    }
+    ok = scheduler.allOk (ok);
+  }
   if (leader && ok)
     ok = pcl_ext::apps::mergeStep (plan, method, field, options.workdir, output);
   ok = scheduler.allOk (ok);
@@ -316,7 +342,7 @@ runResume (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
              : 1;
 }
 
-/** `estimate I`, `tile I` or `merge output`, each with -workdir. */
+/** `estimate I`, `tile I`, `refine I` or `merge output`, each with -workdir. */
 int
 runStep (int argc, char** argv)
 {
@@ -359,6 +385,11 @@ runStep (int argc, char** argv)
                plan, *method, options.workdir, tile, options.threads)
                ? 0
                : 1;
+  if (step == "refine")
+    return pcl_ext::apps::refineStep (
+               plan, *method, options.workdir, tile, options.threads)
+               ? 0
+               : 1;
   return pcl_ext::apps::reduceStep (plan, *method, options.workdir) &&
                  pcl_ext::apps::tileStep (
                      plan, *method, options.workdir, tile, options.threads)
@@ -373,7 +404,7 @@ main (int argc, char** argv)
   // Under mpirun every rank runs main; the steps are for one process each.
   const auto scheduler = pcl_ext::apps::makeTileScheduler (argc, argv);
   const std::string first = argc > 1 ? argv[1] : "";
-  if (first == "estimate" || first == "tile" || first == "merge")
+  if (first == "estimate" || first == "tile" || first == "refine" || first == "merge")
     return runStep (argc, argv);
   if (first == "resume")
     return runResume (argc, argv, *scheduler);

@@ -9,6 +9,7 @@
 
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/search/neighbourhoods.h>
+#include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 
 #include <cmath>
@@ -153,6 +154,21 @@ struct SegmentVarianceOptions {
     rg.setMaxDistanceFactor (max_distance_factor);
     rg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
     rg.setNumberOfThreads (threads);
+  }
+
+  /** \brief Set up section 4 (the local intersections and the re-integration) of
+   * \a cloud on its computed neighbourhoods \a nb; segment labels and classes are the
+   * caller's. */
+  void
+  configure (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+             const Neighbourhoods<pcl::PointXYZ>::Ptr& nb,
+             unsigned int threads,
+             LocalSurfaceIntersection<pcl::PointXYZ>& lsi) const
+  {
+    lsi.setInputCloud (cloud);
+    lsi.setNeighbourhoods (nb);
+    lsi.setParallelAngleThreshold (parallel_angle * M_PI / 180.0);
+    lsi.setNumberOfThreads (threads);
   }
 };
 } // namespace apps

@@ -13,6 +13,46 @@
 namespace pcl_ext {
 namespace tiling {
 bool
+joinTileSegments (const TilePlan& plan,
+                  const std::string& folder,
+                  bool by_size,
+                  std::uint64_t min_size,
+                  SegmentMerge& merge)
+{
+  const std::size_t tiles = plan.getGrid().size();
+  // The owners' labels of every halo point, read a tile at a time.
+  std::vector<HaloLabel> halo;
+  std::vector<std::uint64_t> indices;
+  std::vector<std::uint32_t> owner_labels;
+  for (std::size_t t = 0; t < tiles; ++t) {
+    if (!loadHaloLabels (folder, t, halo))
+      return false;
+    indices.resize (halo.size());
+    for (std::size_t i = 0; i < halo.size(); ++i)
+      indices[i] = halo[i].index;
+    if (!TileResults::readAt (folder, indices, owner_labels))
+      return false;
+    for (std::size_t i = 0; i < halo.size(); ++i)
+      if (owner_labels[i] != TileResults::kNoResult)
+        merge.join (SegmentMerge::key (halo[i].owner, owner_labels[i]),
+                    SegmentMerge::key (static_cast<std::uint32_t> (t), halo[i].label));
+  }
+  if (!by_size)
+    return true;
+  std::vector<SegmentSize> sizes;
+  for (std::size_t t = 0; t < tiles; ++t) {
+    if (!loadSegmentSizes (folder, t, sizes))
+      return false;
+    for (const auto& s : sizes)
+      merge.addPoints (SegmentMerge::key (static_cast<std::uint32_t> (t), s.label),
+                       s.points,
+                       s.first);
+  }
+  merge.numberBySize (min_size);
+  return true;
+}
+
+bool
 MergedResults::open (const TilePlan& plan, const std::string& folder, Kind kind)
 {
   plan_ = plan;
@@ -24,39 +64,8 @@ MergedResults::open (const TilePlan& plan, const std::string& folder, Kind kind)
   input_ = 0;
   next_index_ = 0;
   failed_ = false;
-  if (kind_ == Kind::Segments) {
-    // Join first: the owners' labels of every halo point, read a tile at a time.
-    std::vector<HaloLabel> halo;
-    std::vector<std::uint64_t> indices;
-    std::vector<std::uint32_t> owner_labels;
-    for (std::size_t t = 0; t < grid_.size(); ++t) {
-      if (!loadHaloLabels (folder_, t, halo))
-        return false;
-      indices.resize (halo.size());
-      for (std::size_t i = 0; i < halo.size(); ++i)
-        indices[i] = halo[i].index;
-      if (!TileResults::readAt (folder_, indices, owner_labels))
-        return false;
-      for (std::size_t i = 0; i < halo.size(); ++i)
-        if (owner_labels[i] != TileResults::kNoResult)
-          merge_.join (
-              SegmentMerge::key (halo[i].owner, owner_labels[i]),
-              SegmentMerge::key (static_cast<std::uint32_t> (t), halo[i].label));
-    }
-    if (by_size_) {
-      std::vector<SegmentSize> sizes;
-      for (std::size_t t = 0; t < grid_.size(); ++t) {
-        if (!loadSegmentSizes (folder_, t, sizes))
-          return false;
-        for (const auto& s : sizes)
-          merge_.addPoints (SegmentMerge::key (static_cast<std::uint32_t> (t), s.label),
-                            s.points,
-                            s.first);
-      }
-      merge_.numberBySize (min_size_);
-    }
-  }
-  return true;
+  return kind_ != Kind::Segments ||
+         joinTileSegments (plan_, folder_, by_size_, min_size_, merge_);
 }
 
 std::size_t
@@ -79,7 +88,7 @@ MergedResults::read (std::size_t max_points,
       continue;
     }
     input = input_;
-    if (!TileResults::read (folder_, next_index_, n, values)) {
+    if (!TileResults::read (folder_, next_index_, n, values, results_name_)) {
       failed_ = true;
       return 0;
     }

@@ -47,6 +47,25 @@ writeAt (int fd, const void* bytes, std::size_t size, std::uint64_t offset)
   return true;
 }
 
+/** Reads all of \a size bytes at \a offset; false at the end of the file first. */
+bool
+readAllAt (int fd, void* bytes, std::size_t size, std::uint64_t offset)
+{
+  auto* p = static_cast<char*> (bytes);
+  while (size > 0) {
+    const ssize_t r = ::pread (fd, p, size, static_cast<off_t> (offset));
+    if (r <= 0) {
+      if (r < 0 && errno == EINTR)
+        continue;
+      return false;
+    }
+    p += r;
+    size -= static_cast<std::size_t> (r);
+    offset += static_cast<std::uint64_t> (r);
+  }
+  return true;
+}
+
 /** An unsigned key of a float that sorts as the floats do. */
 std::uint32_t
 orderKey (float v)
@@ -157,15 +176,17 @@ readRecords (const std::string& path,
 } // namespace
 
 std::string
-TileResults::pathIn (const std::string& folder)
+TileResults::pathIn (const std::string& folder, const std::string& name)
 {
-  return folder + "/results.bin";
+  return folder + "/" + name + ".bin";
 }
 
 bool
-TileResults::create (const std::string& folder, std::uint64_t points)
+TileResults::create (const std::string& folder,
+                     std::uint64_t points,
+                     const std::string& name)
 {
-  const std::string path = pathIn (folder);
+  const std::string path = pathIn (folder, name);
   return io::writeFileAtomically (path, [points] (const std::string& temporary) {
     std::ofstream out (temporary, std::ios::binary);
     const std::vector<std::uint32_t> block (kBlockValues, kNoResult);
@@ -182,9 +203,10 @@ TileResults::create (const std::string& folder, std::uint64_t points)
 bool
 TileResults::write (const std::string& folder,
                     const std::vector<std::uint64_t>& indices,
-                    const std::vector<std::uint32_t>& values)
+                    const std::vector<std::uint32_t>& values,
+                    const std::string& name)
 {
-  const std::string path = pathIn (folder);
+  const std::string path = pathIn (folder, name);
   const int fd = ::open (path.c_str(), O_WRONLY);
   struct stat st;
   if (fd < 0 || ::fstat (fd, &st) != 0) {
@@ -218,16 +240,27 @@ TileResults::write (const std::string& folder,
 bool
 TileResults::readAt (const std::string& folder,
                      const std::vector<std::uint64_t>& indices,
-                     std::vector<std::uint32_t>& values)
+                     std::vector<std::uint32_t>& values,
+                     const std::string& name)
 {
-  const std::string path = pathIn (folder);
+  const std::string path = pathIn (folder, name);
   values.resize (indices.size());
-  std::ifstream in (path, std::ios::binary);
-  for (std::size_t i = 0; i < indices.size() && in; ++i) {
-    in.seekg (static_cast<std::streamoff> (indices[i] * sizeof (std::uint32_t)));
-    in.read (reinterpret_cast<char*> (&values[i]), sizeof (std::uint32_t));
+  const int fd = ::open (path.c_str(), O_RDONLY);
+  bool ok = fd >= 0;
+  // Runs of consecutive indices (a tile's points mostly come in runs) in one call each.
+  for (std::size_t i = 0; i < indices.size() && ok;) {
+    std::size_t j = i + 1;
+    while (j < indices.size() && indices[j] == indices[j - 1] + 1)
+      ++j;
+    ok = readAllAt (fd,
+                    values.data() + i,
+                    (j - i) * sizeof (std::uint32_t),
+                    indices[i] * sizeof (std::uint32_t));
+    i = j;
   }
-  if (!in) {
+  if (fd >= 0)
+    ::close (fd);
+  if (!ok) {
     PCL_ERROR ("[pcl_ext::tiling::TileResults] cannot read %s (missing or shorter than "
                "the plan's points).\n",
                path.c_str());
@@ -241,9 +274,10 @@ bool
 TileResults::read (const std::string& folder,
                    std::uint64_t first,
                    std::size_t count,
-                   std::vector<std::uint32_t>& values)
+                   std::vector<std::uint32_t>& values,
+                   const std::string& name)
 {
-  const std::string path = pathIn (folder);
+  const std::string path = pathIn (folder, name);
   values.resize (count);
   std::ifstream in (path, std::ios::binary);
   in.seekg (static_cast<std::streamoff> (first * sizeof (std::uint32_t)));
@@ -327,6 +361,34 @@ loadSegmentSizes (const std::string& folder,
   return true;
 }
 
+bool
+saveSegmentIds (const std::string& folder,
+                std::size_t tile,
+                const std::vector<std::uint32_t>& ids)
+{
+  return writeRecords (
+      valuesPath (folder, tile, "ids"),
+      ids.size(),
+      sizeof (std::uint32_t),
+      [&ids] (std::size_t i, char* r) { std::memcpy (r, &ids[i], 4); });
+}
+
+bool
+loadSegmentIds (const std::string& folder,
+                std::size_t tile,
+                std::vector<std::uint32_t>& ids)
+{
+  ids.clear();
+  std::vector<char> bytes;
+  if (!readRecords (
+          valuesPath (folder, tile, "ids"), sizeof (std::uint32_t), tile, bytes))
+    return false;
+  ids.resize (bytes.size() / sizeof (std::uint32_t));
+  if (!ids.empty())
+    std::memcpy (ids.data(), bytes.data(), bytes.size());
+  return true;
+}
+
 namespace {
 std::string
 startPath (const std::string& folder, std::size_t tile)
@@ -361,22 +423,22 @@ describeTileStart (const std::string& folder, std::size_t tile)
 }
 
 bool
-markTileDone (const std::string& folder, std::size_t tile)
+markTileDone (const std::string& folder, std::size_t tile, const std::string& pass)
 {
-  if (!io::writeTextFile (folder + "/tile_" + std::to_string (tile) + ".done",
-                          "done\n"))
+  if (!io::writeTextFile (folder + "/tile_" + std::to_string (tile) + "." + pass,
+                          pass + "\n"))
     return false;
   std::remove (startPath (folder, tile).c_str());
   return true;
 }
 
 std::vector<std::size_t>
-findTilesNotDone (const std::string& folder, std::size_t tiles)
+findTilesNotDone (const std::string& folder, std::size_t tiles, const std::string& pass)
 {
   std::vector<std::size_t> missing;
   struct stat st;
   for (std::size_t t = 0; t < tiles; ++t) {
-    const std::string path = folder + "/tile_" + std::to_string (t) + ".done";
+    const std::string path = folder + "/tile_" + std::to_string (t) + "." + pass;
     if (::stat (path.c_str(), &st) != 0)
       missing.push_back (t);
   }

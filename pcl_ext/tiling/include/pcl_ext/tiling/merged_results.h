@@ -7,6 +7,7 @@
 #include <pcl_ext/tiling/point_file_chunks.h>
 #include <pcl_ext/tiling/segment_merge.h>
 #include <pcl_ext/tiling/tile_plan.h>
+#include <pcl_ext/tiling/tile_results.h>
 
 #include <pcl/PCLPointCloud2.h>
 
@@ -17,6 +18,18 @@
 
 namespace pcl_ext {
 namespace tiling {
+/** \brief Join the segments of the tiles of \a plan in \a folder into \a merge: every
+ * halo point's label in a tile with its owner's (SegmentMerge::join); with \a by_size,
+ * the tiles' segment sizes added and the joined segments numbered largest first, those
+ * under \a min_size points dropped (SegmentMerge::numberBySize). \return false
+ * (PCL_ERROR names it) when a tile was not run or a file is broken */
+bool
+joinTileSegments (const TilePlan& plan,
+                  const std::string& folder,
+                  bool by_size,
+                  std::uint64_t min_size,
+                  SegmentMerge& merge);
+
 /** \brief The points of a tiled run's inputs, in chunks, with their results: what the
  * merge step writes out.
  *
@@ -41,6 +54,14 @@ public:
   {
     by_size_ = true;
     min_size_ = min_size;
+  }
+
+  /** \brief For per-point results: read those named \a name (TileResults) rather than
+   * the tiles' own results; call before open(). */
+  void
+  setResultsName (const std::string& name)
+  {
+    results_name_ = name;
   }
 
   /** \brief After open() with setSegmentsBySize: the number of segments kept. */
@@ -85,6 +106,7 @@ private:
   bool failed_ = false;
   bool by_size_ = false;
   std::uint64_t min_size_ = 1;
+  std::string results_name_ = TileResults::kResults;
 };
 } // namespace tiling
 } // namespace pcl_ext

@@ -15,33 +15,41 @@ namespace tiling {
  *
  * Each tile writes the results of its core points, at their indices: tiles own disjoint
  * points, so any number of processes write the one file at once. A point no tile wrote
- * (not finite, or its tile not run yet) reads as kNoResult. */
+ * (not finite, or its tile not run yet) reads as kNoResult. A method that keeps more
+ * than one value per point (the classes beside the segments, the segments after a
+ * second pass) keeps each in a file of its own name, `<name>.bin`. */
 class TileResults {
 public:
   static constexpr std::uint32_t kNoResult = 0xFFFFFFFFu;
+  /** \brief The name of the results the merge writes out by default. */
+  static constexpr const char* kResults = "results";
 
-  /** \brief The results file of \a folder. */
+  /** \brief The file of the results named \a name in \a folder. */
   static std::string
-  pathIn (const std::string& folder);
+  pathIn (const std::string& folder, const std::string& name = kResults);
 
   /** \brief Make the file for \a points points, every result kNoResult. \return false
    * (PCL_ERROR) when it cannot be written */
   static bool
-  create (const std::string& folder, std::uint64_t points);
+  create (const std::string& folder,
+          std::uint64_t points,
+          const std::string& name = kResults);
 
   /** \brief Write \a values at the global indices \a indices (ascending). \return false
    * (PCL_ERROR) when the file is missing or shorter, or the disk is full */
   static bool
   write (const std::string& folder,
          const std::vector<std::uint64_t>& indices,
-         const std::vector<std::uint32_t>& values);
+         const std::vector<std::uint32_t>& values,
+         const std::string& name = kResults);
 
   /** \brief Read the results of the points \a indices (any order) into \a values, the
    * file opened once. \return false (PCL_ERROR) when the file is missing or shorter */
   static bool
   readAt (const std::string& folder,
           const std::vector<std::uint64_t>& indices,
-          std::vector<std::uint32_t>& values);
+          std::vector<std::uint32_t>& values,
+          const std::string& name = kResults);
 
   /** \brief Read the results of the points [first, first + count) into \a values.
    * \return false (PCL_ERROR) when the file is missing or shorter */
@@ -49,7 +57,8 @@ public:
   read (const std::string& folder,
         std::uint64_t first,
         std::size_t count,
-        std::vector<std::uint32_t>& values);
+        std::vector<std::uint32_t>& values,
+        const std::string& name = kResults);
 };
 
 /** \brief A halo point's label in a tile that does not own it: what the merge of
@@ -96,6 +105,23 @@ loadSegmentSizes (const std::string& folder,
                   std::size_t tile,
                   std::vector<SegmentSize>& sizes);
 
+/** \brief Write the global segment ids of tile \a tile's segments, one per label of the
+ * tile (`tile_<tile>.ids`, replaced atomically; SegmentMerge::kNoSegment for a label
+ * the tile's core does not hold or whose segment was dropped): what a second pass over
+ * the tiles reads to know every point's segment. \return false (PCL_ERROR) when it
+ * cannot be written */
+bool
+saveSegmentIds (const std::string& folder,
+                std::size_t tile,
+                const std::vector<std::uint32_t>& ids);
+
+/** \brief Read what saveSegmentIds wrote for tile \a tile. \return false (PCL_ERROR
+ * names the file) when it is missing or broken */
+bool
+loadSegmentIds (const std::string& folder,
+                std::size_t tile,
+                std::vector<std::uint32_t>& ids);
+
 /** \brief Record that a process started tile \a tile (`tile_<tile>.running`: which
  * process, on which host, when), so that a tile whose process died can be named.
  * \return false (PCL_ERROR) when it cannot be written */
@@ -107,15 +133,20 @@ markTileStarted (const std::string& folder, std::size_t tile);
 std::string
 describeTileStart (const std::string& folder, std::size_t tile);
 
-/** \brief Record that tile \a tile wrote all its results (`tile_<tile>.done`; its
- * start record is removed). \return false (PCL_ERROR) when it cannot be written */
+/** \brief Record that tile \a tile wrote all its results of pass \a pass
+ * (`tile_<tile>.<pass>`: "done" the tiles' pass, "refined" a second one; its start
+ * record is removed). \return false (PCL_ERROR) when it cannot be written */
 bool
-markTileDone (const std::string& folder, std::size_t tile);
+markTileDone (const std::string& folder,
+              std::size_t tile,
+              const std::string& pass = "done");
 
 /** \brief The tiles among 0 .. \a tiles - 1 of \a folder that have not been marked
- * done, ascending. */
+ * done with pass \a pass, ascending. */
 std::vector<std::size_t>
-findTilesNotDone (const std::string& folder, std::size_t tiles);
+findTilesNotDone (const std::string& folder,
+                  std::size_t tiles,
+                  const std::string& pass = "done");
 
 /** \brief Save \a values (one per core point of tile \a tile, any order) as the tile's
  * `tile_<tile>.<name>` file: the material of a statistic of the whole cloud that a
