@@ -254,6 +254,30 @@ TEST_F (TilesSegmentsApp, SlurmScriptRunsTheSecondPassAfterTheTiles)
   EXPECT_NE (jobs[5].find (" merge "), std::string::npos) << jobs[5];
 }
 
+TEST_F (TilesSegmentsApp, AnEarlierRunsWorkFolderIsClearedByANewPlan)
+{
+  // A run that kept its work folder, then another scene in the same folder: the marks
+  // of the first (tiles run, segments joined, second passes done) would pass for the
+  // second's.
+  makeScene ("indoor");
+  const std::string work = " -workdir " + path ("work") + " -keep_workdir";
+  ASSERT_EQ (runTiled ("first.las", "-tile_size 3" + work), 0) << output_;
+  ASSERT_TRUE (exists ("work/segments.joined"));
+  std::ofstream (path ("work/notes.txt")) << "the user's\n";
+  const std::string generate = std::string (PCL_EXT_GENERATE_SCENE_EXE) + " indoor '" +
+                               path ("scene.pcd") +
+                               "' -points 60000 -seed 5 > /dev/null 2>&1";
+  ASSERT_EQ (std::system (generate.c_str()), 0);
+  const std::string whole = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " '" +
+                            path ("scene.pcd") + "' '" + path ("whole.las") +
+                            "' -output_field seg > /dev/null 2>&1";
+  ASSERT_EQ (std::system (whole.c_str()), 0);
+  whole_ = readSegments (path ("whole.las"));
+  ASSERT_EQ (runTiled ("second.las", "-tile_size 3" + work), 0) << output_;
+  expectSameAsWhole ("second.las");
+  EXPECT_TRUE (exists ("work/notes.txt")); // only the steps' own files are removed
+}
+
 TEST_F (TilesSegmentsApp, ATileThatOwnsNoPointChangesNothing)
 {
   // Spheres on the ground, far apart: 2 m tiles between them own no point.

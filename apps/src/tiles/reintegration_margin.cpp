@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pcl_ext {
 namespace apps {
@@ -208,7 +209,7 @@ neededReintegrationMargin (const TileCloud& tile,
       unloaded.push_back (t);
   }
 
-  double short_by = 0.0;
+  double short_by = -std::numeric_limits<double>::infinity();
   for (const std::size_t i : examined) {
     const auto& q = cloud[i];
     const double space = tile.getReach (q.x, q.y);
@@ -224,7 +225,7 @@ neededReintegrationMargin (const TileCloud& tile,
         short_by = std::max (short_by, to_reach - space);
     }
   }
-  return short_by > 0.0 ? tile.margin + short_by : 0.0;
+  return std::max (0.0, tile.margin + short_by);
 }
 } // namespace apps
 } // namespace pcl_ext

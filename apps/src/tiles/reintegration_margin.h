@@ -13,7 +13,9 @@ namespace pcl_ext {
 namespace apps {
 /** \brief The margin around \a tile's core within which the re-integration of every
  * core point (pcl_ext::LocalSurfaceIntersection with reach factor F = \a reach_factor)
- * reads only data the tile holds; 0 when its present margin is enough.
+ * reads only data the tile holds (narrower than the present one where that is wider
+ * than needed; 0 when no core point is to be re-integrated or none is near an edge of
+ * the data).
  *
  * With r(p) the radius of p's neighbourhood, an edge or boundary point q without a
  * segment reads:

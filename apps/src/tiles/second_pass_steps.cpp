@@ -90,18 +90,24 @@ refineStep (const tiling::TilePlan& plan,
   TileCloud cloud;
   method.setNumberOfThreads (threads);
   NeighbourhoodReach reach = method.getReach();
-  // The halo covers reach.hops neighbourhoods; the second pass reaches getRefineHops.
-  double margin = plan.halo * method.getRefineHops() / std::max (reach.hops, 1);
   reach.hops = 1;
   std::vector<std::uint32_t> owner_labels, segments, values, labels, ids;
   std::map<std::uint32_t, std::vector<std::uint32_t>> ids_of_tile;
-  // Every tile's largest radius, rounded up to a float as saved.
-  std::vector<float> tile_radii (plan.getGrid().size(), 0.0f), one;
+  // Every tile's largest radius, rounded up to a float as saved, and the margin this
+  // tile's first pass estimated for it.
+  std::vector<float> tile_radii (plan.getGrid().size(), 0.0f), saved;
+  double margin = 0.0;
   for (std::size_t t = 0; t < tile_radii.size(); ++t) {
-    if (!tiling::loadTileValues (workdir, t, kRefineRadius, one))
+    if (!tiling::loadTileValues (workdir, t, kRefineBounds, saved) ||
+        saved.size() != 2) {
+      std::cerr << "Error: the first pass of tile " << t << " in " << workdir
+                << " left no bounds for the second (tile_" << t << "." << kRefineBounds
+                << ").\n";
       return false;
-    for (const float r : one)
-      tile_radii[t] = std::max (tile_radii[t], std::nextafter (r, INFINITY));
+    }
+    tile_radii[t] = std::nextafter (saved[0], INFINITY);
+    if (t == tile)
+      margin = saved[1];
   }
   for (;;) {
     if (!loadTileCloud (plan, workdir, tile, reach, threads, cloud, margin) ||

@@ -15,10 +15,10 @@ namespace pcl_ext {
 namespace apps {
 /** \brief The work files of the second pass: what the first pass keeps per point for it
  * (TileMethod::getRefineValues), the second pass's results, and each tile's largest
- * radius (TileMethod::getRefineRadius). */
+ * radius and estimated margin (TileMethod::getRefineRadius, getRefineMargin). */
 constexpr const char* kRefineValues = "values";
 constexpr const char* kRefined = "refined";
-constexpr const char* kRefineRadius = "refine_radius";
+constexpr const char* kRefineBounds = "refine";
 
 /** \brief For a method with a second pass (TileMethod::needsRefine), once every tile
  * has run: join the tiles' segments and number them over the whole cloud (minimum size

@@ -86,7 +86,7 @@ public:
     labels.assign (tile.cloud ? tile.cloud->size() : 0,
                    tiling::SegmentMerge::kNoSegment);
     classes_.assign (labels.size(), 0);
-    needed_margin_ = surface_radius_ = 0.0;
+    needed_margin_ = surface_radius_ = refine_margin_ = 0.0;
     if (tile.core_points == 0)
       return true;
     if (!tile.neighbourhoods || tile.neighbourhoods->empty()) {
@@ -153,6 +153,15 @@ public:
         labels[static_cast<std::size_t> (i)] = next;
       ++next;
     }
+    // The second pass's margin as the tile's own segments have it (the whole cloud's
+    // differ by their minimum size and across the tiles' borders).
+    if (options_.reintegrate)
+      refine_margin_ = neededReintegrationMargin (
+          tile,
+          labels,
+          classes_,
+          {},
+          pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ>().getReachFactor());
     return true;
   }
 
@@ -175,12 +184,9 @@ public:
   }
 
   double
-  getRefineHops () const override
+  getRefineMargin () const override
   {
-    // F + 2 F + 1 neighbourhood radii (neededReintegrationMargin), F the reach factor,
-    // where the radii vary little.
-    return 3.0 * pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ>().getReachFactor() +
-           1.0;
+    return refine_margin_;
   }
 
   bool
@@ -252,6 +258,7 @@ private:
   SegmentVarianceOptions options_;
   std::vector<std::uint32_t> classes_; ///< of every point of the last run()
   double surface_radius_ = 0.0;        ///< of the last run()
+  double refine_margin_ = 0.0;         ///< of the last run()
   double needed_margin_ = 0.0;         ///< of the last refine()
 };
 } // namespace

@@ -125,13 +125,13 @@ public:
     return 0.0;
   }
 
-  /** \brief How far a point's result in refine() reaches, in neighbourhood radii: the
-   * tiles of the second pass start with the plan's halo times this over getReach()'s
-   * hops, and widen themselves where it is short (getNeededMargin()). */
+  /** \brief After run(): the margin the tile's second pass will likely need, estimated
+   * from what the tile knows after the first (its own segments for the whole cloud's);
+   * the second pass starts with it and widens itself where it is short. */
   virtual double
-  getRefineHops () const
+  getRefineMargin () const
   {
-    return 1.0;
+    return 0.0;
   }
 
   /** \brief The second pass on \a tile, loaded with the k-neighbourhoods of getReach():

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -146,6 +147,33 @@ segmentSizes (const TileCloud& cloud, const std::vector<std::uint32_t>& labels)
   return sizes;
 }
 
+/** Remove what an earlier run left in \a workdir (a run that stopped, or one with
+ * -keep_workdir): its tiles' files and marks would pass for this plan's. Only the
+ * names the steps write are touched. */
+bool
+removeEarlierRun (const std::string& workdir)
+{
+  std::error_code error;
+  std::vector<std::filesystem::path> earlier;
+  for (const auto& entry : std::filesystem::directory_iterator (workdir, error)) {
+    const std::string name = entry.path().filename().string();
+    const std::size_t digits = name.find_first_not_of ("0123456789", 5);
+    const bool tile_file = name.rfind ("tile_", 0) == 0 && digits > 5 &&
+                           digits < name.size() && name[digits] == '.';
+    if (tile_file || name == "plan.txt" || name == "segments.joined" ||
+        name == "results.bin" || name == "values.bin" || name == "refined.bin")
+      earlier.push_back (entry.path());
+  }
+  for (const auto& path : earlier)
+    std::filesystem::remove (path, error);
+  if (error) {
+    std::cerr << "Error: cannot clear the work folder " << workdir << " of an earlier "
+              << "run: " << error.message() << ".\n";
+    return false;
+  }
+  return true;
+}
+
 std::vector<std::string>
 splitArguments (const std::string& text)
 {
@@ -180,6 +208,8 @@ planStep (const std::string& method_name,
     std::cerr << "Error: cannot make the work folder " << workdir << ".\n";
     return false;
   }
+  if (!removeEarlierRun (workdir))
+    return false;
   StageTimer timer ("Planning");
   try {
     // The grid's size and halo need the box: plan once to get it.
@@ -349,8 +379,9 @@ tileStep (const tiling::TilePlan& plan,
             workdir, core_indices, core_values, kRefineValues) ||
         !tiling::saveTileValues (workdir,
                                  tile,
-                                 kRefineRadius,
-                                 {static_cast<float> (method.getRefineRadius())}))))
+                                 kRefineBounds,
+                                 {static_cast<float> (method.getRefineRadius()),
+                                  static_cast<float> (method.getRefineMargin())}))))
     return false;
   if (method.getKind() == tiling::MergedResults::Kind::Segments &&
       (!tiling::saveHaloLabels (workdir, tile, halo) ||
