@@ -2,10 +2,10 @@
  * pcl_ext_tiles segment_variance run as a command: generated scenes segmented tile by
  * tile, in one command, in steps and shared among MPI ranks, give the segments of
  * pcl_ext_segment_variance on the whole cloud (the same partition of the points, and
- * the same ids: largest first), with section 4's re-integration (the default, a second
- * pass over the tiles) and without it; a wall across four tiles' corner is one segment;
- * a tile that owns no point, a tile of one point and points without coordinates change
- * nothing.
+ * the same ids: largest first), with section 4's re-integration (-reintegrate, a second
+ * pass over the tiles) and without it (the tiles' default); a wall across four tiles'
+ * corner is one segment; a tile that owns no point, a tile of one point and points
+ * without coordinates change nothing.
  */
 #include "../app_test.h"
 #include "sbatch_shim.h"
@@ -140,23 +140,29 @@ protected:
 
 TEST_F (TilesSegmentsApp, AnyTileSizeGivesTheWholeCloudsSegments)
 {
+  // Section 4 (-reintegrate) as the whole cloud's default.
   makeScene ("indoor");
-  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3 -threads 1"), 0) << output_;
+  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3 -threads 1 -reintegrate"), 0) << output_;
   expectSameAsWhole ("t3.las");
-  // A halo far too small: the tiles widen themselves.
-  ASSERT_EQ (runTiled ("t7.las", "-tile_size 7 -halo 0.05"), 0) << output_;
+  // A halo far too small: the tiles widen themselves, in both passes.
+  ASSERT_EQ (runTiled ("t7.las", "-tile_size 7 -halo 0.05 -reintegrate"), 0) << output_;
   expectSameAsWhole ("t7.las");
 }
 
-TEST_F (TilesSegmentsApp, SectionsTwoAndThreeAloneWithNoReintegrate)
+TEST_F (TilesSegmentsApp, SectionsTwoAndThreeAloneByDefault)
 {
+  // By default, and with -no_reintegrate, sections 2 and 3: the tool says so.
   makeScene ("indoor", "-no_reintegrate");
-  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3 -no_reintegrate"), 0) << output_;
+  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3"), 0) << output_;
   expectSameAsWhole ("t3.las");
-  EXPECT_EQ (output_.find ("second pass"), std::string::npos) << output_;
-  // The defaults re-integrate edge and boundary points: more points in segments.
-  ASSERT_EQ (runTiled ("d3.las", "-tile_size 3"), 0) << output_;
-  EXPECT_NE (output_.find ("second pass"), std::string::npos) << output_;
+  EXPECT_EQ (output_.find (", second pass"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("unless -reintegrate"), std::string::npos) << output_;
+  ASSERT_EQ (runTiled ("n3.las", "-tile_size 3 -no_reintegrate"), 0) << output_;
+  expectSameAsWhole ("n3.las");
+  EXPECT_EQ (output_.find ("unless -reintegrate"), std::string::npos) << output_;
+  // -reintegrate puts edge and boundary points into segments: more points in them.
+  ASSERT_EQ (runTiled ("d3.las", "-tile_size 3 -reintegrate"), 0) << output_;
+  EXPECT_NE (output_.find (", second pass"), std::string::npos) << output_;
   const Segments reintegrated = readSegments (path ("d3.las"));
   ASSERT_EQ (reintegrated.ids.size(), whole_.ids.size());
   std::size_t before = 0, after = 0;
@@ -175,12 +181,12 @@ TEST_F (TilesSegmentsApp, AWallAcrossFourTilesCornerIsOneSegment)
   // The room's wall y = 0 lies on a row of tile borders (tiles on multiples of 3 m),
   // its points on both sides of it (range noise); x = 3 is a column of borders. Its
   // points around the corner (3, 0) lie in four tiles, and are one segment after
-  // section 3 (the tiles' segments joined through their halos). Section 4 (the
-  // default) keeps that segment's points in it, also in all four tiles; it may give a
-  // few of the wall's edge points to a segment they fit better, as untiled.
+  // section 3 (the tiles' segments joined through their halos). Section 4
+  // (-reintegrate) keeps that segment's points in it, also in all four tiles; it may
+  // give a few of the wall's edge points to a segment they fit better, as untiled.
   makeScene ("indoor");
-  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3 -no_reintegrate"), 0) << output_;
-  ASSERT_EQ (runTiled ("d3.las", "-tile_size 3"), 0) << output_;
+  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3"), 0) << output_;
+  ASSERT_EQ (runTiled ("d3.las", "-tile_size 3 -reintegrate"), 0) << output_;
   const Segments tiled = readSegments (path ("t3.las"));
   const Segments reintegrated = readSegments (path ("d3.las"));
   ASSERT_EQ (tiled.ids.size(), whole_.ids.size());
@@ -206,7 +212,7 @@ TEST_F (TilesSegmentsApp, StepsInAnyOrderGiveTheSameSegments)
   makeScene ("indoor");
   const std::string work = " -workdir " + path ("work");
   ASSERT_EQ (run ("plan segment_variance " + path ("scene.pcd") + work +
-                  " -output_field seg -tile_size 4"),
+                  " -output_field seg -tile_size 4 -reintegrate"),
              0)
       << output_;
   std::size_t tiles = 0;
@@ -239,7 +245,8 @@ TEST_F (TilesSegmentsApp, SlurmScriptRunsTheSecondPassAfterTheTiles)
       "PATH=" + shims + ":$PATH PCL_EXT_TILES=" + PCL_EXT_TILES_EXE + " bash " +
       PCL_EXT_SOURCE_DIR + "/scripts/tiles_slurm.sh segment_variance '" +
       path ("slurm.las") + "' '" + path ("scene.pcd") +
-      "' -- -output_field seg -tile_size 4 > '" + path ("slurm.log") + "' 2>&1";
+      "' -- -output_field seg -tile_size 4 -reintegrate > '" + path ("slurm.log") +
+      "' 2>&1";
   ASSERT_EQ (std::system (command.c_str()), 0);
   expectSameAsWhole ("slurm.las");
   const std::vector<std::string> jobs = pcl_ext::test::sbatchJobs (shims);
@@ -260,7 +267,7 @@ TEST_F (TilesSegmentsApp, AnEarlierRunsWorkFolderIsClearedByANewPlan)
   // of the first (tiles run, segments joined, second passes done) would pass for the
   // second's.
   makeScene ("indoor");
-  const std::string work = " -workdir " + path ("work") + " -keep_workdir";
+  const std::string work = " -workdir " + path ("work") + " -keep_workdir -reintegrate";
   ASSERT_EQ (runTiled ("first.las", "-tile_size 3" + work), 0) << output_;
   ASSERT_TRUE (exists ("work/segments.joined"));
   std::ofstream (path ("work/notes.txt")) << "the user's\n";
@@ -282,7 +289,7 @@ TEST_F (TilesSegmentsApp, ATileThatOwnsNoPointChangesNothing)
 {
   // Spheres on the ground, far apart: 2 m tiles between them own no point.
   makeScene ("spheres");
-  ASSERT_EQ (runTiled ("t2.las", "-tile_size 2"), 0) << output_;
+  ASSERT_EQ (runTiled ("t2.las", "-tile_size 2 -reintegrate"), 0) << output_;
   EXPECT_NE (output_.find (": 0 points]"), std::string::npos) << output_;
   expectSameAsWhole ("t2.las");
 }
@@ -316,7 +323,7 @@ TEST_F (TilesSegmentsApp, ATileOfOnePointAndPointsWithoutCoordinates)
   ASSERT_EQ (std::system (whole.c_str()), 0);
   whole_ = readSegments (path ("whole.pcd"));
   ASSERT_EQ (whole_.ids.size(), points.size());
-  ASSERT_EQ (runTiled ("t3.pcd", "-tile_size 3"), 0) << output_;
+  ASSERT_EQ (runTiled ("t3.pcd", "-tile_size 3 -reintegrate"), 0) << output_;
   EXPECT_NE (output_.find (": 1 points]"), std::string::npos) << output_;
   expectSameAsWhole ("t3.pcd");
   const std::set<std::uint32_t> ids (whole_.ids.begin(), whole_.ids.end());
@@ -333,7 +340,8 @@ TEST_F (TilesSegmentsApp, MpiRanksGiveTheSameSegments)
         std::string (PCL_EXT_MPIEXEC) + " --allow-run-as-root --oversubscribe -np " +
         std::to_string (ranks) + " " + PCL_EXT_TILES_EXE + " segment_variance '" +
         path ("scene.pcd") + "' '" + path (out) +
-        "' -output_field seg -tile_size 3 -threads 1 > '" + path ("mpi.log") + "' 2>&1";
+        "' -output_field seg -tile_size 3 -threads 1 -reintegrate > '" +
+        path ("mpi.log") + "' 2>&1";
     ASSERT_EQ (std::system (command.c_str()), 0) << ranks << " ranks";
     expectSameAsWhole (out);
   }
@@ -347,6 +355,7 @@ TEST_F (TilesSegmentsApp, WhatCannotRunTileByTileIsRefused)
   ASSERT_EQ (std::system (generate.c_str()), 0);
   EXPECT_EQ (runTiled ("a.las", "-intersections " + path ("i.pcd")), 1);
   EXPECT_NE (output_.find ("-intersections"), std::string::npos) << output_;
+  EXPECT_EQ (runTiled ("a.las", "-reintegrate -no_reintegrate"), 1);
   EXPECT_EQ (runTiled ("a.las", "-preset derived"), 1); // the noise
   EXPECT_EQ (runTiled ("a.las", "-min_size 0"), 1);
   EXPECT_FALSE (exists ("a.las"));

@@ -40,6 +40,16 @@ public:
   {
     if (!options_.valid (cl) || !checkClassification())
       return false;
+    if (!cl.given ("reintegrate") && options_.reintegrate) {
+      // Section 4 is on by default in pcl_ext_segment_variance; tile by tile it is a
+      // second pass whose margin follows the sparsest points' reach (docs/tiles.md).
+      std::cout << "Note: pcl_ext_tiles segment_variance runs sections 2 and 3 (as "
+                   "pcl_ext_segment_variance -no_reintegrate) unless -reintegrate is "
+                   "given: section 4's re-integration, a second pass over the tiles, "
+                   "reads as far as three neighbourhood radii of the sparsest points "
+                   "around, which on a scan's sparse edges can be most of the cloud.\n";
+      options_.reintegrate = false;
+    }
     if (!options_.intersections_path.empty()) {
       std::cerr << "Error: pcl_ext_tiles segment_variance cannot write the local "
                    "intersection points (-intersections) yet: run "

@@ -33,8 +33,9 @@ constexpr const char* kDescription =
     "with a '#' (out_#.las) gives one LAS file per tile, '#' its number, and an index "
     "of the files with their boxes (out_index.csv). Steps for scheduler "
     "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D', "
-    "'tile I -workdir D' and (segment_variance's section 4, a second pass over the "
-    "tiles once their segments are joined) 'refine I -workdir D' for every tile I, "
+    "'tile I -workdir D' and (segment_variance -reintegrate: section 4, a second pass "
+    "over the tiles once their segments are joined) 'refine I -workdir D' for every "
+    "tile I, "
     "each step for all tiles before the next, then 'merge output -workdir D'; "
     "'resume output -workdir D' runs what has not run or did not finish (a process "
     "that died), then merges.";
