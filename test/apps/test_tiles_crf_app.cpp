@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -141,6 +142,52 @@ TEST_F (TilesCrfApp, AnyTileSizeGivesTheWholeCloudsClassesForNearlyEveryPoint)
   }
   EXPECT_NE (output_.find ("tiles ("), std::string::npos) << output_;
   EXPECT_FALSE (exists ("t0.pcd.tiles")); // the work folder is removed
+}
+
+TEST_F (TilesCrfApp, TheProbabilityFieldIsTheUntiledToolsForNearlyEveryPoint)
+{
+  // -probability_field of pcl_ext_crf_classify: the winning class's probability, a
+  // float per point, kept tile by tile as the classes are. Belief propagation's
+  // messages from beyond a tile's margin, weakened at every step, move the
+  // probabilities of a few points in their fifth decimal.
+  const std::string whole = std::string (PCL_EXT_CRF_CLASSIFY_EXE) + " '" +
+                            path ("model.txt") + "' '" + path ("s2.pcd") + "' '" +
+                            path ("p_whole.pcd") +
+                            "' -probability_field prob > /dev/null 2>&1";
+  ASSERT_EQ (std::system (whole.c_str()), 0);
+  ASSERT_EQ (
+      run (classify ("p20.las", "-tile_size 20 -threads 1 -probability_field prob")), 0)
+      << output_;
+  const auto readProbabilities = [] (const std::string& file) {
+    std::vector<float> values;
+    pcl_ext::io::PointFile f;
+    pcl_ext::io::loadPointFile (file, f);
+    for (const auto& field : f.cloud.fields)
+      if (field.name == "prob" && field.datatype == pcl::PCLPointField::FLOAT32) {
+        const std::size_t n = static_cast<std::size_t> (f.cloud.width) * f.cloud.height;
+        values.resize (n);
+        for (std::size_t i = 0; i < n; ++i)
+          std::memcpy (&values[i],
+                       f.cloud.data.data() + i * f.cloud.point_step + field.offset,
+                       sizeof (float));
+      }
+    return values;
+  };
+  const std::vector<float> untiled = readProbabilities (path ("p_whole.pcd"));
+  const std::vector<float> tiled = readProbabilities (path ("p20.las"));
+  ASSERT_GT (untiled.size(), 25000u);
+  ASSERT_EQ (tiled.size(), untiled.size());
+  std::size_t same = 0, in_range = 0;
+  for (std::size_t i = 0; i < tiled.size(); ++i) {
+    same += std::abs (tiled[i] - untiled[i]) <= 1e-4f;
+    in_range += tiled[i] > 0.0f && tiled[i] <= 1.0f;
+  }
+  EXPECT_GE (static_cast<double> (same) / static_cast<double> (tiled.size()), 0.99);
+  EXPECT_EQ (in_range, tiled.size());
+  // The classes are still there, and the field cannot be the classes'.
+  EXPECT_GE (agreement ("p20.las"), 0.99);
+  EXPECT_EQ (run (classify ("no.las", "-probability_field crf_class")), 1);
+  EXPECT_FALSE (exists ("no.las"));
 }
 
 TEST_F (TilesCrfApp, AModelOnColourAndIntensityReadsThemFromTheTiles)

@@ -49,6 +49,22 @@ public:
   {
     cl.addOption (
         "model", model_path_, "the model written by pcl_ext_crf_train (required)");
+    cl.addOption ("probability_field",
+                  probability_field_,
+                  "also write each point's probability of its class (float, 0 for "
+                  "non-finite points) into this field; empty: not written");
+  }
+
+  std::string
+  getExtraFieldName () const override
+  {
+    return probability_field_;
+  }
+
+  const std::vector<float>*
+  getExtraValues () const override
+  {
+    return &probabilities_;
   }
 
   bool
@@ -248,6 +264,7 @@ public:
        std::vector<std::uint32_t>& labels) override
   {
     labels.assign (tile.cloud ? tile.cloud->size() : 0, 0);
+    probabilities_.assign (labels.size(), 0.0f);
     needed_margin_ = 0.0;
     if (tile.core_points == 0)
       return true;
@@ -287,6 +304,12 @@ public:
       std::cerr << "Error: the classification of tile " << tile.tile << " failed.\n";
       return false;
     }
+    // The winning class's probability, as pcl_ext_crf_classify writes it.
+    if (!probability_field_.empty())
+      for (std::size_t i = 0; i < labels.size(); ++i)
+        if (labels[i] != 0)
+          probabilities_[i] =
+              probabilities.row (static_cast<Eigen::Index> (i)).maxCoeff();
     for (const auto& draw : model.getDrawSupervoxels())
       needed_margin_ = std::max (needed_margin_, neededMargin (tile, draw));
     return true;
@@ -347,6 +370,8 @@ private:
 
   std::string model_path_;
   MultiscaleCrfModel model_;
+  std::string probability_field_;
+  std::vector<float> probabilities_; ///< of the last run()
   double needed_margin_ = 0.0;
   std::map<std::uint32_t, std::uint32_t> asprs_;
 };

@@ -99,6 +99,23 @@ public:
        const std::map<std::string, std::string>& settings,
        std::vector<std::uint32_t>& labels) = 0;
 
+  /** \brief The field of a float per point that the method writes beside its result
+   * (e.g. the probability of a point's class), as its tool names it; empty (the
+   * default): none. */
+  virtual std::string
+  getExtraFieldName () const
+  {
+    return {};
+  }
+
+  /** \brief After run(): that float of every point of the tile (its halo included;
+   * only the core's are kept), or null. */
+  virtual const std::vector<float>*
+  getExtraValues () const
+  {
+    return nullptr;
+  }
+
   /** \brief Whether the method makes a second pass over the tiles once every tile has
    * run and their segments are joined across the tiles (refine()): a step whose result
    * at a point reads the whole cloud's segments around it. */

@@ -174,6 +174,30 @@ removeEarlierRun (const std::string& workdir)
   return true;
 }
 
+/** The method's float per point (TileMethod::getExtraValues) of the \a chunk's points,
+ * the first of them at global index \a first, into its field \a name (0 for a point no
+ * tile holds: not finite). */
+bool
+attachExtraValues (const std::string& workdir,
+                   std::uint64_t first,
+                   const std::string& name,
+                   pcl::PCLPointCloud2& chunk)
+{
+  std::vector<std::uint32_t> bits;
+  const std::size_t n = static_cast<std::size_t> (chunk.width) * chunk.height;
+  if (!tiling::TileResults::read (workdir, first, n, bits, kExtraValues))
+    return false;
+  std::vector<float> values (n, 0.0f);
+  for (std::size_t i = 0; i < n; ++i)
+    if (bits[i] != tiling::TileResults::kNoResult)
+      std::memcpy (&values[i], &bits[i], sizeof (float));
+  if (!io::setFloatField (chunk, name, values)) {
+    std::cerr << "\nError: cannot write the field '" << name << "'.\n";
+    return false;
+  }
+  return true;
+}
+
 std::vector<std::string>
 splitArguments (const std::string& text)
 {
@@ -242,6 +266,9 @@ planStep (const std::string& method_name,
                    std::vector<float>& values) {
           return method.readAttributes (chunk, input, values);
         };
+    if (!method.getExtraFieldName().empty() &&
+        !tiling::TileResults::create (workdir, plan.getTotalPoints(), kExtraValues))
+      return false;
     if (method.needsRefine() &&
         (!tiling::TileResults::create (workdir, plan.getTotalPoints(), kRefineValues) ||
          !tiling::TileResults::create (workdir, plan.getTotalPoints(), kRefined)))
@@ -383,6 +410,19 @@ tileStep (const tiling::TilePlan& plan,
                                  {static_cast<float> (method.getRefineRadius()),
                                   static_cast<float> (method.getRefineMargin())}))))
     return false;
+  if (const std::vector<float>* extra =
+          method.getExtraFieldName().empty() ? nullptr : method.getExtraValues()) {
+    std::vector<std::uint32_t> bits;
+    for (std::size_t i = 0; i < cloud.core.size(); ++i)
+      if (cloud.core[i]) {
+        const float v = i < extra->size() ? (*extra)[i] : 0.0f;
+        std::uint32_t b;
+        std::memcpy (&b, &v, sizeof (b));
+        bits.push_back (b);
+      }
+    if (!tiling::TileResults::write (workdir, core_indices, bits, kExtraValues))
+      return false;
+  }
   if (method.getKind() == tiling::MergedResults::Kind::Segments &&
       (!tiling::saveHaloLabels (workdir, tile, halo) ||
        !tiling::saveSegmentSizes (workdir, tile, segmentSizes (cloud, labels))))
@@ -466,6 +506,7 @@ mergeStep (const tiling::TilePlan& plan,
     if (!field.checkInput (like, plan.inputs.front()))
       return false;
     const std::uint64_t min_size = refined ? 0 : method.getMinSegmentSize();
+    const std::string extra_field = method.getExtraFieldName();
     const tiling::TileGrid grid = plan.getGrid();
     const io::LasFileInfo* like_las = like.las ? &*like.las : nullptr;
     TileOutputs tile_outputs (output, grid, plan.origin, like_las);
@@ -500,7 +541,10 @@ mergeStep (const tiling::TilePlan& plan,
           io::conformToFields (chunk, layout, conformed);
           chunk = std::move (conformed);
         }
-        if (!field.attach (chunk, values))
+        if (!field.attach (chunk, values) ||
+            (!extra_field.empty() &&
+             !attachExtraValues (
+                 workdir, merged.getNextIndex() - values.size(), extra_field, chunk)))
           return false;
         if (field.asprs()) {
           codes = values;

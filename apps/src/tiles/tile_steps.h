@@ -14,6 +14,10 @@
 
 namespace pcl_ext {
 namespace apps {
+/** \brief The work file of a method's float per point (TileMethod::getExtraValues), as
+ * the bits of each float, at the points' global indices. */
+constexpr const char* kExtraValues = "extra";
+
 /** \brief The plan's file in a work folder. */
 std::string
 planPath (const std::string& workdir);

@@ -123,6 +123,12 @@ parsePlan (int argc,
   }
   if (!method->checkOptions (cl))
     return 1;
+  if (!method->getExtraFieldName().empty() &&
+      method->getExtraFieldName() == field.name()) {
+    std::cerr << "Error: -probability_field must differ from the result's field '"
+              << field.name() << "'.\n";
+    return 1;
+  }
   if (!(options.tile_size >= 0.0) || !(options.halo >= 0.0 || options.halo == -1.0)) {
     std::cerr << "Error: -tile_size must be >= 0 and -halo >= 0 (or -1).\n";
     return 1;

@@ -87,6 +87,14 @@ public:
         std::size_t& input,
         std::vector<std::uint32_t>& values);
 
+  /** \brief The global index of the first point the next read() returns (after a
+   * read() of n points, that chunk began n before). */
+  std::uint64_t
+  getNextIndex () const
+  {
+    return next_index_;
+  }
+
   /** \brief Whether reading stopped on an error (PCL_ERROR said which). */
   bool
   failed () const
