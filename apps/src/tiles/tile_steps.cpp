@@ -147,9 +147,8 @@ segmentSizes (const TileCloud& cloud, const std::vector<std::uint32_t>& labels)
   return sizes;
 }
 
-/** Remove what an earlier run left in \a workdir (a run that stopped, or one with
- * -keep_workdir): its tiles' files and marks would pass for this plan's. Only the
- * names the steps write are touched. */
+/** Remove what an earlier run left in \a workdir (stopped, or -keep_workdir): its marks
+ * would pass for this plan's. Only the names the steps write are touched. */
 bool
 removeEarlierRun (const std::string& workdir)
 {
@@ -161,7 +160,8 @@ removeEarlierRun (const std::string& workdir)
     const bool tile_file = name.rfind ("tile_", 0) == 0 && digits > 5 &&
                            digits < name.size() && name[digits] == '.';
     if (tile_file || name == "plan.txt" || name == "segments.joined" ||
-        name == "results.bin" || name == "values.bin" || name == "refined.bin")
+        name == "results.bin" || name == "values.bin" || name == "refined.bin" ||
+        name == "extra.bin")
       earlier.push_back (entry.path());
   }
   for (const auto& path : earlier)
