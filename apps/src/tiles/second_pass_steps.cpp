@@ -105,7 +105,7 @@ refineStep (const tiling::TilePlan& plan,
                 << ").\n";
       return false;
     }
-    tile_radii[t] = std::nextafter (saved[0], INFINITY);
+    tile_radii[t] = saved[0] > 0.0f ? std::nextafter (saved[0], INFINITY) : 0.0f;
     if (t == tile)
       margin = saved[1];
   }
