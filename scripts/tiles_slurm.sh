@@ -86,33 +86,28 @@ task_threads="${threads:-\${SLURM_CPUS_PER_TASK:-0}}"
 q() { printf '%q' "$1"; }
 estimate=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_estimate --array="0-$last" \
   --wrap="$(q "$tool") estimate \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads")
-# Tile 0 first, alone: it reduces the estimates into the plan, which the other tiles read.
-first=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_tile \
-  --dependency="afterok:${estimate%%;*}" \
-  --wrap="$(q "$tool") tile 0 -workdir $(q "$workdir") -threads $task_threads")
-tile="${first%%;*}"
-if [ "$last" -ge 1 ]; then
-  rest=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_tile --array="1-$last" \
-    --dependency="afterok:${first%%;*}" \
-    --wrap="$(q "$tool") tile \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads")
-  tile="${rest%%;*}"
-fi
-# The second pass: tile 0 alone first (it joins the segments the others read), then the rest.
-refine="$tile"
-if [ "$second_pass" -eq 1 ]; then
-  refine_first=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_refine \
-    --dependency="afterok:$tile" \
-    --wrap="$(q "$tool") refine 0 -workdir $(q "$workdir") -threads $task_threads")
-  refine="${refine_first%%;*}"
+# A pass over the tiles after job $2: tile 0 alone first (in the tiles' pass it reduces the
+# estimates into the plan, in the second it joins the segments: what the others read), then
+# the other tiles as an array job. Prints the last job's id.
+submit_pass() {
+  local step="$1" after="$2" job
+  job=$(sbatch --parsable "${extra[@]}" --job-name="pcl_ext_$step" \
+    --dependency="afterok:$after" \
+    --wrap="$(q "$tool") $step 0 -workdir $(q "$workdir") -threads $task_threads")
+  job="${job%%;*}"
   if [ "$last" -ge 1 ]; then
-    refine_rest=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_refine --array="1-$last" \
-      --dependency="afterok:$refine" \
-      --wrap="$(q "$tool") refine \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads")
-    refine="${refine_rest%%;*}"
+    job=$(sbatch --parsable "${extra[@]}" --job-name="pcl_ext_$step" --array="1-$last" \
+      --dependency="afterok:$job" \
+      --wrap="$(q "$tool") $step \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads")
+    job="${job%%;*}"
   fi
-fi
+  echo "$job"
+}
+tile=$(submit_pass tile "${estimate%%;*}")
+refine="$tile"
+[ "$second_pass" -eq 1 ] && refine=$(submit_pass refine "$tile")
 merge=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_merge \
   --dependency="afterok:$refine" \
   --wrap="$(q "$tool") merge $(q "$output") -workdir $(q "$workdir")")
-echo "Submitted: estimates ${estimate%%;*} (array 0-$last), tile 0 ${first%%;*}, tiles $tile,$([ "$second_pass" -eq 1 ] && echo " second pass $refine,") merge ${merge%%;*}."
+echo "Submitted: estimates ${estimate%%;*} (array 0-$last), tiles up to $tile,$([ "$second_pass" -eq 1 ] && echo " second pass up to $refine,") merge ${merge%%;*}."
 echo "After a failure: $tool resume $output -workdir $workdir"

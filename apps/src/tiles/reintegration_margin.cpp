@@ -103,6 +103,17 @@ struct Unloaded {
 } // namespace
 
 double
+neighbourhoodRadius (const pcl_ext::Neighbourhoods<pcl::PointXYZ>& nb, std::size_t i)
+{
+  const std::ptrdiff_t row = nb.getRowOfPoint (static_cast<pcl::index_t> (i));
+  if (row < 0 || nb[static_cast<std::size_t> (row)].size() == 0)
+    return 0.0;
+  const std::size_t last = nb[static_cast<std::size_t> (row)].size() - 1;
+  return std::sqrt (static_cast<double> (
+      nb.getSquaredDistance (static_cast<std::size_t> (row), last)));
+}
+
+double
 neededReintegrationMargin (const TileCloud& tile,
                            const std::vector<std::uint32_t>& segments,
                            const std::vector<std::uint32_t>& classes,
@@ -114,14 +125,7 @@ neededReintegrationMargin (const TileCloud& tile,
   const auto& cloud = *tile.cloud;
   const auto& nb = *tile.neighbourhoods;
   const double f = reach_factor;
-  const auto radius = [&nb] (std::size_t i) -> double {
-    const std::ptrdiff_t row = nb.getRowOfPoint (static_cast<pcl::index_t> (i));
-    if (row < 0 || nb[static_cast<std::size_t> (row)].size() == 0)
-      return 0.0;
-    const std::size_t last = nb[static_cast<std::size_t> (row)].size() - 1;
-    return std::sqrt (static_cast<double> (
-        nb.getSquaredDistance (static_cast<std::size_t> (row), last)));
-  };
+  const auto radius = [&nb] (std::size_t i) { return neighbourhoodRadius (nb, i); };
   const auto surface = static_cast<std::uint32_t> (PointClass::Surface);
   const auto edge = static_cast<std::uint32_t> (PointClass::Edge);
   const auto boundary = static_cast<std::uint32_t> (PointClass::Boundary);

@@ -11,6 +11,11 @@
 
 namespace pcl_ext {
 namespace apps {
+/** \brief The radius of point \a i's neighbourhood in \a nb (the distance to its
+ * farthest neighbour), 0 when it has none. */
+double
+neighbourhoodRadius (const pcl_ext::Neighbourhoods<pcl::PointXYZ>& nb, std::size_t i);
+
 /** \brief The margin around \a tile's core within which the re-integration of every
  * core point (pcl_ext::LocalSurfaceIntersection with reach factor F = \a reach_factor)
  * reads only data the tile holds (narrower than the present one where that is wider

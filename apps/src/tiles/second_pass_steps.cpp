@@ -109,15 +109,14 @@ refineStep (const tiling::TilePlan& plan,
     if (t == tile)
       margin = saved[1];
   }
-  for (;;) {
-    if (!loadTileCloud (plan, workdir, tile, reach, threads, cloud, margin) ||
-        !tiling::TileResults::readAt (workdir, cloud.indices, owner_labels) ||
-        !tiling::TileResults::readAt (workdir, cloud.indices, values, kRefineValues))
+  const auto refine = [&] (const TileCloud& c) {
+    if (!tiling::TileResults::readAt (workdir, c.indices, owner_labels) ||
+        !tiling::TileResults::readAt (workdir, c.indices, values, kRefineValues))
       return false;
     // Each point's segment as its owner numbered it, over the whole cloud.
-    segments.assign (cloud.indices.size(), tiling::SegmentMerge::kNoSegment);
+    segments.assign (c.indices.size(), tiling::SegmentMerge::kNoSegment);
     for (std::size_t i = 0; i < segments.size(); ++i) {
-      const std::uint32_t owner = cloud.owners[i];
+      const std::uint32_t owner = c.owners[i];
       if (owner_labels[i] == tiling::TileResults::kNoResult)
         continue;
       auto found = ids_of_tile.find (owner);
@@ -129,13 +128,11 @@ refineStep (const tiling::TilePlan& plan,
       if (owner_labels[i] < found->second.size())
         segments[i] = found->second[owner_labels[i]];
     }
-    if (!method.refine (cloud, segments, values, tile_radii, labels))
-      return false;
-    const double needed = method.getNeededMargin();
-    if (needed <= cloud.margin || cloud.whole)
-      break;
-    margin = std::max (needed, 1.25 * cloud.margin);
-  }
+    return method.refine (c, segments, values, tile_radii, labels);
+  };
+  if (!computeOnTile (
+          plan, workdir, tile, reach, threads, margin, method, refine, cloud))
+    return false;
   std::vector<std::uint64_t> core_indices;
   std::vector<std::uint32_t> core_labels;
   for (std::size_t i = 0; i < labels.size(); ++i)

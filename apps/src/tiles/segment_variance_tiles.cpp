@@ -121,16 +121,10 @@ public:
       classes_[i] = (*classes)[i].label;
       // The core's largest surface neighbourhood: what bounds the reach of its points
       // in another tile's re-integration.
-      const std::ptrdiff_t row =
-          tile.neighbourhoods->getRowOfPoint (static_cast<pcl::index_t> (i));
       if (tile.core[i] &&
-          classes_[i] == static_cast<std::uint32_t> (PointClass::Surface) && row >= 0 &&
-          (*tile.neighbourhoods)[static_cast<std::size_t> (row)].size() > 0)
-        surface_radius_ = std::max (
-            surface_radius_,
-            std::sqrt (static_cast<double> (tile.neighbourhoods->getSquaredDistance (
-                static_cast<std::size_t> (row),
-                (*tile.neighbourhoods)[static_cast<std::size_t> (row)].size() - 1))));
+          classes_[i] == static_cast<std::uint32_t> (PointClass::Surface))
+        surface_radius_ =
+            std::max (surface_radius_, neighbourhoodRadius (*tile.neighbourhoods, i));
     }
     bool surface = false;
     for (std::size_t i = 0; i < classes->size() && !surface; ++i)

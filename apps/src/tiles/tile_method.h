@@ -11,6 +11,7 @@
 
 #include <pcl/PCLPointCloud2.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -217,6 +218,21 @@ public:
 protected:
   unsigned int threads_ = 0;
 };
+
+/** \brief Load tile \a tile with \a reach from a margin of at least \a margin and run
+ * \a compute on it (one of \a method's steps), widening the margin and running again
+ * while \a method says it needed more (TileMethod::getNeededMargin), at worst up to the
+ * whole cloud. \return false (message printed) when loading or \a compute fails */
+bool
+computeOnTile (const tiling::TilePlan& plan,
+               const std::string& folder,
+               std::size_t tile,
+               const NeighbourhoodReach& reach,
+               unsigned int threads,
+               double margin,
+               const TileMethod& method,
+               const std::function<bool (const TileCloud&)>& compute,
+               TileCloud& cloud);
 
 /** \brief The method named \a name (classify_variance, ...), or null. */
 std::unique_ptr<TileMethod>

@@ -334,16 +334,19 @@ estimateStep (const tiling::TilePlan& plan,
   TileCloud cloud;
   method.setNumberOfThreads (threads);
   std::map<std::string, std::vector<float>> values;
-  for (double margin = 0.0;;) {
-    if (!loadTileCloud (
-            plan, workdir, tile, method.getEstimateReach(), threads, cloud, margin) ||
-        !method.estimate (cloud, values))
-      return false;
-    const double needed = method.getNeededMargin();
-    if (needed <= cloud.margin || cloud.whole)
-      break;
-    margin = std::max (needed, 1.25 * cloud.margin);
-  }
+  const auto estimate = [&method, &values] (const TileCloud& c) {
+    return method.estimate (c, values);
+  };
+  if (!computeOnTile (plan,
+                      workdir,
+                      tile,
+                      method.getEstimateReach(),
+                      threads,
+                      0.0,
+                      method,
+                      estimate,
+                      cloud))
+    return false;
   for (const auto& [name, v] : values)
     if (!tiling::saveTileValues (workdir, tile, name, v))
       return false;
@@ -374,16 +377,12 @@ tileStep (const tiling::TilePlan& plan,
   TileCloud cloud;
   method.setNumberOfThreads (threads);
   std::vector<std::uint32_t> labels;
-  for (double margin = 0.0;;) {
-    if (!loadTileCloud (
-            plan, workdir, tile, method.getReach(), threads, cloud, margin) ||
-        !method.run (cloud, plan.settings, labels))
-      return false;
-    const double needed = method.getNeededMargin();
-    if (needed <= cloud.margin || cloud.whole)
-      break;
-    margin = std::max (needed, 1.25 * cloud.margin);
-  }
+  const auto run = [&method, &plan, &labels] (const TileCloud& c) {
+    return method.run (c, plan.settings, labels);
+  };
+  if (!computeOnTile (
+          plan, workdir, tile, method.getReach(), threads, 0.0, method, run, cloud))
+    return false;
   std::vector<std::uint64_t> core_indices;
   std::vector<std::uint32_t> core_labels, core_values;
   std::vector<tiling::HaloLabel> halo;
