@@ -2,7 +2,7 @@
 # shellcheck shell=bash
 
 PCL_EXT_PACKAGES=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config lld
   libpcl-dev libnanoflann-dev libboost-dev libeigen3-dev nlohmann-json3-dev libexpat1-dev
   libxgboost-dev
   libgtest-dev libbenchmark-dev
