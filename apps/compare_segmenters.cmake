@@ -1,4 +1,5 @@
-# pcl_ext_compare_segmenters: pcl_ext's segmenters against stock PCL ones on the same cloud.
+# pcl_ext_compare_segmenters: pcl_ext's segmenters against stock PCL (and CGAL) ones on the same
+# cloud.
 # The method table and the isolated (forked) runs are a small library, shared with the
 # segmenter benchmark under test/benchmarks.
 add_library(pcl_ext_segmenter_comparison STATIC
@@ -12,6 +13,16 @@ target_link_libraries(pcl_ext_segmenter_comparison PUBLIC
   pcl_ext::segmentation pcl_ext::classification
   ${PCL_SEGMENTATION_LIBRARIES} ${PCL_SAMPLE_CONSENSUS_LIBRARIES} ${PCL_FEATURES_LIBRARIES}
   ${PCL_SEARCH_LIBRARIES} ${PCL_OCTREE_LIBRARIES})
+# CGAL's plane region growing joins the comparison where CGAL is installed (Debian package
+# libcgal-dev, which the scripts install; header-only).
+find_package(CGAL QUIET)
+if(CGAL_FOUND)
+  target_sources(pcl_ext_segmenter_comparison PRIVATE src/compare_segmenters/cgal_methods.cpp)
+  target_link_libraries(pcl_ext_segmenter_comparison PRIVATE CGAL::CGAL)
+  target_compile_definitions(pcl_ext_segmenter_comparison PRIVATE PCL_EXT_HAVE_CGAL)
+  # The tool's tests expect CGAL's method then.
+  set_property(GLOBAL PROPERTY PCL_EXT_COMPARE_WITH_CGAL ON)
+endif()
 
 pcl_ext_add_app(compare_segmenters
   SOURCES

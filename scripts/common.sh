@@ -4,7 +4,7 @@
 PCL_EXT_PACKAGES=(
   build-essential cmake pkg-config lld
   libpcl-dev libnanoflann-dev libboost-dev libeigen3-dev nlohmann-json3-dev libexpat1-dev
-  libxgboost-dev
+  libxgboost-dev libcgal-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth
   clang-format python3

@@ -179,7 +179,9 @@ main (int argc, char** argv)
   cl.addOption (
       "angle", s.angle, "normal angle in degrees: region_growing smoothness, cec");
   cl.addOption ("curvature", s.curvature, "region_growing curvature threshold");
-  cl.addOption ("plane_distance", s.plane_distance, "sac_planes inlier distance / s");
+  cl.addOption ("plane_distance",
+                s.plane_distance,
+                "sac_planes and cgal_planes: distance to the plane / s");
   cl.addOption ("max_planes", s.max_planes, "sac_planes: most planes");
   cl.addOption ("voxel", s.voxel, "lccp supervoxel voxel resolution / s");
   cl.addOption ("seed", s.seed, "lccp supervoxel seed resolution / s");

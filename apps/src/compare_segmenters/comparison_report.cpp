@@ -132,10 +132,14 @@ printTable (const std::vector<MethodResult>& results, bool with_truth)
     return;
   const MethodResult* ours = best (results, "pcl_ext");
   const MethodResult* stock = best (results, "PCL");
+  const MethodResult* cgal = best (results, "CGAL");
   if (ours && stock)
     std::cout << "\nBest mean best IoU: pcl_ext " << ours->name << " "
               << format ("%.4f", ours->metrics.mean_best_iou) << ", stock PCL "
               << stock->name << " " << format ("%.4f", stock->metrics.mean_best_iou)
+              << (cgal ? ", CGAL " + cgal->name + " " +
+                             format ("%.4f", cgal->metrics.mean_best_iou)
+                       : std::string())
               << ".\n";
 }
 

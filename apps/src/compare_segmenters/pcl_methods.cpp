@@ -247,6 +247,10 @@ allMethods ()
   std::vector<SegmenterMethod> methods = pclExtMethods();
   for (auto& m : pclMethods())
     methods.push_back (std::move (m));
+#ifdef PCL_EXT_HAVE_CGAL
+  for (auto& m : cgalMethods())
+    methods.push_back (std::move (m));
+#endif
   return methods;
 }
 } // namespace compare

@@ -56,7 +56,7 @@ struct SegmenterMethod {
                                      const SegmenterSettings&,
                                      std::vector<pcl::PointIndices>&)>;
   std::string name;    ///< as given to -methods
-  std::string library; ///< "pcl_ext" or "PCL"
+  std::string library; ///< "pcl_ext", "PCL" or "CGAL"
   bool needs_normals;  ///< uses SegmenterInput::normals (their time is counted in its
                        ///< own)
   std::string description; ///< class and parameters, for -h
@@ -70,6 +70,11 @@ pclExtMethods ();
 /** \brief Stock PCL segmenters (pcl_methods.cpp). */
 std::vector<SegmenterMethod>
 pclMethods ();
+
+/** \brief CGAL's plane region growing (cgal_methods.cpp, built where CGAL is found:
+ * allMethods() lists it then). */
+std::vector<SegmenterMethod>
+cgalMethods ();
 
 /** \brief Every method, pcl_ext's first, in the order of the table. */
 std::vector<SegmenterMethod>
