@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The Belton & Lichti segmentation with its defaults against stock PCL region growing, on
-# scenes it was not tuned on: mean best IoU per scene, one row per scene, then the mean of
-# each family.
+# The Belton & Lichti segmentation with its defaults against stock PCL region growing and
+# CGAL's plane region growing, on scenes it was not tuned on: mean best IoU per scene, one
+# row per scene, then the mean of each family.
 #
 #   scripts/belton_lichti_table.sh                 # indoor, building, pipes, street at
 #                                                  # seeds 4-10, and the mOSD learn frames
@@ -14,6 +14,10 @@
 # set as PCL's region growing tutorial sets them: normals of the 50 nearest neighbours,
 # growing over the 30 nearest, smoothness 3 degrees, curvature threshold 1.0, segments of
 # at least 50 points.
+# CGAL: Shape_detection::Region_growing with Least_squares_plane_fit_region through
+# pcl_ext_compare_segmenters (-methods cgal_planes), its documented defaults (PCA normals
+# and growing over the 12 nearest, 25 degrees), distance to the plane twice the point
+# spacing, segments of at least 50 points (CGAL's column is empty in a build without CGAL).
 # The mOSD frames are read from $PCL_EXT_SHARED_DATA_DIR/mosd_object_segmentation when
 # the folder exists (truth field 'label'). PCL_FROM=<an earlier table of this script>
 # takes the PCL column from it instead of running PCL again (the scenes are the same for
@@ -64,18 +68,29 @@ theirs() {
     -threads "$threads" | awk '$1 == "region_growing" {print $5}'
 }
 
-row() {
-  family="$1" name="$2"
-  local cloud="$3" truth_field="$4" a b
-  a="$(ours "$cloud" "$truth_field")"
-  b="$(theirs "$cloud" "$truth_field")"
-  awk -v f="$family" -v s="$name" -v a="$a" -v b="$b" \
-    'BEGIN {printf "| %s | %s | %.3f | %.3f | %+.3f |\n", f, s, a, b, a - b}'
-  echo "$family $a $b" >>"$work/rows.txt"
+# Mean best IoU of CGAL's plane region growing (nothing without CGAL).
+cgal() {
+  local cloud="$1" truth_field="$2"
+  "$apps/pcl_ext_compare_segmenters" "$cloud" -truth_field "$truth_field" \
+    -methods cgal_planes -plane_distance 2 -min_size 50 -threads "$threads" 2>/dev/null |
+    awk '$1 == "cgal_planes" {print $5}' || true
 }
 
-echo "| family | scene | pcl_ext_segment_variance | pcl::RegionGrowing | difference |"
-echo "|---|---|---|---|---|"
+row() {
+  family="$1" name="$2"
+  local cloud="$3" truth_field="$4" a b c
+  a="$(ours "$cloud" "$truth_field")"
+  b="$(theirs "$cloud" "$truth_field")"
+  c="$(cgal "$cloud" "$truth_field")"
+  awk -v f="$family" -v s="$name" -v a="$a" -v b="$b" -v c="${c:-nan}" \
+    'BEGIN {printf "| %s | %s | %.3f | %.3f | %.3f | %+.3f | %+.3f |\n", f, s, a, b, c,
+            a - b, a - c}'
+  echo "$family $a $b ${c:-nan}" >>"$work/rows.txt"
+}
+
+echo "| family | scene | pcl_ext_segment_variance | pcl::RegionGrowing | CGAL region growing |" \
+  "difference (PCL) | difference (CGAL) |"
+echo "|---|---|---|---|---|---|---|"
 for family in $families; do
   extra=()
   [ "$family" = building ] && extra=(-superfluous 2)
@@ -91,9 +106,11 @@ if [ -d "$mosd_dir" ]; then
   done
 fi
 echo
-echo "| family | pcl_ext_segment_variance | pcl::RegionGrowing | difference |"
-echo "|---|---|---|---|"
-awk '{n[$1]++; a[$1]+=$2; b[$1]+=$3; if (!($1 in o)) {o[$1]=++k; f[k]=$1}}
+echo "| family | pcl_ext_segment_variance | pcl::RegionGrowing | CGAL region growing |" \
+  "difference (PCL) | difference (CGAL) |"
+echo "|---|---|---|---|---|---|"
+awk '{n[$1]++; a[$1]+=$2; b[$1]+=$3; c[$1]+=$4; if (!($1 in o)) {o[$1]=++k; f[k]=$1}}
      END {for (i = 1; i <= k; ++i) {x = f[i];
-       printf "| %s | %.3f | %.3f | %+.3f |\n", x, a[x]/n[x], b[x]/n[x], (a[x]-b[x])/n[x]}}' \
+       printf "| %s | %.3f | %.3f | %.3f | %+.3f | %+.3f |\n", x, a[x]/n[x], b[x]/n[x],
+              c[x]/n[x], (a[x]-b[x])/n[x], (a[x]-c[x])/n[x]}}' \
   "$work/rows.txt"
