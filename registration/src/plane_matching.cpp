@@ -89,6 +89,23 @@ checkPlaneMatchingParameters (const PlaneMatchingParameters& p)
   return true;
 }
 
+namespace {
+/** The points of the scan planes that \a matches pairs and \a other does not. */
+std::size_t
+supportOfPlanesNotIn (const std::vector<Plane>& scan,
+                      const std::vector<PlanePair>& matches,
+                      const std::vector<PlanePair>& other)
+{
+  std::size_t support = 0;
+  for (const auto& pair : matches)
+    if (std::none_of (other.begin(), other.end(), [&] (const PlanePair& o) {
+          return o.scan == pair.scan;
+        }))
+      support += scan[static_cast<std::size_t> (pair.scan)].size;
+  return support;
+}
+} // namespace
+
 bool
 matchPlanes (const std::vector<Plane>& scan,
              const std::vector<Plane>& map,
@@ -168,9 +185,16 @@ matchPlanes (const std::vector<Plane>& scan,
   result.candidates.push_back ({best.support, best.matches, best.estimate});
   std::vector<Eigen::Matrix4d> poses{best.estimate.transformation};
   for (const auto& a : alternatives) {
+    // As many pairs (within ambiguity_pairs), and the scan planes only it pairs hold as
+    // many points as those only the best pairs (within ambiguity_support): a ceiling or
+    // a roof in the floor's place pairs as many planes as the ground but holds a
+    // fraction of its points; the poses of a symmetric map pair the same scan planes.
     if (!a.valid ||
         a.matches.size() + static_cast<std::size_t> (parameters.ambiguity_pairs) <
-            best.matches.size())
+            best.matches.size() ||
+        static_cast<double> (supportOfPlanesNotIn (scan, a.matches, best.matches)) <
+            parameters.ambiguity_support * static_cast<double> (supportOfPlanesNotIn (
+                                               scan, best.matches, a.matches)))
       continue;
     bool seen = false;
     for (const auto& pose : poses)

@@ -289,6 +289,48 @@ TEST (PlaneMatching, SymmetricPlanIsMatchedUpToItsHalfTurn)
   std::printf ("symmetric H: %d of 20 poses matched the half-turned way\n", turned);
 }
 
+// The symmetric H fits the scan in two poses, and both are reported. A ceiling 3 m
+// above the floor, with a fifth of the floor's points, pairs with the map's floor as
+// well as the floor does (as many pairs, the pose 3 m lower): not a pose the map cannot
+// tell apart, since it holds a fraction of the support (ambiguity_support).
+TEST (PlaneMatching, CandidatesAreTheSymmetricPosesNotAStandInFloor)
+{
+  std::vector<MapPlane> map;
+  ASSERT_TRUE (computeMapPlanes (test::hShape(), MapPlaneParameters(), map));
+  Eigen::Matrix4d half_turn = Eigen::Matrix4d::Identity();
+  half_turn.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisd (kPi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  half_turn.topRightCorner<3, 1>() = Eigen::Vector3d (40, 30, 0);
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    std::mt19937 rng (seed);
+    const Eigen::Matrix4d truth = test::randomPose (rng);
+    auto scan = test::scanPlanes (map, truth, rng, 0.1 * kPi / 180.0, 0.02);
+    Plane ceiling = map[0]; // the floor, 3 m up
+    ASSERT_TRUE (map[0].isFloor());
+    ceiling.centroid.z() += 3.0;
+    ceiling.d = -ceiling.normal.dot (ceiling.centroid);
+    ceiling.extent.translate (Eigen::Vector3d (0, 0, 3));
+    ceiling.size = 4000; // the floor's: 20000
+    scan.push_back (transformPlane (ceiling, truth.inverse()));
+    PlaneMatchingResult r;
+    ASSERT_TRUE (matchPlanes (scan, test::slice (map), PlaneMatchingParameters(), r));
+    EXPECT_EQ (r.candidates.size(), 2u) << "seed " << seed;
+    const Eigen::Vector3d centre =
+        (truth.inverse() * Eigen::Vector4d (20, 15, 5, 1)).head<3>();
+    int direct = 0, turned = 0;
+    for (const auto& candidate : r.candidates) {
+      const auto e =
+          computeTransformationError (candidate.estimate.transformation, truth, centre);
+      const auto m = computeTransformationError (
+          candidate.estimate.transformation, half_turn * truth, centre);
+      direct += e.rotation_deg < 0.5 && e.translation < 0.2;
+      turned += m.rotation_deg < 0.5 && m.translation < 0.2;
+    }
+    EXPECT_EQ (direct, 1) << "seed " << seed;
+    EXPECT_EQ (turned, 1) << "seed " << seed;
+  }
+}
+
 namespace {
 // \a pose turned by \a yaw_deg about the vertical through \a centre (map frame) and
 // shifted by \a shift: a rough guess of it.

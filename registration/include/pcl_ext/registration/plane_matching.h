@@ -59,11 +59,13 @@ struct PlaneMatchingParameters {
       std::numeric_limits<double>::infinity(); ///< metres
   /** \brief Beyond the paper: a symmetric footprint has several equally good poses.
    * Every match set of another pose (more than 1 degree or 1 m from those before it)
-   * with at most \a ambiguity_pairs fewer matches than the best and at least \a
-   * ambiguity_support times its support (the inliers of its matched scan planes) is
-   * reported in PlaneMatchingResult::candidates; >= 0, default 0 (as many matches as
-   * the best), and [0, 1], default 0.5 (a ceiling seen through the windows in the
-   * floor's place has a fraction of the ground's support). */
+   * with at most \a ambiguity_pairs fewer matches than the best, and whose scan planes
+   * that the best does not pair hold at least \a ambiguity_support times the inliers of
+   * those the best pairs and it does not, is reported in
+   * PlaneMatchingResult::candidates; >= 0, default 0 (as many matches as the best), and
+   * [0, 1], default 0.5 (the poses of a symmetric map pair the same scan planes; a
+   * ceiling seen through the windows in the floor's place has a fraction of the
+   * ground's inliers). */
   int ambiguity_pairs = 0;
   double ambiguity_support = 0.5;
   int min_matches = 0;            ///< least final matches to converge; 0 = k
