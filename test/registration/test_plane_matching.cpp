@@ -37,6 +37,18 @@ wrongPairs (const std::vector<Plane>& scan,
   return wrong;
 }
 
+// The symmetry of the symmetric H (test::hShape): a half turn about its centre (20,
+// 15).
+Eigen::Matrix4d
+halfTurnOfTheH ()
+{
+  Eigen::Matrix4d half_turn = Eigen::Matrix4d::Identity();
+  half_turn.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisd (kPi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  half_turn.topRightCorner<3, 1>() = Eigen::Vector3d (40, 30, 0);
+  return half_turn;
+}
+
 // The asymmetric plan: a rotation maps it onto itself only as the identity.
 std::vector<MapPlane>
 hMapPlanes ()
@@ -259,10 +271,7 @@ TEST (PlaneMatching, SymmetricPlanIsMatchedUpToItsHalfTurn)
 {
   std::vector<MapPlane> map;
   ASSERT_TRUE (computeMapPlanes (test::hShape(), MapPlaneParameters(), map));
-  Eigen::Matrix4d half_turn = Eigen::Matrix4d::Identity();
-  half_turn.topLeftCorner<3, 3>() =
-      Eigen::AngleAxisd (kPi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  half_turn.topRightCorner<3, 1>() = Eigen::Vector3d (40, 30, 0);
+  const Eigen::Matrix4d half_turn = halfTurnOfTheH();
   int turned = 0;
   for (unsigned seed = 1; seed <= 20; ++seed) {
     std::mt19937 rng (seed);
@@ -297,10 +306,7 @@ TEST (PlaneMatching, CandidatesAreTheSymmetricPosesNotAStandInFloor)
 {
   std::vector<MapPlane> map;
   ASSERT_TRUE (computeMapPlanes (test::hShape(), MapPlaneParameters(), map));
-  Eigen::Matrix4d half_turn = Eigen::Matrix4d::Identity();
-  half_turn.topLeftCorner<3, 3>() =
-      Eigen::AngleAxisd (kPi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  half_turn.topRightCorner<3, 1>() = Eigen::Vector3d (40, 30, 0);
+  const Eigen::Matrix4d half_turn = halfTurnOfTheH();
   for (unsigned seed = 1; seed <= 5; ++seed) {
     std::mt19937 rng (seed);
     const Eigen::Matrix4d truth = test::randomPose (rng);
@@ -354,10 +360,7 @@ TEST (PlaneMatchingBounds, GuessPicksTheSolutionWithinTheBounds)
 {
   std::vector<MapPlane> map;
   ASSERT_TRUE (computeMapPlanes (test::hShape(), MapPlaneParameters(), map));
-  Eigen::Matrix4d half_turn = Eigen::Matrix4d::Identity();
-  half_turn.topLeftCorner<3, 3>() =
-      Eigen::AngleAxisd (kPi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  half_turn.topRightCorner<3, 1>() = Eigen::Vector3d (40, 30, 0);
+  const Eigen::Matrix4d half_turn = halfTurnOfTheH();
   const Eigen::Vector3d centre (20, 15, 5);
   for (unsigned seed = 1; seed <= 10; ++seed) {
     std::mt19937 rng (seed);
