@@ -371,7 +371,8 @@ main (int argc, char** argv)
             << seg.getUsedDistanceThreshold() << "; " << seg.getStackEdges().size()
             << " stacks, " << edges << " edges, " << clusters.size() << " segments";
   if (curve_fitting)
-    std::cout << ", " << seg.getBreakpoints().size() << " curve ends";
+    std::cout << ", " << seg.getBreakpoints().size() << " curve ends, "
+              << seg.getJunctionJoins() << " curves followed across junctions";
   if (join_cylinders)
     std::cout << ", " << joined_cylinders << " cylinders joined" << join_settings.str();
   std::cout << "\n";

@@ -88,14 +88,14 @@ fitModel (const Gram& gram,
  * simplest model and the one kept when no other can be scored, gets an infinite AICc.
  */
 PolynomialFit
-selectModel (const Gram& gram, bool corrected)
+selectModel (const Gram& gram, bool corrected, int max_degree = 3)
 {
   static const int line[3] = {0, 1, 4}, parabola[4] = {0, 1, 2, 4},
                    cubic[5] = {0, 1, 2, 3, 4};
   const Eigen::Matrix<double, 5, 5> g = gram.g.selfadjointView<Eigen::Upper>();
   PolynomialFit best;
   const double n = static_cast<double> (gram.n);
-  for (int degree = 1; degree <= 3; ++degree) {
+  for (int degree = 1; degree <= std::min (max_degree, 3); ++degree) {
     const int p = degree + 2;
     const int k = p + 1;
     const bool scored = n > k + 1; // AICc's correction is finite
@@ -135,14 +135,15 @@ fitPolynomialAic (const std::vector<double>& x,
                   const std::vector<double>& y,
                   const std::vector<double>& t,
                   double scale,
-                  bool corrected)
+                  bool corrected,
+                  int max_degree)
 {
   if (!(scale > 0.0) || x.size() != y.size() || x.size() != t.size())
     return PolynomialFit();
   Gram gram;
   for (std::size_t i = 0; i < x.size(); ++i)
     gram.add (x[i] / scale, y[i] / scale, t[i] / scale);
-  PolynomialFit fit = selectModel (gram, corrected);
+  PolynomialFit fit = selectModel (gram, corrected, max_degree);
   fit.rss *= scale * scale;
   fit.residual_variance *= scale * scale;
   fit.terms[1] /= scale;

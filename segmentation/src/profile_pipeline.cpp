@@ -153,9 +153,35 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     }
   }
 
+  // The threshold scaled by how much sparser than the stack's mean the point's stretch
+  // of profile is; never below the global threshold, never above the maximum. \return
+  // false where the thresholds are global
+  const auto local_thresholds = [&] (const Task& task,
+                                     const std::uint32_t* members,
+                                     std::size_t m,
+                                     std::vector<float>& thresholds) {
+    if (!adaptive || !(mean_gap[task.stack] > 0.0))
+      return false;
+    const std::vector<float>& gaps = stack_gaps[task.stack];
+    const double ratio = parameters.threshold / mean_gap[task.stack];
+    thresholds.resize (m);
+    for (std::size_t i = 0; i < m; ++i)
+      thresholds[i] = static_cast<float> (std::clamp (
+          ratio * gaps[members[i]], parameters.threshold, parameters.max_threshold));
+    return true;
+  };
+  const auto window_scales = [&] (const std::vector<float>& thresholds,
+                                  std::vector<float>& scales) {
+    scales.resize (thresholds.size());
+    for (std::size_t i = 0; i < thresholds.size(); ++i)
+      scales[i] = static_cast<float> (thresholds[i] / parameters.threshold);
+  };
+
   // One result slot per profile, concatenated in profile order afterwards:
   // deterministic for any number of threads.
   std::vector<std::vector<GraphEdge>> task_edges (tasks.size());
+  // The chains of each profile, kept for following curves across junctions.
+  std::vector<std::vector<LocalEdge>> task_chains (curves ? tasks.size() : 0);
 #pragma omp parallel num_threads(threads)
   {
     ProfilePoints points;
@@ -167,19 +193,7 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (tasks.size()); ++k) {
       const std::uint32_t* members = load_profile (tasks[k], points);
       const std::size_t m = points.uv.size();
-      // The threshold scaled by how much sparser than the stack's mean the point's
-      // stretch of profile is; never below the global threshold, never above the
-      // maximum.
-      const bool local_here = adaptive && mean_gap[tasks[k].stack] > 0.0;
-      if (local_here) {
-        const std::vector<float>& gaps = stack_gaps[tasks[k].stack];
-        const double ratio = parameters.threshold / mean_gap[tasks[k].stack];
-        thresholds.resize (m);
-        for (std::size_t i = 0; i < m; ++i)
-          thresholds[i] = static_cast<float> (std::clamp (ratio * gaps[members[i]],
-                                                          parameters.threshold,
-                                                          parameters.max_threshold));
-      }
+      const bool local_here = local_thresholds (tasks[k], members, m, thresholds);
       const double link_threshold =
           local_here ? parameters.max_threshold : parameters.threshold;
       const std::vector<float>* link_thresholds = local_here ? &thresholds : nullptr;
@@ -202,9 +216,7 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
       if (curves) {
         point_fit.window_scale = nullptr;
         if (local_here) {
-          window_scale.resize (m);
-          for (std::size_t i = 0; i < m; ++i)
-            window_scale[i] = static_cast<float> (thresholds[i] / parameters.threshold);
+          window_scales (thresholds, window_scale);
           point_fit.window_scale = &window_scale;
         }
         scoreCurveTurns (points, local, point_fit, scores);
@@ -222,6 +234,8 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
       edges.reserve (local.size());
       for (const LocalEdge& e : local)
         edges.push_back ({members[e.a], members[e.b]});
+      if (curves)
+        task_chains[k] = local;
     }
   }
   for (std::size_t k = 0; k < tasks.size(); ++k) {
@@ -229,6 +243,69 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     edges.insert (edges.end(), task_edges[k].begin(), task_edges[k].end());
   }
   task_edges.clear();
+
+  // Curves followed across the junctions their ends leave (entangled curves): the joins
+  // are edges of their stack, between points that are not curve ends.
+  const auto joinAcrossJunctions =
+      [&] (const std::vector<double>& tolerances,
+           const std::vector<std::vector<std::uint8_t>>& own_ends) {
+        std::vector<std::vector<GraphEdge>> task_joins (tasks.size());
+        std::vector<std::vector<std::uint32_t>> task_absorbed (tasks.size());
+#pragma omp parallel num_threads(threads)
+        {
+          ProfilePoints points;
+          std::vector<std::uint8_t> ends, removed;
+          std::vector<float> thresholds, window_scale;
+          std::vector<LocalEdge> joins;
+          std::vector<std::uint32_t> absorbed;
+#pragma omp for schedule(dynamic, 4)
+          for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t> (tasks.size());
+               ++k) {
+            const std::uint32_t* members = load_profile (tasks[k], points);
+            const std::size_t m = points.uv.size();
+            // The junctions are those of the stack's own curve ends: where another
+            // stack ends curves (a crease it crosses sharply, this one at a slant) this
+            // one sees no junction. A join never ends at a curve end of any stack.
+            const std::vector<std::uint8_t>& own = own_ends[tasks[k].stack];
+            ends.resize (m);
+            removed.resize (m);
+            bool any = false;
+            for (std::size_t i = 0; i < m; ++i) {
+              ends[i] = own[members[i]];
+              removed[i] = result.breakpoints[members[i]];
+              any = any || ends[i];
+            }
+            if (!any)
+              continue;
+            JunctionParameters junction;
+            junction.threshold = parameters.threshold;
+            junction.window = parameters.curve_window;
+            junction.max_turn = parameters.max_turn;
+            junction.tolerance = tolerances[tasks[k].stack];
+            junction.corrected_aic = parameters.corrected_aic;
+            junction.removed = &removed;
+            if (local_thresholds (tasks[k], members, m, thresholds)) {
+              window_scales (thresholds, window_scale);
+              junction.window_scale = &window_scale;
+            }
+            joinCurvesAcrossJunctions (
+                points, task_chains[k], ends, junction, joins, &absorbed);
+            for (const LocalEdge& e : joins)
+              task_joins[k].push_back ({members[e.a], members[e.b]});
+            for (const std::uint32_t i : absorbed)
+              task_absorbed[k].push_back (members[i]);
+          }
+        }
+        std::size_t count = 0;
+        for (std::size_t k = 0; k < tasks.size(); ++k) {
+          auto& edges = result.edges[tasks[k].stack];
+          edges.insert (edges.end(), task_joins[k].begin(), task_joins[k].end());
+          count += task_joins[k].size();
+          for (const std::uint32_t i : task_absorbed[k])
+            result.breakpoints[i] = 1;
+        }
+        return count;
+      };
 
   if (curves) {
     // A point ends a curve in some stack when the normal turns sharply there, or when
@@ -241,18 +318,27 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     // same statistic (the larger of two sides); the significance test takes the median
     // of the pooled estimates, the noise sigma itself.
     result.breakpoints.assign (n, 0);
-    for (const CurveScores& scores : stack_scores) {
-      const double tolerance = std::max (
-          parameters.residual_factor * medianResidual (scores.evaluated, scores.rms),
-          parameters.min_residual);
+    std::vector<double> tolerances;
+    std::vector<std::vector<std::uint8_t>> own_ends (num_stacks);
+    for (std::size_t s = 0; s < num_stacks; ++s) {
+      const CurveScores& scores = stack_scores[s];
+      own_ends[s].assign (n, 0);
+      const double median = medianResidual (scores.evaluated, scores.rms);
+      const double tolerance =
+          std::max (parameters.residual_factor * median, parameters.min_residual);
+      // A curve through a junction joins two arms for good: it must fit as well as a
+      // typical stretch of the stack's curves, not merely pass for a curve.
+      tolerances.push_back (tolerance / parameters.residual_factor);
       const double z = parameters.turn_significance *
                        medianResidual (scores.evaluated, scores.noise);
       for (std::size_t i = 0; i < n; ++i)
         if (scores.evaluated[i] && ((scores.turn[i] > parameters.max_turn &&
                                      scores.turn[i] > z * scores.turn_sigma[i]) ||
                                     scores.rms[i] > tolerance))
-          result.breakpoints[i] = 1;
+          result.breakpoints[i] = own_ends[s][i] = 1;
     }
+    stack_scores.clear();
+    result.junction_joins = joinAcrossJunctions (tolerances, own_ends);
   }
   result.num_segments =
       labelSegments (n, result.edges, result.breakpoints, result.labels);

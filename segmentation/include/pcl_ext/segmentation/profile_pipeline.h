@@ -51,7 +51,10 @@ struct PipelineResult {
   std::vector<Stack> stacks;                 ///< one per normal
   std::vector<std::vector<GraphEdge>> edges; ///< E_phi: the edges of each stack
   std::vector<std::uint8_t> breakpoints;     ///< curve ends (CurveFitting only)
-  std::vector<std::uint32_t> labels;         ///< component of each point
+  /** \brief Edges of \a edges that follow a curve across a junction of curve ends
+   * (CurveFitting only; joinCurvesAcrossJunctions), last in their stack's edges. */
+  std::size_t junction_joins = 0;
+  std::vector<std::uint32_t> labels; ///< component of each point
   std::size_t num_segments = 0;
 };
 

@@ -69,7 +69,12 @@ namespace pcl_ext {
  * them whole. The curve ends (breakpoints) of all stacks are removed from the graph
  * before the components are taken, and then rejoin the segment of most of their
  * neighbours: a crease seen by one stack so also separates the profiles of the stacks
- * that run along it.
+ * that run along it. Where curves cross or touch in a profile (the paper's entangled
+ * curves: two surfaces crossing, a pipe on its support), the curve ends cut every curve
+ * at the junction; the curves through it are then found by fitting the ends of the
+ * arms that meet there in pairs, and followed across it (profiles::
+ * joinCurvesAcrossJunctions), the paper's "repeated until no new curves are
+ * detected".
  * - Two more options, off by default (the paper), for what one global spacing and one
  * frame per point miss: thresholds that follow the local point density
  * (setLocalThreshold: a TLS scan is sparser far from the scanner) and curve fits along
@@ -451,6 +456,14 @@ public:
     return breakpoints_;
   }
 
+  /** \brief Curve fitting: how many curves were followed across a junction (edges of
+   * getStackEdges, the last of their stack's). */
+  std::size_t
+  getJunctionJoins () const
+  {
+    return junction_joins_;
+  }
+
 protected:
   using pcl::PCLBase<PointT>::input_;
   using pcl::PCLBase<PointT>::indices_;
@@ -494,6 +507,7 @@ protected:
   std::vector<std::vector<std::uint32_t>>
       profile_of_point_; ///< per stack, per points_ entry
   pcl::Indices breakpoints_;
+  std::size_t junction_joins_ = 0;
   std::vector<pcl::PointIndices> clusters_;
   double used_spacing_ = 0.0;
   double used_width_ = 0.0;

@@ -163,13 +163,15 @@ struct PolynomialFit {
  * sample coordinates (same length) \param[in] scale a length used to condition the
  * normal equations (e.g. the window) \param[in] corrected use AICc, the small-sample
  * correction of Hurvich & Tsai (1989, "Regression and time series model selection in
- * small samples"); false: the paper's plain AIC */
+ * small samples"); false: the paper's plain AIC \param[in] max_degree the highest
+ * degree tried (1 to 3) */
 PolynomialFit
 fitPolynomialAic (const std::vector<double>& x,
                   const std::vector<double>& y,
                   const std::vector<double>& t,
                   double scale,
-                  bool corrected = false);
+                  bool corrected = false,
+                  int max_degree = 3);
 
 /** \brief Curve fitting (section 4.1.2), the scoring half: for every point, the points
  * of its chain within the window are split at the point by the local direction, a
@@ -183,5 +185,54 @@ scoreCurveTurns (const ProfilePoints& profile,
                  const std::vector<LocalEdge>& chain_edges,
                  const CurveFitParameters& parameters,
                  CurveScores& scores);
+/** \brief Parameters of joinCurvesAcrossJunctions. */
+struct JunctionParameters {
+  double threshold =
+      0.0;             ///< chain link threshold: attachments closer than 2x are one end
+  double window = 0.0; ///< length of the stretch of a curve end that is fitted
+  double max_turn = 0.0;  ///< radians, as for the curve ends
+  double tolerance = 0.0; ///< residual RMS a curve through the junction may have (> 0)
+  bool corrected_aic = false;      ///< select by AICc rather than AIC
+  unsigned int min_end_points = 5; ///< a shorter end is not fitted
+  /** \brief Optional per-point multipliers of the window (see CurveFitParameters). */
+  const std::vector<float>* window_scale = nullptr;
+  /** \brief Optional per-point flags of points that may not carry a join (the curve
+   * ends of other stacks, which leave the graph). */
+  const std::vector<std::uint8_t>* removed = nullptr;
+};
+
+/** \brief Curve fitting (section 4.1.2), the extraction half for entangled curves: the
+ * curves that run through a junction of a profile are followed across it.
+ *
+ * Where curves cross or touch in a profile (two surfaces crossing, a pipe on its
+ * support, a branch leaving a trunk), the points near the junction are curve ends: a
+ * side of each is not one curve. Removing them cuts every curve there, which splits a
+ * surface along the line where another crosses it. Here the arms are the chains of the
+ * points that are not curve ends; an arm of fewer than \a min_end_points points,
+ * shorter than the window, or a blob (no principal direction) less than two windows
+ * across is part of the junction (fits that passed by chance, or the crossing itself,
+ * whose fits are not judged), and a junction is a chain of such points. Where at least
+ * three arms meet (a crossing, or a curve with another leaving it; two arms are a
+ * crease or a curve's end), the ends of every two arms (the points of each within the
+ * window of where it meets the junction) are fitted as one curve, a line or a parabola
+ * chosen by AIC along the line between them: a cubic's inflection would let two
+ * touching curves pass for one S-shaped curve. A pair is one curve when its ends turn
+ * by at most \a max_turn, lie at most six windows apart and the joint fit's residual
+ * RMS is within \a tolerance; pairs are taken in increasing residual, each end at most
+ * once, so that of two crossing curves each arm continues the arm that prolongs it.
+ * This is the paper's "the model fitting and selection is repeated until no new curves
+ * are detected" for the junctions the splitting leaves. Deterministic.
+ * \param[in] curve_ends one flag per point of the profile \param[out] joins one edge
+ * per pair, between the pair's nearest points not \a removed (local indices, a < b), in
+ * a deterministic order \param[out] absorbed optional: the points of the short arms of
+ * every junction a curve was followed across, in increasing order; they are curve ends
+ * too */
+void
+joinCurvesAcrossJunctions (const ProfilePoints& profile,
+                           const std::vector<LocalEdge>& chain_edges,
+                           const std::vector<std::uint8_t>& curve_ends,
+                           const JunctionParameters& parameters,
+                           std::vector<LocalEdge>& joins,
+                           std::vector<std::uint32_t>* absorbed = nullptr);
 } // namespace profiles
 } // namespace pcl_ext

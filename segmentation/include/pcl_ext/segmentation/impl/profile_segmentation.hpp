@@ -130,6 +130,7 @@ ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
   stack_edges_.clear();
   profile_of_point_.clear();
   breakpoints_.clear();
+  junction_joins_ = 0;
   used_normals_.clear();
   used_spacing_ = used_width_ = used_threshold_ = 0.0;
   points_.clear();
@@ -183,6 +184,7 @@ ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
   for (std::size_t i = 0; i < result.breakpoints.size(); ++i)
     if (result.breakpoints[i])
       breakpoints_.push_back (points_[i]);
+  junction_joins_ = result.junction_joins;
 
   // Segments: the connected components within the size limits, largest first.
   std::vector<pcl::PointIndices> all (result.num_segments);
