@@ -523,3 +523,32 @@ TEST_F (TilesApp, TheCurvatureFactorChosenFromTheWholeCloudsNoise)
       << output_;
   expectSameAsWhole ("n2.las");
 }
+
+TEST_F (TilesApp, TheDerivedPresetRemovesTheWholeCloudsNoise)
+{
+  // The noise estimated once from every tile's part of the whole cloud's sample,
+  // removed from eq. 4-6 on every tile, the threshold at the median of the curvatures
+  // with it removed: the classes of pcl_ext_classify_variance -preset derived.
+  const std::string whole = std::string (PCL_EXT_CLASSIFY_VARIANCE_EXE) + " '" +
+                            path ("scene.pcd") + "' '" + path ("derived.las") +
+                            "' -preset derived -v > '" + path ("derived.log") +
+                            "' 2>&1";
+  ASSERT_EQ (std::system (whole.c_str()), 0);
+  std::ifstream log (path ("derived.log"));
+  const std::string text ((std::istreambuf_iterator<char> (log)),
+                          std::istreambuf_iterator<char>());
+  ASSERT_NE (text.find ("Estimated from the cloud: noise sigma"), std::string::npos)
+      << text;
+  ASSERT_EQ (text.find ("not removed"), std::string::npos) << text;
+  const LasContent defaults = whole_;
+  whole_ = readLas (path ("derived.las"));
+  ASSERT_FALSE (whole_.records == defaults.records); // the preset changes classes
+  for (const char* tile_size : {"3", "7"}) {
+    const std::string out = std::string ("d") + tile_size + ".las";
+    ASSERT_EQ (run ("classify_variance " + path ("scene.pcd") + " " + path (out) +
+                    " -preset derived -threads 1 -tile_size " + tile_size),
+               0)
+        << output_;
+    expectSameAsWhole (out);
+  }
+}

@@ -81,7 +81,7 @@ public:
     }
     pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
     configure (classifier, tile);
-    if (!applyThreshold (classifier, settings))
+    if (!applyEstimates (classifier, settings))
       return false;
     pcl::PointCloud<pcl::Label> result;
     classifier.classify (result);

@@ -108,7 +108,7 @@ public:
     pcl_ext::VarianceRegionGrowing<pcl::PointXYZ> rg;
     options_.configure (tile.cloud, tile.neighbourhoods, threads_, classifier, rg);
     configure (classifier, tile);
-    if (!applyThreshold (classifier, settings))
+    if (!applyEstimates (classifier, settings))
       return false;
     auto classes = pcl::make_shared<pcl::PointCloud<pcl::Label>>();
     classifier.classify (*classes);

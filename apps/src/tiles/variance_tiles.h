@@ -14,10 +14,13 @@ namespace apps {
 /** \brief A method on Belton & Lichti's classification: when the curvature threshold is
  * derived (factor x the median curvature kappa, eq. 4, of every point), every tile
  * saves its core points' kappa (estimate()), and the median over all tiles gives the
- * threshold every tile then uses (reduce(), applyThreshold()), as untiled. When the
- * factor is chosen from the cloud, every tile also saves its part of the whole cloud's
- * noise sample (pcl_ext::estimateNoiseFromSample), and reduce() chooses it as the
- * classifier does. */
+ * threshold every tile then uses (reduce(), applyEstimates()), as untiled. When the
+ * factor is chosen from the cloud, or the noise is estimated from it (-preset derived),
+ * every tile also saves its part of the whole cloud's noise sample
+ * (pcl_ext::estimateNoiseFromSample), and reduce() estimates the noise as the
+ * classifier does. With the noise estimated, kappa has the noise removed, which is
+ * known only after every tile: the tiles save their points' eigenvalues instead, and
+ * reduce() computes kappa from them once the noise is known. */
 class VarianceTileMethod : public TileMethod {
 public:
   NeighbourhoodReach
@@ -26,7 +29,7 @@ public:
   bool
   needsEstimate () const override
   {
-    return getClassificationOptions().curvature_threshold == 0.0;
+    return getClassificationOptions().curvature_threshold == 0.0 || estimate_noise_;
   }
 
   bool
@@ -43,8 +46,8 @@ protected:
   virtual const VarianceClassificationOptions&
   getClassificationOptions () const = 0;
 
-  /** \brief Refuse what cannot run tile by tile yet (the noise estimated from the
-   * cloud) and keep the curvature factor; the message printed. */
+  /** \brief Keep what the options ask the classifier to estimate from the cloud (the
+   * curvature factor, the noise). \return true */
   bool
   checkClassification ();
 
@@ -62,16 +65,25 @@ protected:
   configure (LocalVarianceClassification<pcl::PointXYZ>& classifier,
              const TileCloud& tile) const;
 
-  /** \brief The whole cloud's curvature threshold (from the plan's \a settings) on
-   * \a classifier when it is derived. \return false (message printed) when the plan
-   * has none */
+  /** \brief The whole cloud's curvature threshold and noise (from the plan's \a
+   * settings) on \a classifier where they are estimated from the cloud. \return false
+   * (message printed) when the plan lacks one */
   bool
-  applyThreshold (LocalVarianceClassification<pcl::PointXYZ>& classifier,
+  applyEstimates (LocalVarianceClassification<pcl::PointXYZ>& classifier,
                   const std::map<std::string, std::string>& settings) const;
 
 private:
+  /** \brief Whether the tiles save their part of the whole cloud's noise sample. */
+  bool
+  needsNoiseSample () const
+  {
+    return curvature_factor_ == 0.0 || estimate_noise_;
+  }
+
   double curvature_factor_ =
       0.0; ///< the classifier's after the options (0: from the cloud)
+  bool estimate_noise_ =
+      false; ///< the noise estimated from the cloud (-preset derived)
 };
 
 /** \brief The adapters of pcl_ext_classify_variance and pcl_ext_segment_variance. */

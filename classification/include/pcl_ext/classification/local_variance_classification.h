@@ -175,6 +175,17 @@ public:
                : 3.0;
   }
 
+  /** \brief The noise sigma classify() removes when it estimates the noise
+   * (setNoiseEstimation) and finds \a estimate: its sigma, or 0 when the estimate is
+   * not valid or its noise exceeds kMaxNoiseToSpacing spacings. */
+  static double
+  noiseSigmaRemovedFor (const NoiseEstimate& estimate)
+  {
+    return estimate.valid && !(estimate.sigma > kMaxNoiseToSpacing * estimate.spacing)
+               ? estimate.sigma
+               : 0.0;
+  }
+
   /** \brief The factor the last classify() used (0 when the threshold was set). */
   double
   getCurvatureThresholdFactorUsed () const

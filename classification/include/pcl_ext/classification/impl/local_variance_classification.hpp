@@ -168,32 +168,26 @@ template <typename PointT>
 void
 pcl_ext::LocalVarianceClassification<PointT>::removeEstimatedNoise()
 {
-  if (noise_estimate_.valid &&
-      noise_estimate_.sigma > kMaxNoiseToSpacing * noise_estimate_.spacing) {
+  noise_sigma_used_ = noiseSigmaRemovedFor (noise_estimate_);
+  if (!noise_estimate_.valid)
+    PCL_WARN ("[pcl_ext::LocalVarianceClassification::classify] The noise cannot be "
+              "estimated: %s; none is removed (the paper's eq. 4-6).\n",
+              noise_estimate_.reason.c_str());
+  else if (noise_sigma_used_ == 0.0)
     // Noise near the spacing (a range camera, not a scanner): the few-centimetre
     // neighbourhoods that see a crease see it through the noise, and removing the noise
     // from l0 removes the crease with it.
-    noise_sigma_used_ = 0.0;
     PCL_DEBUG ("[pcl_ext::LocalVarianceClassification::classify] Estimated noise sigma "
                "%g is above %g point spacings (%g): none removed.\n",
                noise_estimate_.sigma,
                kMaxNoiseToSpacing,
                noise_estimate_.spacing);
-  }
-  else if (noise_estimate_.valid) {
-    noise_sigma_used_ = noise_estimate_.sigma;
+  else
     PCL_DEBUG ("[pcl_ext::LocalVarianceClassification::classify] Estimated noise sigma "
                "%g, point spacing %g (from %zu neighbourhoods).\n",
                noise_estimate_.sigma,
                noise_estimate_.spacing,
                noise_estimate_.used);
-  }
-  else {
-    noise_sigma_used_ = 0.0;
-    PCL_WARN ("[pcl_ext::LocalVarianceClassification::classify] The noise cannot be "
-              "estimated: %s; none is removed (the paper's eq. 4-6).\n",
-              noise_estimate_.reason.c_str());
-  }
 }
 
 template <typename PointT>
