@@ -4,6 +4,8 @@
  */
 #include <pcl_ext/segmentation/profile_graph.h>
 
+#include "edge_adjacency.h"
+
 #include <pcl_ext/common/union_find.h>
 
 #include <algorithm>
@@ -14,30 +16,6 @@ namespace pcl_ext {
 namespace profiles {
 namespace {
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-/** Both directions of every edge, as compressed rows. */
-void
-buildAdjacency (std::size_t n,
-                const std::vector<std::vector<GraphEdge>>& stack_edges,
-                std::vector<std::uint32_t>& offsets,
-                std::vector<std::uint32_t>& neighbours)
-{
-  offsets.assign (n + 1, 0);
-  for (const auto& edges : stack_edges)
-    for (const GraphEdge& e : edges) {
-      ++offsets[e.source + 1];
-      ++offsets[e.target + 1];
-    }
-  for (std::size_t i = 0; i < n; ++i)
-    offsets[i + 1] += offsets[i];
-  neighbours.resize (offsets[n]);
-  std::vector<std::uint32_t> next (offsets.begin(), offsets.end() - 1);
-  for (const auto& edges : stack_edges)
-    for (const GraphEdge& e : edges) {
-      neighbours[next[e.source]++] = e.target;
-      neighbours[next[e.target]++] = e.source;
-    }
-}
 } // namespace
 
 std::size_t
@@ -63,7 +41,15 @@ labelSegments (std::size_t n,
 
   if (has_breaks) {
     std::vector<std::uint32_t> offsets, neighbours;
-    buildAdjacency (n, stack_edges, offsets, neighbours);
+    detail::buildAdjacency (
+        n,
+        [&] (auto f) {
+          for (const auto& edges : stack_edges)
+            for (const GraphEdge& e : edges)
+              f (e.source, e.target);
+        },
+        offsets,
+        neighbours);
     // A component whose every point touches a breakpoint lies inside the band along a
     // crease (the crease points themselves, whose fits were not judged): it has no
     // interior, so it is not a segment of its own but rejoins a neighbour like the

@@ -4,6 +4,8 @@
  */
 #include <pcl_ext/segmentation/profile_segmenters.h>
 
+#include "edge_adjacency.h"
+
 #include <pcl_ext/common/union_find.h>
 
 #include <Eigen/Eigenvalues>
@@ -49,7 +51,6 @@ struct ArmShape {
   Eigen::Vector2f hi = Eigen::Vector2f::Constant (-1e30f);
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
-
   Eigen::Vector2f first = Eigen::Vector2f::Zero(); ///< moments are taken about it
 
   void
@@ -83,28 +84,6 @@ struct ArmShape {
            eig.eigenvalues()[0] > kMaxEndSpread * eig.eigenvalues()[1];
   }
 };
-
-/** Both directions of every chain edge, as compressed rows. */
-void
-buildAdjacency (std::size_t n,
-                const std::vector<LocalEdge>& edges,
-                std::vector<std::uint32_t>& offsets,
-                std::vector<std::uint32_t>& neighbours)
-{
-  offsets.assign (n + 1, 0);
-  for (const LocalEdge& e : edges) {
-    ++offsets[e.a + 1];
-    ++offsets[e.b + 1];
-  }
-  for (std::size_t i = 0; i < n; ++i)
-    offsets[i + 1] += offsets[i];
-  neighbours.resize (offsets[n]);
-  std::vector<std::uint32_t> next (offsets.begin(), offsets.end() - 1);
-  for (const LocalEdge& e : edges) {
-    neighbours[next[e.a]++] = e.b;
-    neighbours[next[e.b]++] = e.a;
-  }
-}
 
 /** The arm's points reachable from the attachments along the arm's chain edges within
  * the window of the anchor, then the stretch's direction away from the junction.
@@ -334,7 +313,14 @@ joinCurvesAcrossJunctions (const ProfilePoints& profile,
     arm_of[i] =
         in_junction[i] ? std::numeric_limits<std::uint32_t>::max() : arms.find (i);
   std::vector<std::uint32_t> offsets, neighbours;
-  buildAdjacency (n, chain_edges, offsets, neighbours);
+  detail::buildAdjacency (
+      n,
+      [&] (auto f) {
+        for (const LocalEdge& e : chain_edges)
+          f (e.a, e.b);
+      },
+      offsets,
+      neighbours);
   std::vector<std::uint8_t> visited (n, 0), joined (n, 0);
   std::vector<End> ends;
   std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;

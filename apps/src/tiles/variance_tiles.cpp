@@ -37,6 +37,25 @@ constexpr const char* kEigenParts[3][3] = {{"lv_l0_high", "lv_l0_mid", "lv_l0_lo
 constexpr const char* kDenoisedCurvatures = "curvature_noise_removed";
 constexpr const char* kNoiseSetting = "noise_sigma";
 
+/** The eigenvalues and size of the neighbourhood of the tile's point \a i, as the
+ * classifier computes them; size 0 (eigenvalues 0) where it has none. */
+NeighbourhoodSpread
+spreadOf (const TileCloud& tile, std::size_t i)
+{
+  NeighbourhoodSpread spread;
+  const auto& nb = *tile.neighbourhoods;
+  const std::ptrdiff_t row = nb.getRowOfPoint (static_cast<pcl::index_t> (i));
+  LocalCovariance local;
+  if (row >= 0) {
+    const auto nn = nb[static_cast<std::size_t> (row)];
+    if (computeNeighbourhoodCovariance (*tile.cloud, nn.begin(), nn.end(), local)) {
+      spread.values = local.eigen.values;
+      spread.size = local.size;
+    }
+  }
+  return spread;
+}
+
 /** The tile's points of the whole cloud's noise sample: every core point whose key is
  * at most the cut of the tile's core keys (the whole cloud's cut is at most that). */
 void
@@ -48,7 +67,6 @@ saveNoiseSample (const TileCloud& tile,
   for (std::size_t i = 0; i < cloud.size(); ++i)
     if (tile.core[i])
       cut.add (noiseSampleKeyOf (cloud[i].x, cloud[i].y, cloud[i].z));
-  const auto& nb = *tile.neighbourhoods;
   for (std::size_t i = 0; i < cloud.size() && !cut.empty(); ++i) {
     if (!tile.core[i])
       continue;
@@ -56,41 +74,29 @@ saveNoiseSample (const TileCloud& tile,
     if (key > cut.get())
       continue;
     appendKey (values, kKeyParts, key);
-    NeighbourhoodSpread spread;
-    const std::ptrdiff_t row = nb.getRowOfPoint (static_cast<pcl::index_t> (i));
-    LocalCovariance local;
-    if (row >= 0) {
-      const auto nn = nb[static_cast<std::size_t> (row)];
-      if (computeNeighbourhoodCovariance (cloud, nn.begin(), nn.end(), local)) {
-        spread.values = local.eigen.values;
-        spread.size = local.size;
-      }
-    }
+    const NeighbourhoodSpread spread = spreadOf (tile, i);
     for (int v = 0; v < 3; ++v)
       values[kSpreadValues[v]].push_back (static_cast<float> (spread.values[v]));
     values[kSpreadValues[3]].push_back (static_cast<float> (spread.size));
   }
 }
 
-/** Every core point's eigenvalues (NaN where its neighbourhood has no covariance). */
+/** Every core point's eigenvalues (NaN where its neighbourhood has no covariance).
+ * The few thousand points of the noise sample among them are decomposed a second time
+ * by saveNoiseSample: keeping every point's spread to share would cost more memory
+ * than the repeated work costs time. */
 void
 saveEigenvalues (const TileCloud& tile,
                  std::map<std::string, std::vector<float>>& values)
 {
-  const auto& cloud = *tile.cloud;
-  const auto& nb = *tile.neighbourhoods;
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
+  for (std::size_t i = 0; i < tile.cloud->size(); ++i) {
     if (!tile.core[i])
       continue;
-    Eigen::Vector3d eigenvalues =
-        Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN());
-    const std::ptrdiff_t row = nb.getRowOfPoint (static_cast<pcl::index_t> (i));
-    LocalCovariance local;
-    if (row >= 0) {
-      const auto nn = nb[static_cast<std::size_t> (row)];
-      if (computeNeighbourhoodCovariance (cloud, nn.begin(), nn.end(), local))
-        eigenvalues = local.eigen.values;
-    }
+    const NeighbourhoodSpread spread = spreadOf (tile, i);
+    const Eigen::Vector3d eigenvalues =
+        spread.size > 0
+            ? spread.values
+            : Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN());
     for (int v = 0; v < 3; ++v) {
       std::uint64_t bits;
       std::memcpy (&bits, &eigenvalues[v], sizeof (bits));
@@ -289,6 +295,9 @@ VarianceTileMethod::reduce (const std::string& folder,
   using Classification = LocalVarianceClassification<pcl::PointXYZ>;
   const double sigma =
       estimate_noise_ ? Classification::noiseSigmaRemovedFor (noise) : 0.0;
+  if (estimate_noise_ && !noise.valid)
+    std::cerr << "Warning: the noise of the whole cloud cannot be estimated: "
+              << noise.reason << "; none is removed (the paper's eq. 4-6).\n";
   if (estimate_noise_)
     settings[kNoiseSetting] = text (sigma);
   if (getClassificationOptions().curvature_threshold != 0.0)
