@@ -52,9 +52,10 @@ endfunction()
 # Test programs are compiled at -O1 in the optimised builds: the code they test is in the
 # libraries (built as the build type says) and a test file's time goes to instantiating and
 # optimising gtest's and PCL's inline templates, which -O1 does in about half the time of -O3.
+# The sanitized builds compile everything at their own level (cmake/pcl_ext_sanitizers.cmake).
 function(pcl_ext_align_executable_flags target)
   target_compile_options(${target} PRIVATE -fPIC)
-  if(ARGV1 STREQUAL "TESTS")
+  if(ARGV1 STREQUAL "TESTS" AND NOT PCL_EXT_SANITIZE)
     target_compile_options(${target} PRIVATE $<$<NOT:$<CONFIG:Debug>>:-O1>)
   endif()
   target_link_libraries(${target} PRIVATE OpenMP::OpenMP_CXX)

@@ -78,7 +78,7 @@ if [ "$mode" != default ]; then
   cmake_args+=(-DPCL_EXT_SANITIZE=ON -DPCL_EXT_POINT_TYPES=)
   if [ "$mode" = "--sanitize-quick" ]; then
     build_dir="${BUILD_DIR:-$root/build-sanitize-quick}"
-    cmake_args+=(-DPCL_EXT_POINT_TYPES="$quick_point_types")
+    cmake_args+=(-DPCL_EXT_POINT_TYPES="$quick_point_types" -DPCL_EXT_SANITIZE_OPTIMIZATION=-O0)
   fi
   # The real-data tests (Oakland training, mOSD frames) run several times slower sanitized.
   timeout=2700
