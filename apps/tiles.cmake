@@ -5,6 +5,7 @@ pcl_ext_add_app(tiles
     src/tiles/tiles.cpp
     src/tiles/tile_steps.cpp
     src/tiles/second_pass_steps.cpp
+    src/tiles/tile_intersections.cpp
     src/tiles/tile_outputs.cpp
     src/tiles/input_fields.cpp
     src/tiles/tile_cloud.cpp

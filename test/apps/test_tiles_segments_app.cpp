@@ -359,13 +359,42 @@ TEST_F (TilesSegmentsApp, TheDerivedPresetRemovesTheWholeCloudsNoise)
   expectSameAsWhole ("d3.las");
 }
 
+TEST_F (TilesSegmentsApp, IntersectionPointsAreTheWholeClouds)
+{
+  // Section 4's local intersection points, found by the tiles' own points in a second
+  // pass and merged in the whole cloud's order: the untiled tool's bytes, with sections
+  // 2 and 3's segments and with the re-integration, whatever the tile size.
+  makeScene ("indoor", "-no_reintegrate -intersections '" + path ("whole_i.pcd") + "'");
+  ASSERT_EQ (
+      runTiled ("t3.las",
+                "-tile_size 3 -threads 1 -intersections '" + path ("t3_i.pcd") + "'"),
+      0)
+      << output_;
+  expectSameAsWhole ("t3.las");
+  const std::vector<char> whole = readSegments (path ("whole_i.pcd")).bytes;
+  EXPECT_GT (whole.size(), 10000u); // thousands of points
+  EXPECT_TRUE (readSegments (path ("t3_i.pcd")).bytes == whole);
+
+  makeScene ("indoor", "-intersections '" + path ("whole_r.pcd") + "'");
+  ASSERT_EQ (runTiled ("t7.las",
+                       "-tile_size 7 -halo 0.05 -reintegrate -intersections '" +
+                           path ("t7_i.pcd") + "'"),
+             0)
+      << output_;
+  expectSameAsWhole ("t7.las");
+  EXPECT_TRUE (readSegments (path ("t7_i.pcd")).bytes ==
+               readSegments (path ("whole_r.pcd")).bytes);
+}
+
 TEST_F (TilesSegmentsApp, WhatCannotRunTileByTileIsRefused)
 {
   const std::string generate = std::string (PCL_EXT_GENERATE_SCENE_EXE) + " cubes '" +
                                path ("scene.pcd") + "' -points 2000 > /dev/null 2>&1";
   ASSERT_EQ (std::system (generate.c_str()), 0);
-  EXPECT_EQ (runTiled ("a.las", "-intersections " + path ("i.pcd")), 1);
+  // Intersection points go to a point file the tools can write.
+  EXPECT_EQ (runTiled ("a.las", "-intersections " + path ("i.xyz")), 1);
   EXPECT_NE (output_.find ("-intersections"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("i.xyz"));
   EXPECT_EQ (runTiled ("a.las", "-reintegrate -no_reintegrate"), 1);
   EXPECT_EQ (runTiled ("a.las", "-min_size 0"), 1);
   EXPECT_FALSE (exists ("a.las"));

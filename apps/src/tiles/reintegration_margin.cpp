@@ -95,6 +95,27 @@ distanceToBox (double x,
   return std::sqrt (dx * dx + dy * dy);
 }
 
+/** Whether the surface point \a i of a segment has a neighbour that is not a surface
+ * point of its segment (LocalSurfaceIntersection's border points, which find the local
+ * intersections). */
+bool
+isBorderPoint (const pcl_ext::Neighbourhoods<pcl::PointXYZ>& nb,
+               const std::vector<std::uint32_t>& segments,
+               const std::vector<std::uint32_t>& classes,
+               std::size_t i)
+{
+  const std::ptrdiff_t row = nb.getRowOfPoint (static_cast<pcl::index_t> (i));
+  if (row < 0)
+    return false;
+  const auto surface = static_cast<std::uint32_t> (PointClass::Surface);
+  for (const pcl::index_t j : nb[static_cast<std::size_t> (row)]) {
+    const auto k = static_cast<std::size_t> (j);
+    if (segments[k] != segments[i] || classes[k] != surface)
+      return true;
+  }
+  return false;
+}
+
 /** A tile whose points the tile did not all load, with its largest radius. */
 struct Unloaded {
   Eigen::Vector2d min, max; ///< its core box, in the tile cloud's coordinates
@@ -118,7 +139,8 @@ neededReintegrationMargin (const TileCloud& tile,
                            const std::vector<std::uint32_t>& segments,
                            const std::vector<std::uint32_t>& classes,
                            const std::vector<float>& tile_radii,
-                           double reach_factor)
+                           double reach_factor,
+                           bool intersections)
 {
   if (!tile.cloud || !tile.neighbourhoods || tile.neighbourhoods->empty())
     return 0.0;
@@ -142,7 +164,9 @@ neededReintegrationMargin (const TileCloud& tile,
     const bool in_segment = segments[i] != tiling::SegmentMerge::kNoSegment;
     const bool is_segmented = in_segment && classes[i] == surface;
     const bool is_examined =
-        tile.core[i] && !in_segment && (classes[i] == edge || classes[i] == boundary);
+        tile.core[i] &&
+        ((!in_segment && (classes[i] == edge || classes[i] == boundary)) ||
+         (intersections && is_segmented && isBorderPoint (nb, segments, classes, i)));
     if (!is_segmented && !is_examined)
       continue;
     min_x = any ? std::min<double> (min_x, cloud[i].x) : cloud[i].x;
@@ -154,7 +178,7 @@ neededReintegrationMargin (const TileCloud& tile,
       segmented.push_back (i);
       radii.push_back (static_cast<float> (radius (i)));
     }
-    else {
+    if (is_examined) {
       examined.push_back (i);
       largest_own = std::max (largest_own, radius (i));
     }

@@ -39,12 +39,20 @@ neighbourhoodRadius (const pcl_ext::Neighbourhoods<pcl::PointXYZ>& nb, std::size
  * reach B, the tile needs a wider margin too. A neighbourhood cut by the edge of the
  * loaded data is wider than the whole cloud's, never narrower, so the bounds hold.
  * \a segments and \a classes hold every point's segment (SegmentMerge::kNoSegment for
- * none) and pcl_ext::PointClass. */
+ * none) and pcl_ext::PointClass.
+ *
+ * With \a intersections, the local intersections found by the core's border points
+ * must be the whole cloud's too (the intersection points of pcl_ext_segment_variance
+ * -intersections): such a point reads its reach, the neighbourhoods of the points
+ * there, and, to know whether another point found the same pair first, the
+ * intersections of every border point whose reach holds it; the same bound as for q, so
+ * the core's border points are counted among the points read for. */
 double
 neededReintegrationMargin (const TileCloud& tile,
                            const std::vector<std::uint32_t>& segments,
                            const std::vector<std::uint32_t>& classes,
                            const std::vector<float>& tile_radii,
-                           double reach_factor);
+                           double reach_factor,
+                           bool intersections = false);
 } // namespace apps
 } // namespace pcl_ext

@@ -143,6 +143,7 @@ refineStep (const tiling::TilePlan& plan,
                                  : labels[i]);
     }
   if (!tiling::TileResults::write (workdir, core_indices, core_labels, kRefined) ||
+      !method.saveRefineOutputs (workdir, cloud) ||
       !tiling::markTileDone (workdir, tile, kRefined))
     return false;
   const double ms = timer.done (cloud.core_points);

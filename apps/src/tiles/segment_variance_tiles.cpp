@@ -4,12 +4,19 @@
  */
 #include "../variance/segment_variance_options.h"
 #include "reintegration_margin.h"
+#include "tile_intersections.h"
 #include "variance_tiles.h"
 
+#include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/output.h>
+#include <pcl_ext/io/point_file.h>
 #include <pcl_ext/tiling/segment_merge.h>
 
+#include <pcl/conversions.h>
+
+#include <algorithm>
 #include <iostream>
+#include <numeric>
 
 namespace pcl_ext {
 namespace apps {
@@ -50,10 +57,10 @@ public:
                    "around, which on a scan's sparse edges can be most of the cloud.\n";
       options_.reintegrate = false;
     }
-    if (!options_.intersections_path.empty()) {
-      std::cerr << "Error: pcl_ext_tiles segment_variance cannot write the local "
-                   "intersection points (-intersections) yet: run "
-                   "pcl_ext_segment_variance.\n";
+    std::string reason;
+    if (!options_.intersections_path.empty() &&
+        !io::canWritePointFile (options_.intersections_path, &reason)) {
+      std::cerr << "Error: -intersections: " << reason << ".\n";
       return false;
     }
     return true;
@@ -159,20 +166,22 @@ public:
     }
     // The second pass's margin as the tile's own segments have it (the whole cloud's
     // differ by their minimum size and across the tiles' borders).
-    if (options_.reintegrate)
+    if (needsRefine())
       refine_margin_ = neededReintegrationMargin (
           tile,
           labels,
           classes_,
           {},
-          pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ>().getReachFactor());
+          pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ>().getReachFactor(),
+          intersects());
     return true;
   }
 
+  /** Section 4, re-integration or intersection points, is a second pass. */
   bool
   needsRefine () const override
   {
-    return options_.reintegrate;
+    return options_.intersects();
   }
 
   const std::vector<std::uint32_t>*
@@ -202,12 +211,13 @@ public:
   {
     labels = segments;
     needed_margin_ = 0.0;
+    intersections_.clear();
     if (tile.core_points == 0 || !tile.neighbourhoods || tile.neighbourhoods->empty())
       return true;
     pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ> lsi;
     options_.configure (tile.cloud, tile.neighbourhoods, threads_, lsi);
     needed_margin_ = neededReintegrationMargin (
-        tile, segments, classes, tile_radii, lsi.getReachFactor());
+        tile, segments, classes, tile_radii, lsi.getReachFactor(), intersects());
     const auto surface = static_cast<std::uint32_t> (PointClass::Surface);
     const auto edge = static_cast<std::uint32_t> (PointClass::Edge);
     const auto boundary = static_cast<std::uint32_t> (PointClass::Boundary);
@@ -222,16 +232,29 @@ public:
       (*point_classes)[i].label = classes[i];
       const bool finite = pcl::isFinite ((*tile.cloud)[i]);
       into = into || (segmented && classes[i] == surface && finite);
-      examined = examined || (tile.core[i] && !segmented && finite &&
-                              (classes[i] == edge || classes[i] == boundary));
+      examined =
+          examined || (tile.core[i] && finite &&
+                       (segmented ? intersects() && classes[i] == surface
+                                  : classes[i] == edge || classes[i] == boundary));
     }
-    // No segment to re-integrate into within the data, or nothing of the tile's own
-    // to re-integrate: the segments stay (LocalSurfaceIntersection would refuse the
-    // former).
+    // No segment to re-integrate into or intersect within the data, or nothing of the
+    // tile's own to re-integrate or to intersect from: the segments stay
+    // (LocalSurfaceIntersection would refuse the former).
     if (!into || !examined)
       return true;
     lsi.setSegmentLabels (ids);
     lsi.setPointClasses (point_classes);
+    // The points in the whole cloud's order: a pair of points found from both is kept
+    // from the first, as the untiled tool keeps it.
+    auto in_cloud_order = pcl::make_shared<pcl::Indices> (segments.size());
+    std::iota (in_cloud_order->begin(), in_cloud_order->end(), 0);
+    std::sort (in_cloud_order->begin(),
+               in_cloud_order->end(),
+               [&tile] (pcl::index_t a, pcl::index_t b) {
+                 return tile.indices[static_cast<std::size_t> (a)] <
+                        tile.indices[static_cast<std::size_t> (b)];
+               });
+    lsi.setIndices (in_cloud_order);
     pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> intersections;
     pcl::PointCloud<pcl::Label> reintegrated;
     if (!lsi.compute (intersections, reintegrated) ||
@@ -239,9 +262,47 @@ public:
       std::cerr << "Error: the re-integration of tile " << tile.tile << " failed.\n";
       return false;
     }
-    for (std::size_t i = 0; i < segments.size(); ++i)
-      labels[i] = reintegrated[i].label == 0 ? tiling::SegmentMerge::kNoSegment
-                                             : reintegrated[i].label - 1;
+    if (options_.reintegrate)
+      for (std::size_t i = 0; i < segments.size(); ++i)
+        labels[i] = reintegrated[i].label == 0 ? tiling::SegmentMerge::kNoSegment
+                                               : reintegrated[i].label - 1;
+    // The intersection points the core's points found, by the whole cloud's indices.
+    if (intersects())
+      for (const auto& p : intersections)
+        if (tile.core[static_cast<std::size_t> (p.index_a)])
+          intersections_.push_back (
+              {p,
+               tile.indices[static_cast<std::size_t> (p.index_a)],
+               tile.indices[static_cast<std::size_t> (p.index_b)]});
+    return true;
+  }
+
+  bool
+  saveRefineOutputs (const std::string& workdir, const TileCloud& tile) override
+  {
+    if (!intersects())
+      return true;
+    const bool saved = saveTileIntersections (workdir, tile.tile, intersections_);
+    intersections_.clear(); // a tile whose refine() does not run has none
+    return saved;
+  }
+
+  bool
+  mergeRefineOutputs (const std::string& workdir,
+                      std::size_t tiles,
+                      const Eigen::Vector3d& origin) override
+  {
+    if (!intersects())
+      return true;
+    StageTimer timer ("Saving " + options_.intersections_path);
+    pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> points;
+    if (!mergeTileIntersections (workdir, tiles, points))
+      return false;
+    pcl::PCLPointCloud2 blob;
+    pcl::toPCLPointCloud2 (points, blob);
+    if (!io::savePointFile (options_.intersections_path, blob, origin))
+      return false;
+    timer.done (points.size());
     return true;
   }
 
@@ -259,11 +320,19 @@ protected:
   }
 
 private:
+  /** Whether the intersection points are written (-intersections). */
+  bool
+  intersects () const
+  {
+    return !options_.intersections_path.empty();
+  }
+
   SegmentVarianceOptions options_;
-  std::vector<std::uint32_t> classes_; ///< of every point of the last run()
-  double surface_radius_ = 0.0;        ///< of the last run()
-  double refine_margin_ = 0.0;         ///< of the last run()
-  double needed_margin_ = 0.0;         ///< of the last refine()
+  std::vector<TileIntersection> intersections_; ///< of the last refine()
+  std::vector<std::uint32_t> classes_;          ///< of every point of the last run()
+  double surface_radius_ = 0.0;                 ///< of the last run()
+  double refine_margin_ = 0.0;                  ///< of the last run()
+  double needed_margin_ = 0.0;                  ///< of the last refine()
 };
 } // namespace
 

@@ -170,6 +170,26 @@ public:
     return true;
   }
 
+  /** \brief After refine() on \a tile: save in \a workdir what the pass made besides
+   * the segments (e.g. the local intersection points its core points found), for
+   * mergeRefineOutputs(). \return false (message printed) when it cannot be saved */
+  virtual bool
+  saveRefineOutputs (const std::string& /*workdir*/, const TileCloud& /*tile*/)
+  {
+    return true;
+  }
+
+  /** \brief At the merge: write what saveRefineOutputs() saved for the \a tiles tiles
+   * of \a workdir, in the inputs' frame (the plan's \a origin added back). \return
+   * false (message printed) on error */
+  virtual bool
+  mergeRefineOutputs (const std::string& /*workdir*/,
+                      std::size_t /*tiles*/,
+                      const Eigen::Vector3d& /*origin*/)
+  {
+    return true;
+  }
+
   /** \brief How many values per point the method reads beside x y z (carried in the
    * tiles' files, TileCloud::attributes); 0 (the default): none. */
   virtual std::size_t

@@ -9,11 +9,13 @@
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <iomanip>
 #include <sstream>
+#include <sys/resource.h>
 
 namespace pcl_ext {
 namespace apps {
@@ -155,5 +157,23 @@ TileOutputs::close()
   closed_ = true;
   return true;
 }
+
+std::size_t
+TileOutputs::openFilesAllowed()
+{
+  rlimit limit{};
+  if (::getrlimit (RLIMIT_NOFILE, &limit) != 0)
+    return 256;
+  if (limit.rlim_cur < limit.rlim_max) {
+    rlimit raised = limit;
+    raised.rlim_cur = limit.rlim_max;
+    if (::setrlimit (RLIMIT_NOFILE, &raised) == 0)
+      limit = raised;
+  }
+  const rlim_t usable = limit.rlim_cur == RLIM_INFINITY ? 65536 : limit.rlim_cur;
+  return usable > 96 ? static_cast<std::size_t> (std::min<rlim_t> (usable - 64, 65536))
+                     : 32;
+}
+
 } // namespace apps
 } // namespace pcl_ext

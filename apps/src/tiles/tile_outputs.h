@@ -33,6 +33,11 @@ namespace apps {
  * behind. */
 class TileOutputs {
 public:
+  /** \brief How many files one process may hold open besides its own few: the soft
+   * limit, raised to the hard one first. */
+  static std::size_t
+  openFilesAllowed ();
+
   /** \brief Whether \a output names one file per tile (holds a '#'). */
   static bool
   isPattern (const std::string& output);

@@ -25,7 +25,6 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
-#include <sys/resource.h>
 #include <sys/stat.h>
 
 namespace pcl_ext {
@@ -36,25 +35,6 @@ namespace {
  * (docs/tiles.md has the measurements). */
 constexpr std::uint64_t kPointsPerTile = 2500000;
 constexpr std::size_t kChunkPoints = 1 << 20;
-
-/** How many files one process may hold open besides its own few: the soft limit,
- * raised to the hard one first. */
-std::size_t
-openFilesAllowed ()
-{
-  rlimit limit{};
-  if (::getrlimit (RLIMIT_NOFILE, &limit) != 0)
-    return 256;
-  if (limit.rlim_cur < limit.rlim_max) {
-    rlimit raised = limit;
-    raised.rlim_cur = limit.rlim_max;
-    if (::setrlimit (RLIMIT_NOFILE, &raised) == 0)
-      limit = raised;
-  }
-  const rlim_t usable = limit.rlim_cur == RLIM_INFINITY ? 65536 : limit.rlim_cur;
-  return usable > 96 ? static_cast<std::size_t> (std::min<rlim_t> (usable - 64, 65536))
-                     : 32;
-}
 
 std::string
 joinArguments (const std::vector<std::string>& args)
@@ -480,10 +460,15 @@ mergeStep (const tiling::TilePlan& plan,
       return false;
     }
   }
+  // What the second pass made besides the segments first, as the untiled tools write
+  // it: a failure there leaves no output.
+  const bool refined = method.needsRefine();
+  if (refined &&
+      !method.mergeRefineOutputs (workdir, plan.getGrid().size(), plan.origin))
+    return false;
   StageTimer timer ("Merging into " + output);
   const bool segments = method.getKind() == tiling::MergedResults::Kind::Segments;
   // After a second pass the segments are numbered over the whole cloud already.
-  const bool refined = method.needsRefine();
   const auto kind = refined ? tiling::MergedResults::Kind::PerPoint : method.getKind();
   const bool las = io::fileExtension (output) == "las";
   const bool per_tile = TileOutputs::isPattern (output);
@@ -515,8 +500,9 @@ mergeStep (const tiling::TilePlan& plan,
     std::uint64_t points = 0;
     // One file per tile: a pass over the inputs for as many tiles as files may be
     // open at once (all of them, mostly).
-    const std::size_t tiles_per_pass =
-        per_tile ? openFilesAllowed() : std::max<std::size_t> (grid.size(), 1);
+    const std::size_t tiles_per_pass = per_tile
+                                           ? TileOutputs::openFilesAllowed()
+                                           : std::max<std::size_t> (grid.size(), 1);
     for (std::size_t pass_first = 0;
          pass_first < std::max<std::size_t> (grid.size(), 1);
          pass_first += tiles_per_pass) {
