@@ -116,6 +116,42 @@ TEST (PlaneExtraction, SacPlaneExtractionFindsTheLargestPlaneFirst)
       << log;
 }
 
+TEST (PlaneExtraction, SacPlanesLeaveOutTheStripsOfTheWallsTheyCross)
+{
+  // An H's long side in plan: two collinear walls y = 0 (x 0-10 and 14-24, 5 m high),
+  // and walls x = -6 and x = 30 across the plane y = 0 (y -8..8), a point every 0.1 m.
+  // The infinite plane y = 0 holds both collinear walls and a strip of each crossing
+  // wall; the plane keeps the walls and leaves the strips out, which still leave the
+  // pool (the crossing walls are planes of their own without them).
+  Cloud::Ptr cloud (new Cloud);
+  for (double z = 0.05; z < 5.0; z += 0.1) {
+    for (double x = 0.05; x < 24.0; x += 0.1)
+      if (x < 10.0 || x > 14.0)
+        cloud->emplace_back (float (x), 0.0f, float (z));
+    for (const double x : {-6.0, 30.0})
+      for (double y = -7.95; y < 8.0; y += 0.1)
+        cloud->emplace_back (float (x), float (y), float (z));
+  }
+  SACPlaneExtraction<pcl::PointXYZ> extraction;
+  extraction.setInputCloud (cloud);
+  extraction.setDistanceThreshold (0.4);
+  extraction.setMinInliers (200);
+  std::vector<pcl::PointIndices> planes;
+  extraction.extract (planes);
+  ASSERT_EQ (planes.size(), 3u);
+  std::size_t on_walls = 0;
+  for (const auto i : planes[0].indices) {
+    EXPECT_NEAR ((*cloud)[i].y, 0.0f, 1e-6f) << "a crossing wall's point";
+    on_walls += (*cloud)[i].x > 0.0f && (*cloud)[i].x < 24.0f;
+  }
+  EXPECT_EQ (on_walls, planes[0].indices.size());
+  EXPECT_EQ (planes[0].indices.size(), 50u * 200u); // both collinear walls
+  std::vector<ScanPlane> fitted;
+  ASSERT_TRUE (fitScanPlanes (*cloud, planes, ScanViewpoints(), fitted));
+  ASSERT_EQ (fitted.size(), 3u);
+  EXPECT_LT (fitted[0].extent.sizes().x(), 24.5) << "the strips at -6 and 30 m";
+}
+
 // Walls are the planes within the tolerance of vertical.
 TEST (PlaneExtraction, CountsVerticalPlanes)
 {

@@ -17,6 +17,69 @@
 #include <cmath>
 
 namespace pcl_ext {
+namespace detail {
+/** Inliers of a RANSAC plane farther apart than this along the plane's longer axis
+ * belong to different parts: wider than the gaps along one wall (a door, a column of
+ * windows, the shadow of a pole), narrower than the distance between the parallel walls
+ * of a building. */
+constexpr double kPartGap = 2.0;
+/** A part whose own plane turns from the RANSAC plane by more than this (degrees) is
+ * not on it: the strip of another surface that the infinite plane cuts across. */
+constexpr double kPartMaxTurnDeg = 20.0;
+
+/** The inliers \a points of a RANSAC plane without the strips of the surfaces it cuts
+ * across: split into parts where consecutive points along the plane's longer axis lie
+ * more than kPartGap apart, the parts whose own plane is the plane's (kPartMaxTurnDeg)
+ * are kept, sorted. The inliers of an infinite plane are its surface, the surfaces in
+ * line with it (the other wing of an H, the next facade of a street) and a strip of
+ * every wall it cuts across, as high as the wall and twice the inlier distance wide,
+ * which stretched a wall's extent over the whole building. All of \a points when fewer
+ * than \a min_points would be left or no plane can be fitted. */
+template <typename PointT>
+pcl::Indices
+withoutCrossingStrips (const pcl::PointCloud<PointT>& cloud,
+                       const pcl::Indices& points,
+                       std::size_t min_points)
+{
+  Eigen::Matrix3d covariance;
+  Eigen::Vector3d centroid;
+  EigenDecomposition eigen;
+  if (computeLocalCovariance (cloud, points, covariance, centroid) < 3 ||
+      !computeEigenDecomposition (covariance, eigen))
+    return points;
+  const Eigen::Vector3d axis = eigen.vectors.col (2);
+  std::vector<std::pair<double, pcl::index_t>> along;
+  along.reserve (points.size());
+  for (const auto i : points)
+    along.emplace_back (
+        axis.dot (cloud[i].getVector3fMap().template cast<double>() - centroid), i);
+  std::sort (along.begin(), along.end());
+  const double min_cosine = std::cos (kPartMaxTurnDeg * M_PI / 180.0);
+  pcl::Indices kept, part;
+  for (std::size_t first = 0; first < along.size();) {
+    std::size_t last = first + 1;
+    while (last < along.size() && along[last].first - along[last - 1].first <= kPartGap)
+      ++last;
+    part.clear();
+    for (std::size_t k = first; k < last; ++k)
+      part.push_back (along[k].second);
+    first = last;
+    Eigen::Vector3d part_centroid;
+    EigenDecomposition part_eigen;
+    if (part.size() < 3 ||
+        computeLocalCovariance (cloud, part, covariance, part_centroid) < 3 ||
+        !computeEigenDecomposition (covariance, part_eigen) ||
+        std::abs (part_eigen.normal().dot (eigen.normal())) < min_cosine)
+      continue;
+    kept.insert (kept.end(), part.begin(), part.end());
+  }
+  if (kept.size() < min_points)
+    return points;
+  std::sort (kept.begin(), kept.end());
+  return kept;
+}
+} // namespace detail
+
 template <typename PointT>
 bool
 fitScanPlanes (const pcl::PointCloud<PointT>& cloud,
@@ -184,6 +247,9 @@ SACPlaneExtraction<PointT>::extract (std::vector<pcl::PointIndices>& planes)
                          inliers.indices.end(),
                          std::back_inserter (*rest));
     remaining = rest;
+    // Every inlier leaves the pool; the plane keeps those on its surface.
+    inliers.indices = detail::withoutCrossingStrips (
+        *input_, inliers.indices, static_cast<std::size_t> (min_inliers_));
     planes.push_back (std::move (inliers));
   }
   this->deinitCompute();
