@@ -1,5 +1,4 @@
-# Run-time options of a sanitized build (PCL_EXT_SANITIZE=ON): source this file before building
-# (the build runs the test programs to list their tests) and before ctest.
+# Run-time options of a sanitized build (PCL_EXT_SANITIZE=ON): source this file before ctest.
 # shellcheck shell=bash
 _pcl_ext_supp="$(cd "$(dirname "${BASH_SOURCE[0]}")/../test/sanitizers" && pwd)"
 # Any report fails the program that made it; leaks are checked at exit.
