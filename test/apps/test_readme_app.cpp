@@ -25,7 +25,7 @@
 
 namespace {
 namespace fs = std::filesystem;
-const std::string kData = PCL_EXT_SHARED_DATA_DIR;
+const std::string kReadmeData = PCL_EXT_SHARED_DATA_DIR;
 const std::string kSource = PCL_EXT_SOURCE_DIR;
 const std::string kApps = PCL_EXT_APPS_DIR;
 
@@ -75,9 +75,9 @@ split (const std::string& line)
 std::string
 findData (const std::string& name)
 {
-  if (!fs::is_directory (kData))
+  if (!fs::is_directory (kReadmeData))
     return "";
-  for (const auto& entry : fs::recursive_directory_iterator (kData))
+  for (const auto& entry : fs::recursive_directory_iterator (kReadmeData))
     if (entry.path().filename() == name)
       return entry.path().string();
   return "";
@@ -109,8 +109,8 @@ protected:
   void
   runSection (const std::string& title)
   {
-    if (!fs::is_directory (kData))
-      GTEST_SKIP() << "no " << kData;
+    if (!fs::is_directory (kReadmeData))
+      GTEST_SKIP() << "no " << kReadmeData;
     if (!std::getenv ("DISPLAY"))
       GTEST_SKIP() << "no X display for the -png pictures";
     const auto sections = readQuickStart();
@@ -131,7 +131,7 @@ protected:
       const std::string name = url.substr (url.rfind ('/') + 1);
       const std::string copy = findData (name);
       if (copy.empty())
-        GTEST_SKIP() << "no " << name << " in " << kData;
+        GTEST_SKIP() << "no " << name << " in " << kReadmeData;
       fs::copy_file (copy, path (name));
       return;
     }

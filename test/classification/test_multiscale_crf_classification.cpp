@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-TEST (MultiscaleCrf, PclClassOnPointTypes)
+TEST (MultiscaleCrfClassification, PclClassOnPointTypes)
 {
   // Two classes on the floor-and-wall cloud, through the PCL wrapper.
   std::vector<std::uint32_t> truth;

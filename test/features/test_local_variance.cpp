@@ -16,7 +16,7 @@
 
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 
-TEST (ChiSquaredBoundaryEstimation, QuantileIsTheChiSquaredTwoDegreesOfFreedom)
+TEST (ChiSquaredStatistic, QuantileIsTheChiSquaredTwoDegreesOfFreedom)
 {
   EXPECT_NEAR (pcl_ext::chiSquaredQuantile2 (0.95), 5.991, 1e-3);
   EXPECT_NEAR (pcl_ext::chiSquaredQuantile2 (0.99), 9.210, 1e-3);
@@ -26,7 +26,7 @@ TEST (ChiSquaredBoundaryEstimation, QuantileIsTheChiSquaredTwoDegreesOfFreedom)
   EXPECT_TRUE (std::isnan (pcl_ext::chiSquaredQuantile2 (-0.5)));
 }
 
-TEST (ChiSquaredBoundaryEstimation, StatisticOfAHalfDiscMatchesTheClosedForm)
+TEST (ChiSquaredStatistic, StatisticOfAHalfDiscMatchesTheClosedForm)
 {
   // Index point at the middle of the diameter of a dense uniform half disc: centroid
   // offset 4 r / (3 pi), variance across r^2 / 4 - (4 r / (3 pi))^2: statistic 2.57

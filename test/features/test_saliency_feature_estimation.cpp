@@ -41,7 +41,7 @@ features (const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
 }
 } // namespace
 
-TEST (SaliencyFeatures, Equation12FromTheEigenvalues)
+TEST (SaliencyFeatureEstimation, Equation12FromTheEigenvalues)
 {
   const auto cloud = crf_test::floorAndWall (0.05, 0.004);
   const pcl::index_t centre = 40 * 80 + 40; // (2.05, 2.0, 0) on the floor
@@ -71,7 +71,7 @@ TEST (SaliencyFeatures, Equation12FromTheEigenvalues)
   EXPECT_NEAR (f (0, kLogRadius), std::log (r), 1e-5);
 }
 
-TEST (SaliencyFeatures, WallAnglesAndHeight)
+TEST (SaliencyFeatureEstimation, WallAnglesAndHeight)
 {
   const auto cloud = crf_test::floorAndWall (0.05, 0.002);
   const std::size_t floor_points = 79 * 80;
@@ -83,7 +83,7 @@ TEST (SaliencyFeatures, WallAnglesAndHeight)
   EXPECT_NEAR (f (0, kHeight), 3.f, 0.02f);          // above the floor beside it
 }
 
-TEST (SaliencyFeatures, LinesTellPolesFromWires)
+TEST (SaliencyFeatureEstimation, LinesTellPolesFromWires)
 {
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
   for (int i = 0; i < 200; ++i)
@@ -98,7 +98,7 @@ TEST (SaliencyFeatures, LinesTellPolesFromWires)
   EXPECT_GT (f (0, kCurve), f (0, kSurface) + 5.f);
 }
 
-TEST (SaliencyFeatures, ColourAndIntensityWhenThePointTypeHasThem)
+TEST (SaliencyFeatureEstimation, ColourAndIntensityWhenThePointTypeHasThem)
 {
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>>();
   for (int i = 0; i < 20; ++i)
@@ -140,7 +140,7 @@ TEST (SaliencyFeatures, ColourAndIntensityWhenThePointTypeHasThem)
   EXPECT_NEAR (f (10, 7), 0.25f, 1e-6f);
 }
 
-TEST (SaliencyFeatures, BadInputGivesEmptyOutput)
+TEST (SaliencyFeatureEstimation, BadInputGivesEmptyOutput)
 {
   Eigen::MatrixXf f;
   SaliencyFeatureEstimation<pcl::PointXYZ> est;
@@ -171,7 +171,7 @@ TEST (SaliencyFeatures, BadInputGivesEmptyOutput)
   EXPECT_EQ (f.size(), 0);
 }
 
-TEST (SaliencyFeatures, MultiScaleFeaturesTellPolesWiresAndGround)
+TEST (SaliencyFeatureEstimation, MultiScaleFeaturesTellPolesWiresAndGround)
 {
   // A 1 cm-spaced vertical pole 4 m tall, a horizontal wire 6 m above the ground, and a
   // 5 cm-spaced ground plane under both, far enough from each other for the 2 m scale.

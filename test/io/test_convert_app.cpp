@@ -3,6 +3,7 @@
  * failure.
  */
 #include "../app_test.h"
+#include "test_helpers.h"
 
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
@@ -14,12 +15,6 @@
 #include <sys/stat.h>
 
 namespace {
-std::string
-fixture (const std::string& name)
-{
-  return std::string (PCL_EXT_TEST_DATA_DIR) + "/" + name;
-}
-
 class ConvertApp : public pcl_ext::test::AppTest {
 protected:
   ConvertApp() : AppTest (PCL_EXT_CONVERT_EXE) {}

@@ -18,7 +18,7 @@ using pcl_ext::io::PointTable;
 
 namespace {
 std::string
-writeFile (const std::string& name, const std::string& bytes)
+writeE57File (const std::string& name, const std::string& bytes)
 {
   static const std::string dir = freshFolder ("e57_reader");
   const std::string path = dir + "/" + name;
@@ -161,7 +161,7 @@ TEST (E57Reader, TwoScansPosesInvalidStatesAndAttributes)
 {
   const std::string bytes = twoScans();
   ASSERT_EQ (bytes.size() % 1024, 0u);
-  const std::string path = writeFile ("two.e57", bytes);
+  const std::string path = writeE57File ("two.e57", bytes);
   PointTable t;
   pcl_ext::io::loadE57 (path, t);
   // Scan A: records 2 (state 2) and 3 (state 1) dropped; scan B: all three.
@@ -225,13 +225,14 @@ TEST (E57Reader, FilesWithoutPointsAreEmptyNotErrors)
   e57_test::FileBuilder none;
   PointTable t;
   t.xyz.push_back (Eigen::Vector3d::Ones());
-  pcl_ext::io::loadE57 (writeFile ("none.e57", none.finish (e57_test::e57Xml (""))), t);
+  pcl_ext::io::loadE57 (writeE57File ("none.e57", none.finish (e57_test::e57Xml (""))),
+                        t);
   EXPECT_TRUE (t.empty());
   EXPECT_TRUE (t.stations.empty());
   e57_test::FileBuilder zero;
   const std::uint64_t at = zero.addSection ({});
   pcl_ext::io::loadE57 (
-      writeFile ("zero.e57", zero.finish (e57_test::e57Xml (scanAXml (at, 0)))), t);
+      writeE57File ("zero.e57", zero.finish (e57_test::e57Xml (scanAXml (at, 0)))), t);
   EXPECT_TRUE (t.empty());
   ASSERT_EQ (t.stations.size(), 1u);
   EXPECT_EQ (t.stations[0].name, "A");
@@ -243,7 +244,7 @@ TEST (E57Reader, MalformedFilesAreRefusedWithoutCrashing)
   const auto expectRefused = [] (const std::string& name,
                                  const std::string& bytes,
                                  const std::string& fragment) {
-    const std::string path = writeFile (name, bytes);
+    const std::string path = writeE57File (name, bytes);
     PointTable t;
     t.xyz.push_back (Eigen::Vector3d::Ones());
     expectReadError ([&] { pcl_ext::io::loadE57 (path, t); }, path, 0, fragment);

@@ -24,7 +24,7 @@ using pcl_ext::io::LasFileInfo;
 
 namespace {
 const std::string&
-folder ()
+writerFolder ()
 {
   static const std::string dir = freshFolder ("las_writer");
   return dir;
@@ -33,7 +33,7 @@ folder ()
 std::string
 pathOf (const std::string& name)
 {
-  return folder() + "/" + name;
+  return writerFolder() + "/" + name;
 }
 
 struct Loaded {
@@ -428,7 +428,7 @@ TEST (LasWriter, Refusals)
   removeField (blob, "x");
   EXPECT_FALSE (pcl_ext::io::saveLas (path, blob, Eigen::Vector3d::Zero()));
   EXPECT_EQ (readAll (path), "previous");
-  const auto names = listFolder (folder());
+  const auto names = listFolder (writerFolder());
   for (const auto& n : names)
     EXPECT_EQ (n.find (".tmp"), std::string::npos) << n;
 }
@@ -458,7 +458,7 @@ TEST (LasWriter, ChunksWriteTheFileSaveLasWrites)
     ASSERT_TRUE (writer.write (chunk));
   while (reader.read (1000, chunk) > 0);
   EXPECT_EQ (writer.getPointsWritten(), 2500u);
-  const auto names = listFolder (folder()); // nothing at the path before close()
+  const auto names = listFolder (writerFolder()); // nothing at the path before close()
   EXPECT_EQ (std::count (names.begin(), names.end(), "chunks.las"), 0);
   ASSERT_TRUE (writer.close());
   EXPECT_TRUE (las_test::readBytes (pathOf ("chunks.las")) ==

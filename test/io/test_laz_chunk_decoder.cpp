@@ -48,7 +48,7 @@ format3Record ()
   return r;
 }
 
-const LaszipVlr format3 = vlrOf (2, {{6, 20, 2}, {7, 8, 2}, {8, 6, 2}});
+const LaszipVlr chunkFormat3 = vlrOf (2, {{6, 20, 2}, {7, 8, 2}, {8, 6, 2}});
 const LaszipVlr format6 = vlrOf (3, {{10, 30, 3}});
 } // namespace
 
@@ -62,7 +62,7 @@ TEST (LazChunkDecoder, PointwiseZeroStreamRepeatsTheFirstRecord)
   const std::vector<std::uint8_t> first = format3Record();
   std::vector<std::uint8_t> chunk = first;
   chunk.resize (first.size() + 64, 0);
-  LazChunkDecoder decoder (format3);
+  LazChunkDecoder decoder (chunkFormat3);
   ASSERT_EQ (decoder.recordLength(), 34u);
   decoder.startChunk (chunk.data(), chunk.size());
   std::vector<std::uint8_t> out (2 * 34);
@@ -110,7 +110,7 @@ TEST (LazChunkDecoder, LayeredZeroStreamRepeatsTheFirstRecord)
 
 TEST (LazChunkDecoder, TruncatedChunksAreErrors)
 {
-  LazChunkDecoder decoder (format3);
+  LazChunkDecoder decoder (chunkFormat3);
   std::vector<std::uint8_t> out (34 * 100);
   // Shorter than one record.
   std::vector<std::uint8_t> chunk (20, 0);
@@ -146,7 +146,7 @@ TEST (LazChunkDecoder, LayeredHeaderMustFitTheChunk)
 
 TEST (LazChunkDecoder, DecodeBeforeAnyChunkIsAnError)
 {
-  LazChunkDecoder decoder (format3);
+  LazChunkDecoder decoder (chunkFormat3);
   std::vector<std::uint8_t> out (34);
   EXPECT_THROW (decoder.decode (1, out.data()), LazDataError);
 }

@@ -27,16 +27,16 @@ using pcl_ext::io::PointFileFormat;
 
 namespace {
 const std::string&
-folder ()
+pointFileFolder ()
 {
   static const std::string dir = freshFolder ("point_file");
   return dir;
 }
 
 std::string
-pathOf (const std::string& name)
+pointFilePath (const std::string& name)
 {
-  return folder() + "/" + name;
+  return pointFileFolder() + "/" + name;
 }
 
 /** A 10 x 10 grid of points at a UTM-like place: file coordinate = base + (i, j, 0.1 i)
@@ -117,11 +117,11 @@ const Eigen::Vector3d kUtm (500123.0, 6000456.0, 52.0);
 TEST (PointFile, DoublePcdAndPlyAreReadToTheMillimetre)
 {
   const pcl::PCLPointCloud2 grid = gridCloud (pcl::PCLPointField::FLOAT64, kUtm);
-  ASSERT_EQ (writePcd (pathOf ("double.pcd"), grid), 0);
-  ASSERT_EQ (writePly (pathOf ("double.ply"), grid), 0);
+  ASSERT_EQ (writePcd (pointFilePath ("double.pcd"), grid), 0);
+  ASSERT_EQ (writePly (pointFilePath ("double.ply"), grid), 0);
   for (const std::string name : {"double.pcd", "double.ply"}) {
     PointFile file;
-    pcl_ext::io::loadPointFile (pathOf (name), file);
+    pcl_ext::io::loadPointFile (pointFilePath (name), file);
     EXPECT_TRUE (file.double_coordinates) << name;
     ASSERT_EQ (file.cloud.width * file.cloud.height, 100u) << name;
     // x y z are float, first, local; the origin is a round value near the data.
@@ -144,16 +144,17 @@ TEST (PointFile, DoublePcdAndPlyAreReadToTheMillimetre)
 TEST (PointFile, DoubleOutputCarriesTheOrigin)
 {
   const pcl::PCLPointCloud2 grid = gridCloud (pcl::PCLPointField::FLOAT64, kUtm);
-  ASSERT_EQ (writePly (pathOf ("in.ply"), grid), 0);
+  ASSERT_EQ (writePly (pointFilePath ("in.ply"), grid), 0);
   PointFile in;
-  pcl_ext::io::loadPointFile (pathOf ("in.ply"), in);
+  pcl_ext::io::loadPointFile (pointFilePath ("in.ply"), in);
   for (const std::string name : {"out.pcd", "out.ply"}) {
-    ASSERT_TRUE (pcl_ext::io::savePointFile (pathOf (name), in.cloud, in.origin, &in));
+    ASSERT_TRUE (
+        pcl_ext::io::savePointFile (pointFilePath (name), in.cloud, in.origin, &in));
     pcl::PCLPointCloud2 raw;
     if (name == "out.pcd")
-      ASSERT_EQ (pcl::io::loadPCDFile (pathOf (name), raw), 0);
+      ASSERT_EQ (pcl::io::loadPCDFile (pointFilePath (name), raw), 0);
     else
-      ASSERT_EQ (pcl::io::loadPLYFile (pathOf (name), raw), 0);
+      ASSERT_EQ (pcl::io::loadPLYFile (pointFilePath (name), raw), 0);
     ASSERT_EQ (raw.fields[0].datatype, pcl::PCLPointField::FLOAT64) << name;
     for (std::size_t i = 0; i < 100; ++i) {
       EXPECT_NEAR (value<double> (raw, "x", i), kUtm.x() + i / 10 + 0.001, 1e-4);
@@ -174,16 +175,16 @@ TEST (PointFile, LocalFloatInputIsWrittenAsItWas)
     p.label = i;
     cloud.push_back (p);
   }
-  ASSERT_EQ (pcl::io::savePCDFileBinary (pathOf ("local.pcd"), cloud), 0);
+  ASSERT_EQ (pcl::io::savePCDFileBinary (pointFilePath ("local.pcd"), cloud), 0);
   PointFile in;
-  pcl_ext::io::loadPointFile (pathOf ("local.pcd"), in);
+  pcl_ext::io::loadPointFile (pointFilePath ("local.pcd"), in);
   EXPECT_EQ (in.format, PointFileFormat::PCD);
   EXPECT_TRUE (in.origin.isZero());
   EXPECT_FALSE (in.double_coordinates);
-  ASSERT_TRUE (
-      pcl_ext::io::savePointFile (pathOf ("local_out.pcd"), in.cloud, in.origin, &in));
+  ASSERT_TRUE (pcl_ext::io::savePointFile (
+      pointFilePath ("local_out.pcd"), in.cloud, in.origin, &in));
   pcl::PointCloud<pcl::PointXYZL> back;
-  ASSERT_EQ (pcl::io::loadPCDFile (pathOf ("local_out.pcd"), back), 0);
+  ASSERT_EQ (pcl::io::loadPCDFile (pointFilePath ("local_out.pcd"), back), 0);
   ASSERT_EQ (back.size(), cloud.size());
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     EXPECT_EQ (back[i].x, cloud[i].x);
@@ -194,9 +195,10 @@ TEST (PointFile, LocalFloatInputIsWrittenAsItWas)
 TEST (PointFile, FloatCoordinatesFarFromTheOriginAreShiftedExactly)
 {
   const pcl::PCLPointCloud2 grid = gridCloud (pcl::PCLPointField::FLOAT32, kUtm);
-  ASSERT_EQ (writePcd (pathOf ("float_utm.pcd"), grid), 0);
+  ASSERT_EQ (writePcd (pointFilePath ("float_utm.pcd"), grid), 0);
   PointFile file;
-  pcl_ext::io::loadPointFile (pathOf ("float_utm.pcd"), file); // warns: float at UTM
+  pcl_ext::io::loadPointFile (pointFilePath ("float_utm.pcd"),
+                              file); // warns: float at UTM
   EXPECT_FALSE (file.double_coordinates);
   EXPECT_EQ (file.origin, Eigen::Vector3d (500100.0, 6000400.0, 0.0));
   for (std::size_t i = 0; i < 100; ++i)
@@ -213,66 +215,78 @@ TEST (PointFile, FormatByContentWhenTheExtensionLies)
   // A LAS file named .pcd, a PCD named .ply, a PLY named .las.
   pcl::PCLPointCloud2 grid =
       gridCloud (pcl::PCLPointField::FLOAT32, Eigen::Vector3d::Zero());
-  ASSERT_TRUE (
-      pcl_ext::io::saveLas (pathOf ("real_las.pcd"), grid, Eigen::Vector3d::Zero()));
-  ASSERT_EQ (pcl::PCDWriter().writeBinaryCompressed (pathOf ("real_pcd.ply"), grid), 0);
-  ASSERT_EQ (writePly (pathOf ("real_ply.las"), grid), 0);
+  ASSERT_TRUE (pcl_ext::io::saveLas (
+      pointFilePath ("real_las.pcd"), grid, Eigen::Vector3d::Zero()));
+  ASSERT_EQ (
+      pcl::PCDWriter().writeBinaryCompressed (pointFilePath ("real_pcd.ply"), grid), 0);
+  ASSERT_EQ (writePly (pointFilePath ("real_ply.las"), grid), 0);
   {
-    std::ofstream (pathOf ("points.las")) << "1 2 3\n4 5 6\n";
-    std::ofstream (pathOf ("points.txt")) << "\"X\",\"Y\",\"Z\"\n1,2,3\n4,5,6\n";
-    std::ofstream (pathOf ("scan.txt")) << "2\n1.0 2.0 3.0 0.5\n4 5 6 0.25\n";
-    std::ofstream (pathOf ("random.pcd")) << std::string ("\x01\x02\0\x03garbage", 11);
+    std::ofstream (pointFilePath ("points.las")) << "1 2 3\n4 5 6\n";
+    std::ofstream (pointFilePath ("points.txt")) << "\"X\",\"Y\",\"Z\"\n1,2,3\n4,5,6\n";
+    std::ofstream (pointFilePath ("scan.txt")) << "2\n1.0 2.0 3.0 0.5\n4 5 6 0.25\n";
+    std::ofstream (pointFilePath ("random.pcd"))
+        << std::string ("\x01\x02\0\x03garbage", 11);
   }
   using pcl_ext::io::detectPointFileFormat;
-  EXPECT_EQ (detectPointFileFormat (pathOf ("real_las.pcd")), PointFileFormat::LAS);
-  EXPECT_EQ (detectPointFileFormat (pathOf ("real_pcd.ply")), PointFileFormat::PCD);
-  EXPECT_EQ (detectPointFileFormat (pathOf ("real_ply.las")), PointFileFormat::PLY);
-  EXPECT_EQ (detectPointFileFormat (pathOf ("points.txt")), PointFileFormat::ASCII);
-  EXPECT_EQ (detectPointFileFormat (pathOf ("scan.txt")), PointFileFormat::PTS);
-  EXPECT_EQ (detectPointFileFormat (pathOf ("random.pcd")), PointFileFormat::Unknown);
+  EXPECT_EQ (detectPointFileFormat (pointFilePath ("real_las.pcd")),
+             PointFileFormat::LAS);
+  EXPECT_EQ (detectPointFileFormat (pointFilePath ("real_pcd.ply")),
+             PointFileFormat::PCD);
+  EXPECT_EQ (detectPointFileFormat (pointFilePath ("real_ply.las")),
+             PointFileFormat::PLY);
+  EXPECT_EQ (detectPointFileFormat (pointFilePath ("points.txt")),
+             PointFileFormat::ASCII);
+  EXPECT_EQ (detectPointFileFormat (pointFilePath ("scan.txt")), PointFileFormat::PTS);
+  EXPECT_EQ (detectPointFileFormat (pointFilePath ("random.pcd")),
+             PointFileFormat::Unknown);
   for (const std::string name : {"real_las.pcd", "real_pcd.ply", "real_ply.las"}) {
     PointFile file;
-    pcl_ext::io::loadPointFile (pathOf (name), file);
+    pcl_ext::io::loadPointFile (pointFilePath (name), file);
     ASSERT_EQ (file.cloud.width * file.cloud.height, 100u) << name;
     EXPECT_NEAR (value<float> (file.cloud, "x", 99), 9.001f, 1e-3) << name;
     EXPECT_NEAR (value<float> (file.cloud, "intensity", 99), 18.f, 1e-6) << name;
     EXPECT_EQ (file.las.has_value(), name == "real_las.pcd");
   }
   PointFile before;
-  pcl_ext::io::loadPointFile (pathOf ("points.txt"), before);
+  pcl_ext::io::loadPointFile (pointFilePath ("points.txt"), before);
   EXPECT_EQ (before.format, PointFileFormat::ASCII);
   EXPECT_EQ (before.cloud.width, 2u);
   PointFile file = before;
-  expectReadError ([&] { pcl_ext::io::loadPointFile (pathOf ("points.las"), file); },
-                   pathOf ("points.las"),
-                   0,
-                   "not a point file");
-  expectReadError ([&] { pcl_ext::io::loadPointFile (pathOf ("random.pcd"), file); },
-                   pathOf ("random.pcd"),
-                   0,
-                   "not a point file");
-  expectReadError ([&] { pcl_ext::io::loadPointFile (pathOf ("missing.las"), file); },
-                   pathOf ("missing.las"),
-                   0,
-                   "no such file");
   expectReadError (
-      [&] { pcl_ext::io::loadPointFile (folder(), file); }, folder(), 0, "folder");
+      [&] { pcl_ext::io::loadPointFile (pointFilePath ("points.las"), file); },
+      pointFilePath ("points.las"),
+      0,
+      "not a point file");
+  expectReadError (
+      [&] { pcl_ext::io::loadPointFile (pointFilePath ("random.pcd"), file); },
+      pointFilePath ("random.pcd"),
+      0,
+      "not a point file");
+  expectReadError (
+      [&] { pcl_ext::io::loadPointFile (pointFilePath ("missing.las"), file); },
+      pointFilePath ("missing.las"),
+      0,
+      "no such file");
+  expectReadError ([&] { pcl_ext::io::loadPointFile (pointFileFolder(), file); },
+                   pointFileFolder(),
+                   0,
+                   "folder");
   EXPECT_EQ (file.cloud.data, before.cloud.data); // untouched by the failures
 }
 
 TEST (PointFile, AsciiHeadersNameTheColumns)
 {
-  std::ofstream (pathOf ("pdal.csv"))
+  std::ofstream (pointFilePath ("pdal.csv"))
       << "\"X\",\"Y\",\"Z\",\"Intensity\",\"Red\",\"Green\",\"Blue\"\n"
          "500000.5,6000000.25,10,300,1,2,3\n500001.5,6000001.25,11,400,4,5,6\n";
-  std::ofstream (pathOf ("cloudcompare.txt"))
+  std::ofstream (pointFilePath ("cloudcompare.txt"))
       << "//X,Y,Z,R,G,B,Intensity\n1,2,3,10,20,30,0.5\n4,5,6,40,50,60,0.25\n";
-  std::ofstream (pathOf ("cloudcompare_plain.txt"))
+  std::ofstream (pointFilePath ("cloudcompare_plain.txt"))
       << "1 2 3 10 20 30 0.5\n4 5 6 40 50 60 1200\n";
   for (const std::string name :
        {"pdal.csv", "cloudcompare.txt", "cloudcompare_plain.txt"}) {
     PointFile file;
-    pcl_ext::io::loadPointFile (pathOf (name), file);
+    pcl_ext::io::loadPointFile (pointFilePath (name), file);
     ASSERT_EQ (file.cloud.width, 2u) << name;
     pcl::PointCloud<pcl::PointXYZRGB> rgb;
     pcl::fromPCLPointCloud2 (file.cloud, rgb);
@@ -298,17 +312,19 @@ TEST (PointFile, LasRoundTripKeepsEveryDimensionAndTheIntegers)
   pcl::PCLPointCloud2 grid = gridCloud (pcl::PCLPointField::FLOAT64, kUtm);
   PointFile made;
   {
-    ASSERT_EQ (writePly (pathOf ("src.ply"), grid), 0);
-    pcl_ext::io::loadPointFile (pathOf ("src.ply"), made);
+    ASSERT_EQ (writePly (pointFilePath ("src.ply"), grid), 0);
+    pcl_ext::io::loadPointFile (pointFilePath ("src.ply"), made);
   }
-  ASSERT_TRUE (pcl_ext::io::saveLas (pathOf ("in.las"), made.cloud, made.origin));
+  ASSERT_TRUE (
+      pcl_ext::io::saveLas (pointFilePath ("in.las"), made.cloud, made.origin));
   PointFile in;
-  pcl_ext::io::loadPointFile (pathOf ("in.las"), in);
+  pcl_ext::io::loadPointFile (pointFilePath ("in.las"), in);
   ASSERT_TRUE (in.las.has_value());
   pcl::PCLPointCloud2 out = in.cloud;
-  ASSERT_TRUE (pcl_ext::io::savePointFile (pathOf ("out.las"), out, in.origin, &in));
+  ASSERT_TRUE (
+      pcl_ext::io::savePointFile (pointFilePath ("out.las"), out, in.origin, &in));
   PointFile back;
-  pcl_ext::io::loadPointFile (pathOf ("out.las"), back);
+  pcl_ext::io::loadPointFile (pointFilePath ("out.las"), back);
   ASSERT_EQ (back.cloud.fields.size(), in.cloud.fields.size());
   for (std::size_t f = 0; f < in.cloud.fields.size(); ++f)
     EXPECT_EQ (back.cloud.fields[f].name, in.cloud.fields[f].name);
@@ -331,7 +347,7 @@ TEST (PointFile, RefusedOutputs)
   EXPECT_FALSE (pcl_ext::io::canWritePointFile ("a", &reason));
   const pcl::PCLPointCloud2 grid =
       gridCloud (pcl::PCLPointField::FLOAT32, Eigen::Vector3d::Zero());
-  EXPECT_FALSE (
-      pcl_ext::io::savePointFile (pathOf ("x.laz"), grid, Eigen::Vector3d::Zero()));
-  EXPECT_FALSE (std::ifstream (pathOf ("x.laz")).good());
+  EXPECT_FALSE (pcl_ext::io::savePointFile (
+      pointFilePath ("x.laz"), grid, Eigen::Vector3d::Zero()));
+  EXPECT_FALSE (std::ifstream (pointFilePath ("x.laz")).good());
 }

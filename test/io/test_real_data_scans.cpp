@@ -26,14 +26,14 @@ sample (const std::string& name)
 }
 
 bool
-exists (const std::string& path)
+scanFileExists (const std::string& path)
 {
   struct stat st;
   return ::stat (path.c_str(), &st) == 0;
 }
 
 #define REQUIRE_SAMPLE(path)                                                           \
-  if (!exists (path))                                                                  \
+  if (!scanFileExists (path))                                                          \
   GTEST_SKIP() << "sample not found: " << (path)
 
 /** Every point inside the box (the scan's declared cartesianBounds), to float

@@ -2,7 +2,7 @@
  * The bad-input matrix of the command-line tools (test/README.md): each tool, run as a
  * user would, on each kind of bad input that applies to it.
  *
- * Each run is one test named AppBadInput/Matrix.Run/<tool>_<Input>. A bad input must
+ * Each run is one test named AppBadInput/AppMatrix.Run/<tool>_<Input>. A bad input must
  * end with a message and a non-zero exit, no output file (not even a partial or
  * temporary one) and the input files unchanged; a cloud with some NaN points must be
  * processed (exit 0, output written).
@@ -302,7 +302,7 @@ struct Case {
   Bad bad;
 };
 
-class Matrix : public ::testing::TestWithParam<Case> {
+class AppMatrix : public ::testing::TestWithParam<Case> {
 protected:
   static void
   TearDownTestSuite ()
@@ -312,7 +312,7 @@ protected:
   }
 };
 
-TEST_P (Matrix, Run)
+TEST_P (AppMatrix, Run)
 {
   const Tool& tool = allTools()[GetParam().tool];
   const Bad bad = GetParam().bad;
@@ -462,7 +462,7 @@ caseName (const ::testing::TestParamInfo<Case>& info)
 }
 
 INSTANTIATE_TEST_SUITE_P (AppBadInput,
-                          Matrix,
+                          AppMatrix,
                           ::testing::ValuesIn (allCases()),
                           caseName);
 } // namespace

@@ -13,9 +13,9 @@ using Point = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Point>;
 using Source = pcl_ext::NeighbourhoodSource<Point>;
 
-/** An n x n grid at z = 0; point i * n + j at (spacing i, spacing j, 0). */
+/** An n x n sourceGrid at z = 0; point i * n + j at (spacing i, spacing j, 0). */
 Cloud::Ptr
-grid (int n, float spacing)
+sourceGrid (int n, float spacing)
 {
   Cloud::Ptr cloud (new Cloud);
   for (int i = 0; i < n; ++i)
@@ -27,7 +27,7 @@ grid (int n, float spacing)
 
 TEST (NeighbourhoodSource, OwnSearchWithKOrARadius)
 {
-  const auto cloud = grid (10, 0.1f);
+  const auto cloud = sourceGrid (10, 0.1f);
   Source source;
   EXPECT_FALSE (source.getShared());
   const auto* nb = source.prepare ("Test::compute", cloud, nullptr, 6, 0.0, nullptr, 1);
@@ -36,7 +36,7 @@ TEST (NeighbourhoodSource, OwnSearchWithKOrARadius)
   EXPECT_EQ (nb->getKSearch(), 6);
   for (std::size_t r = 0; r < nb->size(); ++r)
     EXPECT_EQ ((*nb)[r].size(), 6u) << r;
-  // A radius just over the spacing: an interior point, itself and its four grid
+  // A radius just over the spacing: an interior point, itself and its four sourceGrid
   // neighbours.
   nb = source.prepare ("Test::compute", cloud, nullptr, 0, 0.1001, nullptr, 2);
   ASSERT_NE (nb, nullptr);
@@ -62,7 +62,7 @@ TEST (NeighbourhoodSource, OwnSearchWithKOrARadius)
 
 TEST (NeighbourhoodSource, ExactlyOneOfKAndRadiusUnlessShared)
 {
-  const auto cloud = grid (5, 0.1f);
+  const auto cloud = sourceGrid (5, 0.1f);
   Source source;
   testing::internal::CaptureStderr();
   EXPECT_EQ (source.prepare ("Test::compute", cloud, nullptr, 0, 0.0, nullptr, 1),
@@ -82,7 +82,7 @@ TEST (NeighbourhoodSource, ExactlyOneOfKAndRadiusUnlessShared)
 
 TEST (NeighbourhoodSource, SharedOnlyForTheirCloudAndIndices)
 {
-  const auto cloud = grid (8, 0.1f);
+  const auto cloud = sourceGrid (8, 0.1f);
   auto shared = pcl::make_shared<pcl_ext::Neighbourhoods<Point>>();
   shared->setInputCloud (cloud);
   shared->setKSearch (5);
@@ -109,7 +109,8 @@ TEST (NeighbourhoodSource, SharedOnlyForTheirCloudAndIndices)
   EXPECT_EQ (own->size(), 2u);
   EXPECT_EQ ((*own)[0].size(), 3u);
   testing::internal::CaptureStderr();
-  own = source.prepare ("Test::compute", grid (8, 0.2f), nullptr, 3, 0.0, nullptr, 1);
+  own = source.prepare (
+      "Test::compute", sourceGrid (8, 0.2f), nullptr, 3, 0.0, nullptr, 1);
   testing::internal::GetCapturedStderr();
   ASSERT_NE (own, nullptr);
   EXPECT_NE (own, shared.get());

@@ -30,7 +30,7 @@ segment (const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
 }
 } // namespace
 
-TEST (AdaptiveSupervoxels, CoverEveryPointWithSpheres)
+TEST (AdaptiveSupervoxelSegmentation, CoverEveryPointWithSpheres)
 {
   const auto cloud = crf_test::floorAndWall (0.05, 0.003);
   const SupervoxelSet set = segment (cloud);
@@ -61,7 +61,7 @@ TEST (AdaptiveSupervoxels, CoverEveryPointWithSpheres)
   EXPECT_LT (set.size() * 10, cloud->size());
 }
 
-TEST (AdaptiveSupervoxels, SmallerWhereCurved)
+TEST (AdaptiveSupervoxelSegmentation, SmallerWhereCurved)
 {
   // Flat floor far from the wall versus the crease: curvature shrinks the radius (eq.
   // 2-3).
@@ -87,7 +87,7 @@ TEST (AdaptiveSupervoxels, SmallerWhereCurved)
   EXPECT_LT (crease / n_crease, 0.8 * flat / n_flat);
 }
 
-TEST (AdaptiveSupervoxels, DeterministicForASeedAndAnyThreadCount)
+TEST (AdaptiveSupervoxelSegmentation, DeterministicForASeedAndAnyThreadCount)
 {
   const auto cloud = crf_test::floorAndWall (0.05, 0.003);
   const SupervoxelSet a = segment (cloud, 1), b = segment (cloud, 2),
@@ -105,7 +105,7 @@ TEST (AdaptiveSupervoxels, DeterministicForASeedAndAnyThreadCount)
   EXPECT_TRUE (differs) << "another seed should draw other mid-points";
 }
 
-TEST (AdaptiveSupervoxels, BadInputGivesEmptyOutput)
+TEST (AdaptiveSupervoxelSegmentation, BadInputGivesEmptyOutput)
 {
   AdaptiveSupervoxelSegmentation<pcl::PointXYZ> seg;
   SupervoxelSet set;

@@ -184,16 +184,16 @@ rack (const Eigen::Vector3d& offset = Eigen::Vector3d::Zero())
 
 /** Distance of \a q from the line through \a point along \a axis. */
 double
-lineDistance (const Eigen::Vector3d& q,
-              const Eigen::Vector3d& point,
-              const Eigen::Vector3d& axis)
+joinLineDistance (const Eigen::Vector3d& q,
+                  const Eigen::Vector3d& point,
+                  const Eigen::Vector3d& axis)
 {
   const Eigen::Vector3d w = q - point, d = axis.normalized();
   return (w - w.dot (d) * d).norm();
 }
 
 double
-axisAngleDegrees (const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+joinAxisAngleDegrees (const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
   const double c = std::min (1.0, std::abs (a.normalized().dot (b.normalized())));
   return std::acos (c) * 180.0 / M_PI;
@@ -229,8 +229,9 @@ TEST (CylinderSegmentJoin, StraightPipeCutAtSupportsIsJoined)
     ++per_segment[c.input_segment];
     const double y = c.input_segment == 4 ? 1.0 : 0.0;
     EXPECT_NEAR (c.cylinder.radius, 0.1, 0.002);
-    EXPECT_LT (axisAngleDegrees (c.cylinder.axis, kX), 0.1);
-    EXPECT_LT (lineDistance (c.cylinder.point, Eigen::Vector3d (0, y, 1), kX), 0.002);
+    EXPECT_LT (joinAxisAngleDegrees (c.cylinder.axis, kX), 0.1);
+    EXPECT_LT (joinLineDistance (c.cylinder.point, Eigen::Vector3d (0, y, 1), kX),
+               0.002);
     EXPECT_LT (std::abs (c.cylinder.taper),
                0.001); // a cylinder, where cones may be fitted
     EXPECT_EQ (c.output_segment, c.input_segment == 4 ? -1 : pipe);
@@ -388,9 +389,9 @@ TEST (CylinderSegmentJoin, GeoreferencedCoordinatesGiveTheSameSegments)
     EXPECT_EQ (c_far[k].input_segment, c_local[k].input_segment);
     EXPECT_EQ (c_far[k].output_segment, c_local[k].output_segment);
     EXPECT_NEAR (c_far[k].cylinder.radius, c_local[k].cylinder.radius, 0.0005);
-    EXPECT_LT (lineDistance (c_far[k].cylinder.point - offset,
-                             c_local[k].cylinder.point,
-                             c_local[k].cylinder.axis),
+    EXPECT_LT (joinLineDistance (c_far[k].cylinder.point - offset,
+                                 c_local[k].cylinder.point,
+                                 c_local[k].cylinder.axis),
                0.0005);
   }
 }

@@ -40,7 +40,7 @@ pipeOnASupport (Cloud& cloud, std::vector<pcl::PointIndices>& segments)
 }
 } // namespace
 
-TEST (CylinderSegmentJoin, ScaledCloudGivesTheSameSegments)
+TEST (CylinderSegmentJoinScale, ScaledCloudGivesTheSameSegments)
 {
   // The lengths follow the point spacing: the scene 16 times larger (a pipe of radius
   // 1.6, beyond the 0.6 the join looked for in metres, a gap of 9.6) or 8 times smaller

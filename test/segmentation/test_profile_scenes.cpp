@@ -46,7 +46,7 @@ loadScene (const std::string& name,
 
 /** Prints the figures the bounds below check, for docs/sithole_mapurisa.md. */
 void
-report (const std::string& name, const pcl_ext::SegmentationMetrics& m)
+reportScene (const std::string& name, const pcl_ext::SegmentationMetrics& m)
 {
   std::cout << std::fixed << std::setprecision (3) << "  [ " << name
             << " ] mean best IoU " << m.mean_best_iou << ", "
@@ -58,7 +58,7 @@ report (const std::string& name, const pcl_ext::SegmentationMetrics& m)
 /** One ground-truth segment's best match: its IoU and the share of the predicted
  * segment that is this truth. */
 void
-report (const std::string& name, const pcl_ext::SegmentMatch& s)
+reportScene (const std::string& name, const pcl_ext::SegmentMatch& s)
 {
   std::cout << std::fixed << std::setprecision (3) << "  [ " << name << " ] IoU "
             << s.iou << ", purity "
@@ -102,7 +102,7 @@ TEST (ProfileSegmentationScenes, CubesAreOneSegmentEach)
   std::vector<std::uint32_t> truth;
   loadScene ("cubes", false, cloud, truth);
   const auto m = segment (cloud, truth);
-  report ("cubes, proximity", m);
+  reportScene ("cubes, proximity", m);
   EXPECT_EQ (m.num_truth_segments, 8u);
   EXPECT_GE (m.mean_best_iou, 0.98);
   EXPECT_EQ (m.correct, 8u);
@@ -115,7 +115,7 @@ TEST (ProfileSegmentationScenes, NestedSpheresAreOneSegmentEach)
   std::vector<std::uint32_t> truth;
   loadScene ("spheres", false, cloud, truth);
   const auto m = segment (cloud, truth);
-  report ("spheres, proximity", m);
+  reportScene ("spheres, proximity", m);
   EXPECT_GE (m.mean_best_iou, 0.95);
   EXPECT_EQ (m.correct, m.num_truth_segments);
 }
@@ -131,7 +131,7 @@ TEST (ProfileSegmentationScenes, CurveFittingSeparatesTheCoaxialSurfaces)
   loadScene ("coaxial", true, cloud, truth);
   // Proximity links across the creases: the horizontal assembly is one segment.
   const auto proximity = segment (cloud, truth);
-  report ("coaxial surfaces, proximity", proximity);
+  reportScene ("coaxial surfaces, proximity", proximity);
   EXPECT_GE (proximity.under_segmented, 4u);
   EXPECT_LT (proximity.mean_best_iou, 0.6);
   // Curve fitting for noisy scans ends the curves at the creases: all but one surface
@@ -139,7 +139,7 @@ TEST (ProfileSegmentationScenes, CurveFittingSeparatesTheCoaxialSurfaces)
   // With the paper's defaults the noise ends curves everywhere.
   const auto curve = segment (
       cloud, truth, Segmentation::ProfileMethod::CurveFitting, kCurveWidthFactor, true);
-  report ("coaxial surfaces, curve fitting for noisy scans", curve);
+  reportScene ("coaxial surfaces, curve fitting for noisy scans", curve);
   EXPECT_GE (curve.mean_best_iou, 0.90);
   EXPECT_GE (curve.correct, 8u);
   EXPECT_EQ (curve.under_segmented, 0u);
@@ -210,7 +210,7 @@ TEST (ProfileSegmentationScenes, TreeTrunkIsSeparatedFromTheGroundByCurveFitting
   const auto [cloud, truth, labels, trunk, ground] = loadTreeScene();
   // Proximity: the trunk touches the ground, and trunk and ground are one segment.
   const auto proximity = segment (cloud, truth);
-  report ("tree trunk, proximity", matchOf (proximity, trunk));
+  reportScene ("tree trunk, proximity", matchOf (proximity, trunk));
   EXPECT_EQ (matchOf (proximity, trunk).best_predicted,
              matchOf (proximity, ground).best_predicted);
   EXPECT_LT (matchOf (proximity, trunk).iou, 0.1);
@@ -218,8 +218,8 @@ TEST (ProfileSegmentationScenes, TreeTrunkIsSeparatedFromTheGroundByCurveFitting
   // ground: the ground is its own segment and the trunk's best segment lies within the
   // trunk.
   const auto curve = segment (cloud, truth, Segmentation::ProfileMethod::CurveFitting);
-  report ("tree trunk, curve fitting", matchOf (curve, trunk));
-  report ("tree ground, curve fitting", matchOf (curve, ground));
+  reportScene ("tree trunk, curve fitting", matchOf (curve, trunk));
+  reportScene ("tree ground, curve fitting", matchOf (curve, ground));
   const auto& t = matchOf (curve, trunk);
   EXPECT_GE (matchOf (curve, ground).iou, 0.99);
   EXPECT_NE (t.best_predicted, matchOf (curve, ground).best_predicted);
@@ -262,8 +262,8 @@ TEST (ProfileSegmentationScenes, SideFramesKeepTheTrunkWhole)
   seg.extract (clusters);
   pcl_ext::SegmentationMetrics m;
   ASSERT_TRUE (pcl_ext::evaluateSegmentation (clusters, kept_truth, m));
-  report ("cut tree trunk, side frames", matchOf (m, trunk));
-  report ("cut tree ground, side frames", matchOf (m, ground));
+  reportScene ("cut tree trunk, side frames", matchOf (m, trunk));
+  reportScene ("cut tree ground, side frames", matchOf (m, ground));
   // Without side frames the trunk's pieces join the ground.
   EXPECT_GE (matchOf (m, trunk).iou, 0.85);
   EXPECT_GE (matchOf (m, ground).iou, 0.95);
@@ -291,7 +291,7 @@ TEST (ProfileSegmentationScenes, TreeTrunkIsOneSegmentAfterTheCylinderJoin)
   seg.extract (segments);
   pcl_ext::SegmentationMetrics before;
   ASSERT_TRUE (pcl_ext::evaluateSegmentation (segments, truth, before));
-  report ("tree trunk, side frames", matchOf (before, trunk));
+  reportScene ("tree trunk, side frames", matchOf (before, trunk));
   EXPECT_LT (matchOf (before, trunk).iou, 0.8);
 
   pcl_ext::CylinderSegmentJoin<pcl::PointXYZ> join;
@@ -301,8 +301,8 @@ TEST (ProfileSegmentationScenes, TreeTrunkIsOneSegmentAfterTheCylinderJoin)
   join.join (joined);
   pcl_ext::SegmentationMetrics m;
   ASSERT_TRUE (pcl_ext::evaluateSegmentation (joined, truth, m));
-  report ("tree trunk, after the join", matchOf (m, trunk));
-  report ("tree ground, after the join", matchOf (m, ground));
+  reportScene ("tree trunk, after the join", matchOf (m, trunk));
+  reportScene ("tree ground, after the join", matchOf (m, ground));
   const auto& t = matchOf (m, trunk);
   EXPECT_GE (t.iou, 0.9);
   // The trunk's segment is the trunk (the rest is bark of branch stubs), and the ground
@@ -320,8 +320,8 @@ TEST (ProfileSegmentationScenes, PipesGroundIsOneSegment)
   std::vector<std::uint32_t> truth;
   loadScene ("pipes", false, cloud, truth);
   const auto m = segment (cloud, truth);
-  report ("pipes, proximity", m);
-  report ("pipes ground, proximity", m.segments[0]);
+  reportScene ("pipes, proximity", m);
+  reportScene ("pipes ground, proximity", m.segments[0]);
   ASSERT_EQ (m.num_truth_segments, 11u);
   EXPECT_GE (m.segments[0].iou, 0.9); // object 1 is the ground
 }
@@ -364,8 +364,8 @@ TEST (ProfileSegmentationScenes, LocalThresholdKeepsTheSparsePipesWhole)
     return m;
   };
   const auto global = run (false), local = run (true);
-  report ("pipes alone, one threshold", global);
-  report ("pipes alone, local thresholds", local);
+  reportScene ("pipes alone, one threshold", global);
+  reportScene ("pipes alone, local thresholds", local);
   EXPECT_LT (global.mean_best_iou, 0.5);
   EXPECT_GE (local.mean_best_iou, 0.65);
   EXPECT_LT (local.num_predicted_segments, global.num_predicted_segments / 2);
@@ -439,7 +439,7 @@ TEST_F (PipesByCurves, CurveFittingKeepsThePipesOffTheFrames)
   // a segment with a frame or the ground (proximity joins them all), and the ground
   // stays whole.
   const auto m = evaluate (segments_);
-  report ("pipes, curve fitting", m);
+  reportScene ("pipes, curve fitting", m);
   std::cout << "  [ pipes, curve fitting ] mean over the pipes " << meanOverPipes (m)
             << "\n";
   EXPECT_GE (m.segments[0].iou, 0.99);
@@ -471,11 +471,12 @@ TEST_F (PipesByCurves, PipesAreOneSegmentEachAfterTheCylinderJoin)
   std::vector<pcl::PointIndices> joined;
   join.join (joined);
   const auto m = evaluate (joined);
-  report ("pipes, after the join", m);
+  reportScene ("pipes, after the join", m);
   std::cout << "  [ pipes, after the join ] mean over the pipes " << meanOverPipes (m)
             << "\n";
   for (std::uint32_t pipe = kFirstPipeObject; pipe <= kLastPipeObject; ++pipe)
-    report ("pipe " + std::to_string (pipe) + ", after the join", matchOf (m, pipe));
+    reportScene ("pipe " + std::to_string (pipe) + ", after the join",
+                 matchOf (m, pipe));
   EXPECT_GE (meanOverPipes (m), 0.85);
   EXPECT_GE (m.segments[0].iou, 0.99);
   // No pipe's segment holds a point of another pipe; the rest of it are the bits of the

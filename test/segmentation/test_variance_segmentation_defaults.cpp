@@ -26,8 +26,8 @@ namespace {
 using Point = pcl::PointXYZ;
 using Cloud = pcl::PointCloud<Point>;
 
-constexpr std::uint64_t kUnseenSeeds[] = {5, 9};
-constexpr unsigned int kMinSize = 50; // pcl_ext_segment_variance's -min_size
+constexpr std::uint64_t kDefaultsUnseenSeeds[] = {5, 9};
+constexpr unsigned int kDefaultsMinSize = 50; // pcl_ext_segment_variance's -min_size
 constexpr unsigned int kThreads = 2;
 
 /** The segment of every point as pcl_ext_segment_variance gives it with its defaults
@@ -46,7 +46,7 @@ segmentWithDefaults (const Cloud::ConstPtr& cloud)
   pcl_ext::VarianceRegionGrowing<Point> rg;
   rg.setInputCloud (cloud);
   rg.setNeighbourhoods (nb);
-  rg.setMinClusterSize (kMinSize);
+  rg.setMinClusterSize (kDefaultsMinSize);
   rg.setNumberOfThreads (kThreads);
   std::vector<pcl::PointIndices> clusters;
   pcl_ext::segmentByLocalVariance (classifier, rg, clusters);
@@ -86,7 +86,7 @@ segmentWithPcl (const Cloud::ConstPtr& cloud)
   rg.setNumberOfNeighbours (30);
   rg.setSmoothnessThreshold (3.0 * M_PI / 180.0);
   rg.setCurvatureThreshold (1.0);
-  rg.setMinClusterSize (kMinSize);
+  rg.setMinClusterSize (kDefaultsMinSize);
   std::vector<pcl::PointIndices> clusters;
   rg.extract (clusters);
   return clusters;
@@ -97,7 +97,7 @@ segmentWithPcl (const Cloud::ConstPtr& cloud)
 // of 0.10 ahead is not met: 0.035 and 0.063 at these seeds).
 TEST (VarianceSegmentationDefaults, IndoorUnseenSeedsAheadOfPclRegionGrowing)
 {
-  for (const auto seed : kUnseenSeeds) {
+  for (const auto seed : kDefaultsUnseenSeeds) {
     pcl_ext::simulation::SceneParameters parameters;
     parameters.seed = seed;
     pcl_ext::simulation::SyntheticScene scene;

@@ -12,7 +12,7 @@
 
 using namespace pcl_ext::simulation;
 
-TEST (SimulationGeometry, BvhMatchesBruteForce)
+TEST (SceneGeometry, BvhMatchesBruteForce)
 {
   SceneGeometry geometry;
   RandomStream rng (7);
@@ -39,7 +39,7 @@ TEST (SimulationGeometry, BvhMatchesBruteForce)
   }
 }
 
-TEST (SimulationGeometry, NearestHitBoundsAndPorosity)
+TEST (SceneGeometry, NearestHitBoundsAndPorosity)
 {
   // Two parallel walls x = 2 and x = 4 (1 x 1 m, centred on the x axis); the first lets
   // rays through with the given probability (porosity).
@@ -91,7 +91,7 @@ TEST (SimulationGeometry, NearestHitBoundsAndPorosity)
   EXPECT_LT (through, 600);
 }
 
-TEST (SimulationGeometry, ClassesFromTheCurvesOfTheirOwnSegment)
+TEST (SceneGeometry, ClassesFromTheCurvesOfTheirOwnSegment)
 {
   // Segment 1 has a crease with segment 2 along the x axis and a border along x = 1, y
   // >= 0; segment 3 has no curve at all.

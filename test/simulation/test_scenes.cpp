@@ -15,7 +15,7 @@ using namespace pcl_ext;
 using namespace pcl_ext::simulation;
 
 namespace {
-constexpr double kDeg = 0.017453292519943295;
+constexpr double kDegree = 0.017453292519943295;
 
 Vec3
 scenePoint (const SyntheticScene& scene, std::size_t i)
@@ -84,7 +84,7 @@ TEST_P (SceneGroundTruth, ClassesMatchCurveDistances)
     ASSERT_GE (p.object, 1u);
     const Vec3 q = scenePoint (scene, i);
     const double range = (q - scene.scan_positions[scene.scanner_of_point[i]]).norm();
-    const double threshold = range * scene.angular_step_deg * kDeg;
+    const double threshold = range * scene.angular_step_deg * kDegree;
     double crease, border;
     ASSERT_LT (p.segment, scene.surface_of_segment.size());
     curveDistances (geometry, q, scene.surface_of_segment[p.segment], crease, border);

@@ -18,7 +18,7 @@
 #include <string>
 #include <unistd.h>
 
-TEST (OffscreenRenderer, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground)
+TEST (Montage, MontageTilesKeepTheirSizeAndEmptyTilesShowTheBackground)
 {
   ASSERT_TRUE (pcl_ext::visualization::displayAvailable())
       << "this test needs an X display; scripts/test.sh starts Xvfb when none is set";
