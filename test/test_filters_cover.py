@@ -7,15 +7,14 @@ PROGRAM is a folder's test program (test/CMakeLists.txt, pcl_ext_add_test), FILT
 --gtest_filter of each of its ctest entries. A test no filter matches would never run; one
 that two match would run twice. Exits 1 naming them.
 """
+import fnmatch
 import subprocess
 import sys
 
 
-def listed(program, gtest_filter=None):
-    command = [program, "--gtest_list_tests"]
-    if gtest_filter is not None:
-        command.append("--gtest_filter=" + gtest_filter)
-    out = subprocess.run(command, check=True, capture_output=True, text=True).stdout
+def listed(program):
+    out = subprocess.run([program, "--gtest_list_tests"], check=True, capture_output=True,
+                         text=True).stdout
     names, suite = [], ""
     for line in out.splitlines():
         if not line.strip():
@@ -27,6 +26,11 @@ def listed(program, gtest_filter=None):
     return names
 
 
+def matches(name, gtest_filter):
+    """gtest's positive filter: patterns joined by ':', with the wildcards * and ?."""
+    return any(fnmatch.fnmatchcase(name, pattern) for pattern in gtest_filter.split(":"))
+
+
 def main(argv):
     if len(argv) < 2:
         sys.stderr.write(__doc__)
@@ -34,8 +38,8 @@ def main(argv):
     program, filters = argv[0], argv[1:]
     runs = {name: 0 for name in listed(program)}
     for gtest_filter in filters:
-        for name in listed(program, gtest_filter):
-            runs[name] += 1
+        for name in runs:
+            runs[name] += matches(name, gtest_filter)
     wrong = sorted(name for name, count in runs.items() if count != 1)
     for name in wrong:
         print("%s: %s is run by %d ctest entries" % (program, name, runs[name]))
