@@ -18,11 +18,11 @@
 namespace pcl_ext {
 namespace apps {
 namespace {
-constexpr const char* kNoiseSetting = "crf_noise";
+constexpr const char* kCrfNoiseSetting = "crf_noise";
 // The noise sample of a tile (AdaptiveRadiusEstimator::estimateNoise): its key in three
 // parts of at most 22 bits (exact in a float), then what the neighbourhood showed
 // (flatness NaN: no plane).
-constexpr const char* kKeyParts[3] = {
+constexpr const char* kCrfKeyParts[3] = {
     "noise_key_high", "noise_key_mid", "noise_key_low"};
 constexpr const char* kFlatness = "noise_flatness";
 constexpr const char* kRms = "noise_rms";
@@ -172,7 +172,7 @@ public:
             std::map<std::string, std::vector<float>>& values) override
   {
     for (const char* name :
-         {kKeyParts[0], kKeyParts[1], kKeyParts[2], kFlatness, kRms, kSpacing})
+         {kCrfKeyParts[0], kCrfKeyParts[1], kCrfKeyParts[2], kFlatness, kRms, kSpacing})
       values[name].clear();
     if (tile.core_points == 0)
       return true;
@@ -188,7 +188,7 @@ public:
     for (const auto i : estimator.selectNoiseSamplePoints (&core)) {
       const std::uint64_t key =
           noiseSampleKey ((*tile.cloud)[static_cast<std::size_t> (i)]);
-      appendKey (values, kKeyParts, key);
+      appendKey (values, kCrfKeyParts, key);
       NoiseSample s;
       const bool plane = estimator.measureNoiseSample (i, s);
       values[kFlatness].push_back (plane ? s.flatness : NAN);
@@ -218,7 +218,7 @@ public:
       std::vector<float> parts[3], flatness, rms, spacing;
       bool read = true;
       for (int p = 0; p < 3; ++p)
-        read = read && tiling::loadTileValues (folder, t, kKeyParts[p], parts[p]);
+        read = read && tiling::loadTileValues (folder, t, kCrfKeyParts[p], parts[p]);
       if (!read || !tiling::loadTileValues (folder, t, kFlatness, flatness) ||
           !tiling::loadTileValues (folder, t, kRms, rms) ||
           !tiling::loadTileValues (folder, t, kSpacing, spacing))
@@ -254,7 +254,7 @@ public:
     std::ostringstream text;
     text.precision (17);
     text << noiseFromSamples (std::move (samples));
-    settings[kNoiseSetting] = text.str();
+    settings[kCrfNoiseSetting] = text.str();
     return true;
   }
 
@@ -271,7 +271,7 @@ public:
     CrfSettings s = model_.getSettings();
     s.threads = threads_;
     if (needsEstimate()) {
-      const auto found = settings.find (kNoiseSetting);
+      const auto found = settings.find (kCrfNoiseSetting);
       if (found == settings.end()) {
         std::cerr << "Error: the plan has no noise estimate (run the estimate step on "
                      "every tile first).\n";
