@@ -7,6 +7,8 @@
 
 #include <pcl/common/point_tests.h>
 
+#include "cylinder_test_geometry.h"
+
 #include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
@@ -21,6 +23,9 @@ using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 using Join = pcl_ext::CylinderSegmentJoin<pcl::PointXYZ>;
 
 namespace {
+using pcl_ext::test::axisAngleDegrees;
+using pcl_ext::test::lineDistance;
+
 /** A cloud and its input segmentation, built up piece by piece. */
 struct Scene {
   Cloud::Ptr cloud{new Cloud};
@@ -182,22 +187,6 @@ rack (const Eigen::Vector3d& offset = Eigen::Vector3d::Zero())
   return r;
 }
 
-/** Distance of \a q from the line through \a point along \a axis. */
-double
-joinLineDistance (const Eigen::Vector3d& q,
-                  const Eigen::Vector3d& point,
-                  const Eigen::Vector3d& axis)
-{
-  const Eigen::Vector3d w = q - point, d = axis.normalized();
-  return (w - w.dot (d) * d).norm();
-}
-
-double
-joinAxisAngleDegrees (const Eigen::Vector3d& a, const Eigen::Vector3d& b)
-{
-  const double c = std::min (1.0, std::abs (a.normalized().dot (b.normalized())));
-  return std::acos (c) * 180.0 / M_PI;
-}
 } // namespace
 
 TEST (CylinderSegmentJoin, StraightPipeCutAtSupportsIsJoined)
@@ -229,9 +218,8 @@ TEST (CylinderSegmentJoin, StraightPipeCutAtSupportsIsJoined)
     ++per_segment[c.input_segment];
     const double y = c.input_segment == 4 ? 1.0 : 0.0;
     EXPECT_NEAR (c.cylinder.radius, 0.1, 0.002);
-    EXPECT_LT (joinAxisAngleDegrees (c.cylinder.axis, kX), 0.1);
-    EXPECT_LT (joinLineDistance (c.cylinder.point, Eigen::Vector3d (0, y, 1), kX),
-               0.002);
+    EXPECT_LT (axisAngleDegrees (c.cylinder.axis, kX), 0.1);
+    EXPECT_LT (lineDistance (c.cylinder.point, Eigen::Vector3d (0, y, 1), kX), 0.002);
     EXPECT_LT (std::abs (c.cylinder.taper),
                0.001); // a cylinder, where cones may be fitted
     EXPECT_EQ (c.output_segment, c.input_segment == 4 ? -1 : pipe);
@@ -389,9 +377,9 @@ TEST (CylinderSegmentJoin, GeoreferencedCoordinatesGiveTheSameSegments)
     EXPECT_EQ (c_far[k].input_segment, c_local[k].input_segment);
     EXPECT_EQ (c_far[k].output_segment, c_local[k].output_segment);
     EXPECT_NEAR (c_far[k].cylinder.radius, c_local[k].cylinder.radius, 0.0005);
-    EXPECT_LT (joinLineDistance (c_far[k].cylinder.point - offset,
-                                 c_local[k].cylinder.point,
-                                 c_local[k].cylinder.axis),
+    EXPECT_LT (lineDistance (c_far[k].cylinder.point - offset,
+                             c_local[k].cylinder.point,
+                             c_local[k].cylinder.axis),
                0.0005);
   }
 }

@@ -5,6 +5,8 @@
  */
 #include <pcl_ext/segmentation/cylinders.h>
 
+#include "cylinder_test_geometry.h"
+
 #include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
@@ -20,6 +22,9 @@ using pcl_ext::cylinders::Cylinder;
 using pcl_ext::cylinders::DetectionParameters;
 
 namespace {
+using pcl_ext::test::axisAngleDegrees;
+using pcl_ext::test::lineDistance;
+
 using Points = std::vector<Eigen::Vector3d>;
 
 /** The part of a cylinder's surface a scanner on the side of \a facing sees: an arc of
@@ -72,24 +77,6 @@ addRectangle (Points& out,
   for (double a = 0.5 * spacing; a < la; a += spacing)
     for (double b = 0.5 * spacing; b < lb; b += spacing)
       out.push_back (origin + a * e1 + b * e2 + noise (rng) * n);
-}
-
-/** Angle between two axes, ignoring their sense, in degrees. */
-double
-axisAngleDegrees (const Eigen::Vector3d& a, const Eigen::Vector3d& b)
-{
-  const double c = std::min (1.0, std::abs (a.normalized().dot (b.normalized())));
-  return std::acos (c) * 180.0 / M_PI;
-}
-
-/** Distance of \a q from the line through \a point along \a axis. */
-double
-lineDistance (const Eigen::Vector3d& q,
-              const Eigen::Vector3d& point,
-              const Eigen::Vector3d& axis)
-{
-  const Eigen::Vector3d w = q - point, d = axis.normalized();
-  return (w - w.dot (d) * d).norm();
 }
 
 /** An oblique strip, centred on the origin: half a cylinder of radius 0.15, 3 m long,
