@@ -21,7 +21,8 @@
 # The mOSD frames are read from $PCL_EXT_SHARED_DATA_DIR/mosd_object_segmentation when
 # the folder exists (truth field 'label'). PCL_FROM=<an earlier table of this script>
 # takes the PCL column from it instead of running PCL again (the scenes are the same for
-# a seed, and the PCL pipeline does not change with pcl_ext).
+# a seed, and the PCL pipeline does not change with pcl_ext); CGAL_FROM=<an earlier
+# table> takes the CGAL column from it in the same way.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
@@ -71,6 +72,11 @@ theirs() {
 # Mean best IoU of CGAL's plane region growing (nothing without CGAL).
 cgal() {
   local cloud="$1" truth_field="$2"
+  if [ -n "${CGAL_FROM:-}" ]; then
+    awk -F' *[|] *' -v f="$family" -v s="$name" '$2 == f && $3 == s {print $6}' \
+      "$CGAL_FROM"
+    return
+  fi
   "$apps/pcl_ext_compare_segmenters" "$cloud" -truth_field "$truth_field" \
     -methods cgal_planes -plane_distance 2 -min_size 50 -threads "$threads" 2>/dev/null |
     awk '$1 == "cgal_planes" {print $5}' || true

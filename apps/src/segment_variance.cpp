@@ -10,6 +10,7 @@
 #include "variance/segment_variance_options.h"
 
 #include <pcl_ext/segmentation/local_surface_intersection.h>
+#include <pcl_ext/segmentation/leftover_region_growing.h>
 #include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 #include <pcl_ext/io/point_file.h>
@@ -142,6 +143,24 @@ main (int argc, char** argv)
         return 1;
       save.done (intersections.size());
     }
+  }
+
+  if (options.leftovers) {
+    pcl_ext::LeftoverRegionGrowing<pcl::PointXYZ> growing;
+    options.configure (cloud, nb, threads, growing);
+    growing.setSegmentLabels (pcl::make_shared<pcl::PointCloud<pcl::Label>> (labels));
+    pcl::PointCloud<pcl::Label> grown;
+    pcl_ext::apps::StageTimer stage ("Growing segments among the points left out");
+    if (!growing.compute (grown)) {
+      std::cerr << "Error: growing the points left out failed (see the message "
+                   "above).\n";
+      return 1;
+    }
+    const auto& r = growing.getReport();
+    stage.done (r.examined);
+    std::cout << r.segments << " more segments of " << r.segmented << " of the "
+              << r.examined << " points without one\n";
+    labels = grown;
   }
 
   std::vector<std::uint32_t> ids (labels.size());

@@ -275,3 +275,33 @@ TEST_F (SegmentVarianceApp, BadIntersectionOptionsFailWithoutOutput)
   EXPECT_NE (output_.find ("-intersections"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("-reintegrate"), std::string::npos) << output_;
 }
+
+TEST_F (SegmentVarianceApp, LeftoverSegmentsOnlyAddToTheOthers)
+{
+  // The new segments among the points left out (the default) never change a point that
+  // sections 3 and 4 segmented, and are numbered after their segments.
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("kept.pcd") + " -no_leftovers"), 0)
+      << output_;
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("grown.pcd")), 0) << output_;
+  EXPECT_NE (output_.find ("points without one"), std::string::npos) << output_;
+  pcl::PointCloud<pcl::PointXYZRGBL> kept, grown;
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("kept.pcd"), "segment", kept), 0);
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("grown.pcd"), "segment", grown), 0);
+  ASSERT_EQ (kept.size(), grown.size());
+  std::uint32_t largest = 0;
+  for (const auto& p : kept)
+    largest = std::max (largest, p.label);
+  EXPECT_EQ (largest, 6u); // the cube's faces
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (kept[i].label != 0)
+      ASSERT_EQ (grown[i].label, kept[i].label) << i;
+    else
+      ASSERT_TRUE (grown[i].label == 0 || grown[i].label > largest) << i;
+  }
+  const std::string io = path ("cube.pcd") + " " + path ("out.pcd");
+  EXPECT_EQ (run (io + " -leftovers -no_leftovers"), 1);
+  EXPECT_EQ (run (io + " -leftover_angle 0"), 1);
+  EXPECT_EQ (run (io + " -leftover_angle 95"), 1);
+  EXPECT_EQ (run (io + " -leftover_angle nan"), 1);
+  EXPECT_FALSE (exists ("out.pcd"));
+}

@@ -1,14 +1,16 @@
 /*
  * Belton & Lichti's segmentation with the defaults of pcl_ext_segment_variance (k = 50,
- * the classification's defaults, region growing, section 4's re-integration, segments
- * of at least 50 points) on generated indoor scenes at seeds that were not used to
- * choose them, against pcl::RegionGrowing as PCL's region-growing tutorial sets it
- * (normals of 50 neighbours, growing over 30, smoothness 3 degrees, curvature
- * threshold 1.0, segments of at least 50 points). Nothing is taken from the generator
- * but the truth. The figures of every family and seed are in docs/belton_lichti.md.
+ * the classification's defaults, region growing, section 4's re-integration, new
+ * segments among the points left out, segments of at least 50 points) on generated
+ * indoor scenes at seeds that were not used to choose them, against pcl::RegionGrowing
+ * as PCL's region-growing tutorial sets it (normals of 50 neighbours, growing over 30,
+ * smoothness 3 degrees, curvature threshold 1.0, segments of at least 50 points).
+ * Nothing is taken from the generator but the truth. The figures of every family and
+ * seed are in docs/belton_lichti.md.
  */
 #include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/evaluation/segmentation_metrics.h>
+#include <pcl_ext/segmentation/leftover_region_growing.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 #include <pcl_ext/simulation/scenes.h>
@@ -20,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -62,8 +65,17 @@ segmentWithDefaults (const Cloud::ConstPtr& cloud)
   pcl::PointCloud<pcl_ext::SurfaceIntersectionPoint> intersections;
   pcl::PointCloud<pcl::Label> reintegrated;
   EXPECT_TRUE (lsi.compute (intersections, reintegrated));
+  pcl_ext::LeftoverRegionGrowing<Point> leftovers;
+  leftovers.setInputCloud (cloud);
+  leftovers.setNeighbourhoods (nb);
+  leftovers.setSegmentLabels (
+      pcl::make_shared<pcl::PointCloud<pcl::Label>> (reintegrated));
+  leftovers.setMinClusterSize (kDefaultsMinSize);
+  leftovers.setNumberOfThreads (kThreads);
+  pcl::PointCloud<pcl::Label> grown;
+  EXPECT_TRUE (leftovers.compute (grown));
   std::vector<std::uint32_t> ids;
-  for (const auto& l : reintegrated)
+  for (const auto& l : grown)
     ids.push_back (l.label);
   return ids;
 }
@@ -93,30 +105,49 @@ segmentWithPcl (const Cloud::ConstPtr& cloud)
 }
 } // namespace
 
-// The goal on indoor (at least 0.70), and ahead of pcl::RegionGrowing (the goal
-// of 0.10 ahead is not met: 0.035 and 0.063 at these seeds).
+/** Mean best IoU of the defaults and of pcl::RegionGrowing on generated \a family at
+ * \a seed, printed. */
+std::pair<double, double>
+scoreBoth (const char* family, std::uint64_t seed)
+{
+  pcl_ext::simulation::SceneParameters parameters;
+  parameters.seed = seed;
+  pcl_ext::simulation::SyntheticScene scene;
+  EXPECT_TRUE (pcl_ext::simulation::generateScene (family, parameters, scene));
+  auto cloud = pcl::make_shared<Cloud>();
+  std::vector<std::uint32_t> truth;
+  for (const auto& p : scene.cloud) {
+    cloud->push_back (Point (p.x, p.y, p.z));
+    truth.push_back (p.segment);
+  }
+  pcl_ext::SegmentationMetrics ours, pcl;
+  EXPECT_TRUE (
+      pcl_ext::evaluateSegmentation (segmentWithDefaults (cloud), truth, ours));
+  EXPECT_TRUE (pcl_ext::evaluateSegmentation (segmentWithPcl (cloud), truth, pcl));
+  std::printf ("%s seed %d: pcl_ext %.3f, pcl::RegionGrowing %.3f\n",
+               family,
+               static_cast<int> (seed),
+               ours.mean_best_iou,
+               pcl.mean_best_iou);
+  return {ours.mean_best_iou, pcl.mean_best_iou};
+}
+
+// The goals on indoor: at least 0.70, and 0.10 ahead of pcl::RegionGrowing.
 TEST (VarianceSegmentationDefaults, IndoorUnseenSeedsAheadOfPclRegionGrowing)
 {
   for (const auto seed : kDefaultsUnseenSeeds) {
-    pcl_ext::simulation::SceneParameters parameters;
-    parameters.seed = seed;
-    pcl_ext::simulation::SyntheticScene scene;
-    ASSERT_TRUE (pcl_ext::simulation::generateScene ("indoor", parameters, scene));
-    auto cloud = pcl::make_shared<Cloud>();
-    std::vector<std::uint32_t> truth;
-    for (const auto& p : scene.cloud) {
-      cloud->push_back (Point (p.x, p.y, p.z));
-      truth.push_back (p.segment);
-    }
-    pcl_ext::SegmentationMetrics ours, pcl;
-    ASSERT_TRUE (
-        pcl_ext::evaluateSegmentation (segmentWithDefaults (cloud), truth, ours));
-    ASSERT_TRUE (pcl_ext::evaluateSegmentation (segmentWithPcl (cloud), truth, pcl));
-    std::printf ("indoor seed %d: pcl_ext %.3f, pcl::RegionGrowing %.3f\n",
-                 static_cast<int> (seed),
-                 ours.mean_best_iou,
-                 pcl.mean_best_iou);
-    EXPECT_GE (ours.mean_best_iou, 0.70) << "seed " << seed;
-    EXPECT_GT (ours.mean_best_iou, pcl.mean_best_iou) << "seed " << seed;
+    const auto [ours, pcl] = scoreBoth ("indoor", seed);
+    EXPECT_GE (ours, 0.70) << "seed " << seed;
+    EXPECT_GE (ours, pcl + 0.10) << "seed " << seed;
+  }
+}
+
+// The same lead on pipes, whose small pipes and narrow faces have no surface point to
+// grow from: the new segments among the points left out are what finds them.
+TEST (VarianceSegmentationDefaults, PipesUnseenSeedsAheadOfPclRegionGrowing)
+{
+  for (const auto seed : kDefaultsUnseenSeeds) {
+    const auto [ours, pcl] = scoreBoth ("pipes", seed);
+    EXPECT_GE (ours, pcl + 0.10) << "seed " << seed;
   }
 }

@@ -57,6 +57,17 @@ public:
                    "around, which on a scan's sparse edges can be most of the cloud.\n";
       options_.reintegrate = false;
     }
+    if (cl.given ("leftovers")) {
+      std::cerr << "Error: -leftovers is not available tile by tile yet; run "
+                   "pcl_ext_segment_variance on the whole cloud for it.\n";
+      return false;
+    }
+    if (options_.leftovers) {
+      // The new segments among the points left out are grown on the whole cloud only.
+      std::cout << "Note: pcl_ext_tiles segment_variance leaves the points without a "
+                   "segment out (as pcl_ext_segment_variance -no_leftovers).\n";
+      options_.leftovers = false;
+    }
     std::string reason;
     if (!options_.intersections_path.empty() &&
         !io::canWritePointFile (options_.intersections_path, &reason)) {

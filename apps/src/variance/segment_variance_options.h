@@ -9,6 +9,7 @@
 
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/search/neighbourhoods.h>
+#include <pcl_ext/segmentation/leftover_region_growing.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
 
@@ -31,6 +32,9 @@ struct SegmentVarianceOptions {
   bool reintegrate =
       false; ///< after valid(): on unless -no_reintegrate or -preset paper
   bool keep_out = false;
+  bool leftovers = false; ///< after valid(): on with section 4 unless -no_leftovers
+  bool no_leftovers = false;
+  double leftover_angle = 25.0; ///< degrees
   VarianceClassificationOptions classification;
 
   void
@@ -66,6 +70,17 @@ struct SegmentVarianceOptions {
                   keep_out,
                   "leave the edge and boundary points out of the segments (section 3 "
                   "alone, as -preset paper)");
+    cl.addSwitch ("leftovers",
+                  leftovers,
+                  "grow new segments among the points still without one (beyond the "
+                  "paper; on by default with section 4)");
+    cl.addSwitch ("no_leftovers", no_leftovers, "leave those points unsegmented");
+    cl.addOption (
+        "leftover_angle",
+        leftover_angle,
+        "the largest angle (degrees) between the normals of two linked "
+        "points without a segment, each fitted to its 12 nearest points (CGAL's "
+        "default for its region growing)");
     cl.addOption (
         "parallel_angle",
         parallel_angle,
@@ -111,6 +126,18 @@ struct SegmentVarianceOptions {
     // the segments the crease and border bands the classification leaves out
     // (docs/belton_lichti.md has the figures).
     reintegrate = reintegrate || (!keep_out && classification.preset != "paper");
+    if (leftovers && no_leftovers) {
+      std::cerr << "Error: give -leftovers or -no_leftovers, not both.\n";
+      return false;
+    }
+    if (!(leftover_angle > 0.0 && leftover_angle <= 90.0)) {
+      std::cerr << "Error: -leftover_angle must lie in (0, 90] degrees.\n";
+      return false;
+    }
+    // New segments among what sections 3 and 4 leave out, with section 4 by default:
+    // pipes, door jambs and narrow faces have no surface point to grow from
+    // (docs/belton_lichti.md).
+    leftovers = leftovers || (reintegrate && !no_leftovers);
     return true;
   }
 
@@ -169,6 +196,21 @@ struct SegmentVarianceOptions {
     lsi.setNeighbourhoods (nb);
     lsi.setParallelAngleThreshold (parallel_angle * M_PI / 180.0);
     lsi.setNumberOfThreads (threads);
+  }
+
+  /** \brief Set up the growing of new segments among the points left out of \a cloud
+   * on its computed neighbourhoods \a nb; the segment labels are the caller's. */
+  void
+  configure (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+             const Neighbourhoods<pcl::PointXYZ>::Ptr& nb,
+             unsigned int threads,
+             LeftoverRegionGrowing<pcl::PointXYZ>& growing) const
+  {
+    growing.setInputCloud (cloud);
+    growing.setNeighbourhoods (nb);
+    growing.setAngleThreshold (leftover_angle * M_PI / 180.0);
+    growing.setMinClusterSize (static_cast<std::size_t> (min_size));
+    growing.setNumberOfThreads (threads);
   }
 };
 } // namespace apps

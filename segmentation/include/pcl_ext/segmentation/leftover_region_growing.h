@@ -1,0 +1,161 @@
+/*
+ * pcl_ext: segments grown among the points a segmentation left out.
+ */
+#pragma once
+
+#include <pcl_ext/search/neighbourhood_options.h>
+
+#include <pcl/pcl_base.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <cmath>
+#include <cstddef>
+
+namespace pcl_ext {
+/** \brief New segments among the points a segmentation left without one: the pieces
+ * that have no surface point to grow from.
+ *
+ * Belton & Lichti (2006) grow segments from surface points only (section 3) and
+ * re-integrate edge and boundary points into the segments that exist (section 4, eq.
+ * 9-17); the paper notes (section 3) that doorways and recesses drop out, too few of
+ * their points being surface. Pipes of a few neighbourhood radii, door jambs, narrow
+ * faces and sparse planes seen at a grazing angle are all edge or boundary points
+ * under eq. 5 and 6 and stay unsegmented. This step goes beyond the paper: among the
+ * points still without a segment (label 0), each is linked to those of its nearest
+ * neighbours, also without one, whose normals differ from its own by less than the
+ * angle threshold, and each connected group of at least the minimum size becomes a new
+ * segment. The normals are fitted to the nearest few neighbours only (setNormalK), so
+ * that they turn at a crease within a spacing or two rather than over a whole k = 50
+ * neighbourhood, while on a smooth curved surface neighbouring normals differ by the
+ * spacing over the radius of curvature. Points whose patch is not flat enough
+ * (setMaxCurvature: on a crease) link nothing themselves, so that no chain of slowly
+ * turning normals crosses a crease; each joins the group of its flat neighbour of the
+ * closest normal within the angle.
+ *
+ * Inputs: the segment label of every point of the cloud (any segmentation; 0: none).
+ * Neighbourhoods are searched once for the whole cloud or shared through
+ * setNeighbourhoods (rows closest first); the first getNormalK() of each row give the
+ * normal and the links. Output: the input labels, with the new segments numbered after
+ * the largest input label by decreasing size (ties: the smallest point index first).
+ * Deterministic: the groups are the connected components of a symmetric link test.
+ */
+template <typename PointT>
+class LeftoverRegionGrowing : public pcl::PCLBase<PointT>,
+                              public NeighbourhoodOptions<PointT> {
+public:
+  using Ptr = pcl::shared_ptr<LeftoverRegionGrowing<PointT>>;
+  using ConstPtr = pcl::shared_ptr<const LeftoverRegionGrowing<PointT>>;
+  using LabelCloud = pcl::PointCloud<pcl::Label>;
+  using LabelCloudConstPtr = LabelCloud::ConstPtr;
+
+  /** \brief What compute() did. */
+  struct Report {
+    std::size_t examined = 0;  ///< finite points without a segment
+    std::size_t segments = 0;  ///< new segments
+    std::size_t segmented = 0; ///< points put into them
+  };
+
+  LeftoverRegionGrowing() = default;
+
+  /** \brief The segment of every point of the input cloud (0: none). */
+  void
+  setSegmentLabels (const LabelCloudConstPtr& labels)
+  {
+    segments_ = labels;
+  }
+
+  LabelCloudConstPtr
+  getSegmentLabels () const
+  {
+    return segments_;
+  }
+
+  /** \brief Largest angle between the normals of two linked points, in radians
+   * (default 25 degrees, CGAL's default for its region growing). */
+  void
+  setAngleThreshold (double radians)
+  {
+    angle_ = radians;
+  }
+
+  double
+  getAngleThreshold () const
+  {
+    return angle_;
+  }
+
+  /** \brief Largest surface variance (eq. 4, l0 / (l0 + l1 + l2)) of a point's normal
+   * patch for it to link to others (default 0.05): a patch across a crease has a
+   * larger one, a patch on a plane or a pipe a few spacings in radius a smaller one. */
+  void
+  setMaxCurvature (double max_curvature)
+  {
+    max_curvature_ = max_curvature;
+  }
+
+  double
+  getMaxCurvature () const
+  {
+    return max_curvature_;
+  }
+
+  /** \brief Neighbours (the point included) a normal is fitted to and links are looked
+   * for among (default 12, fewer where a row is shorter; at least 3). */
+  void
+  setNormalK (int k)
+  {
+    normal_k_ = k;
+  }
+
+  int
+  getNormalK () const
+  {
+    return normal_k_;
+  }
+
+  /** \brief Smallest group kept as a segment (default 50). */
+  void
+  setMinClusterSize (std::size_t size)
+  {
+    min_size_ = size;
+  }
+
+  std::size_t
+  getMinClusterSize () const
+  {
+    return min_size_;
+  }
+
+  /** \brief Grow the new segments. \a output gets one label per input point: the
+   * input's, or a new segment's. On bad input: PCL_ERROR, empty output, false. */
+  bool
+  compute (LabelCloud& output);
+
+  const Report&
+  getReport () const
+  {
+    return report_;
+  }
+
+protected:
+  using pcl::PCLBase<PointT>::input_;
+  using pcl::PCLBase<PointT>::indices_;
+  using pcl::PCLBase<PointT>::initCompute;
+  using pcl::PCLBase<PointT>::deinitCompute;
+
+  bool
+  checkInputs (const char* name) const;
+
+  LabelCloudConstPtr segments_;
+  double angle_ = 25.0 * M_PI / 180.0;
+  double max_curvature_ = 0.05;
+  int normal_k_ = 12;
+  std::size_t min_size_ = 50;
+  Report report_;
+};
+} // namespace pcl_ext
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl_ext/segmentation/impl/leftover_region_growing.hpp>
+#endif
