@@ -144,7 +144,10 @@ KdTree3f::radiusSearch (const float* query,
   sqr_distances.clear();
   if (!impl_->tree || !(radius > 0.0))
     return 0;
-  std::vector<std::pair<std::uint32_t, float>> matches;
+  // Reused by the thread's next query: a query returns hundreds of points, and
+  // allocating their buffer anew each time costs as much as a part of the search.
+  thread_local std::vector<std::pair<std::uint32_t, float>> matches;
+  matches.clear();
   nanoflann::SearchParams params;
   params.sorted = sorted || max_nn > 0;
   impl_->tree->radiusSearch (

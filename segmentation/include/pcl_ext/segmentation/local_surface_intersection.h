@@ -303,9 +303,19 @@ protected:
   bool
   checkInput () const;
 
-  /** \brief Plane of point \a i through its neighbours of its own segment. */
+  /** \brief Plane of point \a i through its neighbours of its own segment (the one
+   * fitted beforehand for a border point). */
   bool
   planeOf (pcl::index_t i, pcl::Indices& buffer, LocalPlane& plane) const;
+
+  /** \brief Fit the plane of every border point once, in parallel: the searches of both
+   * steps pair points only with border points, each many times. */
+  void
+  fitBorderPlanes (const pcl::Indices& border);
+
+  /** \brief Fit the plane of point \a i through its neighbours of its own segment. */
+  bool
+  fitPlaneOf (pcl::index_t i, pcl::Indices& buffer, LocalPlane& plane) const;
 
   /** \brief The reach of point \a i. */
   double
@@ -358,6 +368,11 @@ protected:
   /** \brief The segmented surface points, searched within the reach, during compute().
    */
   typename search::NanoflannKdTree<PointT>::Ptr reach_tree_;
+  /** \brief During compute(): per point, its slot in border_planes_ (-1: none); per
+   * border point, its plane and whether the fit succeeded. */
+  std::vector<std::int32_t> border_slot_;
+  std::vector<LocalPlane> border_planes_;
+  std::vector<char> border_fitted_;
   Report report_;
 };
 } // namespace pcl_ext

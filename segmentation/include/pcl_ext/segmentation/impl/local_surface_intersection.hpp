@@ -115,6 +115,45 @@ pcl_ext::LocalSurfaceIntersection<PointT>::planeOf (pcl::index_t i,
                                                     pcl::Indices& buffer,
                                                     LocalPlane& plane) const
 {
+  const std::int32_t slot =
+      border_slot_.empty() ? -1 : border_slot_[static_cast<std::size_t> (i)];
+  if (slot < 0)
+    return fitPlaneOf (i, buffer, plane);
+  if (!border_fitted_[static_cast<std::size_t> (slot)])
+    return false;
+  plane = border_planes_[static_cast<std::size_t> (slot)];
+  return true;
+}
+
+template <typename PointT>
+void
+pcl_ext::LocalSurfaceIntersection<PointT>::fitBorderPlanes (const pcl::Indices& border)
+{
+  border_slot_.assign (input_->size(), -1);
+  border_planes_.assign (border.size(), LocalPlane());
+  border_fitted_.assign (border.size(), 0);
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (border.size());
+#pragma omp parallel num_threads(resolveThreadCount(threads_))
+  {
+    pcl::Indices buffer;
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      const auto i = static_cast<std::size_t> (border[static_cast<std::size_t> (k)]);
+      border_slot_[i] = static_cast<std::int32_t> (k);
+      border_fitted_[static_cast<std::size_t> (k)] =
+          fitPlaneOf (border[static_cast<std::size_t> (k)],
+                      buffer,
+                      border_planes_[static_cast<std::size_t> (k)]);
+    }
+  }
+}
+
+template <typename PointT>
+bool
+pcl_ext::LocalSurfaceIntersection<PointT>::fitPlaneOf (pcl::index_t i,
+                                                       pcl::Indices& buffer,
+                                                       LocalPlane& plane) const
+{
   const std::uint32_t s = segmentOf (i);
   buffer.clear();
   for (const pcl::index_t j : (*nb_)[static_cast<std::size_t> (i)])
@@ -426,16 +465,24 @@ pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersect
   // point outside it is on its border, unless the point lies farther from that segment
   // than its neighbourhood radius across a gap in which nothing was classified.
   const auto surface = static_cast<std::uint32_t> (PointClass::Surface);
-  pcl::IndicesPtr border (new pcl::Indices);
-  bool any_segmented = false;
-  for (std::size_t i = 0; i < input_->size(); ++i) {
+  // Each point's kind in parallel (0: neither, 1: segmented surface, 2: also on the
+  // border), then the border in index order.
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t> (input_->size());
+  std::vector<std::uint8_t> kind (input_->size(), 0);
+#pragma omp parallel for num_threads(resolveThreadCount(threads_)) schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
     const auto idx = static_cast<pcl::index_t> (i);
     if (classOf (idx) != surface || segmentOf (idx) == 0 ||
         !pcl::isFinite ((*input_)[i]))
       continue;
-    any_segmented = true;
-    if (!isInterior (idx))
-      border->push_back (idx);
+    kind[i] = isInterior (idx) ? 1 : 2;
+  }
+  pcl::IndicesPtr border (new pcl::Indices);
+  bool any_segmented = false;
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    any_segmented = any_segmented || kind[i] != 0;
+    if (kind[i] == 2)
+      border->push_back (static_cast<pcl::index_t> (i));
   }
   if (!any_segmented) {
     PCL_ERROR (
@@ -451,10 +498,15 @@ pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersect
   if (!border->empty())
     reach_tree_->setInputCloud (input_, border);
 
+  fitBorderPlanes (*border);
+
   std::vector<Record> records;
   intersect (records);
   labels = *segments_;
   reintegrate (records, labels);
+  border_slot_ = std::vector<std::int32_t>();
+  border_planes_ = std::vector<LocalPlane>();
+  border_fitted_ = std::vector<char>();
 
   intersections.reserve (records.size());
   for (const auto& rec : records) {
