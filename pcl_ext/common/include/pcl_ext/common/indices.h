@@ -33,6 +33,28 @@ indicesInRange (const pcl::Indices& indices, std::size_t size, const char* calle
   return true;
 }
 
+/** \brief True when \a values holds one entry per point of a cloud of \a size points.
+ * Otherwise prints a PCL_ERROR with \a caller naming \a what is missing and the setter
+ * that gives it (e.g. "segment label", "setSegmentLabels"), and returns false. */
+template <typename Cloud>
+inline bool
+onePerPoint (const Cloud* values,
+             std::size_t size,
+             const char* caller,
+             const char* what,
+             const char* setter)
+{
+  if (values && values->size() == size)
+    return true;
+  PCL_ERROR ("%s Give one %s per point (%s): %zu for %zu points.\n",
+             caller,
+             what,
+             setter,
+             values ? static_cast<std::size_t> (values->size()) : std::size_t (0),
+             size);
+  return false;
+}
+
 /** \brief The points of \a labels grouped by class, as a classifier's extract() gives
  * them: \a classes lists, each with \a header. Row r of \a labels is the point
  * (*\a indices)[r], or r when \a indices is null; \a class_of maps a label to its class

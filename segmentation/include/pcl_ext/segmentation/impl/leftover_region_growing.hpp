@@ -27,16 +27,8 @@ pcl_ext::LeftoverRegionGrowing<PointT>::checkInputs (const char* name) const
     PCL_ERROR ("%s The input cloud is empty.\n", name);
     return false;
   }
-  if (!segments_ || segments_->size() != n) {
-    PCL_ERROR (
-        "%s Give one segment label per point (setSegmentLabels): %zu labels for %zu "
-        "points.\n",
-        name,
-        segments_ ? segments_->size() : std::size_t (0),
-        n);
-    return false;
-  }
-  if (!indicesInRange (*indices_, n, name))
+  if (!onePerPoint (segments_.get(), n, name, "segment label", "setSegmentLabels") ||
+      !indicesInRange (*indices_, n, name))
     return false;
   if (!this->checkNeighbourhoodOptions (name, 3))
     return false;

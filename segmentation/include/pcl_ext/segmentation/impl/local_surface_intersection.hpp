@@ -41,24 +41,9 @@ pcl_ext::LocalSurfaceIntersection<PointT>::checkInput() const
     PCL_ERROR ("%s The input cloud is empty.\n", name);
     return false;
   }
-  if (!segments_ || segments_->size() != n) {
-    PCL_ERROR (
-        "%s Give one segment label per point (setSegmentLabels): %zu labels for %zu "
-        "points.\n",
-        name,
-        segments_ ? segments_->size() : std::size_t (0),
-        n);
+  if (!onePerPoint (segments_.get(), n, name, "segment label", "setSegmentLabels") ||
+      !onePerPoint (classes_.get(), n, name, "point class", "setPointClasses"))
     return false;
-  }
-  if (!classes_ || classes_->size() != n) {
-    PCL_ERROR (
-        "%s Give one point class per point (setPointClasses): %zu classes for %zu "
-        "points.\n",
-        name,
-        classes_ ? classes_->size() : std::size_t (0),
-        n);
-    return false;
-  }
   if (normals_ && normals_->size() != n) {
     PCL_ERROR ("%s %zu normals for %zu points; give one per point or none.\n",
                name,
