@@ -150,7 +150,7 @@ TEST (LeftoverRegionGrowing, WithoutTheCurvatureLimitTheCreaseIsCrossed)
              leftoverMajority (s, out, kFaceB).first);
 }
 
-TEST (LeftoverRegionGrowing, GroupsBelowTheMinimumSizeStayOut)
+TEST (LeftoverRegionGrowing, GroupsOutsideTheSizeLimitsStayOut)
 {
   const LeftoverScene s = makeLeftoverScene();
   pcl_ext::LeftoverRegionGrowing<Point> growing;
@@ -163,6 +163,12 @@ TEST (LeftoverRegionGrowing, GroupsBelowTheMinimumSizeStayOut)
   EXPECT_EQ (leftoverMajority (s, out, kFaceA).first, 0u);
   EXPECT_EQ (leftoverMajority (s, out, kFaceB).first, 0u);
   EXPECT_EQ (growing.getReport().examined, 12000u);
+  // And above the maximum: the pipe (9,000 points) too.
+  growing.setMinClusterSize (50);
+  growing.setMaxClusterSize (5000);
+  ASSERT_TRUE (growing.compute (out));
+  EXPECT_EQ (leftoverMajority (s, out, kPipe).first, 0u);
+  EXPECT_NE (leftoverMajority (s, out, kFaceA).first, 0u);
 }
 
 TEST (LeftoverRegionGrowing, DeterministicAcrossThreadCounts)
@@ -213,6 +219,7 @@ TEST (LeftoverRegionGrowing, BadInputIsRefusedWithEmptyOutput)
   EXPECT_TRUE (refuses ([] (G& g) { g.setNormalK (2); }));
   EXPECT_TRUE (refuses ([] (G& g) { g.setMaxCurvature (-1.0); }));
   EXPECT_TRUE (refuses ([] (G& g) { g.setMinClusterSize (0); }));
+  EXPECT_TRUE (refuses ([] (G& g) { g.setMaxClusterSize (10); }));
   EXPECT_TRUE (refuses ([] (G& g) { g.setKSearch (2); }));
   EXPECT_TRUE (refuses ([&s] (G& g) {
     auto indices = pcl::make_shared<pcl::Indices> (

@@ -209,7 +209,7 @@ struct SegmentVarianceOptions {
     growing.setInputCloud (cloud);
     growing.setNeighbourhoods (nb);
     growing.setAngleThreshold (leftover_angle * M_PI / 180.0);
-    growing.setMinClusterSize (static_cast<std::size_t> (min_size));
+    growing.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
     growing.setNumberOfThreads (threads);
   }
 };

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl_ext/search/neighbourhood_options.h>
+#include <pcl_ext/segmentation/cluster_size_limits.h>
 
 #include <pcl/pcl_base.h>
 #include <pcl/point_cloud.h>
@@ -42,7 +43,8 @@ namespace pcl_ext {
  */
 template <typename PointT>
 class LeftoverRegionGrowing : public pcl::PCLBase<PointT>,
-                              public NeighbourhoodOptions<PointT> {
+                              public NeighbourhoodOptions<PointT>,
+                              public ClusterSizeLimits {
 public:
   using Ptr = pcl::shared_ptr<LeftoverRegionGrowing<PointT>>;
   using ConstPtr = pcl::shared_ptr<const LeftoverRegionGrowing<PointT>>;
@@ -56,7 +58,9 @@ public:
     std::size_t segmented = 0; ///< points put into them
   };
 
-  LeftoverRegionGrowing() = default;
+  /** \brief Groups of fewer than 50 points are left out by default (setMinClusterSize):
+   * below that a group of points without a segment is mostly a crease band's piece. */
+  LeftoverRegionGrowing() { min_size_ = 50; }
 
   /** \brief The segment of every point of the input cloud (0: none). */
   void
@@ -114,19 +118,6 @@ public:
     return normal_k_;
   }
 
-  /** \brief Smallest group kept as a segment (default 50). */
-  void
-  setMinClusterSize (std::size_t size)
-  {
-    min_size_ = size;
-  }
-
-  std::size_t
-  getMinClusterSize () const
-  {
-    return min_size_;
-  }
-
   /** \brief Grow the new segments. \a output gets one label per input point: the
    * input's, or a new segment's. On bad input: PCL_ERROR, empty output, false. */
   bool
@@ -151,7 +142,6 @@ protected:
   double angle_ = 25.0 * M_PI / 180.0;
   double max_curvature_ = 0.05;
   int normal_k_ = 12;
-  std::size_t min_size_ = 50;
   Report report_;
 };
 } // namespace pcl_ext

@@ -47,8 +47,11 @@ pcl_ext::LeftoverRegionGrowing<PointT>::checkInputs (const char* name) const
         "%s normal k = %d; a normal needs at least 3 points.\n", name, normal_k_);
     return false;
   }
-  if (min_size_ < 1) {
-    PCL_ERROR ("%s minimum cluster size = 0; it must be at least 1.\n", name);
+  if (!validClusterSizes()) {
+    PCL_ERROR ("%s Need 1 <= minimum cluster size (%u) <= maximum cluster size (%u).\n",
+               name,
+               static_cast<unsigned int> (min_size_),
+               static_cast<unsigned int> (max_size_));
     return false;
   }
   return true;
@@ -71,8 +74,8 @@ pcl_ext::LeftoverRegionGrowing<PointT>::compute (LabelCloud& output)
     return false;
   }
   const std::size_t n = input_->size();
-  if (n > static_cast<std::size_t> (UINT32_MAX)) {
-    PCL_ERROR ("%s %zu points; at most %u.\n", name, n, UINT32_MAX);
+  if (n > static_cast<std::size_t> (INT32_MAX)) {
+    PCL_ERROR ("%s %zu points; at most %d.\n", name, n, INT32_MAX);
     deinitCompute();
     return false;
   }
@@ -83,32 +86,39 @@ pcl_ext::LeftoverRegionGrowing<PointT>::compute (LabelCloud& output)
     deinitCompute();
     return false;
   }
-  const auto row_of = [nb] (std::size_t i) {
-    return nb->getRowOfPoint (static_cast<pcl::index_t> (i));
-  };
-
-  // The points that take part: indexed, finite, without a segment.
-  std::vector<char> left (n, 0);
+  // The points that take part (indexed, finite, without a segment, with a row), in
+  // index order; per-point arrays hold only their slot, the rest is per taking part.
+  std::vector<std::int32_t> slot (n, -1);
+  std::vector<pcl::index_t> point;
+  std::vector<std::ptrdiff_t> row_of_slot;
   for (const auto i : *indices_)
-    if ((*segments_)[i].label == 0 && pcl::isFinite ((*input_)[i]) && !left[i]) {
-      left[i] = 1;
-      ++report_.examined;
+    if ((*segments_)[i].label == 0 && pcl::isFinite ((*input_)[i]))
+      slot[static_cast<std::size_t> (i)] = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (slot[i] < 0)
+      continue;
+    ++report_.examined;
+    const std::ptrdiff_t r = nb->getRowOfPoint (static_cast<pcl::index_t> (i));
+    if (r < 0) {
+      slot[i] = -1;
+      continue;
     }
+    slot[i] = static_cast<std::int32_t> (point.size());
+    point.push_back (static_cast<pcl::index_t> (i));
+    row_of_slot.push_back (r);
+  }
+  const std::size_t m_points = point.size();
 
-  // Each one's normal from its nearest normal_k_ neighbours (zero: none).
-  std::vector<Eigen::Vector3f> normal (n, Eigen::Vector3f::Zero());
-  std::vector<float> curvature (n, 0.0f);
+  // Each one's normal and surface variance from its nearest normal_k_ neighbours
+  // (normal zero: none).
+  std::vector<Eigen::Vector3f> normal (m_points, Eigen::Vector3f::Zero());
+  std::vector<float> curvature (m_points, 0.0f);
   const std::size_t normal_k = static_cast<std::size_t> (normal_k_);
-  const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (n);
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (m_points);
 #pragma omp parallel for num_threads(resolveThreadCount(this->threads_))               \
     schedule(dynamic, 256)
-  for (std::ptrdiff_t i = 0; i < count; ++i) {
-    if (!left[i])
-      continue;
-    const std::ptrdiff_t r = row_of (static_cast<std::size_t> (i));
-    if (r < 0)
-      continue;
-    const auto row = (*nb)[static_cast<std::size_t> (r)];
+  for (std::ptrdiff_t s = 0; s < count; ++s) {
+    const auto row = (*nb)[static_cast<std::size_t> (row_of_slot[s])];
     const std::size_t m = std::min (row.size(), normal_k);
     Eigen::Matrix3d covariance;
     Eigen::Vector3d centroid;
@@ -118,8 +128,8 @@ pcl_ext::LeftoverRegionGrowing<PointT>::compute (LabelCloud& output)
             *input_, row.begin(), row.begin() + m, covariance, centroid) < 3 ||
         !computeEigenDecomposition (covariance, eigen) || !(eigen.values (2) > 0.0))
       continue;
-    normal[i] = eigen.normal().template cast<float>();
-    curvature[i] = static_cast<float> (surfaceVariance (eigen.values));
+    normal[s] = eigen.normal().template cast<float>();
+    curvature[s] = static_cast<float> (surfaceVariance (eigen.values));
   }
 
   // Links both ways between smooth points without a segment whose normals agree; the
@@ -128,55 +138,50 @@ pcl_ext::LeftoverRegionGrowing<PointT>::compute (LabelCloud& output)
   // normals turning a little from point to point cannot cross the crease; it joins the
   // group of its smooth neighbour of the closest normal within the angle.
   const float min_cos = static_cast<float> (std::cos (angle_));
-  const auto smooth = [&] (std::size_t i) {
-    return !normal[i].isZero() && !(curvature[i] > max_curvature_);
+  const auto smooth = [&] (std::int32_t s) {
+    return !normal[s].isZero() && !(curvature[s] > max_curvature_);
   };
-  UnionFind groups (n);
-  for (std::size_t i = 0; i < n; ++i) {
-    // A point with a normal has a row.
-    if (!left[i] || !smooth (i))
+  // The slot of a neighbour that takes part, or -1.
+  const auto slotOf = [&slot] (pcl::index_t j) {
+    return j < 0 ? -1 : slot[static_cast<std::size_t> (j)];
+  };
+  UnionFind groups (m_points);
+  std::vector<std::int32_t> attach (m_points, -1);
+  for (std::size_t s = 0; s < m_points; ++s) {
+    if (normal[s].isZero())
       continue;
-    const auto row = (*nb)[static_cast<std::size_t> (row_of (i))];
+    const auto row = (*nb)[static_cast<std::size_t> (row_of_slot[s])];
     const std::size_t m = std::min (row.size(), normal_k);
-    for (std::size_t k = 0; k < m; ++k) {
-      const pcl::index_t j = row.begin()[k];
-      if (j < 0 || static_cast<std::size_t> (j) == i || !left[j] || !smooth (j))
-        continue;
-      if (std::abs (normal[i].dot (normal[j])) >= min_cos)
-        groups.unite (static_cast<std::uint32_t> (i), static_cast<std::uint32_t> (j));
-    }
-  }
-  std::vector<std::int64_t> attach (n, -1);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!left[i] || normal[i].isZero() || smooth (i))
-      continue;
-    const auto row = (*nb)[static_cast<std::size_t> (row_of (i))];
-    const std::size_t m = std::min (row.size(), normal_k);
+    const bool linking = smooth (static_cast<std::int32_t> (s));
     float best = min_cos;
     for (std::size_t k = 0; k < m; ++k) {
-      const pcl::index_t j = row.begin()[k];
-      if (j < 0 || !left[j] || !smooth (j))
+      const std::int32_t t = slotOf (row.begin()[k]);
+      if (t < 0 || static_cast<std::size_t> (t) == s || !smooth (t))
         continue;
-      const float c = std::abs (normal[i].dot (normal[j]));
-      if (c >= best) {
+      const float c = std::abs (normal[s].dot (normal[t]));
+      if (linking) {
+        if (c >= min_cos)
+          groups.unite (static_cast<std::uint32_t> (s), static_cast<std::uint32_t> (t));
+      }
+      else if (c >= best) {
         best = c;
-        attach[i] = j;
+        attach[s] = t;
       }
     }
   }
-  for (std::size_t i = 0; i < n; ++i)
-    if (attach[i] >= 0)
-      groups.unite (static_cast<std::uint32_t> (i),
-                    static_cast<std::uint32_t> (attach[i]));
-  std::vector<std::uint32_t> size (n, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    if (left[i])
-      ++size[groups.find (static_cast<std::uint32_t> (i))];
-  // Roots are the smallest index of their group, so this order breaks size ties by it.
+  for (std::size_t s = 0; s < m_points; ++s)
+    if (attach[s] >= 0)
+      groups.unite (static_cast<std::uint32_t> (s),
+                    static_cast<std::uint32_t> (attach[s]));
+  std::vector<std::uint32_t> size (m_points, 0);
+  for (std::size_t s = 0; s < m_points; ++s)
+    ++size[groups.find (static_cast<std::uint32_t> (s))];
+  // Roots are the smallest slot of their group, slots follow the point indices, so this
+  // order breaks size ties by the smallest point index.
   std::vector<std::uint32_t> kept;
-  for (std::size_t i = 0; i < n; ++i)
-    if (size[i] >= min_size_)
-      kept.push_back (static_cast<std::uint32_t> (i));
+  for (std::size_t s = 0; s < m_points; ++s)
+    if (size[s] > 0 && keepsClusterSize (size[s]))
+      kept.push_back (static_cast<std::uint32_t> (s));
   std::stable_sort (
       kept.begin(), kept.end(), [&size] (std::uint32_t a, std::uint32_t b) {
         return size[a] > size[b];
@@ -185,16 +190,14 @@ pcl_ext::LeftoverRegionGrowing<PointT>::compute (LabelCloud& output)
   std::uint32_t next = 0;
   for (const auto& l : *segments_)
     next = std::max (next, l.label);
-  std::vector<std::uint32_t> id (n, 0);
+  std::vector<std::uint32_t> id (m_points, 0);
   for (const auto root : kept)
     id[root] = ++next;
   output = *segments_;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!left[i])
-      continue;
-    const std::uint32_t l = id[groups.find (static_cast<std::uint32_t> (i))];
+  for (std::size_t s = 0; s < m_points; ++s) {
+    const std::uint32_t l = id[groups.find (static_cast<std::uint32_t> (s))];
     if (l != 0) {
-      output[i].label = l;
+      output[static_cast<std::size_t> (point[s])].label = l;
       ++report_.segmented;
     }
   }
