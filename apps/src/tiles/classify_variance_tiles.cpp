@@ -4,6 +4,8 @@
  */
 #include "variance_tiles.h"
 
+#include "../variance/edge_localisation_option.h"
+
 #include <iostream>
 
 namespace pcl_ext {
@@ -22,6 +24,7 @@ public:
         "with k: keep only the neighbours within this distance (0: no cap, the "
         "paper's)");
     options_.addTo (cl);
+    edges_.addTo (cl);
   }
 
   bool
@@ -89,6 +92,27 @@ public:
       std::cerr << "Error: the classification of tile " << tile.tile << " failed.\n";
       return false;
     }
+    // The narrowing reads an edge point's neighbourhood and its neighbours' nearest
+    // points: within the classification's reach (eq. 5), so exact on the core.
+    if (edges_.localises (options_.preset, hasRangeCameraNoise (settings))) {
+      auto core = pcl::make_shared<pcl::Indices>();
+      for (std::size_t i = 0; i < tile.cloud->size(); ++i)
+        if (tile.core[i])
+          core->push_back (static_cast<pcl::index_t> (i));
+      EdgeLocalisation<pcl::PointXYZ> localisation;
+      localisation.setInputCloud (tile.cloud);
+      localisation.setIndices (core);
+      localisation.setNeighbourhoods (tile.neighbourhoods);
+      localisation.setNumberOfThreads (threads_);
+      localisation.setPointClasses (
+          pcl::make_shared<pcl::PointCloud<pcl::Label>> (result));
+      pcl::PointCloud<pcl::Label> narrowed;
+      if (!localisation.localise (narrowed)) {
+        std::cerr << "Error: narrowing the edges of tile " << tile.tile << " failed.\n";
+        return false;
+      }
+      result.swap (narrowed);
+    }
     for (std::size_t i = 0; i < result.size(); ++i)
       labels[i] = result[i].label;
     return true;
@@ -105,6 +129,7 @@ private:
   int k_ = 50;
   double radius_ = 0.0, max_radius_ = 0.0;
   VarianceClassificationOptions options_;
+  EdgeLocalisationOption edges_;
 };
 } // namespace
 

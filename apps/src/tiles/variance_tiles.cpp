@@ -36,6 +36,8 @@ constexpr const char* kEigenParts[3][3] = {{"lv_l0_high", "lv_l0_mid", "lv_l0_lo
                                            {"lv_l2_high", "lv_l2_mid", "lv_l2_low"}};
 constexpr const char* kDenoisedCurvatures = "curvature_noise_removed";
 constexpr const char* kNoiseSetting = "noise_sigma";
+/** Setting: "1" when the whole cloud's noise is a range camera's. */
+constexpr const char* kRangeCameraSetting = "range_camera_noise";
 
 /** The eigenvalues and size of the neighbourhood of the tile's point \a i, as the
  * classifier computes them; size 0 (eigenvalues 0) where it has none. */
@@ -300,6 +302,12 @@ VarianceTileMethod::reduce (const std::string& folder,
               << noise.reason << "; none is removed (the paper's eq. 4-6).\n";
   if (estimate_noise_)
     settings[kNoiseSetting] = text (sigma);
+  // Whether the whole cloud's noise is a range camera's, where the untiled classifier
+  // estimates it (the edges are then not narrowed).
+  if (estimate_noise_ || (getClassificationOptions().curvature_threshold == 0.0 &&
+                          curvature_factor_ == 0.0))
+    settings[kRangeCameraSetting] =
+        Classification::isRangeCameraNoise (noise) ? "1" : "0";
   if (getClassificationOptions().curvature_threshold != 0.0)
     return true;
   // As LocalVarianceClassification derives it: factor * median over every point, the
@@ -320,6 +328,14 @@ VarianceTileMethod::reduce (const std::string& folder,
   settings[kThresholdSetting] =
       text (count == 0 ? 0.0 : factor * static_cast<double> (median));
   return true;
+}
+
+bool
+VarianceTileMethod::hasRangeCameraNoise (
+    const std::map<std::string, std::string>& settings)
+{
+  const auto found = settings.find (kRangeCameraSetting);
+  return found != settings.end() && found->second == "1";
 }
 
 bool

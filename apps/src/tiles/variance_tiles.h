@@ -72,6 +72,12 @@ protected:
   applyEstimates (LocalVarianceClassification<pcl::PointXYZ>& classifier,
                   const std::map<std::string, std::string>& settings) const;
 
+  /** \brief Whether the reduce found a range camera's noise in the whole cloud
+   * (LocalVarianceClassification::isRangeCameraNoise), where the untiled classifier
+   * estimates the noise; false otherwise. */
+  static bool
+  hasRangeCameraNoise (const std::map<std::string, std::string>& settings);
+
 private:
   /** \brief Whether the tiles save their part of the whole cloud's noise sample. */
   bool

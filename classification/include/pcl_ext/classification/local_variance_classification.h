@@ -164,15 +164,21 @@ public:
     return curvature_factor_;
   }
 
+  /** \brief Whether the cloud's noise \a estimate is valid and exceeds
+   * kMaxNoiseToSpacing point spacings: a range camera's rather than a scanner's. */
+  static bool
+  isRangeCameraNoise (const NoiseEstimate& estimate)
+  {
+    return estimate.valid && estimate.sigma > kMaxNoiseToSpacing * estimate.spacing;
+  }
+
   /** \brief The factor of setCurvatureThresholdFactor when it is chosen from the cloud,
-   * given the cloud's noise \a estimate: 1 when the estimate is valid and its noise
-   * exceeds kMaxNoiseToSpacing spacings, else 3. */
+   * given the cloud's noise \a estimate: 1 for a range camera's noise
+   * (isRangeCameraNoise), else 3. */
   static double
   curvatureFactorFor (const NoiseEstimate& estimate)
   {
-    return estimate.valid && estimate.sigma > kMaxNoiseToSpacing * estimate.spacing
-               ? 1.0
-               : 3.0;
+    return isRangeCameraNoise (estimate) ? 1.0 : 3.0;
   }
 
   /** \brief The noise sigma classify() removes when it estimates the noise

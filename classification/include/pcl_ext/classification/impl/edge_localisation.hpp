@@ -1,0 +1,366 @@
+/*
+ * pcl_ext: EdgeLocalisation implementation.
+ */
+#pragma once
+
+#include <pcl_ext/classification/edge_localisation.h>
+#include <pcl_ext/common/covariance.h>
+#include <pcl_ext/common/indices.h>
+#include <pcl_ext/common/parallel.h>
+#include <pcl_ext/point_types.h>
+
+#include <pcl/common/point_tests.h>
+#include <pcl/console/print.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace pcl_ext {
+namespace detail {
+/** A plane through \a centroid with unit \a normal, and the root mean square distance
+ * of the points it was fitted to. */
+struct FittedPlane {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  double rms = 0.0;
+
+  double
+  distance (const Eigen::Vector3d& p) const
+  {
+    return std::abs (normal.dot (p - centroid));
+  }
+};
+
+/** Least-squares plane of the points \a points[members]; false with fewer than 3 or a
+ * degenerate spread. */
+inline bool
+fitPlaneTo (const std::vector<Eigen::Vector3d>& points,
+            const std::vector<int>& members,
+            FittedPlane& plane)
+{
+  if (members.size() < 3)
+    return false;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const int m : members)
+    centroid += points[m];
+  centroid /= static_cast<double> (members.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const int m : members) {
+    const Eigen::Vector3d d = points[m] - centroid;
+    covariance += d * d.transpose();
+  }
+  EigenDecomposition eigen;
+  if (!computeEigenDecomposition (covariance, eigen) || !(eigen.values (1) > 0.0))
+    return false;
+  plane.normal = eigen.normal();
+  plane.centroid = centroid;
+  plane.rms = std::sqrt (std::max (0.0, eigen.values (0)) /
+                         static_cast<double> (members.size()));
+  return true;
+}
+
+/** Distance from the origin to the line where the planes \a a and \a b meet (they must
+ * not be parallel). */
+inline double
+distanceToIntersection (const FittedPlane& a, const FittedPlane& b)
+{
+  const double c = a.normal.dot (b.normal);
+  const double det = 1.0 - c * c;
+  const double ha = a.normal.dot (a.centroid), hb = b.normal.dot (b.centroid);
+  const Eigen::Vector3d on_line =
+      ((ha - hb * c) * a.normal + (hb - ha * c) * b.normal) / det;
+  const Eigen::Vector3d direction = a.normal.cross (b.normal).normalized();
+  return on_line.cross (direction).norm();
+}
+} // namespace detail
+} // namespace pcl_ext
+
+template <typename PointT>
+bool
+pcl_ext::EdgeLocalisation<PointT>::checkInputs (const char* name) const
+{
+  const std::size_t n = input_->size();
+  if (n == 0) {
+    PCL_ERROR ("%s The input cloud is empty.\n", name);
+    return false;
+  }
+  if (!onePerPoint (classes_.get(), n, name, "point class", "setPointClasses") ||
+      !indicesInRange (*indices_, n, name))
+    return false;
+  if (!this->checkNeighbourhoodOptions (name, 3))
+    return false;
+  if (normal_k_ < 3) {
+    PCL_ERROR (
+        "%s normal k = %d; a normal needs at least 3 points.\n", name, normal_k_);
+    return false;
+  }
+  if (!(max_patch_curvature_ >= 0.0 && max_patch_curvature_ <= 1.0 / 3.0)) {
+    PCL_ERROR ("%s maximum patch curvature = %g; valid: 0 .. 1/3.\n",
+               name,
+               max_patch_curvature_);
+    return false;
+  }
+  if (!(min_angle_ > 0.0 && min_angle_ < 0.5 * M_PI)) {
+    PCL_ERROR (
+        "%s minimum crease angle = %g rad; valid: (0, pi/2).\n", name, min_angle_);
+    return false;
+  }
+  if (!(max_residual_ > 0.0) || !std::isfinite (max_residual_)) {
+    PCL_ERROR (
+        "%s maximum residual = %g; it must be finite and > 0.\n", name, max_residual_);
+    return false;
+  }
+  if (!(band_width_ > 0.0) || !std::isfinite (band_width_)) {
+    PCL_ERROR ("%s band width = %g; it must be finite and > 0.\n", name, band_width_);
+    return false;
+  }
+  return true;
+}
+
+template <typename PointT>
+bool
+pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
+{
+  const char* const name = "[pcl_ext::EdgeLocalisation::localise]";
+  output.clear();
+  output.width = output.height = 0;
+  report_ = Report();
+  if (!initCompute()) {
+    PCL_ERROR ("%s No input cloud.\n", name);
+    return false;
+  }
+  if (!checkInputs (name)) {
+    deinitCompute();
+    return false;
+  }
+  const std::size_t n = input_->size();
+  if (n > static_cast<std::size_t> (INT32_MAX)) {
+    PCL_ERROR ("%s %zu points; at most %d.\n", name, n, INT32_MAX);
+    deinitCompute();
+    return false;
+  }
+  // Whole-cloud rows: an edge point's neighbours need not be among the indices.
+  const Neighbourhoods<PointT>* const nb = this->prepareNeighbourhoods (
+      "EdgeLocalisation::localise", input_, pcl::IndicesConstPtr());
+  if (!nb) {
+    deinitCompute();
+    return false;
+  }
+  const auto edge = static_cast<std::uint32_t> (PointClass::Edge);
+
+  // The edge points to examine, and every neighbour of theirs (slots: per-point arrays
+  // hold only these).
+  std::vector<pcl::index_t> candidates;
+  std::vector<std::ptrdiff_t> candidate_row;
+  for (const auto i : *indices_) {
+    if ((*classes_)[i].label != edge || !pcl::isFinite ((*input_)[i]))
+      continue;
+    const std::ptrdiff_t r = nb->getRowOfPoint (i);
+    if (r < 0 || (*nb)[static_cast<std::size_t> (r)].size() < 3)
+      continue;
+    candidates.push_back (i);
+    candidate_row.push_back (r);
+  }
+  std::vector<std::int32_t> slot (n, -1);
+  std::vector<std::ptrdiff_t> slot_row;
+  for (const auto r : candidate_row)
+    for (const auto j : (*nb)[static_cast<std::size_t> (r)]) {
+      if (j < 0 || slot[static_cast<std::size_t> (j)] >= 0)
+        continue;
+      slot[static_cast<std::size_t> (j)] = static_cast<std::int32_t> (slot_row.size());
+      slot_row.push_back (nb->getRowOfPoint (j));
+    }
+  report_.examined = candidates.size();
+
+  // Each neighbour's normal from its nearest normal_k_ points (zero: none), the
+  // surface variance of that patch (eq. 4) and its distance to its nearest other point
+  // (-1: none).
+  const std::size_t slots = slot_row.size();
+  std::vector<Eigen::Vector3f> normal (slots, Eigen::Vector3f::Zero());
+  std::vector<float> nearest (slots, -1.0f), patch_curvature (slots, -1.0f);
+  const std::size_t normal_k = static_cast<std::size_t> (normal_k_);
+  const unsigned int threads = resolveThreadCount (this->threads_);
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 256)
+  for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t> (slots); ++s) {
+    const std::ptrdiff_t r = slot_row[static_cast<std::size_t> (s)];
+    if (r < 0)
+      continue;
+    const auto row = (*nb)[static_cast<std::size_t> (r)];
+    if (row.size() > 1)
+      nearest[s] = std::sqrt (nb->getSquaredDistance (static_cast<std::size_t> (r), 1));
+    const std::size_t m = std::min (row.size(), normal_k);
+    Eigen::Matrix3d covariance;
+    Eigen::Vector3d centroid;
+    EigenDecomposition eigen;
+    if (m < 3 ||
+        computeLocalCovariance (
+            *input_, row.begin(), row.begin() + m, covariance, centroid) < 3 ||
+        !computeEigenDecomposition (covariance, eigen) || !(eigen.values (2) > 0.0))
+      continue;
+    normal[s] = eigen.normal().template cast<float>();
+    patch_curvature[s] = static_cast<float> (surfaceVariance (eigen.values));
+  }
+
+  // Fewer normals than this in a neighbourhood: no faces to fit.
+  constexpr std::size_t kMinNormals = 6;
+  const double min_cos = std::cos (min_angle_);
+  // What each edge point becomes: a surface point, an edge on its crease, or an edge
+  // among scattered points.
+  enum Verdict : std::uint8_t { kSmooth, kOnCrease, kScattered };
+  std::vector<std::uint8_t> verdict (candidates.size(), kSmooth);
+#pragma omp parallel num_threads(threads)
+  {
+    // Per thread, reused from point to point.
+    std::vector<Eigen::Vector3d> points;
+    std::vector<std::int32_t> with_normal; // positions in the row
+    std::vector<int> group_a, group_b;
+    std::vector<float> values;
+#pragma omp for schedule(dynamic, 64)
+    for (std::ptrdiff_t c = 0; c < static_cast<std::ptrdiff_t> (candidates.size());
+         ++c) {
+      const std::size_t r = static_cast<std::size_t> (candidate_row[c]);
+      const auto row = (*nb)[r];
+      const std::size_t k = row.size();
+      const Eigen::Vector3d origin =
+          (*input_)[candidates[c]].getVector3fMap().template cast<double>();
+      points.clear();
+      with_normal.clear();
+      for (std::size_t a = 0; a < k; ++a) {
+        const pcl::index_t j = row[a];
+        points.push_back ((*input_)[j].getVector3fMap().template cast<double>() -
+                          origin);
+        if (!normal[slot[static_cast<std::size_t> (j)]].isZero())
+          with_normal.push_back (static_cast<std::int32_t> (a));
+      }
+      const auto slotAt = [&] (std::size_t a) {
+        return slot[static_cast<std::size_t> (row[a])];
+      };
+      // The median over the neighbours of a per-slot value (\a skip: those to leave
+      // out); -1 when none is left.
+      const auto median = [&] (const std::vector<float>& of, float skip) {
+        values.clear();
+        for (std::size_t a = 0; a < k; ++a)
+          if (of[slotAt (a)] != skip)
+            values.push_back (of[slotAt (a)]);
+        if (values.empty())
+          return -1.0f;
+        std::nth_element (
+            values.begin(), values.begin() + values.size() / 2, values.end());
+        return values[values.size() / 2];
+      };
+      const auto normalAt = [&] (std::int32_t a) -> const Eigen::Vector3f& {
+        return normal[slotAt (static_cast<std::size_t> (a))];
+      };
+      // Whether the neighbourhood spans a crease, and the point lies on it.
+      enum Crease { kNone, kNear, kFar };
+      const auto crease = [&] () {
+        if (with_normal.size() < kMinNormals)
+          return kNone;
+        // The two normals furthest apart: from the point's own (or the first one's)
+        // to the furthest, then from that to the furthest from it.
+        const std::int32_t own = slot[static_cast<std::size_t> (candidates[c])];
+        const Eigen::Vector3f start =
+            normal[own].isZero() ? normalAt (with_normal[0]) : normal[own];
+        const auto furthestFrom = [&] (const Eigen::Vector3f& from, float& cosine) {
+          std::int32_t best = with_normal[0];
+          cosine = 2.0f;
+          for (const auto a : with_normal) {
+            const float d = std::abs (from.dot (normalAt (a)));
+            if (d < cosine) {
+              cosine = d;
+              best = a;
+            }
+          }
+          return best;
+        };
+        float cosine;
+        const std::int32_t seed_a = furthestFrom (start, cosine);
+        const std::int32_t seed_b = furthestFrom (normalAt (seed_a), cosine);
+        if (cosine > min_cos)
+          return kNone;
+        // Two planes, seeded by the points whose normal is closer to either seed's,
+        // then every point to the nearer plane, three times.
+        detail::FittedPlane plane_a, plane_b;
+        group_a.clear();
+        group_b.clear();
+        for (const auto a : with_normal)
+          (std::abs (normalAt (a).dot (normalAt (seed_a))) >=
+                   std::abs (normalAt (a).dot (normalAt (seed_b)))
+               ? group_a
+               : group_b)
+              .push_back (a);
+        if (!detail::fitPlaneTo (points, group_a, plane_a)) {
+          plane_a.normal = normalAt (seed_a).template cast<double>();
+          plane_a.centroid = points[static_cast<std::size_t> (seed_a)];
+        }
+        if (!detail::fitPlaneTo (points, group_b, plane_b)) {
+          plane_b.normal = normalAt (seed_b).template cast<double>();
+          plane_b.centroid = points[static_cast<std::size_t> (seed_b)];
+        }
+        bool fitted = true;
+        for (int iteration = 0; iteration < 3 && fitted; ++iteration) {
+          group_a.clear();
+          group_b.clear();
+          for (std::size_t a = 0; a < k; ++a)
+            (plane_a.distance (points[a]) <= plane_b.distance (points[a]) ? group_a
+                                                                          : group_b)
+                .push_back (static_cast<int> (a));
+          fitted = detail::fitPlaneTo (points, group_a, plane_a) &&
+                   detail::fitPlaneTo (points, group_b, plane_b);
+        }
+        if (!fitted || std::abs (plane_a.normal.dot (plane_b.normal)) > min_cos)
+          return kNone;
+        const float nearest_spacing = median (nearest, -1.0f);
+        if (!(nearest_spacing >= 0.0f) ||
+            std::max (plane_a.rms, plane_b.rms) > max_residual_ * nearest_spacing)
+          return kNone;
+        const double spacing =
+            std::sqrt (M_PI * static_cast<double> (nb->getSquaredDistance (r, k - 1)) /
+                       static_cast<double> (k));
+        return detail::distanceToIntersection (plane_a, plane_b) <=
+                       band_width_ * spacing
+                   ? kNear
+                   : kFar;
+      };
+      switch (crease()) {
+      case kNear:
+        verdict[c] = kOnCrease;
+        break;
+      case kFar:
+        verdict[c] = kSmooth;
+        break;
+      case kNone: {
+        // Without a crease, a neighbourhood of flat patches is a smooth (curved)
+        // surface; one of rough patches (vegetation, clutter) stays an edge.
+        const float curvature = median (patch_curvature, -1.0f);
+        verdict[c] =
+            curvature < 0.0f || curvature > max_patch_curvature_ ? kScattered : kSmooth;
+        break;
+      }
+      }
+    }
+  }
+
+  output = *classes_;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (verdict[c] == kOnCrease)
+      ++report_.kept;
+    else if (verdict[c] == kScattered)
+      ++report_.scattered;
+    else {
+      output[static_cast<std::size_t> (candidates[c])].label =
+          static_cast<std::uint32_t> (PointClass::Surface);
+      ++report_.surface;
+    }
+  }
+  this->releaseNeighbourhoods();
+  deinitCompute();
+  return true;
+}
+
+#define PCL_EXT_INSTANTIATE_EdgeLocalisation(T)                                        \
+  template class pcl_ext::EdgeLocalisation<T>;
