@@ -27,9 +27,10 @@ namespace pcl_ext {
  *
  * - The faces: each neighbour's normal is fitted to its nearest few points only
  *   (setNormalK), so that away from the crease it is the normal of its own face. The
- *   two normals of the neighbourhood furthest apart seed two planes (if they are less
- *   than setMinCreaseAngle apart there is no crease), and every point of the
- *   neighbourhood is given to the nearer plane, the planes refitted, three times.
+ *   two normals of the neighbourhood furthest apart give two planes through their
+ *   points (if they are less than setMinCreaseAngle apart there is no crease); every
+ *   point of the neighbourhood is given to the nearer plane and the planes refitted,
+ *   up to three times.
  * - A crease: the planes make at least the minimum angle and each fits its points
  *   within setMaxResidual times the neighbourhood's nearest-neighbour spacing (a
  *   curved surface, a pipe, fits two planes worse than the noise of two faces).

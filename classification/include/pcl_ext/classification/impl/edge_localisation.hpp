@@ -48,11 +48,19 @@ fitPlaneTo (const std::vector<Eigen::Vector3d>& points,
   for (const int m : members)
     centroid += points[m];
   centroid /= static_cast<double> (members.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  // The six distinct entries, summed as d d^T sums them.
+  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
   for (const int m : members) {
     const Eigen::Vector3d d = points[m] - centroid;
-    covariance += d * d.transpose();
+    xx += d.x() * d.x();
+    xy += d.x() * d.y();
+    xz += d.x() * d.z();
+    yy += d.y() * d.y();
+    yz += d.y() * d.z();
+    zz += d.z() * d.z();
   }
+  Eigen::Matrix3d covariance;
+  covariance << xx, xy, xz, xy, yy, yz, xz, yz, zz;
   EigenDecomposition eigen;
   if (!computeEigenDecomposition (covariance, eigen) || !(eigen.values (1) > 0.0))
     return false;
@@ -217,7 +225,7 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
     // Per thread, reused from point to point.
     std::vector<Eigen::Vector3d> points;
     std::vector<std::int32_t> with_normal; // positions in the row
-    std::vector<int> group_a, group_b;
+    std::vector<int> group_a, group_b, previous_a;
     std::vector<float> values;
 #pragma omp for schedule(dynamic, 64)
     for (std::ptrdiff_t c = 0; c < static_cast<std::ptrdiff_t> (candidates.size());
@@ -282,33 +290,26 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
         const std::int32_t seed_b = furthestFrom (normalAt (seed_a), cosine);
         if (cosine > min_cos)
           return kNone;
-        // Two planes, seeded by the points whose normal is closer to either seed's,
-        // then every point to the nearer plane, three times.
+        // Two planes, through the seeds with their normals; then every point to the
+        // nearer plane and the planes refitted, up to three times.
         detail::FittedPlane plane_a, plane_b;
+        plane_a.normal = normalAt (seed_a).template cast<double>();
+        plane_a.centroid = points[static_cast<std::size_t> (seed_a)];
+        plane_b.normal = normalAt (seed_b).template cast<double>();
+        plane_b.centroid = points[static_cast<std::size_t> (seed_b)];
         group_a.clear();
-        group_b.clear();
-        for (const auto a : with_normal)
-          (std::abs (normalAt (a).dot (normalAt (seed_a))) >=
-                   std::abs (normalAt (a).dot (normalAt (seed_b)))
-               ? group_a
-               : group_b)
-              .push_back (a);
-        if (!detail::fitPlaneTo (points, group_a, plane_a)) {
-          plane_a.normal = normalAt (seed_a).template cast<double>();
-          plane_a.centroid = points[static_cast<std::size_t> (seed_a)];
-        }
-        if (!detail::fitPlaneTo (points, group_b, plane_b)) {
-          plane_b.normal = normalAt (seed_b).template cast<double>();
-          plane_b.centroid = points[static_cast<std::size_t> (seed_b)];
-        }
         bool fitted = true;
         for (int iteration = 0; iteration < 3 && fitted; ++iteration) {
+          // An assignment that does not change gives the same planes: done.
+          previous_a.swap (group_a);
           group_a.clear();
           group_b.clear();
           for (std::size_t a = 0; a < k; ++a)
             (plane_a.distance (points[a]) <= plane_b.distance (points[a]) ? group_a
                                                                           : group_b)
                 .push_back (static_cast<int> (a));
+          if (iteration > 0 && group_a == previous_a)
+            break;
           fitted = detail::fitPlaneTo (points, group_a, plane_a) &&
                    detail::fitPlaneTo (points, group_b, plane_b);
         }
