@@ -46,6 +46,15 @@ namespace pcl_ext {
  * boundary and unknown points are kept as they are. The rows of the neighbourhoods must
  * be sorted, closest first (the default search); shared ones (setNeighbourhoods) are
  * the classifier's. Deterministic, whatever the number of threads.
+ *
+ * \code
+ * pcl_ext::EdgeLocalisation<pcl::PointXYZ> edges;
+ * edges.setInputCloud (cloud);
+ * edges.setNeighbourhoods (nb);          // those LocalVarianceClassification used
+ * edges.setPointClasses (classes);       // its classify() output
+ * pcl::PointCloud<pcl::Label> narrowed;
+ * edges.localise (narrowed);
+ * \endcode
  */
 template <typename PointT>
 class EdgeLocalisation : public pcl::PCLBase<PointT>,

@@ -201,16 +201,9 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
     if (row.size() > 1)
       nearest[s] = std::sqrt (nb->getSquaredDistance (static_cast<std::size_t> (r), 1));
     const std::size_t m = std::min (row.size(), normal_k);
-    Eigen::Matrix3d covariance;
-    Eigen::Vector3d centroid;
-    EigenDecomposition eigen;
-    if (m < 3 ||
-        computeLocalCovariance (
-            *input_, row.begin(), row.begin() + m, covariance, centroid) < 3 ||
-        !computeEigenDecomposition (covariance, eigen) || !(eigen.values (2) > 0.0))
-      continue;
-    normal[s] = eigen.normal().template cast<float>();
-    patch_curvature[s] = static_cast<float> (surfaceVariance (eigen.values));
+    if (m >= 3)
+      fitPatchNormal (
+          *input_, row.begin(), row.begin() + m, normal[s], patch_curvature[s]);
   }
 
   // Fewer normals than this in a neighbourhood: no faces to fit.

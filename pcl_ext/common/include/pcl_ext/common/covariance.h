@@ -104,6 +104,17 @@ computeEigenFeatures (const Eigen::Vector3d& ascending_values,
 /** \brief True when every eigen feature is finite. */
 bool
 isFinite (const EigenFeatures& features);
+
+/** \brief The normal of a small patch, the points [begin, end) of \a cloud (a point's
+ * nearest few), and its surface variance (eq. 4).
+ * \return false, the outputs unchanged, with fewer than 3 finite points or no spread */
+template <typename PointT, typename IndexIterator>
+bool
+fitPatchNormal (const pcl::PointCloud<PointT>& cloud,
+                IndexIterator begin,
+                IndexIterator end,
+                Eigen::Vector3f& normal,
+                float& curvature);
 } // namespace pcl_ext
 
 #include <pcl_ext/common/impl/covariance.hpp>

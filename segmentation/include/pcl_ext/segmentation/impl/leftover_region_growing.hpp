@@ -120,16 +120,8 @@ pcl_ext::LeftoverRegionGrowing<PointT>::compute (LabelCloud& output)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const auto row = (*nb)[static_cast<std::size_t> (row_of_slot[s])];
     const std::size_t m = std::min (row.size(), normal_k);
-    Eigen::Matrix3d covariance;
-    Eigen::Vector3d centroid;
-    EigenDecomposition eigen;
-    if (m < 3 ||
-        computeLocalCovariance (
-            *input_, row.begin(), row.begin() + m, covariance, centroid) < 3 ||
-        !computeEigenDecomposition (covariance, eigen) || !(eigen.values (2) > 0.0))
-      continue;
-    normal[s] = eigen.normal().template cast<float>();
-    curvature[s] = static_cast<float> (surfaceVariance (eigen.values));
+    if (m >= 3)
+      fitPatchNormal (*input_, row.begin(), row.begin() + m, normal[s], curvature[s]);
   }
 
   // Links both ways between smooth points without a segment whose normals agree; the

@@ -59,3 +59,22 @@ pcl_ext::computeLocalCovariance (const pcl::PointCloud<PointT>& cloud,
   centroid = centre + mean;
   return n;
 }
+
+template <typename PointT, typename IndexIterator>
+bool
+pcl_ext::fitPatchNormal (const pcl::PointCloud<PointT>& cloud,
+                         IndexIterator begin,
+                         IndexIterator end,
+                         Eigen::Vector3f& normal,
+                         float& curvature)
+{
+  Eigen::Matrix3d covariance;
+  Eigen::Vector3d centroid;
+  EigenDecomposition eigen;
+  if (computeLocalCovariance (cloud, begin, end, covariance, centroid) < 3 ||
+      !computeEigenDecomposition (covariance, eigen) || !(eigen.values (2) > 0.0))
+    return false;
+  normal = eigen.normal().template cast<float>();
+  curvature = static_cast<float> (surfaceVariance (eigen.values));
+  return true;
+}
