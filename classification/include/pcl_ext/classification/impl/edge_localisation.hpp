@@ -8,6 +8,7 @@
 #include <pcl_ext/common/indices.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/point_types.h>
+#include <pcl_ext/segmentation/local_planes.h>
 
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
@@ -18,74 +19,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <vector>
-
-namespace pcl_ext {
-namespace detail {
-/** A plane through \a centroid with unit \a normal, and the root mean square distance
- * of the points it was fitted to. */
-struct FittedPlane {
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  double rms = 0.0;
-
-  double
-  distance (const Eigen::Vector3d& p) const
-  {
-    return std::abs (normal.dot (p - centroid));
-  }
-};
-
-/** Least-squares plane of the points \a points[members]; false with fewer than 3 or a
- * degenerate spread. */
-inline bool
-fitPlaneTo (const std::vector<Eigen::Vector3d>& points,
-            const std::vector<int>& members,
-            FittedPlane& plane)
-{
-  if (members.size() < 3)
-    return false;
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (const int m : members)
-    centroid += points[m];
-  centroid /= static_cast<double> (members.size());
-  // The six distinct entries, summed as d d^T sums them.
-  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
-  for (const int m : members) {
-    const Eigen::Vector3d d = points[m] - centroid;
-    xx += d.x() * d.x();
-    xy += d.x() * d.y();
-    xz += d.x() * d.z();
-    yy += d.y() * d.y();
-    yz += d.y() * d.z();
-    zz += d.z() * d.z();
-  }
-  Eigen::Matrix3d covariance;
-  covariance << xx, xy, xz, xy, yy, yz, xz, yz, zz;
-  EigenDecomposition eigen;
-  if (!computeEigenDecomposition (covariance, eigen) || !(eigen.values (1) > 0.0))
-    return false;
-  plane.normal = eigen.normal();
-  plane.centroid = centroid;
-  plane.rms = std::sqrt (std::max (0.0, eigen.values (0)) /
-                         static_cast<double> (members.size()));
-  return true;
-}
-
-/** Distance from the origin to the line where the planes \a a and \a b meet (they must
- * not be parallel). */
-inline double
-distanceToIntersection (const FittedPlane& a, const FittedPlane& b)
-{
-  const double c = a.normal.dot (b.normal);
-  const double det = 1.0 - c * c;
-  const double ha = a.normal.dot (a.centroid), hb = b.normal.dot (b.centroid);
-  const Eigen::Vector3d on_line =
-      ((ha - hb * c) * a.normal + (hb - ha * c) * b.normal) / det;
-  const Eigen::Vector3d direction = a.normal.cross (b.normal).normalized();
-  return on_line.cross (direction).norm();
-}
-} // namespace detail
-} // namespace pcl_ext
 
 template <typename PointT>
 bool
@@ -218,7 +151,7 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
     // Per thread, reused from point to point.
     std::vector<Eigen::Vector3d> points;
     std::vector<std::int32_t> with_normal; // positions in the row
-    std::vector<int> group_a, group_b, previous_a;
+    pcl::Indices group_a, group_b, previous_a;
     std::vector<float> values;
 #pragma omp for schedule(dynamic, 64)
     for (std::ptrdiff_t c = 0; c < static_cast<std::ptrdiff_t> (candidates.size());
@@ -226,14 +159,11 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
       const std::size_t r = static_cast<std::size_t> (candidate_row[c]);
       const auto row = (*nb)[r];
       const std::size_t k = row.size();
-      const Eigen::Vector3d origin =
-          (*input_)[candidates[c]].getVector3fMap().template cast<double>();
       points.clear();
       with_normal.clear();
       for (std::size_t a = 0; a < k; ++a) {
         const pcl::index_t j = row[a];
-        points.push_back ((*input_)[j].getVector3fMap().template cast<double>() -
-                          origin);
+        points.push_back ((*input_)[j].getVector3fMap().template cast<double>());
         if (!normal[slot[static_cast<std::size_t> (j)]].isZero())
           with_normal.push_back (static_cast<std::int32_t> (a));
       }
@@ -285,11 +215,13 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
           return kNone;
         // Two planes, through the seeds with their normals; then every point to the
         // nearer plane and the planes refitted, up to three times.
-        detail::FittedPlane plane_a, plane_b;
-        plane_a.normal = normalAt (seed_a).template cast<double>();
-        plane_a.centroid = points[static_cast<std::size_t> (seed_a)];
-        plane_b.normal = normalAt (seed_b).template cast<double>();
-        plane_b.centroid = points[static_cast<std::size_t> (seed_b)];
+        LocalPlane plane_a, plane_b;
+        static_cast<Plane&> (plane_a) =
+            Plane::throughPoint (normalAt (seed_a).template cast<double>(),
+                                 points[static_cast<std::size_t> (seed_a)]);
+        static_cast<Plane&> (plane_b) =
+            Plane::throughPoint (normalAt (seed_b).template cast<double>(),
+                                 points[static_cast<std::size_t> (seed_b)]);
         group_a.clear();
         bool fitted = true;
         for (int iteration = 0; iteration < 3 && fitted; ++iteration) {
@@ -298,13 +230,17 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
           group_a.clear();
           group_b.clear();
           for (std::size_t a = 0; a < k; ++a)
-            (plane_a.distance (points[a]) <= plane_b.distance (points[a]) ? group_a
-                                                                          : group_b)
-                .push_back (static_cast<int> (a));
+            (std::abs (plane_a.signedDistance (points[a])) <=
+                     std::abs (plane_b.signedDistance (points[a]))
+                 ? group_a
+                 : group_b)
+                .push_back (row[a]);
           if (iteration > 0 && group_a == previous_a)
             break;
-          fitted = detail::fitPlaneTo (points, group_a, plane_a) &&
-                   detail::fitPlaneTo (points, group_b, plane_b);
+          fitted =
+              fitLocalPlane (
+                  *input_, group_a.begin(), group_a.end(), nullptr, plane_a) &&
+              fitLocalPlane (*input_, group_b.begin(), group_b.end(), nullptr, plane_b);
         }
         if (!fitted || std::abs (plane_a.normal.dot (plane_b.normal)) > min_cos)
           return kNone;
@@ -315,10 +251,14 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
         const double spacing =
             std::sqrt (M_PI * static_cast<double> (nb->getSquaredDistance (r, k - 1)) /
                        static_cast<double> (k));
-        return detail::distanceToIntersection (plane_a, plane_b) <=
-                       band_width_ * spacing
-                   ? kNear
-                   : kFar;
+        // The foot of the point on the line where the planes meet (eq. 10-17 with the
+        // point itself for both surface points).
+        const Eigen::Vector3d q =
+            (*input_)[candidates[c]].getVector3fMap().template cast<double>();
+        Eigen::Vector3d foot, direction;
+        if (!intersectLocalPlanes (plane_a, plane_b, q, q, foot, direction))
+          return kNone;
+        return (foot - q).norm() <= band_width_ * spacing ? kNear : kFar;
       };
       switch (crease()) {
       case kNear:
