@@ -9,6 +9,42 @@
 #include <algorithm>
 #include <cmath>
 
+bool
+pcl_ext::fitLocalPlane (const CovarianceSums& sums,
+                        const Eigen::Vector3d* normal,
+                        LocalPlane& plane)
+{
+  Eigen::Matrix3d covariance;
+  plane.size = sums.finish (covariance, plane.centroid);
+  if (plane.size < 3)
+    return false;
+  EigenDecomposition eigen;
+  if (!computeEigenDecomposition (covariance, eigen))
+    return false;
+  const Eigen::Vector3d& l = eigen.values;
+  // Coincident or collinear points have no plane (same bound as the classifier's).
+  if (!(l[2] > 0.0) || !(l[1] > 1e-8 * l[2]))
+    return false;
+  plane.axis1 = eigen.vectors.col (1);
+  plane.axis2 = eigen.vectors.col (2);
+  plane.variance1 = l[1];
+  plane.variance2 = l[2];
+  if (normal) {
+    const double length = normal->norm();
+    if (!(length > 0.0) || !std::isfinite (length))
+      return false;
+    plane.normal = *normal / length;
+    plane.d = -plane.normal.dot (plane.centroid);
+    plane.rms =
+        std::sqrt (std::max (0.0, plane.normal.dot (covariance * plane.normal)));
+    return true;
+  }
+  plane.normal = eigen.normal();
+  plane.d = -plane.normal.dot (plane.centroid);
+  plane.rms = std::sqrt (l[0]);
+  return true;
+}
+
 double
 pcl_ext::normalAngle (const Eigen::Vector3d& n1, const Eigen::Vector3d& n2)
 {

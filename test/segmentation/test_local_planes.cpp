@@ -109,6 +109,54 @@ TEST (FitLocalPlane, TotalLeastSquaresAndGivenNormal)
   EXPECT_FALSE (pcl_ext::fitLocalPlane (line, all.begin(), all.end(), nullptr, plane));
 }
 
+TEST (FitLocalPlane, FromSumsTakenPointByPointAsFromIndices)
+{
+  // Two faces of a box corner at x = 6,000,000 m (a floor z = 0 and a wall x = x0),
+  // their points interleaved and sorted into two sums one at a time, as a caller
+  // assigning each point to its nearer plane does: the same planes, bit for bit, as
+  // from each face's indices.
+  Cloud cloud;
+  const double x0 = 6000000.0, y0 = 300000.0;
+  pcl::Indices floor, wall;
+  pcl_ext::CovarianceSums floor_sums, wall_sums;
+  for (int i = 1; i <= 12; ++i)
+    for (int j = 0; j < 12; ++j) {
+      cloud.push_back (Point (static_cast<float> (x0 + 0.25 * i),
+                              static_cast<float> (y0 + 0.125 * j),
+                              0.0f));
+      floor.push_back (static_cast<pcl::index_t> (cloud.size() - 1));
+      cloud.push_back (Point (static_cast<float> (x0),
+                              static_cast<float> (y0 + 0.125 * j),
+                              static_cast<float> (0.03125 * i)));
+      wall.push_back (static_cast<pcl::index_t> (cloud.size() - 1));
+    }
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    (i % 2 == 0 ? floor_sums : wall_sums)
+        .add (cloud[i].getVector3fMap().cast<double>());
+  EXPECT_EQ (floor_sums.size(), floor.size());
+  pcl_ext::LocalPlane from_sums, from_indices;
+  ASSERT_TRUE (pcl_ext::fitLocalPlane (floor_sums, nullptr, from_sums));
+  ASSERT_TRUE (pcl_ext::fitLocalPlane (
+      cloud, floor.begin(), floor.end(), nullptr, from_indices));
+  EXPECT_GT (std::abs (from_sums.normal.z()), 1.0 - 1e-12);
+  EXPECT_EQ (from_sums.normal, from_indices.normal);
+  EXPECT_EQ (from_sums.centroid, from_indices.centroid);
+  EXPECT_EQ (from_sums.rms, from_indices.rms);
+  EXPECT_NEAR (from_sums.centroid.x(), x0 + 0.25 * 6.5, 1e-9);
+  ASSERT_TRUE (pcl_ext::fitLocalPlane (wall_sums, nullptr, from_sums));
+  ASSERT_TRUE (
+      pcl_ext::fitLocalPlane (cloud, wall.begin(), wall.end(), nullptr, from_indices));
+  EXPECT_GT (std::abs (from_sums.normal.x()), 1.0 - 1e-12);
+  EXPECT_EQ (from_sums.normal, from_indices.normal);
+  EXPECT_EQ (from_sums.d, from_indices.d);
+  // No points, or two, have no plane.
+  pcl_ext::CovarianceSums few;
+  EXPECT_FALSE (pcl_ext::fitLocalPlane (few, nullptr, from_sums));
+  few.add (Eigen::Vector3d (x0, y0, 0.0));
+  few.add (Eigen::Vector3d (x0 + 1.0, y0, 0.0));
+  EXPECT_FALSE (pcl_ext::fitLocalPlane (few, nullptr, from_sums));
+}
+
 TEST (IntersectLocalPlanes, TwoFacesOfABoxMeetOnTheirCrease)
 {
   // The planes x = 1 and y = 2 meet on the vertical line (1, 2, z); the point returned

@@ -8,6 +8,27 @@
 #include <cmath>
 #include <limits>
 
+std::size_t
+pcl_ext::CovarianceSums::finish (Eigen::Matrix3d& covariance,
+                                 Eigen::Vector3d& centroid) const
+{
+  if (n_ == 0)
+    return 0;
+  const double inv_n = 1.0 / static_cast<double> (n_);
+  const Eigen::Vector3d mean = sum_ * inv_n;
+  covariance (0, 0) = xx_ * inv_n - mean.x() * mean.x();
+  covariance (0, 1) = xy_ * inv_n - mean.x() * mean.y();
+  covariance (0, 2) = xz_ * inv_n - mean.x() * mean.z();
+  covariance (1, 1) = yy_ * inv_n - mean.y() * mean.y();
+  covariance (1, 2) = yz_ * inv_n - mean.y() * mean.z();
+  covariance (2, 2) = zz_ * inv_n - mean.z() * mean.z();
+  covariance (1, 0) = covariance (0, 1);
+  covariance (2, 0) = covariance (0, 2);
+  covariance (2, 1) = covariance (1, 2);
+  centroid = centre_ + mean;
+  return n_;
+}
+
 bool
 pcl_ext::computeEigenDecomposition (const Eigen::Matrix3d& covariance,
                                     EigenDecomposition& result)

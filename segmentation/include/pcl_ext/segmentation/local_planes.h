@@ -7,6 +7,7 @@
 #include <pcl_ext/common/covariance.h>
 #include <pcl_ext/common/plane.h>
 
+#include <pcl/common/point_tests.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 #include <pcl/types.h>
@@ -70,6 +71,13 @@ fitLocalPlane (const pcl::PointCloud<PointT>& cloud,
                const Eigen::Vector3d* normal,
                LocalPlane& plane);
 
+/** \brief The same fit from the running sums of the points (finite points only), for
+ * callers that accumulate them while choosing the points. */
+bool
+fitLocalPlane (const CovarianceSums& sums,
+               const Eigen::Vector3d* normal,
+               LocalPlane& plane);
+
 /** \brief The angle theta of Belton & Lichti eq. 9 between two unoriented unit normals,
  * in [0, pi/2] radians: arccos |n1 . n2| (a covariance normal has no sign, so n and -n
  * are the same plane). */
@@ -114,35 +122,13 @@ pcl_ext::fitLocalPlane (const pcl::PointCloud<PointT>& cloud,
                         const Eigen::Vector3d* normal,
                         LocalPlane& plane)
 {
-  Eigen::Matrix3d covariance;
-  plane.size = computeLocalCovariance (cloud, begin, end, covariance, plane.centroid);
-  if (plane.size < 3)
-    return false;
-  EigenDecomposition eigen;
-  if (!computeEigenDecomposition (covariance, eigen))
-    return false;
-  const Eigen::Vector3d& l = eigen.values;
-  // Coincident or collinear points have no plane (same bound as the classifier's).
-  if (!(l[2] > 0.0) || !(l[1] > 1e-8 * l[2]))
-    return false;
-  plane.axis1 = eigen.vectors.col (1);
-  plane.axis2 = eigen.vectors.col (2);
-  plane.variance1 = l[1];
-  plane.variance2 = l[2];
-  if (normal) {
-    const double length = normal->norm();
-    if (!(length > 0.0) || !std::isfinite (length))
-      return false;
-    plane.normal = *normal / length;
-    plane.d = -plane.normal.dot (plane.centroid);
-    plane.rms =
-        std::sqrt (std::max (0.0, plane.normal.dot (covariance * plane.normal)));
-    return true;
+  CovarianceSums sums;
+  for (IndexIterator it = begin; it != end; ++it) {
+    const PointT& p = cloud[static_cast<std::size_t> (*it)];
+    if (pcl::isFinite (p))
+      sums.add (Eigen::Vector3d (p.x, p.y, p.z));
   }
-  plane.normal = eigen.normal();
-  plane.d = -plane.normal.dot (plane.centroid);
-  plane.rms = std::sqrt (l[0]);
-  return true;
+  return fitLocalPlane (sums, normal, plane);
 }
 
 #ifdef PCL_NO_PRECOMPILE

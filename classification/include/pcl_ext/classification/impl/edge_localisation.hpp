@@ -14,7 +14,6 @@
 #include <pcl/console/print.h>
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cstdint>
@@ -151,7 +150,7 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
     // Per thread, reused from point to point.
     std::vector<Eigen::Vector3d> points;
     std::vector<std::int32_t> with_normal; // positions in the row
-    pcl::Indices group_a, group_b, previous_a;
+    std::vector<std::uint8_t> on_a;        // per position: nearer plane a
     std::vector<float> values;
 #pragma omp for schedule(dynamic, 64)
     for (std::ptrdiff_t c = 0; c < static_cast<std::ptrdiff_t> (candidates.size());
@@ -222,25 +221,25 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
         static_cast<Plane&> (plane_b) =
             Plane::throughPoint (normalAt (seed_b).template cast<double>(),
                                  points[static_cast<std::size_t> (seed_b)]);
-        group_a.clear();
+        on_a.assign (k, 2);
         bool fitted = true;
         for (int iteration = 0; iteration < 3 && fitted; ++iteration) {
-          // An assignment that does not change gives the same planes: done.
-          previous_a.swap (group_a);
-          group_a.clear();
-          group_b.clear();
-          for (std::size_t a = 0; a < k; ++a)
-            (std::abs (plane_a.signedDistance (points[a])) <=
-                     std::abs (plane_b.signedDistance (points[a]))
-                 ? group_a
-                 : group_b)
-                .push_back (row[a]);
-          if (iteration > 0 && group_a == previous_a)
+          // Each point to the nearer plane, summed as it goes; an assignment that does
+          // not change gives the same planes: done.
+          CovarianceSums sums_a, sums_b;
+          bool changed = false;
+          for (std::size_t a = 0; a < k; ++a) {
+            const std::uint8_t nearer_a =
+                std::abs (plane_a.signedDistance (points[a])) <=
+                std::abs (plane_b.signedDistance (points[a]));
+            changed |= nearer_a != on_a[a];
+            on_a[a] = nearer_a;
+            (nearer_a ? sums_a : sums_b).add (points[a]);
+          }
+          if (!changed)
             break;
-          fitted =
-              fitLocalPlane (
-                  *input_, group_a.begin(), group_a.end(), nullptr, plane_a) &&
-              fitLocalPlane (*input_, group_b.begin(), group_b.end(), nullptr, plane_b);
+          fitted = fitLocalPlane (sums_a, nullptr, plane_a) &&
+                   fitLocalPlane (sums_b, nullptr, plane_b);
         }
         if (!fitted || std::abs (plane_a.normal.dot (plane_b.normal)) > min_cos)
           return kNone;

@@ -49,6 +49,49 @@ struct EigenFeatures {
   double verticality;
 };
 
+/** \brief Running sums of points around a local centre (the first point added), from
+ * which a covariance and centroid are formed in double without a second pass: for
+ * points taken one at a time, for instance while they are being assigned to one of
+ * several groups. computeLocalCovariance is these sums over an index range.
+ */
+class CovarianceSums {
+public:
+  /** \brief Add a finite point, in the cloud's coordinates. */
+  void
+  add (const Eigen::Vector3d& point)
+  {
+    if (n_ == 0)
+      centre_ = point;
+    const Eigen::Vector3d p = point - centre_;
+    sum_ += p;
+    xx_ += p.x() * p.x();
+    xy_ += p.x() * p.y();
+    xz_ += p.x() * p.z();
+    yy_ += p.y() * p.y();
+    yz_ += p.y() * p.z();
+    zz_ += p.z() * p.z();
+    ++n_;
+  }
+
+  /** \brief The number of points added. */
+  std::size_t
+  size () const
+  {
+    return n_;
+  }
+
+  /** \brief The points' population covariance (divided by n) and their mean, in the
+   * cloud's coordinates. \return size(); 0 leaves the outputs unchanged */
+  std::size_t
+  finish (Eigen::Matrix3d& covariance, Eigen::Vector3d& centroid) const;
+
+private:
+  Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sum_ = Eigen::Vector3d::Zero();
+  double xx_ = 0, xy_ = 0, xz_ = 0, yy_ = 0, yz_ = 0, zz_ = 0;
+  std::size_t n_ = 0;
+};
+
 /** \brief Covariance and centroid of a neighbourhood, accumulated in double around a
  * local centre (the first finite point), so that coordinates such as x = 6,000,000 m
  * lose nothing.

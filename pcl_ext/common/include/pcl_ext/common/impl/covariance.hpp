@@ -18,46 +18,13 @@ pcl_ext::computeLocalCovariance (const pcl::PointCloud<PointT>& cloud,
   // Shift by the first finite point: sums of squares of small numbers keep full
   // precision even for georeferenced coordinates, where a single-pass float formula
   // cancels catastrophically.
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  bool have_centre = false;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
-  std::size_t n = 0;
+  CovarianceSums sums;
   for (IndexIterator it = begin; it != end; ++it) {
     const PointT& p = cloud[static_cast<std::size_t> (*it)];
-    if (!pcl::isFinite (p))
-      continue;
-    if (!have_centre) {
-      centre = Eigen::Vector3d (p.x, p.y, p.z);
-      have_centre = true;
-    }
-    const double x = static_cast<double> (p.x) - centre.x();
-    const double y = static_cast<double> (p.y) - centre.y();
-    const double z = static_cast<double> (p.z) - centre.z();
-    sum += Eigen::Vector3d (x, y, z);
-    xx += x * x;
-    xy += x * y;
-    xz += x * z;
-    yy += y * y;
-    yz += y * z;
-    zz += z * z;
-    ++n;
+    if (pcl::isFinite (p))
+      sums.add (Eigen::Vector3d (p.x, p.y, p.z));
   }
-  if (n == 0)
-    return 0;
-  const double inv_n = 1.0 / static_cast<double> (n);
-  const Eigen::Vector3d mean = sum * inv_n;
-  covariance (0, 0) = xx * inv_n - mean.x() * mean.x();
-  covariance (0, 1) = xy * inv_n - mean.x() * mean.y();
-  covariance (0, 2) = xz * inv_n - mean.x() * mean.z();
-  covariance (1, 1) = yy * inv_n - mean.y() * mean.y();
-  covariance (1, 2) = yz * inv_n - mean.y() * mean.z();
-  covariance (2, 2) = zz * inv_n - mean.z() * mean.z();
-  covariance (1, 0) = covariance (0, 1);
-  covariance (2, 0) = covariance (0, 2);
-  covariance (2, 1) = covariance (1, 2);
-  centroid = centre + mean;
-  return n;
+  return sums.finish (covariance, centroid);
 }
 
 template <typename PointT, typename IndexIterator>
