@@ -125,6 +125,7 @@ main (int argc, char** argv)
   nb->setInputCloud (cloud);
   nb->setKSearch (k);
   nb->setNumberOfThreads (threads);
+  nb->setStoreSquaredDistances (false); // as segmentByLocalVariance and the tool
   if (!nb->compute())
     return 1;
   const auto t1 = Clock::now();

@@ -15,6 +15,8 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <random>
+#include <tuple>
 
 using namespace lsi_test;
 using Intersection = pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ>;
@@ -298,6 +300,53 @@ TEST (LocalSurfaceIntersection, DeterministicForAnyThreadCountAndRun)
       EXPECT_EQ (one.labels[i].label, other->labels[i].label);
     EXPECT_EQ (one.report.reintegrated, other->report.reintegrated);
     EXPECT_EQ (one.report.ambiguous, other->report.ambiguous);
+  }
+}
+
+TEST (LocalSurfaceIntersection, ResultsDoNotDependOnTheOrderOfTheIndices)
+{
+  // Nearby points share one search for their partners, grouped in the order the
+  // indices give them; reversed and shuffled orders group them otherwise and must find
+  // the same pairs and re-integrate the same points.
+  const Scene s = makeHalfPlanes (dihedral (70.0 * kDeg));
+  pcl::IndicesPtr reversed (new pcl::Indices), shuffled (new pcl::Indices);
+  for (std::size_t i = s.cloud->size(); i-- > 0;)
+    reversed->push_back (static_cast<pcl::index_t> (i));
+  *shuffled = *reversed;
+  std::mt19937 rng (11);
+  std::shuffle (shuffled->begin(), shuffled->end(), rng);
+  const auto pairs = [] (const IntersectionCloud& points) {
+    std::vector<std::tuple<pcl::index_t, pcl::index_t, float, float, float>> p;
+    for (const auto& q : points)
+      p.emplace_back (std::min (q.index_a, q.index_b),
+                      std::max (q.index_a, q.index_b),
+                      q.x,
+                      q.y,
+                      q.z);
+    std::sort (p.begin(), p.end());
+    return p;
+  };
+  // The default reach, and one just above the 3 cm x sqrt(2) gap between the two
+  // segments' nearest points, where partners lie near its limit.
+  for (const double reach : {0.0, 0.05}) {
+    const Result natural =
+        run (s, 2, 50, [&] (Intersection& l) { l.setReach (reach); });
+    ASSERT_TRUE (natural.ok);
+    ASSERT_GT (natural.intersections.size(), 0u);
+    ASSERT_GT (natural.report.reintegrated, 0u);
+    for (const auto& order : {reversed, shuffled}) {
+      const Result other = run (s, 2, 50, [&] (Intersection& l) {
+        l.setReach (reach);
+        l.setIndices (order);
+      });
+      ASSERT_TRUE (other.ok);
+      EXPECT_EQ (pairs (natural.intersections), pairs (other.intersections));
+      ASSERT_EQ (natural.labels.size(), other.labels.size());
+      for (std::size_t i = 0; i < natural.labels.size(); ++i)
+        EXPECT_EQ (natural.labels[i].label, other.labels[i].label);
+      EXPECT_EQ (natural.report.reintegrated, other.report.reintegrated);
+      EXPECT_EQ (natural.report.ambiguous, other.report.ambiguous);
+    }
   }
 }
 

@@ -6,8 +6,8 @@
 
 #include <pcl_ext/search/neighbourhood_options.h>
 #include <pcl_ext/point_types.h>
-#include <pcl_ext/search/nanoflann_kdtree.h>
 #include <pcl_ext/segmentation/local_planes.h>
+#include <pcl_ext/segmentation/nearest_of_each_segment.h>
 #include <pcl_ext/segmentation/surface_intersection_point.h>
 
 #include <pcl/pcl_base.h>
@@ -293,11 +293,10 @@ protected:
     Outcome outcome;
   };
 
+  /** \brief Scratch space of nearestOfEachSegment, one per thread. */
   struct SearchBuffers {
-    pcl::Indices indices;
-    std::vector<float> sqr_distances;
-    /** (squared distance, point) of the nearest point of each segment so far */
-    std::vector<std::pair<float, pcl::index_t>> nearest;
+    typename NearestOfEachSegment<PointT>::Scratch scratch;
+    std::vector<double> reaches;
   };
 
   bool
@@ -321,12 +320,13 @@ protected:
   double
   reachOf (pcl::index_t i) const;
 
-  /** \brief Nearest segmented surface point of each segment other than \a own within
-   * the reach of point \a i, closest first (equal distances: smaller index first). */
+  /** \brief For each point of \a queries, the nearest border point of each segment
+   * other than its own within its reach (reachOf), closest first, as row q of \a
+   * nearest: nearest[offsets[q] .. offsets[q + 1]) (see NearestOfEachSegment). */
   void
-  nearestOfEachSegment (pcl::index_t i,
-                        std::uint32_t own,
+  nearestOfEachSegment (const pcl::Indices& queries,
                         SearchBuffers& buffers,
+                        std::vector<std::size_t>& offsets,
                         std::vector<pcl::index_t>& nearest) const;
 
   /** \brief Whether every neighbour of surface point \a i is in its segment (then it is
@@ -334,9 +334,10 @@ protected:
   bool
   isInterior (pcl::index_t i) const;
 
-  /** \brief Intersections of every examined surface point, in index order. */
+  /** \brief Intersections of every examined surface point (\a on_border: 1 for a
+   * segmented surface point with a neighbour outside its segment), in index order. */
   void
-  intersect (std::vector<Record>& records);
+  intersect (const std::vector<std::uint8_t>& on_border, std::vector<Record>& records);
 
   /** \brief Re-integration of edge and boundary points, given the accepted pairs. */
   void
@@ -367,7 +368,7 @@ protected:
   const Neighbourhoods<PointT>* nb_ = nullptr; ///< during compute()
   /** \brief The segmented surface points, searched within the reach, during compute().
    */
-  typename search::NanoflannKdTree<PointT>::Ptr reach_tree_;
+  NearestOfEachSegment<PointT> partners_; ///< over the segments' border points
   /** \brief During compute(): per point, its slot in border_planes_ (-1: none); per
    * border point, its plane and whether the fit succeeded. */
   std::vector<std::int32_t> border_slot_;

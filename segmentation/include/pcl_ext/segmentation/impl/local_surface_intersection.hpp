@@ -5,6 +5,7 @@
 
 #include <pcl_ext/common/indices.h>
 #include <pcl_ext/common/parallel.h>
+#include <pcl_ext/segmentation/impl/nearest_of_each_segment.hpp>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 
 #include <pcl/common/point_tests.h>
@@ -167,50 +168,26 @@ pcl_ext::LocalSurfaceIntersection<PointT>::isInterior (pcl::index_t i) const
 template <typename PointT>
 void
 pcl_ext::LocalSurfaceIntersection<PointT>::nearestOfEachSegment (
-    pcl::index_t i,
-    std::uint32_t own,
+    const pcl::Indices& queries,
     SearchBuffers& buffers,
+    std::vector<std::size_t>& offsets,
     std::vector<pcl::index_t>& nearest) const
 {
-  nearest.clear();
-  const double reach = reachOf (i);
-  if (!(reach > 0.0) || !reach_tree_->getInputCloud())
-    return;
-  // Unsorted results (the reach holds many border points; only each segment's nearest
-  // is wanted): the minimum per segment, by distance and then index.
-  reach_tree_->radiusSearch (
-      (*input_)[i], reach, buffers.indices, buffers.sqr_distances);
-  auto& best = buffers.nearest;
-  best.clear();
-  for (std::size_t r = 0; r < buffers.indices.size(); ++r) {
-    const pcl::index_t j = buffers.indices[r];
-    const std::uint32_t s = segmentOf (j);
-    if (j == i || s == own)
-      continue;
-    const std::pair<float, pcl::index_t> candidate (buffers.sqr_distances[r], j);
-    const auto same =
-        std::find_if (best.begin(), best.end(), [this, s] (const auto& b) {
-          return segmentOf (b.second) == s;
-        });
-    if (same == best.end())
-      best.push_back (candidate);
-    else if (candidate < *same)
-      *same = candidate;
-  }
-  std::sort (best.begin(), best.end());
-  for (const auto& b : best)
-    nearest.push_back (b.second);
+  buffers.reaches.resize (queries.size());
+  for (std::size_t q = 0; q < queries.size(); ++q)
+    buffers.reaches[q] = reachOf (queries[q]);
+  partners_.find (queries, buffers.reaches, buffers.scratch, offsets, nearest);
 }
 
 template <typename PointT>
 void
-pcl_ext::LocalSurfaceIntersection<PointT>::intersect (std::vector<Record>& records)
+pcl_ext::LocalSurfaceIntersection<PointT>::intersect (
+    const std::vector<std::uint8_t>& on_border, std::vector<Record>& records)
 {
   const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size());
   const std::ptrdiff_t chunks =
       (rows + detail::kIntersectionChunk - 1) / detail::kIntersectionChunk;
   std::vector<std::vector<Record>> chunk_records (static_cast<std::size_t> (chunks));
-  const auto surface = static_cast<std::uint32_t> (PointClass::Surface);
   const auto radius = [this] (pcl::index_t i) {
     const auto row = (*nb_)[static_cast<std::size_t> (i)];
     return row.empty() ? 0.0
@@ -220,25 +197,30 @@ pcl_ext::LocalSurfaceIntersection<PointT>::intersect (std::vector<Record>& recor
 
 #pragma omp parallel num_threads(resolveThreadCount(threads_))
   {
-    pcl::Indices buffer;
+    pcl::Indices buffer, queries;
     SearchBuffers search;
+    std::vector<std::size_t> offsets;
     std::vector<pcl::index_t> nearest;
     LocalPlane plane1, plane2;
 #pragma omp for schedule(dynamic, 1)
     for (std::ptrdiff_t c = 0; c < chunks; ++c) {
       auto& out = chunk_records[static_cast<std::size_t> (c)];
       const std::ptrdiff_t end = std::min (rows, (c + 1) * detail::kIntersectionChunk);
+      queries.clear();
       for (std::ptrdiff_t r = c * detail::kIntersectionChunk; r < end; ++r) {
         const pcl::index_t i = (*indices_)[r];
+        if (on_border[static_cast<std::size_t> (i)])
+          queries.push_back (i);
+      }
+      nearestOfEachSegment (queries, search, offsets, nearest);
+      for (std::size_t q = 0; q < queries.size(); ++q) {
+        const pcl::index_t i = queries[q];
         const PointT& pi = (*input_)[i];
-        if (classOf (i) != surface || segmentOf (i) == 0 || !pcl::isFinite (pi) ||
-            isInterior (i))
-          continue;
-        nearestOfEachSegment (i, segmentOf (i), search, nearest);
-        if (nearest.empty())
+        if (offsets[q] == offsets[q + 1])
           continue;
         const bool have_plane1 = planeOf (i, buffer, plane1);
-        for (const pcl::index_t j : nearest) {
+        for (std::size_t o = offsets[q]; o < offsets[q + 1]; ++o) {
+          const pcl::index_t j = nearest[o];
           Record record;
           record.a = i;
           record.b = j;
@@ -341,75 +323,88 @@ pcl_ext::LocalSurfaceIntersection<PointT>::reintegrate (
   }
 
   const std::ptrdiff_t rows = static_cast<std::ptrdiff_t> (indices_->size());
+  const std::ptrdiff_t chunks =
+      (rows + detail::kIntersectionChunk - 1) / detail::kIntersectionChunk;
   const auto edge = static_cast<std::uint32_t> (PointClass::Edge);
   const auto boundary = static_cast<std::uint32_t> (PointClass::Boundary);
   std::size_t examined = 0, reintegrated = 0, ambiguous = 0, left = 0;
 #pragma omp parallel num_threads(resolveThreadCount (threads_)) \
     reduction(+ : examined, reintegrated, ambiguous, left)
   {
-    pcl::Indices buffer;
+    pcl::Indices buffer, queries;
     SearchBuffers search;
+    std::vector<std::size_t> rows_of_nearest;
     std::vector<pcl::index_t> nearest;
     LocalPlane plane;
-#pragma omp for schedule(dynamic, 64)
-    for (std::ptrdiff_t r = 0; r < rows; ++r) {
-      const pcl::index_t q = (*indices_)[r];
-      const std::uint32_t c = classOf (q);
-      const PointT& pq = (*input_)[q];
-      if ((c != edge && c != boundary) || segmentOf (q) != 0 || !pcl::isFinite (pq))
-        continue;
-      ++examined;
-      const Eigen::Vector3d x (pq.x, pq.y, pq.z);
-      nearestOfEachSegment (q, 0, search, nearest);
-      std::size_t fits = 0;
-      pcl::index_t best = -1;
-      double best_residual = std::numeric_limits<double>::infinity();
-      for (const pcl::index_t j : nearest) {
-        if (!planeOf (j, buffer, plane))
-          continue;
-        // The floor only matters on noise-free data, where the RMS is round-off.
-        const double tolerance =
-            fit_tolerance_ > 0.0
-                ? fit_tolerance_
-                : std::max (3.0 * plane.residualSigma (x), 1e-4 * plane.spread());
-        const double residual = std::abs (plane.signedDistance (x));
-        if (residual > tolerance)
-          continue;
-        // "Within the circles": not beyond any intersection line of this surface point,
-        // on its own plane.
-        const PointT& pj = (*input_)[j];
-        const Eigen::Vector3d p (pj.x, pj.y, pj.z);
-        bool inside = true;
-        for (std::size_t o = offsets[static_cast<std::size_t> (j)];
-             inside && o < offsets[static_cast<std::size_t> (j) + 1];
-             ++o) {
-          const Record& rec = records[of_point[o]];
-          const Eigen::Vector3d across =
-              plane.normal.cross (rec.direction).normalized();
-          const double own_side = across.dot (p - rec.point);
-          if (std::abs (own_side) <= tolerance)
-            continue; // the point lies on the line: no side to keep
-          const double side = across.dot (x - rec.point);
-          inside = (own_side > 0.0 ? side : -side) >= -tolerance;
-        }
-        if (!inside)
-          continue;
-        ++fits;
-        if (residual < best_residual) {
-          best_residual = residual;
-          best = j;
-        }
+#pragma omp for schedule(dynamic, 1)
+    for (std::ptrdiff_t chunk = 0; chunk < chunks; ++chunk) {
+      const std::ptrdiff_t end =
+          std::min (rows, (chunk + 1) * detail::kIntersectionChunk);
+      queries.clear();
+      for (std::ptrdiff_t r = chunk * detail::kIntersectionChunk; r < end; ++r) {
+        const pcl::index_t q = (*indices_)[r];
+        const std::uint32_t c = classOf (q);
+        if ((c == edge || c == boundary) && segmentOf (q) == 0 &&
+            pcl::isFinite ((*input_)[q]))
+          queries.push_back (q);
       }
-      if (fits == 0)
-        ++left;
-      else if (fits == 1) {
-        ++reintegrated;
-        labels[q].label = segmentOf (best);
-      }
-      else {
-        ++ambiguous;
-        if (assign_ambiguous_)
+      examined += queries.size();
+      nearestOfEachSegment (queries, search, rows_of_nearest, nearest);
+      for (std::size_t row = 0; row < queries.size(); ++row) {
+        const pcl::index_t q = queries[row];
+        const PointT& pq = (*input_)[q];
+        const Eigen::Vector3d x (pq.x, pq.y, pq.z);
+        std::size_t fits = 0;
+        pcl::index_t best = -1;
+        double best_residual = std::numeric_limits<double>::infinity();
+        for (std::size_t o = rows_of_nearest[row]; o < rows_of_nearest[row + 1]; ++o) {
+          const pcl::index_t j = nearest[o];
+          if (!planeOf (j, buffer, plane))
+            continue;
+          // The floor only matters on noise-free data, where the RMS is round-off.
+          const double tolerance =
+              fit_tolerance_ > 0.0
+                  ? fit_tolerance_
+                  : std::max (3.0 * plane.residualSigma (x), 1e-4 * plane.spread());
+          const double residual = std::abs (plane.signedDistance (x));
+          if (residual > tolerance)
+            continue;
+          // "Within the circles": not beyond any intersection line of this surface
+          // point, on its own plane.
+          const PointT& pj = (*input_)[j];
+          const Eigen::Vector3d p (pj.x, pj.y, pj.z);
+          bool inside = true;
+          for (std::size_t o = offsets[static_cast<std::size_t> (j)];
+               inside && o < offsets[static_cast<std::size_t> (j) + 1];
+               ++o) {
+            const Record& rec = records[of_point[o]];
+            const Eigen::Vector3d across =
+                plane.normal.cross (rec.direction).normalized();
+            const double own_side = across.dot (p - rec.point);
+            if (std::abs (own_side) <= tolerance)
+              continue; // the point lies on the line: no side to keep
+            const double side = across.dot (x - rec.point);
+            inside = (own_side > 0.0 ? side : -side) >= -tolerance;
+          }
+          if (!inside)
+            continue;
+          ++fits;
+          if (residual < best_residual) {
+            best_residual = residual;
+            best = j;
+          }
+        }
+        if (fits == 0)
+          ++left;
+        else if (fits == 1) {
+          ++reintegrated;
           labels[q].label = segmentOf (best);
+        }
+        else {
+          ++ambiguous;
+          if (assign_ambiguous_)
+            labels[q].label = segmentOf (best);
+        }
       }
     }
   }
@@ -479,14 +474,14 @@ pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersect
     deinitCompute();
     return false;
   }
-  reach_tree_.reset (new search::NanoflannKdTree<PointT> (false));
-  if (!border->empty())
-    reach_tree_->setInputCloud (input_, border);
+  partners_.setInput (input_, segments_, border);
 
   fitBorderPlanes (*border);
 
+  for (auto& k : kind)
+    k = k == 2;
   std::vector<Record> records;
-  intersect (records);
+  intersect (kind, records);
   labels = *segments_;
   reintegrate (records, labels);
   border_slot_ = std::vector<std::int32_t>();
@@ -509,7 +504,7 @@ pcl_ext::LocalSurfaceIntersection<PointT>::compute (IntersectionCloud& intersect
   intersections.is_dense = true;
 
   nb_ = nullptr;
-  reach_tree_.reset();
+  partners_.clear();
   this->releaseNeighbourhoods();
   deinitCompute();
   return true;
