@@ -154,9 +154,16 @@ pcl_ext::VarianceRegionGrowing<PointT>::extract (
             max_sqr,
             static_cast<float> (f2 * 3.141592653589793 / static_cast<double> (m)) *
                 nb->getSquaredDistance (r, m));
-      std::size_t within = 0;
-      while (within < row_size && !(nb->getSquaredDistance (r, within) > limit))
-        ++within;
+      // The row is sorted by distance, so those within the limit are a prefix: its
+      // length by bisection.
+      std::size_t within = 0, beyond = row_size;
+      while (within < beyond) {
+        const std::size_t middle = within + (beyond - within) / 2;
+        if (nb->getSquaredDistance (r, middle) > limit)
+          beyond = middle;
+        else
+          within = middle + 1;
+      }
       reach[r] = static_cast<std::uint32_t> (within);
     }
   }
