@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -150,4 +151,45 @@ TEST (NearestOfEachSegment, NoCandidatesOrNoReachGiveEmptyRows)
   partners.clear();
   partners.find (queries, {0.5, 0.5, 0.5}, scratch, offsets, nearest);
   EXPECT_TRUE (nearest.empty());
+}
+
+TEST (NearestOfEachSegment, BadInputGivesEmptyRows)
+{
+  const Scene s = makeScene (0.0);
+  Partners partners;
+  Partners::Scratch scratch;
+  std::vector<std::size_t> offsets;
+  std::vector<pcl::index_t> nearest;
+  // Labels not one per point: no tree, empty rows.
+  LabelCloud::Ptr short_labels (new LabelCloud);
+  short_labels->resize (s.cloud->size() - 1);
+  partners.setInput (s.cloud, short_labels, s.candidates);
+  partners.find ({0, 1}, {0.5, 0.5}, scratch, offsets, nearest);
+  EXPECT_EQ (offsets, (std::vector<std::size_t>{0, 0, 0}));
+  EXPECT_TRUE (nearest.empty());
+  partners.setInput (nullptr, s.segments, s.candidates);
+  partners.find ({0, 1}, {0.5, 0.5}, scratch, offsets, nearest);
+  EXPECT_TRUE (nearest.empty());
+  // A query index out of range: empty rows, whatever the others.
+  partners.setInput (s.cloud, s.segments, s.candidates);
+  const auto n = static_cast<pcl::index_t> (s.cloud->size());
+  partners.find ({0, n, -1}, {0.5, 0.5, 0.5}, scratch, offsets, nearest);
+  EXPECT_EQ (offsets.size(), 4u);
+  EXPECT_TRUE (nearest.empty());
+  // Candidates out of range or not finite, and a query that is not finite: left out.
+  Scene with_nan = makeScene (0.0);
+  (*with_nan.cloud)[5].x = std::numeric_limits<float>::quiet_NaN();
+  pcl::IndicesPtr candidates (new pcl::Indices (*with_nan.candidates));
+  candidates->push_back (-3);
+  candidates->push_back (n + 10);
+  candidates->push_back (5);
+  partners.setInput (with_nan.cloud, with_nan.segments, candidates);
+  partners.find ({5, 100}, {0.5, 0.3}, scratch, offsets, nearest);
+  ASSERT_EQ (offsets.size(), 3u);
+  EXPECT_EQ (offsets[1], 0u); // the NaN query has none
+  const std::vector<pcl::index_t> row (nearest.begin() + offsets[1],
+                                       nearest.begin() + offsets[2]);
+  EXPECT_EQ (row, bruteForce (with_nan, 100, 0.3));
+  EXPECT_FALSE (row.empty());
+  EXPECT_EQ (std::count (nearest.begin(), nearest.end(), 5), 0);
 }

@@ -7,7 +7,6 @@
 #include <pcl_ext/common/covariance.h>
 #include <pcl_ext/common/plane.h>
 
-#include <pcl/common/point_tests.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 #include <pcl/types.h>
@@ -122,13 +121,7 @@ pcl_ext::fitLocalPlane (const pcl::PointCloud<PointT>& cloud,
                         const Eigen::Vector3d* normal,
                         LocalPlane& plane)
 {
-  CovarianceSums sums;
-  for (IndexIterator it = begin; it != end; ++it) {
-    const PointT& p = cloud[static_cast<std::size_t> (*it)];
-    if (pcl::isFinite (p))
-      sums.add (Eigen::Vector3d (p.x, p.y, p.z));
-  }
-  return fitLocalPlane (sums, normal, plane);
+  return fitLocalPlane (sumFinitePoints (cloud, begin, end), normal, plane);
 }
 
 #ifdef PCL_NO_PRECOMPILE

@@ -366,9 +366,9 @@ protected:
   bool assign_ambiguous_ = true;
 
   const Neighbourhoods<PointT>* nb_ = nullptr; ///< during compute()
-  /** \brief The segmented surface points, searched within the reach, during compute().
+  /** \brief The segments' border points, searched within the reach, during compute().
    */
-  NearestOfEachSegment<PointT> partners_; ///< over the segments' border points
+  NearestOfEachSegment<PointT> partners_;
   /** \brief During compute(): per point, its slot in border_planes_ (-1: none); per
    * border point, its plane and whether the fit succeeded. */
   std::vector<std::int32_t> border_slot_;

@@ -70,7 +70,8 @@ public:
 
   /** \brief The cloud, its segment labels (one per point; the candidates' and the
    * queries' segments are read from it) and the candidate points (indices into the
-   * cloud; finite points only are used). Builds the tree. */
+   * cloud; finite points in range only are used). Builds the tree. Labels that are
+   * not one per point: PCL_ERROR, and find() gives empty rows. */
   void
   setInput (const typename Cloud::ConstPtr& cloud,
             const typename LabelCloud::ConstPtr& segments,
@@ -84,7 +85,8 @@ public:
    * reaches[q] (0 or less: no partners), the nearest candidate of each other segment
    * within the reach, closest first, as row q: nearest[offsets[q] .. offsets[q + 1]).
    * A query's own segment is the label of its point (0: none, so every segment is
-   * another). */
+   * another); a query that is not finite has none. Not one reach per query, or a query
+   * index out of range: PCL_ERROR and empty rows. */
   void
   find (const pcl::Indices& queries,
         const std::vector<double>& reaches,

@@ -92,6 +92,13 @@ private:
   std::size_t n_ = 0;
 };
 
+/** \brief The sums of the finite points of \a cloud[\a begin .. \a end). */
+template <typename PointT, typename IndexIterator>
+CovarianceSums
+sumFinitePoints (const pcl::PointCloud<PointT>& cloud,
+                 IndexIterator begin,
+                 IndexIterator end);
+
 /** \brief Covariance and centroid of a neighbourhood, accumulated in double around a
  * local centre (the first finite point), so that coordinates such as x = 6,000,000 m
  * lose nothing.

@@ -5,6 +5,8 @@
 
 #include <pcl_ext/segmentation/nearest_of_each_segment.h>
 
+#include <pcl/console/print.h>
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -16,12 +18,20 @@ pcl_ext::NearestOfEachSegment<PointT>::setInput (
     const typename LabelCloud::ConstPtr& segments,
     const pcl::IndicesConstPtr& candidates)
 {
+  clear();
+  if (!cloud || !segments || segments->size() != cloud->size()) {
+    PCL_ERROR ("[pcl_ext::NearestOfEachSegment::setInput] %zu segment labels for %zu "
+               "points; give one per point. No partners will be found.\n",
+               segments ? segments->size() : std::size_t (0),
+               cloud ? cloud->size() : std::size_t (0));
+    return;
+  }
   cloud_ = cloud;
   segments_ = segments;
-  // Unsorted radius searches: only each segment's nearest is wanted.
+  // Unsorted radius searches: only each segment's nearest is wanted. Candidates out of
+  // range or not finite are left out of the tree.
   tree_.reset (new search::NanoflannKdTree<PointT> (false));
-  if (cloud_ && segments_ && segments_->size() == cloud_->size() && candidates &&
-      !candidates->empty())
+  if (candidates && !candidates->empty())
     tree_->setInputCloud (cloud_, candidates);
 }
 
@@ -48,8 +58,23 @@ pcl_ext::NearestOfEachSegment<PointT>::find (const pcl::Indices& queries,
   buffers.start.assign (m, 0);
   buffers.length.assign (m, 0);
   buffers.found.clear();
-  if (!tree_ || !tree_->getInputCloud() || reaches.size() != m)
+  if (reaches.size() != m) {
+    PCL_ERROR ("[pcl_ext::NearestOfEachSegment::find] %zu reaches for %zu queries; "
+               "give one per query.\n",
+               reaches.size(),
+               m);
     return;
+  }
+  if (!tree_ || !tree_->getInputCloud())
+    return;
+  for (const auto i : queries)
+    if (i < 0 || static_cast<std::size_t> (i) >= cloud_->size()) {
+      PCL_ERROR ("[pcl_ext::NearestOfEachSegment::find] Query index %d is not a point "
+                 "of the cloud (%zu points).\n",
+                 static_cast<int> (i),
+                 cloud_->size());
+      return;
+    }
   const auto pointOf = [this] (pcl::index_t i) {
     const PointT& p = (*cloud_)[i];
     return Eigen::Vector3d (p.x, p.y, p.z);

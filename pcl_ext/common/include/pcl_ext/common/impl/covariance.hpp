@@ -8,6 +8,21 @@
 #include <pcl/common/point_tests.h>
 
 template <typename PointT, typename IndexIterator>
+pcl_ext::CovarianceSums
+pcl_ext::sumFinitePoints (const pcl::PointCloud<PointT>& cloud,
+                          IndexIterator begin,
+                          IndexIterator end)
+{
+  CovarianceSums sums;
+  for (IndexIterator it = begin; it != end; ++it) {
+    const PointT& p = cloud[static_cast<std::size_t> (*it)];
+    if (pcl::isFinite (p))
+      sums.add (Eigen::Vector3d (p.x, p.y, p.z));
+  }
+  return sums;
+}
+
+template <typename PointT, typename IndexIterator>
 std::size_t
 pcl_ext::computeLocalCovariance (const pcl::PointCloud<PointT>& cloud,
                                  IndexIterator begin,
@@ -18,13 +33,7 @@ pcl_ext::computeLocalCovariance (const pcl::PointCloud<PointT>& cloud,
   // Shift by the first finite point: sums of squares of small numbers keep full
   // precision even for georeferenced coordinates, where a single-pass float formula
   // cancels catastrophically.
-  CovarianceSums sums;
-  for (IndexIterator it = begin; it != end; ++it) {
-    const PointT& p = cloud[static_cast<std::size_t> (*it)];
-    if (pcl::isFinite (p))
-      sums.add (Eigen::Vector3d (p.x, p.y, p.z));
-  }
-  return sums.finish (covariance, centroid);
+  return sumFinitePoints (cloud, begin, end).finish (covariance, centroid);
 }
 
 template <typename PointT, typename IndexIterator>
