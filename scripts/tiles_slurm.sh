@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# pcl_ext_tiles on a cluster without MPI: the plan here, then the estimates, the tiles and the
-# tiles' second pass (segment_variance's section 4; nothing for the other methods) as Slurm
-# array jobs (one task per tile; tile 0 alone first in a pass whose first task reduces what the
-# tiles before it saved: the estimates into the plan, the segments joined), then the merge,
-# each job waiting for the one before.
+# pcl_ext_tiles on a cluster without MPI: the plan here, then the estimates, the tiles, the
+# tiles' second pass (segment_variance's section 4) and their grouping of the points left
+# out (segment_variance's new segments; neither for the other methods) as Slurm array jobs
+# (one task per tile; tile 0 alone first in a pass whose first task reduces what the tiles
+# before it saved: the estimates into the plan, the segments joined), then the merge, each
+# job waiting for the one before.
 # Without sbatch the same steps run here, one after another.
 #
 #   scripts/tiles_slurm.sh METHOD OUTPUT INPUT... [-- OPTIONS]
@@ -60,9 +61,12 @@ if [ "$tiles" -eq 0 ]; then
   exit 1
 fi
 last=$((tiles - 1))
-# A method with a second pass over the tiles has its results file in the plan's folder.
+# A method with a second pass over the tiles, or a pass grouping the points left out,
+# has that pass's results file in the plan's folder.
 second_pass=0
 [ -e "$workdir/refined.bin" ] && second_pass=1
+grow_pass=0
+[ -e "$workdir/grown.bin" ] && grow_pass=1
 
 if ! command -v sbatch >/dev/null 2>&1; then
   echo "sbatch not found: running the $tiles tiles here, one after another."
@@ -77,6 +81,11 @@ if ! command -v sbatch >/dev/null 2>&1; then
       "$tool" refine "$t" -workdir "$workdir" -threads "${threads:-0}"
     done
   fi
+  if [ "$grow_pass" -eq 1 ]; then
+    for t in $(seq 0 "$last"); do
+      "$tool" grow "$t" -workdir "$workdir" -threads "${threads:-0}"
+    done
+  fi
   exec "$tool" merge "$output" -workdir "$workdir"
 fi
 
@@ -87,7 +96,7 @@ q() { printf '%q' "$1"; }
 estimate=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_estimate --array="0-$last" \
   --wrap="$(q "$tool") estimate \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads")
 # A pass over the tiles after job $2: tile 0 alone first (in the tiles' pass it reduces the
-# estimates into the plan, in the second it joins the segments: what the others read), then
+# estimates into the plan, in the later passes it joins the segments: what the others read), then
 # the other tiles as an array job. Prints the last job's id.
 submit_pass() {
   local step="$1" after="$2" job
@@ -106,8 +115,10 @@ submit_pass() {
 tile=$(submit_pass tile "${estimate%%;*}")
 refine="$tile"
 [ "$second_pass" -eq 1 ] && refine=$(submit_pass refine "$tile")
+grow="$refine"
+[ "$grow_pass" -eq 1 ] && grow=$(submit_pass grow "$refine")
 merge=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_merge \
-  --dependency="afterok:$refine" \
+  --dependency="afterok:$grow" \
   --wrap="$(q "$tool") merge $(q "$output") -workdir $(q "$workdir")")
-echo "Submitted: estimates ${estimate%%;*} (array 0-$last), tiles up to $tile,$([ "$second_pass" -eq 1 ] && echo " second pass up to $refine,") merge ${merge%%;*}."
+echo "Submitted: estimates ${estimate%%;*} (array 0-$last), tiles up to $tile,$([ "$second_pass" -eq 1 ] && echo " second pass up to $refine,")$([ "$grow_pass" -eq 1 ] && echo " points left out grouped up to $grow,") merge ${merge%%;*}."
 echo "After a failure: $tool resume $output -workdir $workdir"

@@ -2,9 +2,10 @@
  * pcl_ext_tiles segment_variance run as a command: generated scenes segmented tile by
  * tile, in one command, in steps and shared among MPI ranks, give the segments of
  * pcl_ext_segment_variance on the whole cloud (the same partition of the points, and
- * the same ids: largest first), with section 4's re-integration (-reintegrate, a second
- * pass over the tiles) and without it (the tiles' default); a wall across four tiles'
- * corner is one segment; a tile that owns no point, a tile of one point and points
+ * the same ids: largest first), with section 4's re-integration and the new segments
+ * among the points left out (-reintegrate: a second and a third pass over the tiles)
+ * and without them (the tiles' default); a wall across four tiles' corner is one
+ * segment; a tile that owns no point, a tile of one point and points
  * without coordinates change nothing.
  */
 #include "../app_test.h"
@@ -98,9 +99,9 @@ class TilesSegmentsApp : public pcl_ext::test::AppTest {
 protected:
   TilesSegmentsApp() : AppTest (PCL_EXT_TILES_EXE) {}
 
-  /** Generate \a scene (60,000 points) and segment it whole with \a options (none:
-   * the defaults, section 4's re-integration included) less the growing of new
-   * segments among the points left out, which the tiles tool does not run. */
+  /** Generate \a scene (60,000 points, seed 2) and segment it whole with \a options
+   * (none: the defaults, section 4's re-integration and the new segments among the
+   * points left out included). */
   void
   makeScene (const std::string& scene, const std::string& options = "")
   {
@@ -110,8 +111,7 @@ protected:
     ASSERT_EQ (std::system (generate.c_str()), 0);
     const std::string whole = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " '" +
                               path ("scene.pcd") + "' '" + path ("whole.las") +
-                              "' -output_field seg -no_leftovers " + options +
-                              " > /dev/null 2>&1";
+                              "' -output_field seg " + options + " > /dev/null 2>&1";
     ASSERT_EQ (std::system (whole.c_str()), 0);
     whole_ = readSegments (path ("whole.las"));
     ASSERT_FALSE (whole_.ids.empty());
@@ -178,6 +178,33 @@ TEST_F (TilesSegmentsApp, SectionsTwoAndThreeAloneByDefault)
   EXPECT_GT (after, before + whole_.ids.size() / 20);
 }
 
+TEST_F (TilesSegmentsApp, TheNewSegmentsAmongThePointsLeftOutAreTheWholeClouds)
+{
+  // The pipes of the pipes scene have no surface point to grow from: the new segments
+  // among the points left out (on by default with section 4) are most of them. Their
+  // links reach across the tiles' borders and are joined there; their sizes and ids
+  // are the whole cloud's.
+  makeScene ("pipes");
+  const std::string without = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " '" +
+                              path ("scene.pcd") + "' '" + path ("without.las") +
+                              "' -output_field seg -no_leftovers > /dev/null 2>&1";
+  ASSERT_EQ (std::system (without.c_str()), 0);
+  const Segments before = readSegments (path ("without.las"));
+  const std::set<std::uint32_t> ids_before (before.ids.begin(), before.ids.end());
+  const std::set<std::uint32_t> ids (whole_.ids.begin(), whole_.ids.end());
+  ASSERT_GT (ids.size(), ids_before.size() + 5); // new segments
+  ASSERT_EQ (runTiled ("t4.las", "-tile_size 4 -reintegrate"), 0) << output_;
+  EXPECT_NE (output_.find ("points left out grouped"), std::string::npos) << output_;
+  expectSameAsWhole ("t4.las");
+
+  // Without section 4 when asked for (-leftovers): a second pass, not a third.
+  makeScene ("indoor", "-no_reintegrate -leftovers");
+  ASSERT_EQ (runTiled ("l3.las", "-tile_size 3 -leftovers"), 0) << output_;
+  EXPECT_EQ (output_.find (", second pass"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("points left out grouped"), std::string::npos) << output_;
+  expectSameAsWhole ("l3.las");
+}
+
 TEST_F (TilesSegmentsApp, AWallAcrossFourTilesCornerIsOneSegment)
 {
   // The room's wall y = 0 lies on a row of tile borders (tiles on multiples of 3 m),
@@ -229,8 +256,15 @@ TEST_F (TilesSegmentsApp, StepsInAnyOrderGiveTheSameSegments)
   // Section 4: a second pass over the tiles, after all of them.
   ASSERT_EQ (run ("merge " + path ("early.las") + work), 1);
   EXPECT_NE (output_.find ("refine I"), std::string::npos) << output_;
+  // The new segments among the points left out: a third pass, once every tile has
+  // run the second.
+  ASSERT_EQ (run ("grow 0" + work), 1);
   for (std::size_t t = tiles; t-- > 0;)
     ASSERT_EQ (run ("refine " + std::to_string (t) + work), 0) << output_;
+  ASSERT_EQ (run ("merge " + path ("early.las") + work), 1);
+  EXPECT_NE (output_.find ("grow I"), std::string::npos) << output_;
+  for (std::size_t t = tiles; t-- > 0;)
+    ASSERT_EQ (run ("grow " + std::to_string (t) + work), 0) << output_;
   ASSERT_EQ (run ("merge " + path ("steps.las") + work), 0) << output_;
   expectSameAsWhole ("steps.las");
 }
@@ -238,8 +272,9 @@ TEST_F (TilesSegmentsApp, StepsInAnyOrderGiveTheSameSegments)
 TEST_F (TilesSegmentsApp, SlurmScriptRunsTheSecondPassAfterTheTiles)
 {
   // scripts/tiles_slurm.sh with a stand-in sbatch: estimates, tile 0, the other tiles,
-  // then the second pass (tile 0 alone, as it joins the segments, then the others) and
-  // the merge; the untiled tool's bytes.
+  // then the second pass (tile 0 alone, as it joins the segments, then the others), the
+  // third (the points left out grouped, likewise) and the merge; the untiled tool's
+  // bytes.
   makeScene ("indoor");
   const std::string shims = path ("shims");
   pcl_ext::test::writeSbatchShim (shims);
@@ -252,7 +287,7 @@ TEST_F (TilesSegmentsApp, SlurmScriptRunsTheSecondPassAfterTheTiles)
   ASSERT_EQ (std::system (command.c_str()), 0);
   expectSameAsWhole ("slurm.las");
   const std::vector<std::string> jobs = pcl_ext::test::sbatchJobs (shims);
-  ASSERT_EQ (jobs.size(), 6u);
+  ASSERT_EQ (jobs.size(), 8u);
   EXPECT_NE (jobs[0].find (" estimate $SLURM_ARRAY_TASK_ID"), std::string::npos);
   EXPECT_NE (jobs[1].find (" tile 0"), std::string::npos) << jobs[1];
   EXPECT_NE (jobs[2].find (" tile $SLURM_ARRAY_TASK_ID"), std::string::npos);
@@ -260,7 +295,11 @@ TEST_F (TilesSegmentsApp, SlurmScriptRunsTheSecondPassAfterTheTiles)
   EXPECT_NE (jobs[3].find (" refine 0"), std::string::npos) << jobs[3];
   EXPECT_EQ (jobs[4].rfind ("array=1-", 0), 0u) << jobs[4];
   EXPECT_NE (jobs[4].find (" refine $SLURM_ARRAY_TASK_ID"), std::string::npos);
-  EXPECT_NE (jobs[5].find (" merge "), std::string::npos) << jobs[5];
+  EXPECT_EQ (jobs[5].rfind ("array=none ", 0), 0u) << jobs[5];
+  EXPECT_NE (jobs[5].find (" grow 0"), std::string::npos) << jobs[5];
+  EXPECT_EQ (jobs[6].rfind ("array=1-", 0), 0u) << jobs[6];
+  EXPECT_NE (jobs[6].find (" grow $SLURM_ARRAY_TASK_ID"), std::string::npos);
+  EXPECT_NE (jobs[7].find (" merge "), std::string::npos) << jobs[7];
 }
 
 TEST_F (TilesSegmentsApp, AnEarlierRunsWorkFolderIsClearedByANewPlan)
@@ -279,7 +318,7 @@ TEST_F (TilesSegmentsApp, AnEarlierRunsWorkFolderIsClearedByANewPlan)
   ASSERT_EQ (std::system (generate.c_str()), 0);
   const std::string whole = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " '" +
                             path ("scene.pcd") + "' '" + path ("whole.las") +
-                            "' -output_field seg -no_leftovers > /dev/null 2>&1";
+                            "' -output_field seg > /dev/null 2>&1";
   ASSERT_EQ (std::system (whole.c_str()), 0);
   whole_ = readSegments (path ("whole.las"));
   ASSERT_EQ (runTiled ("second.las", "-tile_size 3" + work), 0) << output_;
@@ -321,8 +360,7 @@ TEST_F (TilesSegmentsApp, ATileOfOnePointAndPointsWithoutCoordinates)
   pcd.close();
   const std::string whole = std::string (PCL_EXT_SEGMENT_VARIANCE_EXE) + " '" +
                             path ("scene.pcd") + "' '" + path ("whole.pcd") +
-                            "' -output_field seg -no_leftovers > '" +
-                            path ("whole.log") + "' 2>&1";
+                            "' -output_field seg > '" + path ("whole.log") + "' 2>&1";
   ASSERT_EQ (std::system (whole.c_str()), 0);
   whole_ = readSegments (path ("whole.pcd"));
   ASSERT_EQ (whole_.ids.size(), points.size());

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -195,6 +196,71 @@ TEST (LeftoverRegionGrowing, NaNPointsStayWithoutSegment)
   EXPECT_NE (leftoverMajority (s, out, kPipe).first, 0u);
 }
 
+TEST (LeftoverRegionGrowing, OnlyTheLinkingPointsMakeLinks)
+{
+  // Links made from the points with x < 0.75 only: the rest of the pipe, and the two
+  // faces (x >= 1.35), link nothing of their own and stay without a segment, but for
+  // the pipe's points within a neighbourhood of x = 0.75, linked to from the left.
+  const LeftoverScene s = makeLeftoverScene();
+  const auto growFrom = [&s] (bool left, pcl::uindex_t min_size) {
+    auto linking = pcl::make_shared<pcl::Indices>();
+    for (std::size_t i = 0; i < s.cloud->size(); ++i)
+      if (((*s.cloud)[i].x < 0.75f) == left)
+        linking->push_back (static_cast<pcl::index_t> (i));
+    pcl_ext::LeftoverRegionGrowing<Point> growing;
+    growing.setInputCloud (s.cloud);
+    growing.setSegmentLabels (s.labels);
+    growing.setLinkingIndices (linking);
+    growing.setMinClusterSize (min_size);
+    Labels out;
+    EXPECT_TRUE (growing.compute (out));
+    return out;
+  };
+  const Labels left = growFrom (true, 50);
+  ASSERT_EQ (left.size(), s.cloud->size());
+  const auto pipe = leftoverMajority (s, left, kPipe);
+  ASSERT_NE (pipe.first, 0u);
+  for (std::size_t i = 0; i < s.part.size(); ++i) {
+    const float x = (*s.cloud)[i].x;
+    if (s.part[i] == kPipe && x < 0.7f)
+      EXPECT_EQ (left[i].label, pipe.first) << i;
+    if ((s.part[i] == kPipe && x > 0.8f) || s.part[i] == kFaceA || s.part[i] == kFaceB)
+      EXPECT_EQ (left[i].label, 0u) << i;
+  }
+
+  // The groups of two runs whose linking points part the cloud, joined through the
+  // points both group (every one, with groups of one point kept), are the groups of
+  // one run over the whole cloud: every link is made in one of the two.
+  pcl_ext::LeftoverRegionGrowing<Point> whole;
+  whole.setInputCloud (s.cloud);
+  whole.setSegmentLabels (s.labels);
+  whole.setMinClusterSize (1);
+  Labels all;
+  ASSERT_TRUE (whole.compute (all));
+  const Labels a = growFrom (true, 1), b = growFrom (false, 1);
+  std::map<std::uint32_t, std::uint32_t> parent; // over a's labels and b's + 2^31
+  const std::function<std::uint32_t (std::uint32_t)> find = [&] (std::uint32_t x) {
+    auto it = parent.emplace (x, x).first;
+    return it->second == x ? x : (it->second = find (it->second));
+  };
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (s.part[i] != kSegmentedPlane) {
+      ASSERT_NE (a[i].label, 0u) << i;
+      ASSERT_NE (b[i].label, 0u) << i;
+      parent[find (a[i].label)] = find (b[i].label + (1u << 31));
+    }
+  std::map<std::uint32_t, std::uint32_t> joined_to_whole, whole_to_joined;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (s.part[i] == kSegmentedPlane)
+      continue;
+    const std::uint32_t j = find (a[i].label);
+    EXPECT_EQ (joined_to_whole.emplace (j, all[i].label).first->second, all[i].label)
+        << i;
+    EXPECT_EQ (whole_to_joined.emplace (all[i].label, j).first->second, j) << i;
+  }
+  EXPECT_GT (joined_to_whole.size(), 3u); // the pipe, the faces and small groups
+}
+
 TEST (LeftoverRegionGrowing, BadInputIsRefusedWithEmptyOutput)
 {
   const LeftoverScene s = makeLeftoverScene();
@@ -225,6 +291,9 @@ TEST (LeftoverRegionGrowing, BadInputIsRefusedWithEmptyOutput)
     auto indices = pcl::make_shared<pcl::Indices> (
         pcl::Indices{0, static_cast<pcl::index_t> (s.cloud->size())});
     g.setIndices (indices);
+  }));
+  EXPECT_TRUE (refuses ([] (G& g) {
+    g.setLinkingIndices (pcl::make_shared<pcl::Indices> (pcl::Indices{-1}));
   }));
 }
 

@@ -1,7 +1,8 @@
 /*
- * pcl_ext_tiles: the second pass over the tiles of a method that has one (Belton &
- * Lichti's section 4 after their segmentation): the tiles' segments joined and numbered
- * over the whole cloud, then each tile again with them.
+ * pcl_ext_tiles: the passes over the tiles after the first, for a method that has them:
+ * the tiles' segments joined and numbered over the whole cloud, then each tile again
+ * with them (Belton & Lichti's section 4 after their segmentation), and a pass that
+ * groups the points left without a segment (new segments among them).
  */
 #include "second_pass_steps.h"
 #include "tile_steps.h"
@@ -14,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <sys/stat.h>
@@ -27,13 +30,73 @@ joinedPath (const std::string& workdir)
 {
   return workdir + "/segments.joined";
 }
+
+/** Each point of \a c's segment as its owner numbered it, over the whole cloud
+ * (kNoSegment for none), its owners' ids read once into \a ids_of_tile. */
+bool
+readJoinedSegments (const std::string& workdir,
+                    const TileCloud& c,
+                    std::map<std::uint32_t, std::vector<std::uint32_t>>& ids_of_tile,
+                    std::vector<std::uint32_t>& segments)
+{
+  std::vector<std::uint32_t> owner_labels, ids;
+  if (!tiling::TileResults::readAt (workdir, c.indices, owner_labels))
+    return false;
+  segments.assign (c.indices.size(), tiling::SegmentMerge::kNoSegment);
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const std::uint32_t owner = c.owners[i];
+    if (owner_labels[i] == tiling::TileResults::kNoResult)
+      continue;
+    auto found = ids_of_tile.find (owner);
+    if (found == ids_of_tile.end()) {
+      if (!tiling::loadSegmentIds (workdir, owner, ids))
+        return false;
+      found = ids_of_tile.emplace (owner, ids).first;
+    }
+    if (owner_labels[i] < found->second.size())
+      segments[i] = found->second[owner_labels[i]];
+  }
+  return true;
+}
+
+/** The tiles of \a workdir that have not finished the passes before \a pass (named and
+ * how to run them printed). \return whether every one has */
+bool
+passesBeforeDone (const TileMethod& method,
+                  const std::string& workdir,
+                  std::size_t tiles,
+                  const std::string& pass)
+{
+  for (const auto& p : passesOf (method)) {
+    if (p == pass)
+      break;
+    const auto missing = tiling::findTilesNotDone (workdir, tiles, p);
+    if (!missing.empty()) {
+      reportTilesNotDone (workdir, missing, p);
+      return false;
+    }
+  }
+  return true;
+}
+
+/** The points/s line of a pass over \a cloud that took \a ms milliseconds. */
+void
+reportPass (const TileCloud& cloud, double ms)
+{
+  std::cout << "  " << cloud.indices.size() - cloud.core_points
+            << " halo points, margin " << std::defaultfloat << std::setprecision (3)
+            << cloud.margin << " m, "
+            << static_cast<long long> (cloud.core_points / std::max (ms, 1.0) * 1e3)
+            << " points/s\n";
+}
 } // namespace
 
 bool
 joinStep (const tiling::TilePlan& plan, TileMethod& method, const std::string& workdir)
 {
   struct stat st;
-  if (!method.needsRefine() || ::stat (joinedPath (workdir).c_str(), &st) == 0)
+  if ((!method.needsRefine() && !method.needsGrow()) ||
+      ::stat (joinedPath (workdir).c_str(), &st) == 0)
     return true;
   const std::size_t tiles = plan.getGrid().size();
   const auto missing = tiling::findTilesNotDone (workdir, tiles);
@@ -74,6 +137,20 @@ joinStep (const tiling::TilePlan& plan, TileMethod& method, const std::string& w
 }
 
 bool
+loadJoinedSegmentCount (const std::string& workdir, std::uint32_t& count)
+{
+  std::ifstream in (joinedPath (workdir));
+  unsigned long long n = 0;
+  if (!(in >> n) || n > tiling::SegmentMerge::kNoSegment) {
+    std::cerr << "Error: the segments of " << workdir << " were not joined ("
+              << joinedPath (workdir) << " missing or broken).\n";
+    return false;
+  }
+  count = static_cast<std::uint32_t> (n);
+  return true;
+}
+
+bool
 refineStep (const tiling::TilePlan& plan,
             TileMethod& method,
             const std::string& workdir,
@@ -91,7 +168,7 @@ refineStep (const tiling::TilePlan& plan,
   method.setNumberOfThreads (threads);
   NeighbourhoodReach reach = method.getReach();
   reach.hops = 1;
-  std::vector<std::uint32_t> owner_labels, segments, values, labels, ids;
+  std::vector<std::uint32_t> segments, values, labels;
   std::map<std::uint32_t, std::vector<std::uint32_t>> ids_of_tile;
   // Every tile's largest radius, rounded up to a float as saved, and the margin this
   // tile's first pass estimated for it.
@@ -110,24 +187,9 @@ refineStep (const tiling::TilePlan& plan,
       margin = saved[1];
   }
   const auto refine = [&] (const TileCloud& c) {
-    if (!tiling::TileResults::readAt (workdir, c.indices, owner_labels) ||
+    if (!readJoinedSegments (workdir, c, ids_of_tile, segments) ||
         !tiling::TileResults::readAt (workdir, c.indices, values, kRefineValues))
       return false;
-    // Each point's segment as its owner numbered it, over the whole cloud.
-    segments.assign (c.indices.size(), tiling::SegmentMerge::kNoSegment);
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-      const std::uint32_t owner = c.owners[i];
-      if (owner_labels[i] == tiling::TileResults::kNoResult)
-        continue;
-      auto found = ids_of_tile.find (owner);
-      if (found == ids_of_tile.end()) {
-        if (!tiling::loadSegmentIds (workdir, owner, ids))
-          return false;
-        found = ids_of_tile.emplace (owner, ids).first;
-      }
-      if (owner_labels[i] < found->second.size())
-        segments[i] = found->second[owner_labels[i]];
-    }
     return method.refine (c, segments, values, tile_radii, labels);
   };
   if (!computeOnTile (
@@ -146,18 +208,92 @@ refineStep (const tiling::TilePlan& plan,
       !method.saveRefineOutputs (workdir, cloud) ||
       !tiling::markTileDone (workdir, tile, kRefined))
     return false;
-  const double ms = timer.done (cloud.core_points);
-  std::cout << "  " << cloud.indices.size() - cloud.core_points
-            << " halo points, margin " << cloud.margin << " m, "
-            << static_cast<long long> (cloud.core_points / std::max (ms, 1.0) * 1e3)
-            << " points/s\n";
+  reportPass (cloud, timer.done (cloud.core_points));
   return true;
+}
+
+bool
+growStep (const tiling::TilePlan& plan,
+          TileMethod& method,
+          const std::string& workdir,
+          std::size_t tile,
+          unsigned int threads)
+{
+  if (!method.needsGrow())
+    return true;
+  const std::size_t tiles = plan.getGrid().size();
+  if (!joinStep (plan, method, workdir) ||
+      !passesBeforeDone (method, workdir, tiles, kGrown))
+    return false;
+  StageTimer timer ("Tile " + std::to_string (tile) + ", points left out grouped");
+  if (!tiling::markTileStarted (workdir, tile))
+    return false;
+  TileCloud cloud;
+  method.setNumberOfThreads (threads);
+  std::vector<std::uint32_t> segments, labels;
+  std::map<std::uint32_t, std::vector<std::uint32_t>> ids_of_tile;
+  const bool refined = method.needsRefine();
+  const auto grow = [&] (const TileCloud& c) {
+    // The segments after the last pass: the second's, numbered over the whole cloud
+    // already, or the tiles' own joined.
+    if (refined ? !tiling::TileResults::readAt (workdir, c.indices, segments, kRefined)
+                : !readJoinedSegments (workdir, c, ids_of_tile, segments))
+      return false;
+    return method.grow (c, segments, labels);
+  };
+  if (!computeOnTile (plan,
+                      workdir,
+                      tile,
+                      method.getGrowReach(),
+                      threads,
+                      0.0,
+                      method,
+                      grow,
+                      cloud))
+    return false;
+  std::vector<std::uint64_t> core_indices;
+  std::vector<std::uint32_t> core_labels;
+  std::vector<tiling::HaloLabel> halo;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (cloud.core[i]) {
+      core_indices.push_back (cloud.indices[i]);
+      core_labels.push_back (labels[i]); // kNoSegment is kNoResult
+    }
+    else if (labels[i] != tiling::SegmentMerge::kNoSegment)
+      halo.push_back ({cloud.indices[i], cloud.owners[i], labels[i]});
+  }
+  const auto files = tiling::SegmentPassFiles::named (kGrown);
+  if (!tiling::TileResults::write (workdir, core_indices, core_labels, files.results) ||
+      !tiling::saveHaloLabels (workdir, tile, halo, files.halo) ||
+      !tiling::saveSegmentSizes (
+          workdir, tile, segmentSizes (cloud, labels), files.sizes) ||
+      !tiling::markTileDone (workdir, tile, kGrown))
+    return false;
+  reportPass (cloud, timer.done (cloud.core_points));
+  return true;
+}
+
+std::vector<std::string>
+passesOf (const TileMethod& method)
+{
+  std::vector<std::string> passes{"done"};
+  if (method.needsRefine())
+    passes.push_back (kRefined);
+  if (method.needsGrow())
+    passes.push_back (kGrown);
+  return passes;
 }
 
 std::string
 lastPassOf (const TileMethod& method)
 {
-  return method.needsRefine() ? kRefined : "done";
+  return passesOf (method).back();
+}
+
+std::string
+stepOfPass (const std::string& pass)
+{
+  return pass == kRefined ? "refine" : pass == kGrown ? "grow" : "tile";
 }
 
 } // namespace apps

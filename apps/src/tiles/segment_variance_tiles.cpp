@@ -50,23 +50,14 @@ public:
     if (!cl.given ("reintegrate") && options_.reintegrate) {
       // Section 4 is on by default in pcl_ext_segment_variance; tile by tile it is a
       // second pass whose margin follows the sparsest points' reach (docs/tiles.md).
+      // The new segments among the points left out come with it, as untiled.
       std::cout << "Note: pcl_ext_tiles segment_variance runs sections 2 and 3 (as "
                    "pcl_ext_segment_variance -no_reintegrate) unless -reintegrate is "
                    "given: section 4's re-integration, a second pass over the tiles, "
                    "reads as far as three neighbourhood radii of the sparsest points "
                    "around, which on a scan's sparse edges can be most of the cloud.\n";
       options_.reintegrate = false;
-    }
-    if (cl.given ("leftovers")) {
-      std::cerr << "Error: -leftovers is not available tile by tile yet; run "
-                   "pcl_ext_segment_variance on the whole cloud for it.\n";
-      return false;
-    }
-    if (options_.leftovers) {
-      // The new segments among the points left out are grown on the whole cloud only.
-      std::cout << "Note: pcl_ext_tiles segment_variance leaves the points without a "
-                   "segment out (as pcl_ext_segment_variance -no_leftovers).\n";
-      options_.leftovers = false;
+      options_.leftovers = cl.given ("leftovers");
     }
     std::string reason;
     if (!options_.intersections_path.empty() &&
@@ -117,11 +108,8 @@ public:
     needed_margin_ = surface_radius_ = refine_margin_ = 0.0;
     if (tile.core_points == 0)
       return true;
-    if (!tile.neighbourhoods || tile.neighbourhoods->empty()) {
-      std::cerr << "Error: tile " << tile.tile
-                << " has fewer points than k = " << options_.k << ".\n";
+    if (!hasNeighbourhoods (tile))
       return false;
-    }
     pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
     pcl_ext::VarianceRegionGrowing<pcl::PointXYZ> rg;
     options_.configure (tile.cloud, tile.neighbourhoods, threads_, classifier, rg);
@@ -150,11 +138,7 @@ public:
     if (!surface)
       return true; // nothing to grow from: no segment
     // Only the core seeds; every segment kept here, the minimum size is the merge's.
-    auto seeds = pcl::make_shared<pcl::Indices>();
-    for (std::size_t i = 0; i < tile.core.size(); ++i)
-      if (tile.core[i])
-        seeds->push_back (static_cast<pcl::index_t> (i));
-    rg.setSeedIndices (seeds);
+    rg.setSeedIndices (coreIndices (tile));
     rg.setMinClusterSize (1);
     rg.setInputClasses (classes);
     std::vector<pcl::PointIndices> clusters;
@@ -185,6 +169,80 @@ public:
           {},
           pcl_ext::LocalSurfaceIntersection<pcl::PointXYZ>().getReachFactor(),
           intersects());
+    return true;
+  }
+
+  /** The new segments among the points left out are a pass of their own, after the
+   * segments are final: their links read the whole cloud's segments around a point. */
+  bool
+  needsGrow () const override
+  {
+    return options_.leftovers;
+  }
+
+  /** A point's links read its nearest neighbours' normals: two steps of
+   * neighbourhoods, the first getNormalK() of each row of k. */
+  NeighbourhoodReach
+  getGrowReach () const override
+  {
+    NeighbourhoodReach reach;
+    reach.k = options_.k;
+    reach.max_radius = options_.max_radius;
+    reach.hops = 2;
+    return reach;
+  }
+
+  bool
+  grow (const TileCloud& tile,
+        const std::vector<std::uint32_t>& segments,
+        std::vector<std::uint32_t>& labels) override
+  {
+    labels.assign (segments.size(), tiling::SegmentMerge::kNoSegment);
+    needed_margin_ = 0.0; // getGrowReach()'s neighbourhoods are all it reads
+    if (tile.core_points == 0)
+      return true;
+    if (!hasNeighbourhoods (tile))
+      return false;
+    auto input = pcl::make_shared<pcl::PointCloud<pcl::Label>>();
+    input->resize (segments.size());
+    std::uint32_t largest = 0;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      (*input)[i].label =
+          segments[i] == tiling::SegmentMerge::kNoSegment ? 0 : segments[i] + 1;
+      largest = std::max (largest, (*input)[i].label);
+    }
+    pcl_ext::LeftoverRegionGrowing<pcl::PointXYZ> growing;
+    options_.configure (tile.cloud, tile.neighbourhoods, threads_, growing);
+    // Every group kept: the minimum size is the merge's, over the whole cloud.
+    growing.setMinClusterSize (1);
+    growing.setSegmentLabels (input);
+    growing.setLinkingIndices (coreIndices (tile));
+    pcl::PointCloud<pcl::Label> grown;
+    if (!growing.compute (grown) || grown.size() != segments.size()) {
+      std::cerr << "Error: growing the points left out of tile " << tile.tile
+                << " failed.\n";
+      return false;
+    }
+    // The tile's groups, those with a point of its own, numbered from 0; a group of
+    // a halo point alone (no point of the tile links to it) adds nothing.
+    std::vector<std::uint32_t> number;
+    std::vector<char> own;
+    for (std::size_t i = 0; i < grown.size(); ++i) {
+      if (grown[i].label <= largest)
+        continue;
+      const std::size_t g = grown[i].label - largest - 1;
+      if (own.size() <= g)
+        own.resize (g + 1, 0);
+      own[g] = own[g] || tile.core[i];
+    }
+    number.assign (own.size(), tiling::SegmentMerge::kNoSegment);
+    std::uint32_t next = 0;
+    for (std::size_t g = 0; g < own.size(); ++g)
+      if (own[g])
+        number[g] = next++;
+    for (std::size_t i = 0; i < grown.size(); ++i)
+      if (grown[i].label > largest)
+        labels[i] = number[grown[i].label - largest - 1];
     return true;
   }
 
@@ -331,6 +389,29 @@ protected:
   }
 
 private:
+  /** Whether \a tile has its neighbourhoods (else the error printed). */
+  bool
+  hasNeighbourhoods (const TileCloud& tile) const
+  {
+    if (tile.neighbourhoods && !tile.neighbourhoods->empty())
+      return true;
+    std::cerr << "Error: tile " << tile.tile
+              << " has fewer points than k = " << options_.k << ".\n";
+    return false;
+  }
+
+  /** The tile's own points: they alone seed (section 3) and link (the points left out
+   * grouped), so that every link of the whole cloud is made in one tile. */
+  static pcl::IndicesPtr
+  coreIndices (const TileCloud& tile)
+  {
+    auto core = pcl::make_shared<pcl::Indices>();
+    for (std::size_t i = 0; i < tile.core.size(); ++i)
+      if (tile.core[i])
+        core->push_back (static_cast<pcl::index_t> (i));
+    return core;
+  }
+
   /** Whether the intersection points are written (-intersections). */
   bool
   intersects () const
@@ -343,7 +424,7 @@ private:
   std::vector<std::uint32_t> classes_;          ///< of every point of the last run()
   double surface_radius_ = 0.0;                 ///< of the last run()
   double refine_margin_ = 0.0;                  ///< of the last run()
-  double needed_margin_ = 0.0;                  ///< of the last refine()
+  double needed_margin_ = 0.0;                  ///< of the last refine() or grow()
 };
 } // namespace
 

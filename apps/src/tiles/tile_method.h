@@ -170,6 +170,37 @@ public:
     return true;
   }
 
+  /** \brief Whether the method groups points anew after its last pass (grow()): a
+   * pass over the tiles once every point's segment over the whole cloud is known (after
+   * the second pass, if any), whose groups are joined across the tiles as the first
+   * pass's segments are and numbered after them. */
+  virtual bool
+  needsGrow () const
+  {
+    return false;
+  }
+
+  /** \brief The neighbourhoods grow()'s result at a point reaches through. */
+  virtual NeighbourhoodReach
+  getGrowReach () const
+  {
+    return getReach();
+  }
+
+  /** \brief The pass on \a tile: \a segments is the whole cloud's segment of every
+   * point (kNoSegment for none); \a labels gets the tile's groups among the points
+   * without one, numbered from 0 in the tile, kNoSegment for a point in none. Only the
+   * tile's own points make links; a halo point is grouped only where they reach it, so
+   * that its owner's group and this tile's join it. \return false on error (message
+   * printed) */
+  virtual bool
+  grow (const TileCloud& /*tile*/,
+        const std::vector<std::uint32_t>& /*segments*/,
+        std::vector<std::uint32_t>& /*labels*/)
+  {
+    return false;
+  }
+
   /** \brief After refine() on \a tile: save in \a workdir what the pass made besides
    * the segments (e.g. the local intersection points its core points found), for
    * mergeRefineOutputs(). \return false (message printed) when it cannot be saved */

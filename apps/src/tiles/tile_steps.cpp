@@ -103,30 +103,6 @@ estimateHalo (const std::string& input,
   return 1.25 * reach.hops * static_cast<double> (*at);
 }
 
-/** The points each segment of a tile has in the tile's core, and the first of them. */
-std::vector<tiling::SegmentSize>
-segmentSizes (const TileCloud& cloud, const std::vector<std::uint32_t>& labels)
-{
-  std::vector<tiling::SegmentSize> sizes;
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    const std::uint32_t l = labels[i];
-    if (!cloud.core[i] || l == tiling::SegmentMerge::kNoSegment)
-      continue;
-    if (sizes.size() <= l)
-      sizes.resize (l + 1);
-    auto& s = sizes[l];
-    s.first = s.points == 0 ? cloud.indices[i] : std::min (s.first, cloud.indices[i]);
-    ++s.points;
-  }
-  for (std::uint32_t l = 0; l < sizes.size(); ++l)
-    sizes[l].label = l;
-  sizes.erase (std::remove_if (sizes.begin(),
-                               sizes.end(),
-                               [] (const auto& s) { return s.points == 0; }),
-               sizes.end());
-  return sizes;
-}
-
 /** Remove what an earlier run left in \a workdir (stopped, or -keep_workdir): its marks
  * would pass for this plan's. Only the names the steps write are touched. */
 bool
@@ -141,7 +117,7 @@ removeEarlierRun (const std::string& workdir)
                            digits < name.size() && name[digits] == '.';
     if (tile_file || name == "plan.txt" || name == "segments.joined" ||
         name == "results.bin" || name == "values.bin" || name == "refined.bin" ||
-        name == "extra.bin")
+        name == "grown.bin" || name == "extra.bin")
       earlier.push_back (entry.path());
   }
   for (const auto& path : earlier)
@@ -194,6 +170,29 @@ std::string
 planPath (const std::string& workdir)
 {
   return workdir + "/plan.txt";
+}
+
+std::vector<tiling::SegmentSize>
+segmentSizes (const TileCloud& cloud, const std::vector<std::uint32_t>& labels)
+{
+  std::vector<tiling::SegmentSize> sizes;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const std::uint32_t l = labels[i];
+    if (!cloud.core[i] || l == tiling::SegmentMerge::kNoSegment)
+      continue;
+    if (sizes.size() <= l)
+      sizes.resize (l + 1);
+    auto& s = sizes[l];
+    s.first = s.points == 0 ? cloud.indices[i] : std::min (s.first, cloud.indices[i]);
+    ++s.points;
+  }
+  for (std::uint32_t l = 0; l < sizes.size(); ++l)
+    sizes[l].label = l;
+  sizes.erase (std::remove_if (sizes.begin(),
+                               sizes.end(),
+                               [] (const auto& s) { return s.points == 0; }),
+               sizes.end());
+  return sizes;
 }
 
 bool
@@ -252,6 +251,9 @@ planStep (const std::string& method_name,
     if (method.needsRefine() &&
         (!tiling::TileResults::create (workdir, plan.getTotalPoints(), kRefineValues) ||
          !tiling::TileResults::create (workdir, plan.getTotalPoints(), kRefined)))
+      return false;
+    if (method.needsGrow() &&
+        !tiling::TileResults::create (workdir, plan.getTotalPoints(), kGrown))
       return false;
     if (!tiling::TileResults::create (workdir, plan.getTotalPoints()) ||
         !tiling::writeTiles (plan, workdir, attributes, read_attributes) ||
@@ -424,11 +426,13 @@ reportTilesNotDone (const std::string& workdir,
                     const std::vector<std::size_t>& missing,
                     const std::string& pass)
 {
-  const bool second = pass == kRefined;
+  const std::string step = stepOfPass (pass);
   std::cerr << "Error: " << missing.size() << " tile(s) of " << workdir
-            << (second
-                    ? " have not run their second pass ('refine') or did not finish it:"
-                    : " have not run or did not finish:");
+            << (pass == kRefined ? " have not run their second pass ('refine') or did "
+                                   "not finish it:"
+                : pass == kGrown ? " have not grouped their points left out ('grow') "
+                                   "or did not finish:"
+                                 : " have not run or did not finish:");
   for (std::size_t i = 0; i < missing.size() && i < 20; ++i)
     std::cerr << " " << missing[i];
   std::cerr << (missing.size() > 20 ? " ..." : "") << ".\n";
@@ -439,8 +443,7 @@ reportTilesNotDone (const std::string& workdir,
       std::cerr << "  tile " << t << " was started by " << start
                 << " and did not finish (the process stopped or died)\n";
   }
-  std::cerr << "Run 'pcl_ext_tiles " << (second ? "refine" : "tile") << " I -workdir "
-            << workdir
+  std::cerr << "Run 'pcl_ext_tiles " << step << " I -workdir " << workdir
             << "' for each, then merge again; or 'pcl_ext_tiles resume OUTPUT -workdir "
             << workdir << "' (under mpirun too) runs them all and merges.\n";
 }
@@ -452,8 +455,7 @@ mergeStep (const tiling::TilePlan& plan,
            const std::string& workdir,
            const std::string& output)
 {
-  const std::string pass = lastPassOf (method);
-  for (const std::string& p : {std::string ("done"), pass}) {
+  for (const std::string& p : passesOf (method)) {
     const auto missing = tiling::findTilesNotDone (workdir, plan.getGrid().size(), p);
     if (!missing.empty()) {
       reportTilesNotDone (workdir, missing, p);
@@ -490,6 +492,10 @@ mergeStep (const tiling::TilePlan& plan,
     if (!field.checkInput (like, plan.inputs.front()))
       return false;
     const std::uint64_t min_size = refined ? 0 : method.getMinSegmentSize();
+    // New segments grown among the points left out, numbered after the others.
+    std::uint32_t joined = 0;
+    if (method.needsGrow() && !loadJoinedSegmentCount (workdir, joined))
+      return false;
     const std::string extra_field = method.getExtraFieldName();
     const tiling::TileGrid grid = plan.getGrid();
     const io::LasFileInfo* like_las = like.las ? &*like.las : nullptr;
@@ -511,6 +517,11 @@ mergeStep (const tiling::TilePlan& plan,
         merged.setSegmentsBySize (min_size);
       if (refined)
         merged.setResultsName (kRefined);
+      if (method.needsGrow())
+        merged.setGrownSegments (
+            tiling::SegmentPassFiles::named (kGrown),
+            std::max<std::uint64_t> (method.getMinSegmentSize(), 1),
+            joined);
       if (!merged.open (plan, workdir, kind))
         return false;
       if (segments && min_size > 0 && merged.getNumberOfSegments() == 0) {

@@ -7,6 +7,7 @@
 #include "tile_method.h"
 
 #include <pcl_ext/tiling/tile_plan.h>
+#include <pcl_ext/tiling/tile_results.h>
 
 #include <cstddef>
 #include <string>
@@ -17,6 +18,11 @@ namespace apps {
 /** \brief The work file of a method's float per point (TileMethod::getExtraValues), as
  * the bits of each float, at the points' global indices. */
 constexpr const char* kExtraValues = "extra";
+
+/** \brief The points each segment of \a labels (one per point of \a cloud, numbered
+ * in the tile; kNoSegment for none) has in the tile's core, and the first of them. */
+std::vector<tiling::SegmentSize>
+segmentSizes (const TileCloud& cloud, const std::vector<std::uint32_t>& labels);
 
 /** \brief The plan's file in a work folder. */
 std::string

@@ -33,9 +33,10 @@ constexpr const char* kDescription =
     "with a '#' (out_#.las) gives one LAS file per tile, '#' its number, and an index "
     "of the files with their boxes (out_index.csv). Steps for scheduler "
     "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D', "
-    "'tile I -workdir D' and (segment_variance -reintegrate: section 4, a second pass "
-    "over the tiles once their segments are joined) 'refine I -workdir D' for every "
-    "tile I, "
+    "'tile I -workdir D', (segment_variance -reintegrate: section 4, a second pass "
+    "over the tiles once their segments are joined) 'refine I -workdir D' and "
+    "(segment_variance with the new segments among the points left out, on with "
+    "-reintegrate) 'grow I -workdir D' for every tile I, "
     "each step for all tiles before the next, then 'merge output -workdir D'; "
     "'resume output -workdir D' runs what has not run or did not finish (a process "
     "that died), then merges.";
@@ -194,29 +195,32 @@ runTiles (pcl_ext::apps::TileScheduler& scheduler,
                 << " s\n";
   }
   ok = scheduler.allOk (ok);
-  if (ok && method.needsRefine()) {
-    // The second pass: the segments joined once, then the tiles that have not run it
-    // (every process lists the same ones before any runs one).
-    ok = scheduler.allOk (!leader ||
-                          pcl_ext::apps::joinStep (plan, method, options.workdir));
-    const auto to_refine =
-        ok ? pcl_ext::tiling::findTilesNotDone (
-                 options.workdir, tiles, pcl_ext::apps::lastPassOf (method))
+  // The passes after the first: the segments joined once, then the tiles that have
+  // not run the pass (every process lists the same ones before any runs one).
+  const auto later_pass = [&] (const std::string& pass, const auto& step) {
+    ok = scheduler.allOk (
+        ok && (!leader || pcl_ext::apps::joinStep (plan, method, options.workdir)));
+    const auto to_run_pass =
+        ok ? pcl_ext::tiling::findTilesNotDone (options.workdir, tiles, pass)
            : std::vector<std::size_t>();
     ok = scheduler.allOk (ok);
-    scheduler.startPhase (to_refine.size());
+    scheduler.startPhase (to_run_pass.size());
     while (ok && scheduler.next (phase_index)) {
-      const std::size_t tile = to_refine[phase_index];
-      ok = pcl_ext::apps::refineStep (
-          plan, method, options.workdir, tile, options.threads);
+      const std::size_t tile = to_run_pass[phase_index];
+      ok = step (plan, method, options.workdir, tile, options.threads);
       if (!ok)
-        std::cerr << "Error: the second pass of tile " << tile
-                  << " failed; the work folder " << options.workdir
-                  << " is kept: run 'pcl_ext_tiles refine " << tile << " -workdir "
-                  << options.workdir << "', then 'merge', or 'resume'.\n";
+        std::cerr << "Error: pass '" << pcl_ext::apps::stepOfPass (pass) << "' of tile "
+                  << tile << " failed; the work folder " << options.workdir
+                  << " is kept: run 'pcl_ext_tiles " << pcl_ext::apps::stepOfPass (pass)
+                  << " " << tile << " -workdir " << options.workdir
+                  << "', then 'merge', or 'resume'.\n";
     }
     ok = scheduler.allOk (ok);
-  }
+  };
+  if (ok && method.needsRefine())
+    later_pass (pcl_ext::apps::kRefined, pcl_ext::apps::refineStep);
+  if (ok && method.needsGrow())
+    later_pass (pcl_ext::apps::kGrown, pcl_ext::apps::growStep);
   if (leader && ok)
     ok = pcl_ext::apps::mergeStep (plan, method, field, options.workdir, output);
   ok = scheduler.allOk (ok);
@@ -349,7 +353,8 @@ runResume (int argc, char** argv, pcl_ext::apps::TileScheduler& scheduler)
              : 1;
 }
 
-/** `estimate I`, `tile I`, `refine I` or `merge output`, each with -workdir. */
+/** `estimate I`, `tile I`, `refine I`, `grow I` or `merge output`, each with
+ * -workdir. */
 int
 runStep (int argc, char** argv)
 {
@@ -397,6 +402,11 @@ runStep (int argc, char** argv)
                plan, *method, options.workdir, tile, options.threads)
                ? 0
                : 1;
+  if (step == "grow")
+    return pcl_ext::apps::growStep (
+               plan, *method, options.workdir, tile, options.threads)
+               ? 0
+               : 1;
   return pcl_ext::apps::reduceStep (plan, *method, options.workdir) &&
                  pcl_ext::apps::tileStep (
                      plan, *method, options.workdir, tile, options.threads)
@@ -411,7 +421,8 @@ main (int argc, char** argv)
   // Under mpirun every rank runs main; the steps are for one process each.
   const auto scheduler = pcl_ext::apps::makeTileScheduler (argc, argv);
   const std::string first = argc > 1 ? argv[1] : "";
-  if (first == "estimate" || first == "tile" || first == "refine" || first == "merge")
+  if (first == "estimate" || first == "tile" || first == "refine" || first == "grow" ||
+      first == "merge")
     return runStep (argc, argv);
   if (first == "resume")
     return runResume (argc, argv, *scheduler);

@@ -128,12 +128,6 @@ forEachTileValue (const std::string& folder,
   return true;
 }
 
-std::string
-haloPath (const std::string& folder, std::size_t tile)
-{
-  return folder + "/tile_" + std::to_string (tile) + ".halo";
-}
-
 /** Writes \a count records of \a size bytes, record i filled by \a fill (i, bytes),
  * to \a path, replacing it atomically. */
 template <typename Fill>
@@ -296,9 +290,10 @@ TileResults::read (const std::string& folder,
 bool
 saveHaloLabels (const std::string& folder,
                 std::size_t tile,
-                const std::vector<HaloLabel>& labels)
+                const std::vector<HaloLabel>& labels,
+                const std::string& name)
 {
-  return writeRecords (haloPath (folder, tile),
+  return writeRecords (valuesPath (folder, tile, name),
                        labels.size(),
                        kHaloRecordBytes,
                        [&labels] (std::size_t i, char* r) {
@@ -311,11 +306,12 @@ saveHaloLabels (const std::string& folder,
 bool
 loadHaloLabels (const std::string& folder,
                 std::size_t tile,
-                std::vector<HaloLabel>& labels)
+                std::vector<HaloLabel>& labels,
+                const std::string& name)
 {
   labels.clear();
   std::vector<char> bytes;
-  if (!readRecords (haloPath (folder, tile), kHaloRecordBytes, tile, bytes))
+  if (!readRecords (valuesPath (folder, tile, name), kHaloRecordBytes, tile, bytes))
     return false;
   labels.resize (bytes.size() / kHaloRecordBytes);
   for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -330,9 +326,10 @@ loadHaloLabels (const std::string& folder,
 bool
 saveSegmentSizes (const std::string& folder,
                   std::size_t tile,
-                  const std::vector<SegmentSize>& sizes)
+                  const std::vector<SegmentSize>& sizes,
+                  const std::string& name)
 {
-  return writeRecords (valuesPath (folder, tile, "sizes"),
+  return writeRecords (valuesPath (folder, tile, name),
                        sizes.size(),
                        kSizeRecordBytes,
                        [&sizes] (std::size_t i, char* r) {
@@ -345,11 +342,12 @@ saveSegmentSizes (const std::string& folder,
 bool
 loadSegmentSizes (const std::string& folder,
                   std::size_t tile,
-                  std::vector<SegmentSize>& sizes)
+                  std::vector<SegmentSize>& sizes,
+                  const std::string& name)
 {
   sizes.clear();
   std::vector<char> bytes;
-  if (!readRecords (valuesPath (folder, tile, "sizes"), kSizeRecordBytes, tile, bytes))
+  if (!readRecords (valuesPath (folder, tile, name), kSizeRecordBytes, tile, bytes))
     return false;
   sizes.resize (bytes.size() / kSizeRecordBytes);
   for (std::size_t i = 0; i < sizes.size(); ++i) {

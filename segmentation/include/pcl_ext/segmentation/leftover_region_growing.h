@@ -118,6 +118,24 @@ public:
     return normal_k_;
   }
 
+  /** \brief Only the points \a indices make links of their own (default, null: every
+   * point that takes part). The others take part as partners and groups: linked to
+   * when a linking point finds them among its nearest neighbours, never linking
+   * themselves. A tile of a larger cloud links from its own points only, the links of
+   * its halo being made by the tiles that own them, so that every link of the whole
+   * cloud is made exactly once, from its own point's whole neighbourhood. */
+  void
+  setLinkingIndices (const pcl::IndicesConstPtr& indices)
+  {
+    linking_ = indices;
+  }
+
+  pcl::IndicesConstPtr
+  getLinkingIndices () const
+  {
+    return linking_;
+  }
+
   /** \brief Grow the new segments. \a output gets one label per input point: the
    * input's, or a new segment's. On bad input: PCL_ERROR, empty output, false. */
   bool
@@ -139,6 +157,7 @@ protected:
   checkInputs (const char* name) const;
 
   LabelCloudConstPtr segments_;
+  pcl::IndicesConstPtr linking_;
   double angle_ = 25.0 * M_PI / 180.0;
   double max_curvature_ = 0.05;
   int normal_k_ = 12;

@@ -21,14 +21,16 @@ namespace tiling {
 /** \brief Join the segments of the tiles of \a plan in \a folder into \a merge: every
  * halo point's label in a tile with its owner's (SegmentMerge::join); with \a by_size,
  * the tiles' segment sizes added and the joined segments numbered largest first, those
- * under \a min_size points dropped (SegmentMerge::numberBySize). \return false
+ * under \a min_size points dropped (SegmentMerge::numberBySize). \a files: those of
+ * the pass whose segments are joined (default: the tiles' own). \return false
  * (PCL_ERROR names it) when a tile was not run or a file is broken */
 bool
 joinTileSegments (const TilePlan& plan,
                   const std::string& folder,
                   bool by_size,
                   std::uint64_t min_size,
-                  SegmentMerge& merge);
+                  SegmentMerge& merge,
+                  const SegmentPassFiles& files = SegmentPassFiles());
 
 /** \brief The points of a tiled run's inputs, in chunks, with their results: what the
  * merge step writes out.
@@ -62,6 +64,22 @@ public:
   setResultsName (const std::string& name)
   {
     results_name_ = name;
+  }
+
+  /** \brief New segments grown by a later pass among the points the results leave
+   * without one (the pass's \a files): a point whose result is none takes the group
+   * its owner gave it there, the groups joined across the tiles and numbered largest
+   * first from \a first_id, those under \a min_size points dropped; call before
+   * open(). */
+  void
+  setGrownSegments (const SegmentPassFiles& files,
+                    std::uint64_t min_size,
+                    std::uint32_t first_id)
+  {
+    grown_ = true;
+    grown_files_ = files;
+    grown_min_size_ = min_size;
+    grown_first_id_ = first_id;
   }
 
   /** \brief After open() with setSegmentsBySize: the number of segments kept. */
@@ -115,6 +133,12 @@ private:
   bool by_size_ = false;
   std::uint64_t min_size_ = 1;
   std::string results_name_ = TileResults::kResults;
+  bool grown_ = false;
+  SegmentPassFiles grown_files_;
+  SegmentMerge grown_merge_;
+  std::uint64_t grown_min_size_ = 1;
+  std::uint32_t grown_first_id_ = 0;
+  std::vector<std::uint32_t> grown_values_;
 };
 } // namespace tiling
 } // namespace pcl_ext

@@ -69,19 +69,40 @@ struct HaloLabel {
   std::uint32_t label = 0; ///< the segment the tile gave it
 };
 
-/** \brief Write the halo labels of tile \a tile (`tile_<tile>.halo`, replaced
+/** \brief The files of a pass over the tiles that labels segments: the core points'
+ * labels (TileResults of name \a results), each tile's halo labels
+ * (`tile_<tile>.<halo>`) and segment sizes (`tile_<tile>.<sizes>`). The default is the
+ * tiles' own pass; a later pass that groups points anew (the new segments among the
+ * points left out) has files of its own name. */
+struct SegmentPassFiles {
+  std::string results = TileResults::kResults;
+  std::string halo = "halo";
+  std::string sizes = "sizes";
+
+  /** \brief The files of the pass named \a pass: `<pass>.bin`, `tile_<t>.<pass>_halo`,
+   * `tile_<t>.<pass>_sizes`. */
+  static SegmentPassFiles
+  named (const std::string& pass)
+  {
+    return {pass, pass + "_halo", pass + "_sizes"};
+  }
+};
+
+/** \brief Write the halo labels of tile \a tile (`tile_<tile>.<name>`, replaced
  * atomically). \return false (PCL_ERROR) when it cannot be written */
 bool
 saveHaloLabels (const std::string& folder,
                 std::size_t tile,
-                const std::vector<HaloLabel>& labels);
+                const std::vector<HaloLabel>& labels,
+                const std::string& name = "halo");
 
 /** \brief Read the halo labels of tile \a tile. \return false (PCL_ERROR names the
  * file) when it is missing (the tile was not run) or not a whole number of records */
 bool
 loadHaloLabels (const std::string& folder,
                 std::size_t tile,
-                std::vector<HaloLabel>& labels);
+                std::vector<HaloLabel>& labels,
+                const std::string& name = "halo");
 /** \brief A segment of a tile as the tile's core holds it: how many of its points the
  * tile owns and the smallest global index among them (what numbers and drops the
  * joined segments, see SegmentMerge::numberBySize). */
@@ -91,19 +112,21 @@ struct SegmentSize {
   std::uint64_t first = 0;  ///< the smallest global index of those
 };
 
-/** \brief Write the sizes of tile \a tile's segments (`tile_<tile>.sizes`, replaced
+/** \brief Write the sizes of tile \a tile's segments (`tile_<tile>.<name>`, replaced
  * atomically). \return false (PCL_ERROR) when it cannot be written */
 bool
 saveSegmentSizes (const std::string& folder,
                   std::size_t tile,
-                  const std::vector<SegmentSize>& sizes);
+                  const std::vector<SegmentSize>& sizes,
+                  const std::string& name = "sizes");
 
 /** \brief Read the sizes of tile \a tile's segments. \return false (PCL_ERROR names the
  * file) when it is missing (the tile was not run) or not a whole number of records */
 bool
 loadSegmentSizes (const std::string& folder,
                   std::size_t tile,
-                  std::vector<SegmentSize>& sizes);
+                  std::vector<SegmentSize>& sizes,
+                  const std::string& name = "sizes");
 
 /** \brief Write the global segment ids of tile \a tile's segments, one per label of the
  * tile (`tile_<tile>.ids`, replaced atomically; SegmentMerge::kNoSegment for a label

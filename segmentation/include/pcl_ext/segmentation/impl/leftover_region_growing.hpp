@@ -28,7 +28,8 @@ pcl_ext::LeftoverRegionGrowing<PointT>::checkInputs (const char* name) const
     return false;
   }
   if (!onePerPoint (segments_.get(), n, name, "segment label", "setSegmentLabels") ||
-      !indicesInRange (*indices_, n, name))
+      !indicesInRange (*indices_, n, name) ||
+      (linking_ && !indicesInRange (*linking_, n, name)))
     return false;
   if (!this->checkNeighbourhoodOptions (name, 3))
     return false;
@@ -137,10 +138,16 @@ pcl_ext::LeftoverRegionGrowing<PointT>::compute (LabelCloud& output)
   const auto slotOf = [&slot] (pcl::index_t j) {
     return j < 0 ? -1 : slot[static_cast<std::size_t> (j)];
   };
+  // Which of them make links of their own (setLinkingIndices).
+  std::vector<char> links (m_points, linking_ ? 0 : 1);
+  if (linking_)
+    for (const auto i : *linking_)
+      if (slot[static_cast<std::size_t> (i)] >= 0)
+        links[static_cast<std::size_t> (slot[static_cast<std::size_t> (i)])] = 1;
   UnionFind groups (m_points);
   std::vector<std::int32_t> attach (m_points, -1);
   for (std::size_t s = 0; s < m_points; ++s) {
-    if (normal[s].isZero())
+    if (normal[s].isZero() || !links[s])
       continue;
     const auto row = (*nb)[static_cast<std::size_t> (row_of_slot[s])];
     const std::size_t m = std::min (row.size(), normal_k);
