@@ -1,9 +1,11 @@
 /*
- * pcl_ext_tiles: the fields of several inputs in one output.
+ * pcl_ext_tiles: several inputs in one output: their fields, and their coordinate
+ * reference system.
  */
 #include "input_fields.h"
 
 #include <pcl_ext/io/cloud_fields.h>
+#include <pcl_ext/io/las_crs.h>
 #include <pcl_ext/tiling/point_file_chunks.h>
 
 #include <iostream>
@@ -30,6 +32,46 @@ unionOfInputFields (const std::vector<std::string>& inputs, pcl::PCLPointCloud2&
       return false;
     }
   }
+  return true;
+}
+
+bool
+sameCoordinateSystem (const std::vector<std::string>& inputs)
+{
+  io::LasCoordinateSystem first;
+  std::string first_input, without;
+  for (const auto& input : inputs) {
+    tiling::PointFileChunks file;
+    file.open (input);
+    const auto& las = file.getDescription().las;
+    const io::LasCoordinateSystem crs =
+        las ? io::lasCoordinateSystem (*las) : io::LasCoordinateSystem();
+    if (!crs.declared()) {
+      without = without.empty() ? input : without;
+      continue;
+    }
+    if (!first.declared()) {
+      first = crs;
+      first_input = input;
+      continue;
+    }
+    const io::CrsMatch match = io::matchCoordinateSystems (first, crs);
+    if (match == io::CrsMatch::Different) {
+      std::cerr << "\nError: " << input << " declares " << crs.describe() << " and "
+                << first_input << " " << first.describe()
+                << ": inputs in different coordinate reference systems cannot go "
+                   "into one output; reproject them into one first.\n";
+      return false;
+    }
+    if (match == io::CrsMatch::Unknown)
+      std::cerr << "\nWarning: " << input << " declares " << crs.describe() << " and "
+                << first_input << " " << first.describe()
+                << "; taken to be one CRS, the latter's, which the output declares.\n";
+  }
+  if (first.declared() && !without.empty())
+    std::cerr << "\nWarning: " << without << " declares no coordinate reference "
+              << "system; it is taken to be " << first_input << "'s, "
+              << first.describe() << ", which the output declares.\n";
   return true;
 }
 

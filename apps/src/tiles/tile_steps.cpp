@@ -225,9 +225,10 @@ planStep (const std::string& method_name,
                        0.5 * tile_size);
     if (!tiling::planTiles (inputs, tile_size, halo, plan))
       return false;
-    // Refused now rather than at the merge: inputs whose fields cannot share a file.
+    // Refused now rather than at the merge: inputs whose fields or coordinate
+    // reference systems cannot share a file.
     pcl::PCLPointCloud2 layout;
-    if (!unionOfInputFields (inputs, layout))
+    if (!unionOfInputFields (inputs, layout) || !sameCoordinateSystem (inputs))
       return false;
     const NeighbourhoodReach reach = method.getReach();
     if (!reach.search && plan.halo < reach.radius)
