@@ -3,10 +3,10 @@
  * tile, in one command, in steps and shared among MPI ranks, give the segments of
  * pcl_ext_segment_variance on the whole cloud (the same partition of the points, and
  * the same ids: largest first), with section 4's re-integration and the new segments
- * among the points left out (-reintegrate: a second and a third pass over the tiles)
- * and without them (the tiles' default); a wall across four tiles' corner is one
- * segment; a tile that owns no point, a tile of one point and points
- * without coordinates change nothing.
+ * among the points left out (-reintegrate: a second and a third pass over the tiles),
+ * with the new segments alone (the tiles' default) and without either; a wall across
+ * four tiles' corner is one segment; a tile that owns no point, a tile of one point and
+ * points without coordinates change nothing.
  */
 #include "../app_test.h"
 #include "sbatch_shim.h"
@@ -151,31 +151,43 @@ TEST_F (TilesSegmentsApp, AnyTileSizeGivesTheWholeCloudsSegments)
   expectSameAsWhole ("t7.las");
 }
 
-TEST_F (TilesSegmentsApp, SectionsTwoAndThreeAloneByDefault)
+TEST_F (TilesSegmentsApp, WithoutSectionFourByDefault)
 {
-  // By default, and with -no_reintegrate, sections 2 and 3: the tool says so.
-  makeScene ("indoor", "-no_reintegrate");
+  // By default sections 2 and 3 and the new segments among the points left out, as
+  // pcl_ext_segment_variance -no_reintegrate -leftovers: the tool says so.
+  makeScene ("indoor", "-no_reintegrate -leftovers");
   ASSERT_EQ (runTiled ("t3.las", "-tile_size 3"), 0) << output_;
   expectSameAsWhole ("t3.las");
   EXPECT_EQ (output_.find (", second pass"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("points left out grouped"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("unless -reintegrate"), std::string::npos) << output_;
+  const Segments grown = whole_;
+  // -no_reintegrate: sections 2 and 3 alone, as untiled.
+  makeScene ("indoor", "-no_reintegrate");
   ASSERT_EQ (runTiled ("n3.las", "-tile_size 3 -no_reintegrate"), 0) << output_;
   expectSameAsWhole ("n3.las");
   EXPECT_EQ (output_.find ("unless -reintegrate"), std::string::npos) << output_;
+  EXPECT_EQ (output_.find ("points left out grouped"), std::string::npos) << output_;
   // -reintegrate puts edge and boundary points into segments: more points in them.
-  ASSERT_EQ (runTiled ("d3.las", "-tile_size 3 -reintegrate"), 0) << output_;
+  ASSERT_EQ (runTiled ("d3.las", "-tile_size 3 -reintegrate -no_leftovers"), 0)
+      << output_;
   EXPECT_NE (output_.find (", second pass"), std::string::npos) << output_;
   const Segments reintegrated = readSegments (path ("d3.las"));
   ASSERT_EQ (reintegrated.ids.size(), whole_.ids.size());
-  std::size_t before = 0, after = 0;
+  ASSERT_EQ (grown.ids.size(), whole_.ids.size());
+  std::size_t before = 0, after = 0, left_out_grouped = 0;
   for (std::size_t i = 0; i < whole_.ids.size(); ++i) {
     before += whole_.ids[i] != 0;
     after += reintegrated.ids[i] != 0;
-    // A point segmented by sections 2 and 3 keeps its segment.
-    if (whole_.ids[i] != 0)
+    left_out_grouped += grown.ids[i] != 0;
+    // A point segmented by sections 2 and 3 keeps its segment in either.
+    if (whole_.ids[i] != 0) {
       ASSERT_NE (reintegrated.ids[i], 0u);
+      ASSERT_EQ (grown.ids[i], whole_.ids[i]);
+    }
   }
   EXPECT_GT (after, before + whole_.ids.size() / 20);
+  EXPECT_GT (left_out_grouped, before);
 }
 
 TEST_F (TilesSegmentsApp, TheNewSegmentsAmongThePointsLeftOutAreTheWholeClouds)
@@ -197,12 +209,12 @@ TEST_F (TilesSegmentsApp, TheNewSegmentsAmongThePointsLeftOutAreTheWholeClouds)
   EXPECT_NE (output_.find ("points left out grouped"), std::string::npos) << output_;
   expectSameAsWhole ("t4.las");
 
-  // Without section 4 when asked for (-leftovers): a second pass, not a third.
-  makeScene ("indoor", "-no_reintegrate -leftovers");
-  ASSERT_EQ (runTiled ("l3.las", "-tile_size 3 -leftovers"), 0) << output_;
+  // Without section 4 (the tiles' default): a second pass, not a third.
+  makeScene ("pipes", "-no_reintegrate -leftovers");
+  ASSERT_EQ (runTiled ("l4.las", "-tile_size 4"), 0) << output_;
   EXPECT_EQ (output_.find (", second pass"), std::string::npos) << output_;
   EXPECT_NE (output_.find ("points left out grouped"), std::string::npos) << output_;
-  expectSameAsWhole ("l3.las");
+  expectSameAsWhole ("l4.las");
 }
 
 TEST_F (TilesSegmentsApp, AWallAcrossFourTilesCornerIsOneSegment)
@@ -214,8 +226,9 @@ TEST_F (TilesSegmentsApp, AWallAcrossFourTilesCornerIsOneSegment)
   // (-reintegrate) keeps that segment's points in it, also in all four tiles; it may
   // give a few of the wall's edge points to a segment they fit better, as untiled.
   makeScene ("indoor");
-  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3"), 0) << output_;
-  ASSERT_EQ (runTiled ("d3.las", "-tile_size 3 -reintegrate"), 0) << output_;
+  ASSERT_EQ (runTiled ("t3.las", "-tile_size 3 -no_leftovers"), 0) << output_;
+  ASSERT_EQ (runTiled ("d3.las", "-tile_size 3 -reintegrate -no_leftovers"), 0)
+      << output_;
   const Segments tiled = readSegments (path ("t3.las"));
   const Segments reintegrated = readSegments (path ("d3.las"));
   ASSERT_EQ (tiled.ids.size(), whole_.ids.size());
@@ -394,7 +407,7 @@ TEST_F (TilesSegmentsApp, TheDerivedPresetRemovesTheWholeCloudsNoise)
   // -preset derived: the noise estimated from the whole cloud's sample and removed from
   // every tile's eq. 4-6, and the threshold at the median of the curvatures with it
   // removed, which the tiles know only after all of them have run.
-  makeScene ("indoor", "-preset derived -no_reintegrate");
+  makeScene ("indoor", "-preset derived -no_reintegrate -leftovers");
   ASSERT_EQ (runTiled ("d3.las", "-tile_size 3 -threads 1 -preset derived"), 0)
       << output_;
   expectSameAsWhole ("d3.las");
@@ -405,7 +418,9 @@ TEST_F (TilesSegmentsApp, IntersectionPointsAreTheWholeClouds)
   // Section 4's local intersection points, found by the tiles' own points in a second
   // pass and merged in the whole cloud's order: the untiled tool's bytes, with sections
   // 2 and 3's segments and with the re-integration, whatever the tile size.
-  makeScene ("indoor", "-no_reintegrate -intersections '" + path ("whole_i.pcd") + "'");
+  makeScene ("indoor",
+             "-no_reintegrate -leftovers -intersections '" + path ("whole_i.pcd") +
+                 "'");
   ASSERT_EQ (
       runTiled ("t3.las",
                 "-tile_size 3 -threads 1 -intersections '" + path ("t3_i.pcd") + "'"),

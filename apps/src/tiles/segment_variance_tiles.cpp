@@ -50,14 +50,20 @@ public:
     if (!cl.given ("reintegrate") && options_.reintegrate) {
       // Section 4 is on by default in pcl_ext_segment_variance; tile by tile it is a
       // second pass whose margin follows the sparsest points' reach (docs/tiles.md).
-      // The new segments among the points left out come with it, as untiled.
-      std::cout << "Note: pcl_ext_tiles segment_variance runs sections 2 and 3 (as "
-                   "pcl_ext_segment_variance -no_reintegrate) unless -reintegrate is "
-                   "given: section 4's re-integration, a second pass over the tiles, "
-                   "reads as far as three neighbourhood radii of the sparsest points "
-                   "around, which on a scan's sparse edges can be most of the cloud.\n";
+      // The new segments among the points left out stay on (unless -no_leftovers):
+      // their pass reads two steps of neighbourhoods, and they raise every scene
+      // family well above sections 2 and 3 alone.
+      std::cout << "Note: pcl_ext_tiles segment_variance runs sections 2 and 3"
+                << (options_.leftovers ? " and the new segments among the points left "
+                                         "out (as pcl_ext_segment_variance "
+                                         "-no_reintegrate -leftovers)"
+                                       : " (as pcl_ext_segment_variance "
+                                         "-no_reintegrate)")
+                << " unless -reintegrate is given: section 4's re-integration, a "
+                   "second pass over the tiles, reads as far as three neighbourhood "
+                   "radii of the sparsest points around, which on a scan's sparse "
+                   "edges can be most of the cloud.\n";
       options_.reintegrate = false;
-      options_.leftovers = cl.given ("leftovers");
     }
     std::string reason;
     if (!options_.intersections_path.empty() &&

@@ -35,8 +35,8 @@ constexpr const char* kDescription =
     "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D', "
     "'tile I -workdir D', (segment_variance -reintegrate: section 4, a second pass "
     "over the tiles once their segments are joined) 'refine I -workdir D' and "
-    "(segment_variance with the new segments among the points left out, on with "
-    "-reintegrate) 'grow I -workdir D' for every tile I, "
+    "(segment_variance's new segments among the points left out, unless "
+    "-no_leftovers) 'grow I -workdir D' for every tile I, "
     "each step for all tiles before the next, then 'merge output -workdir D'; "
     "'resume output -workdir D' runs what has not run or did not finish (a process "
     "that died), then merges.";
