@@ -285,12 +285,6 @@ passesOf (const TileMethod& method)
 }
 
 std::string
-lastPassOf (const TileMethod& method)
-{
-  return passesOf (method).back();
-}
-
-std::string
 stepOfPass (const std::string& pass)
 {
   return pass == kRefined ? "refine" : pass == kGrown ? "grow" : "tile";

@@ -63,10 +63,6 @@ growStep (const tiling::TilePlan& plan,
 std::vector<std::string>
 passesOf (const TileMethod& method);
 
-/** \brief The last of passesOf(\a method). */
-std::string
-lastPassOf (const TileMethod& method);
-
 /** \brief The step that runs pass \a pass of one tile: "tile", "refine" or "grow". */
 std::string
 stepOfPass (const std::string& pass);
