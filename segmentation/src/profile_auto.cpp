@@ -4,8 +4,6 @@
  */
 #include <pcl_ext/segmentation/profile_auto.h>
 
-#include "sampled_neighbours.h"
-
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -37,41 +35,33 @@ quantile (std::vector<double> values, double q)
 } // namespace
 
 CloudStatistics
-estimateCloudStatistics (const std::vector<Eigen::Vector3f>& xyz, std::size_t samples)
+cloudStatisticsOf (const std::vector<SampledNeighbourhood>& neighbourhoods)
 {
   CloudStatistics result;
-  const std::size_t n = xyz.size();
-  if (n <= kNoiseNeighbours || samples == 0)
-    return result;
   std::vector<double> spacings, noises;
-  detail::forEachSampledNeighbourhood (
-      xyz,
-      samples,
-      kNoiseNeighbours,
-      [&] (std::uint32_t point,
-           const std::vector<std::pair<float, std::uint32_t>>& nearest) {
-        if (nearest.size() < kNoiseNeighbours)
-          return;
-        const std::size_t k = nearest.size();
-        spacings.push_back (
-            std::sqrt (static_cast<double> (nearest[kSpacingNeighbour - 1].first) *
-                       M_PI / kSpacingNeighbour));
-        // The plane of the point and its neighbours, relative to the point (precision).
-        const Eigen::Vector3f& p = xyz[point];
-        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-        for (const auto& e : nearest)
-          mean += (xyz[e.second] - p).cast<double>();
-        mean /= static_cast<double> (k + 1);
-        Eigen::Matrix3d covariance = mean * mean.transpose(); // the point itself, at 0
-        for (const auto& e : nearest) {
-          const Eigen::Vector3d d = (xyz[e.second] - p).cast<double>() - mean;
-          covariance += d * d.transpose();
-        }
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (
-            covariance, Eigen::EigenvaluesOnly);
-        const double dof = static_cast<double> (k + 1 - 3);
-        noises.push_back (std::sqrt (std::max (0.0, solver.eigenvalues()[0]) / dof));
-      });
+  for (const auto& sample : neighbourhoods) {
+    if (sample.nearest.size() < kNoiseNeighbours)
+      continue;
+    const std::size_t k = kNoiseNeighbours;
+    spacings.push_back (
+        std::sqrt (static_cast<double> (sample.nearest[kSpacingNeighbour - 1].first) *
+                   M_PI / kSpacingNeighbour));
+    // The plane of the point and its neighbours, relative to the point (precision).
+    const Eigen::Vector3f& p = sample.point;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (std::size_t j = 0; j < k; ++j)
+      mean += (sample.nearest[j].second - p).cast<double>();
+    mean /= static_cast<double> (k + 1);
+    Eigen::Matrix3d covariance = mean * mean.transpose(); // the point itself, at 0
+    for (std::size_t j = 0; j < k; ++j) {
+      const Eigen::Vector3d d = (sample.nearest[j].second - p).cast<double>() - mean;
+      covariance += d * d.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (
+        covariance, Eigen::EigenvaluesOnly);
+    const double dof = static_cast<double> (k + 1 - 3);
+    noises.push_back (std::sqrt (std::max (0.0, solver.eigenvalues()[0]) / dof));
+  }
   if (spacings.empty())
     return result;
   double sum = 0.0;
@@ -83,6 +73,14 @@ estimateCloudStatistics (const std::vector<Eigen::Vector3f>& xyz, std::size_t sa
   result.noise = quantile (noises, 0.5);
   result.samples = spacings.size();
   return result;
+}
+
+CloudStatistics
+estimateCloudStatistics (const std::vector<Eigen::Vector3f>& xyz, std::size_t samples)
+{
+  if (xyz.size() <= kNoiseNeighbours || samples == 0)
+    return CloudStatistics();
+  return cloudStatisticsOf (sampleNeighbourhoods (xyz, samples, kNoiseNeighbours));
 }
 
 AutoConfiguration

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace pcl_ext {
@@ -29,6 +30,11 @@ validParameters (const PipelineParameters& p)
     return false;
   for (const auto& n : p.normals)
     if (!n.allFinite() || n.norm() < 1e-6f)
+      return false;
+  if (!p.origins.empty() && p.origins.size() != p.normals.size())
+    return false;
+  for (const double o : p.origins)
+    if (!std::isfinite (o))
       return false;
   if (p.method == ProfileMethod::Proximity && p.proximity_neighbours == 0)
     return false;
@@ -75,9 +81,23 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     return true;
 
   const int threads = static_cast<int> (parameters.threads);
-#pragma omp parallel for num_threads(threads) schedule(static, 1)
+  bool below_origin = false;
+#pragma omp parallel for num_threads(threads) schedule(static, 1)                      \
+    reduction(||                                                                       \
+              : below_origin)
   for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t> (num_stacks); ++s)
-    buildStack (xyz, parameters.normals[s], parameters.width, result.stacks[s]);
+    below_origin = !buildStack (xyz,
+                                parameters.normals[s],
+                                parameters.width,
+                                result.stacks[s],
+                                parameters.origins.empty()
+                                    ? std::numeric_limits<double>::quiet_NaN()
+                                    : parameters.origins[s]) ||
+                   below_origin;
+  if (below_origin) {
+    result = PipelineResult();
+    return false;
+  }
 
   std::vector<Task> tasks;
   for (std::uint32_t s = 0; s < num_stacks; ++s)

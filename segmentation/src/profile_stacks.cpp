@@ -89,28 +89,51 @@ makeStackNormals (unsigned int count, StackDistribution distribution)
   return normals;
 }
 
+std::vector<SampledNeighbourhood>
+sampleNeighbourhoods (const std::vector<Eigen::Vector3f>& xyz,
+                      std::size_t samples,
+                      std::size_t k)
+{
+  std::vector<SampledNeighbourhood> result;
+  detail::forEachSampledNeighbourhood (
+      xyz, samples, k, [&] (std::uint32_t point, const auto& nearest) {
+        SampledNeighbourhood sample;
+        sample.index = point;
+        sample.point = xyz[point];
+        for (const auto& e : nearest)
+          sample.nearest.emplace_back (e.first, xyz[e.second]);
+        result.push_back (std::move (sample));
+      });
+  return result;
+}
+
 double
-estimatePointSpacing (const std::vector<Eigen::Vector3f>& xyz, std::size_t samples)
+pointSpacingOf (const std::vector<SampledNeighbourhood>& neighbourhoods)
 {
   constexpr std::size_t k = 6;
   double sum = 0.0;
   std::size_t found = 0;
-  detail::forEachSampledNeighbourhood (
-      xyz, samples, k, [&] (std::uint32_t, const auto& nearest) {
-        if (nearest.size() == k) {
-          // k points within r on a surface: pi r^2 / k of surface per point.
-          sum += std::sqrt (static_cast<double> (nearest.back().first) * M_PI / k);
-          ++found;
-        }
-      });
+  for (const auto& sample : neighbourhoods)
+    if (sample.nearest.size() >= k) {
+      // k points within r on a surface: pi r^2 / k of surface per point.
+      sum += std::sqrt (static_cast<double> (sample.nearest[k - 1].first) * M_PI / k);
+      ++found;
+    }
   return found ? sum / static_cast<double> (found) : 0.0;
+}
+
+double
+estimatePointSpacing (const std::vector<Eigen::Vector3f>& xyz, std::size_t samples)
+{
+  return pointSpacingOf (sampleNeighbourhoods (xyz, samples, 6));
 }
 
 bool
 buildStack (const std::vector<Eigen::Vector3f>& xyz,
             const Eigen::Vector3f& normal,
             double width,
-            Stack& stack)
+            Stack& stack,
+            double origin)
 {
   stack = Stack();
   const std::size_t n = xyz.size();
@@ -126,12 +149,19 @@ buildStack (const std::vector<Eigen::Vector3f>& xyz,
   stack.v = stack.normal.cross (stack.u);
   stack.width = width;
 
-  const Eigen::Vector3d nd = stack.normal.cast<double>();
+  const Eigen::Vector3d nd = stackDirection (normal);
   std::vector<double> t (n);
   double lo = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n; ++i) {
     t[i] = nd.dot (xyz[i].cast<double>());
     lo = std::min (lo, t[i]);
+  }
+  if (!std::isnan (origin)) {
+    if (!(lo >= origin) || !std::isfinite (origin)) {
+      stack = Stack();
+      return false;
+    }
+    lo = origin;
   }
   stack.origin = lo;
   std::vector<std::uint64_t> id (n);

@@ -3,6 +3,8 @@
  */
 #pragma once
 
+#include <pcl_ext/segmentation/profile_stacks.h>
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -38,8 +40,7 @@ forEachSampledNeighbourhood (const std::vector<Eigen::Vector3f>& xyz,
     lo = lo.cwiseMin (p);
     hi = hi.cwiseMax (p);
   }
-  int axis = 0;
-  (hi - lo).maxCoeff (&axis);
+  const int axis = sampleAxis (lo, hi);
   std::vector<std::pair<float, std::uint32_t>> sorted (n);
   for (std::size_t i = 0; i < n; ++i)
     sorted[i] = {xyz[i][axis], static_cast<std::uint32_t> (i)};
@@ -49,7 +50,7 @@ forEachSampledNeighbourhood (const std::vector<Eigen::Vector3f>& xyz,
   const std::size_t m = std::min (samples, n);
   std::vector<std::pair<float, std::uint32_t>> nearest;
   for (std::size_t s = 0; s < m; ++s) {
-    const std::size_t r = s * n / m;
+    const std::size_t r = sampleRank (s, n, m);
     const Eigen::Vector3f& p = xyz[sorted[r].second];
     const float c = sorted[r].first;
     nearest.clear();

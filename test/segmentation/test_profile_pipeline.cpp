@@ -125,3 +125,68 @@ TEST (ProfilePipeline, InvalidParametersComputeNothing)
     EXPECT_TRUE (result.stacks.empty()) << "case " << k;
   }
 }
+
+TEST (ProfilePipeline, APartWithTheCloudsOriginsHasTheCloudsEdges)
+{
+  // The slabs of stack 0 split in two at a profile border: each part, given the whole
+  // cloud's origin, has the whole cloud's edges among its points.
+  std::vector<Eigen::Vector3f> xyz = twoPlates();
+  for (const auto method : {ProfileMethod::Proximity,
+                            ProfileMethod::MinimumSpanningTree,
+                            ProfileMethod::CurveReconstruction}) {
+    PipelineParameters whole_parameters = parameters (method);
+    whole_parameters.normals.resize (1);
+    PipelineResult whole;
+    ASSERT_TRUE (runProfileSegmentation (xyz, whole_parameters, whole));
+    const Stack& stack = whole.stacks[0];
+    const std::uint32_t border = static_cast<std::uint32_t> (stack.numProfiles() / 2);
+    std::set<std::pair<std::uint32_t, std::uint32_t>> expected[2], got[2];
+    for (const auto& e : whole.edges[0])
+      expected[stack.profile_of_point[e.source] >= border].insert (
+          {e.source, e.target});
+    for (int part = 0; part < 2; ++part) {
+      std::vector<Eigen::Vector3f> points;
+      std::vector<std::uint32_t> index;
+      for (std::uint32_t i = 0; i < xyz.size(); ++i)
+        if ((stack.profile_of_point[i] >= border) == (part == 1)) {
+          points.push_back (xyz[i]);
+          index.push_back (i);
+        }
+      PipelineParameters p = whole_parameters;
+      p.origins = {stack.origin};
+      PipelineResult result;
+      ASSERT_TRUE (runProfileSegmentation (points, p, result));
+      EXPECT_EQ (result.stacks[0].origin, stack.origin);
+      for (const auto& e : result.edges[0])
+        got[part].insert ({index[e.source], index[e.target]});
+      EXPECT_FALSE (got[part].empty());
+      EXPECT_EQ (got[part], expected[part]) << "part " << part;
+    }
+    // Without the origin the upper part's profiles start at its own lowest point.
+    PipelineResult own;
+    std::vector<Eigen::Vector3f> upper;
+    for (std::uint32_t i = 0; i < xyz.size(); ++i)
+      if (stack.profile_of_point[i] >= border)
+        upper.push_back (xyz[i]);
+    ASSERT_TRUE (runProfileSegmentation (upper, whole_parameters, own));
+    EXPECT_GT (own.stacks[0].origin, stack.origin);
+  }
+}
+
+TEST (ProfilePipeline, OriginsThatDoNotFitAreRefused)
+{
+  const auto xyz = twoPlates();
+  PipelineParameters p = parameters (ProfileMethod::Proximity);
+  PipelineResult result;
+  p.origins = {0.0, 0.0}; // not one per stack
+  EXPECT_FALSE (runProfileSegmentation (xyz, p, result));
+  p.origins.assign (4, std::nan (""));
+  EXPECT_FALSE (runProfileSegmentation (xyz, p, result));
+  // Above the lowest point of the cloud: a point would fall below profile 0.
+  p.origins.assign (4, 0.1);
+  EXPECT_FALSE (runProfileSegmentation (xyz, p, result));
+  EXPECT_TRUE (result.stacks.empty());
+  p.origins.assign (4, -1.0);
+  ASSERT_TRUE (runProfileSegmentation (xyz, p, result));
+  EXPECT_EQ (result.num_segments, 2u);
+}

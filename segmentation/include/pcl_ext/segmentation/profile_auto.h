@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <pcl_ext/segmentation/profile_stacks.h>
+
 #include <Eigen/Core>
 
 #include <cstddef>
@@ -34,6 +36,11 @@ struct CloudStatistics {
 CloudStatistics
 estimateCloudStatistics (const std::vector<Eigen::Vector3f>& xyz,
                          std::size_t samples = 2048);
+
+/** \brief The statistics estimateCloudStatistics gives from sampled neighbourhoods
+ * (profiles::sampleNeighbourhoods with k = 16; the samples with 16 nearest count). */
+CloudStatistics
+cloudStatisticsOf (const std::vector<SampledNeighbourhood>& neighbourhoods);
 
 /** \brief The configuration chosen from the statistics (see chooseConfiguration). */
 struct AutoConfiguration {

@@ -26,8 +26,12 @@ enum class ProfileMethod {
  * defaults. */
 struct PipelineParameters {
   std::vector<Eigen::Vector3f> normals; ///< unit stack normals
-  double width = 0.0;                   ///< profile width (> 0)
-  double threshold = 0.0;               ///< proximity threshold (>= 0)
+  /** \brief Where profile 0 of each stack starts (buildStack's origin), one per normal;
+   * empty (the default): at the stack's lowest point. With a cloud's origins and width,
+   * any part of it that holds its profiles whole gets the cloud's edges among them. */
+  std::vector<double> origins;
+  double width = 0.0;     ///< profile width (> 0)
+  double threshold = 0.0; ///< proximity threshold (>= 0)
   ProfileMethod method = ProfileMethod::Proximity;
   unsigned int proximity_neighbours = 4;
   /** \brief Per-point thresholds: \a threshold times the point's local gap (localGaps)
@@ -61,7 +65,8 @@ struct PipelineResult {
 /** \brief Build the stacks, segment every profile (in parallel; the result does not
  * depend on the thread count), and label the connected components of the union of all
  * edges. \param[in] xyz finite coordinates, best centred near the origin \return false
- * when a parameter is invalid (nothing computed) */
+ * when a parameter is invalid or a point lies below its stack's given origin (nothing
+ * computed) */
 bool
 runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
                         const PipelineParameters& parameters,

@@ -7,6 +7,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace pcl_ext {
@@ -28,6 +30,49 @@ enum class StackDistribution {
  * an empty list when \a count is 0 */
 std::vector<Eigen::Vector3f>
 makeStackNormals (unsigned int count, StackDistribution distribution);
+
+/** \brief A sampled point of a cloud and its nearest other points. */
+struct SampledNeighbourhood {
+  std::uint32_t index = 0; ///< the point's position in the cloud
+  Eigen::Vector3f point = Eigen::Vector3f::Zero(); ///< its coordinates
+  /** \brief (squared distance, coordinates) of its nearest points at a distance above
+   * 0, ascending by distance (ties by position in the cloud), at most the k asked. */
+  std::vector<std::pair<float, Eigen::Vector3f>> nearest;
+};
+
+/** \brief The axis along which sampleNeighbourhoods samples a cloud whose coordinates
+ * lie in [\a lo, \a hi]: that of the largest extent (the first of equal ones). */
+inline int
+sampleAxis (const Eigen::Vector3f& lo, const Eigen::Vector3f& hi)
+{
+  int axis = 0;
+  (hi - lo).maxCoeff (&axis);
+  return axis;
+}
+
+/** \brief The rank, in the order of the points along the sample axis (ties by
+ * position), of sample \a s of the \a m = min(samples, n) samples of \a n points. */
+inline std::size_t
+sampleRank (std::size_t s, std::size_t n, std::size_t m)
+{
+  return s * n / m;
+}
+
+/** \brief Up to \a samples points of \a xyz, spread evenly along sampleAxis (those of
+ * sampleRank), each with its \a k nearest other points (distance above 0), found by a
+ * sweep along that axis without a tree. The sweep stops once the coordinate gap alone
+ * exceeds the k-th distance, or after 8192 points on either side (an upper bound on
+ * pathological clouds, everything at one coordinate, instead of a quadratic time). */
+std::vector<SampledNeighbourhood>
+sampleNeighbourhoods (const std::vector<Eigen::Vector3f>& xyz,
+                      std::size_t samples,
+                      std::size_t k);
+
+/** \brief The spacing estimatePointSpacing gives from sampled neighbourhoods (of at
+ * least 6 nearest): the mean of sqrt(pi r6^2 / 6) over those with 6, in their order;
+ * 0 when none has. */
+double
+pointSpacingOf (const std::vector<SampledNeighbourhood>& neighbourhoods);
 
 /** \brief Average point spacing of a surface cloud: the square root of the surface area
  * per point, sqrt(pi r6^2 / 6) with r6 the distance to the 6th nearest distinct
@@ -71,16 +116,30 @@ struct Stack {
   }
 };
 
+/** \brief The direction a stack measures its points along: \a normal made unit length,
+ * in double (the coordinate of a point p along it is stackDirection (normal).dot
+ * (p.cast<double> ())). */
+inline Eigen::Vector3d
+stackDirection (const Eigen::Vector3f& normal)
+{
+  return normal.normalized().cast<double>();
+}
+
 /** \brief Slice \a xyz into contiguous profiles of \a width along \a normal (unit
  * length).
  *
- * Bucketing by profile number (a counting sort, O(N)) when there are not many more
- * profiles than points, a comparison sort otherwise. Deterministic. \return false when
- * the width is not positive and finite or there is no point */
+ * Profile 0 starts at \a origin, the coordinate along stackDirection (normal); NaN (the
+ * default) starts it at the lowest point. A part of a cloud given its whole cloud's
+ * origin gets the whole cloud's profiles (those the part holds, each whole when the
+ * part holds every point between two profile borders). Bucketing by profile number (a
+ * counting sort, O(N)) when there are not many more profiles than points, a comparison
+ * sort otherwise. Deterministic. \return false when the width is not positive and
+ * finite, there is no point or a point lies below \a origin */
 bool
 buildStack (const std::vector<Eigen::Vector3f>& xyz,
             const Eigen::Vector3f& normal,
             double width,
-            Stack& stack);
+            Stack& stack,
+            double origin = std::numeric_limits<double>::quiet_NaN());
 } // namespace profiles
 } // namespace pcl_ext
