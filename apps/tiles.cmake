@@ -4,6 +4,10 @@ pcl_ext_add_app(tiles
   SOURCES
     src/tiles/tiles.cpp
     src/tiles/tile_steps.cpp
+    src/tiles/merge_output.cpp
+    src/tiles/profile_frame.cpp
+    src/tiles/profile_parts.cpp
+    src/tiles/profile_tiles.cpp
     src/tiles/second_pass_steps.cpp
     src/tiles/tile_intersections.cpp
     src/tiles/tile_outputs.cpp

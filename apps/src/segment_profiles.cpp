@@ -4,6 +4,8 @@
  * the segment in the field `segment` (-output_field; 1, 2, ... by decreasing size; 0
  * for points in no segment).
  */
+#include "profiles/profile_options.h"
+
 #include <pcl_ext/segmentation/auto_profile_segmentation.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
@@ -25,22 +27,6 @@
 
 namespace {
 using Segmentation = pcl_ext::ProfileSegmentation<pcl::PointXYZ>;
-
-bool
-parseMethod (const std::string& name, Segmentation::ProfileMethod& method)
-{
-  if (name == "proximity")
-    method = Segmentation::ProfileMethod::Proximity;
-  else if (name == "mst")
-    method = Segmentation::ProfileMethod::MinimumSpanningTree;
-  else if (name == "curve")
-    method = Segmentation::ProfileMethod::CurveFitting;
-  else if (name == "crust")
-    method = Segmentation::ProfileMethod::CurveReconstruction;
-  else
-    return false;
-  return true;
-}
 
 #ifdef PCL_EXT_HAVE_VISUALIZATION
 /** Figure 3 and 5 of the paper for the first stack: points coloured by profile, and by
@@ -108,19 +94,9 @@ int
 main (int argc, char** argv)
 {
   std::string input_path, output_path, png_path, png_profiles_path;
-  std::string method_name = "auto", distribution = "hemisphere";
-  unsigned int stacks = 4, threads = 0, neighbours = 4;
-  double width = 0.0, width_factor = 1.5, threshold = 0.0, threshold_factor = 3.0;
-  double max_turn_deg = 30.0, window = 0.0, residual_factor = 3.0,
-         turn_significance = 0.0;
-  double max_threshold_factor = 4.0;
-  bool aicc = false, local_threshold = false, side_frames = false,
-       join_cylinders = false, verbose = false;
-  // Cylinder join lengths: negative follows the point spacing.
-  double cylinder_tolerance = -1.0, cylinder_min_radius = -1.0,
-         cylinder_max_radius = -1.0;
-  double cylinder_max_gap = -1.0, cylinder_patch = -1.0;
-  int min_size = 1;
+  unsigned int threads = 0;
+  bool verbose = false;
+  pcl_ext::apps::ProfileOptions options;
   pcl_ext::apps::CommandLine cl ("pcl_ext_segment_profiles",
                                  "Segments a cloud by intersecting profiles (Sithole & "
                                  "Mapurisa): stacks of thin profiles "
@@ -131,96 +107,7 @@ main (int argc, char** argv)
                                  "'segment' (1.. by decreasing size, 0: none).");
   pcl_ext::apps::ResultField result = pcl_ext::apps::segmentIdField();
   result.addTo (cl, input_path, output_path);
-  cl.addOption ("stacks", stacks, "number of stacks (stack normals spread evenly)");
-  cl.addOption ("distribution",
-                distribution,
-                "stack normals over the 'hemisphere' or a 'horizontal' half circle");
-  cl.addOption (
-      "width", width, "profile width (0: width_factor * average point spacing)");
-  cl.addOption (
-      "width_factor",
-      width_factor,
-      "profile width as a multiple of the spacing (curve fitting, noisy scans: 2.5)");
-  cl.addOption (
-      "method",
-      method_name,
-      "profile segmenter: proximity, mst, curve or crust (curve reconstruction, "
-      "section 5.2); auto: chosen from the "
-      "cloud's noise and density variation (see -v), with the join, side "
-      "frames and local thresholds; the options given still apply");
-  cl.addOption ("threshold",
-                threshold,
-                "proximity threshold (0: threshold_factor * average point spacing)");
-  cl.addOption (
-      "threshold_factor", threshold_factor, "threshold as a multiple of the spacing");
-  cl.addSwitch (
-      "local_threshold",
-      local_threshold,
-      "thresholds that follow the local density (the threshold times the local gap "
-      "in the profile over the mean gap), for clouds whose density varies (TLS: far "
-      "surfaces are sparser); not in the paper");
-  cl.addOption ("max_threshold_factor",
-                max_threshold_factor,
-                "local thresholds: the longest, as a multiple of the threshold");
-  cl.addOption ("k", neighbours, "proximity chaining: links per point");
-  cl.addOption (
-      "max_turn", max_turn_deg, "curve fitting: sharpest turn within a curve (deg)");
-  cl.addOption (
-      "window",
-      window,
-      "curve fitting: half length of the stretch fitted on each side of a point "
-      "(0: 2 x threshold)");
-  cl.addOption (
-      "residual_factor",
-      residual_factor,
-      "curve fitting: a stretch whose residual exceeds this multiple of the median "
-      "is not one curve");
-  cl.addOption (
-      "turn_significance",
-      turn_significance,
-      "curve fitting: a sharp turn must also exceed this many standard errors of the "
-      "fits (0: the angle alone, as in the paper; noisy scans: 3)");
-  cl.addSwitch (
-      "aicc",
-      aicc,
-      "curve fitting: select the polynomial by the small-sample AICc, not the "
-      "paper's AIC (noisy scans)");
-  cl.addSwitch (
-      "side_frames",
-      side_frames,
-      "curve fitting: fit each side of a point along its own axis (tight bends, "
-      "such as thin trunks cut obliquely); not in the paper");
-  cl.addSwitch (
-      "join_cylinders",
-      join_cylinders,
-      "then join the segments that lie on one cylinder: the spans of a pipe cut at "
-      "its supports, the legs of an elbow (pcl_ext::CylinderSegmentJoin); not in the "
-      "paper");
-  cl.addOption (
-      "cylinder_tolerance",
-      cylinder_tolerance,
-      "joining cylinders: inlier band around a cylinder's surface (negative: 0.6 x "
-      "the average point spacing of the segments)");
-  cl.addOption (
-      "cylinder_min_radius",
-      cylinder_min_radius,
-      "joining cylinders: smallest radius (negative, with -cylinder_max_radius: "
-      "0.8 x the point spacing)");
-  cl.addOption (
-      "cylinder_max_radius",
-      cylinder_max_radius,
-      "joining cylinders: largest radius (negative, with -cylinder_min_radius: 24 "
-      "x the point spacing)");
-  cl.addOption ("cylinder_max_gap",
-                cylinder_max_gap,
-                "joining cylinders: longest gap bridged along an axis or to an elbow "
-                "(negative: 80 x the point spacing)");
-  cl.addOption (
-      "cylinder_patch",
-      cylinder_patch,
-      "joining cylinders: radius of the patch a cylinder hypothesis is drawn "
-      "from, at least twice the largest radius (negative: 24 x the point spacing)");
-  cl.addOption ("min_size", min_size, "smallest segment kept");
+  options.addTo (cl);
   cl.addOption ("threads", threads, "OpenMP threads (0: all cores)");
   cl.addSwitch ("v",
                 verbose,
@@ -237,34 +124,9 @@ main (int argc, char** argv)
     return code;
   if (!picture.valid())
     return 1;
-  Segmentation::ProfileMethod method = Segmentation::ProfileMethod::Proximity;
-  const bool automatic = method_name == "auto";
-  if (!automatic && !parseMethod (method_name, method)) {
-    std::cerr << "Error: -method must be auto, proximity, mst, curve or crust (got '"
-              << method_name << "').\n";
+  if (!options.valid())
     return 1;
-  }
-  if (distribution != "hemisphere" && distribution != "horizontal") {
-    std::cerr << "Error: -distribution must be hemisphere or horizontal.\n";
-    return 1;
-  }
-  if (min_size < 1) {
-    std::cerr << "Error: -min_size must be at least 1.\n";
-    return 1;
-  }
-  const bool radii_from_spacing =
-      cylinder_min_radius < 0.0 && cylinder_max_radius < 0.0;
-  if ((join_cylinders || automatic) &&
-      (cylinder_tolerance == 0.0 || !std::isfinite (cylinder_tolerance) ||
-       !(radii_from_spacing ||
-         (cylinder_min_radius > 0.0 && cylinder_max_radius >= cylinder_min_radius)) ||
-       !std::isfinite (cylinder_max_radius) || !std::isfinite (cylinder_max_gap) ||
-       cylinder_patch == 0.0 || !std::isfinite (cylinder_patch))) {
-    std::cerr << "Error: joining cylinders needs -cylinder_tolerance and "
-                 "-cylinder_patch not 0, -cylinder_min_radius and -cylinder_max_radius "
-                 "both negative or 0 < min <= max, all finite.\n";
-    return 1;
-  }
+  const bool automatic = options.automatic();
   if (!result.checkOutput (output_path, {png_path, png_profiles_path}))
     return 1;
 
@@ -281,36 +143,8 @@ main (int argc, char** argv)
   Segmentation given_segmentation;
   Segmentation& seg = automatic ? automatic_segmentation : given_segmentation;
   seg.setInputCloud (cloud);
-  seg.setNumberOfStacks (stacks);
-  seg.setStackDistribution (
-      distribution == "hemisphere"
-          ? Segmentation::StackDistribution::Hemisphere
-          : Segmentation::StackDistribution::HorizontalHalfCircle);
-  seg.setProfileWidth (width);
-  seg.setDistanceThreshold (threshold);
-  seg.setDistanceThresholdFactor (threshold_factor);
-  seg.setMaxThresholdFactor (max_threshold_factor);
-  seg.setProximityNeighbours (neighbours);
-  seg.setMaxTurnAngle (max_turn_deg * M_PI / 180.0);
-  seg.setCurveWindow (window);
-  seg.setResidualFactor (residual_factor);
-  seg.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
-  seg.setNumberOfThreads (threads);
-  seg.setProfileWidthFactor (width_factor);
-  seg.setProfileSegmentation (method);
-  seg.setLocalThreshold (local_threshold);
-  seg.setTurnSignificance (turn_significance);
-  seg.setCorrectedAic (aicc);
-  seg.setSideFrames (side_frames);
-  pcl_ext::CylinderSegmentJoin<pcl::PointXYZ> join;
-  if (cylinder_tolerance > 0.0)
-    join.setDistanceTolerance (cylinder_tolerance);
-  if (!radii_from_spacing)
-    join.setRadiusLimits (cylinder_min_radius, cylinder_max_radius);
-  if (cylinder_max_gap >= 0.0)
-    join.setMaxGap (cylinder_max_gap);
-  if (cylinder_patch > 0.0)
-    join.setNeighbourhoodRadius (cylinder_patch);
+  options.apply (seg, threads);
+  pcl_ext::CylinderSegmentJoin<pcl::PointXYZ> join = options.makeJoin();
   automatic_segmentation.setCylinderJoin (join);
 
   std::vector<pcl::PointIndices> clusters;
@@ -323,7 +157,7 @@ main (int argc, char** argv)
     }
     timer.done (cloud->size());
   }
-  bool curve_fitting = method == Segmentation::ProfileMethod::CurveFitting;
+  bool curve_fitting = options.method == Segmentation::ProfileMethod::CurveFitting;
   if (automatic) {
     const auto& chosen = automatic_segmentation.getConfiguration();
     if (verbose)
@@ -336,7 +170,7 @@ main (int argc, char** argv)
   }
   const bool joined_by_segmentation =
       automatic && automatic_segmentation.getCylindersJoined();
-  join_cylinders = join_cylinders || joined_by_segmentation;
+  const bool join_cylinders = options.join_cylinders || joined_by_segmentation;
   if (join_cylinders && !joined_by_segmentation) {
     join.setInputCloud (cloud);
     join.setInputSegments (clusters);
@@ -399,7 +233,7 @@ main (int argc, char** argv)
         ids.push_back (l.label);
       pcl_ext::visualization::View view;
       view.title = "Sithole & Mapurisa: " + std::to_string (clusters.size()) +
-                   " segments (" + method_name + ")";
+                   " segments (" + options.method_name + ")";
       view.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
           *cloud, pcl_ext::visualization::colourByLabel (ids))});
       view.legend.push_back (

@@ -3,6 +3,7 @@
  * alone (scheduler array jobs) or one after another.
  */
 #include "tile_steps.h"
+#include "merge_output.h"
 #include "second_pass_steps.h"
 #include "input_fields.h"
 #include "tile_outputs.h"
@@ -34,7 +35,6 @@ namespace {
  * halo, its neighbourhoods and the method's arrays, a process stays under 2 GB
  * (docs/tiles.md has the measurements). */
 constexpr std::uint64_t kPointsPerTile = 2500000;
-constexpr std::size_t kChunkPoints = 1 << 20;
 
 std::string
 joinArguments (const std::vector<std::string>& args)
@@ -125,30 +125,6 @@ removeEarlierRun (const std::string& workdir)
   if (error) {
     std::cerr << "Error: cannot clear the work folder " << workdir << " of an earlier "
               << "run: " << error.message() << ".\n";
-    return false;
-  }
-  return true;
-}
-
-/** The method's float per point (TileMethod::getExtraValues) of the \a chunk's points,
- * the first of them at global index \a first, into its field \a name (0 for a point no
- * tile holds: not finite). */
-bool
-attachExtraValues (const std::string& workdir,
-                   std::uint64_t first,
-                   const std::string& name,
-                   pcl::PCLPointCloud2& chunk)
-{
-  std::vector<std::uint32_t> bits;
-  const std::size_t n = static_cast<std::size_t> (chunk.width) * chunk.height;
-  if (!tiling::TileResults::read (workdir, first, n, bits, kExtraValues))
-    return false;
-  std::vector<float> values (n, 0.0f);
-  for (std::size_t i = 0; i < n; ++i)
-    if (bits[i] != tiling::TileResults::kNoResult)
-      std::memcpy (&values[i], &bits[i], sizeof (float));
-  if (!io::setFloatField (chunk, name, values)) {
-    std::cerr << "\nError: cannot write the field '" << name << "'.\n";
     return false;
   }
   return true;
@@ -469,129 +445,31 @@ mergeStep (const tiling::TilePlan& plan,
   if (refined &&
       !method.mergeRefineOutputs (workdir, plan.getGrid().size(), plan.origin))
     return false;
-  StageTimer timer ("Merging into " + output);
   const bool segments = method.getKind() == tiling::MergedResults::Kind::Segments;
   // After a second pass the segments are numbered over the whole cloud already.
   const auto kind = refined ? tiling::MergedResults::Kind::PerPoint : method.getKind();
-  const bool las = io::fileExtension (output) == "las";
-  const bool per_tile = TileOutputs::isPattern (output);
-  if (per_tile && !las) {
-    std::cerr << "\nError: one file per tile ('#' in " << output
-              << ") is written as LAS: name it .las.\n";
-    return false;
-  }
-  try {
-    tiling::PointFileChunks first;
-    first.open (plan.inputs.front());
-    io::PointFile like = first.getDescription();
-    like.origin = plan.origin;
-    // Inputs with different fields: every field in the output.
-    pcl::PCLPointCloud2 layout, conformed;
-    if (!unionOfInputFields (plan.inputs, layout))
-      return false;
-    like.cloud.fields = layout.fields;
-    if (!field.checkInput (like, plan.inputs.front()))
-      return false;
-    const std::uint64_t min_size = refined ? 0 : method.getMinSegmentSize();
+  const std::uint64_t min_size = refined ? 0 : method.getMinSegmentSize();
+  MergeReading reading;
+  reading.kind = kind;
+  reading.segments = segments;
+  reading.min_size = segments ? min_size : 0;
+  if (refined)
+    reading.results_name = kRefined;
+  if (method.needsGrow()) {
     // New segments grown among the points left out, numbered after the others.
     std::uint32_t joined = 0;
-    if (method.needsGrow() && !loadJoinedSegmentCount (workdir, joined))
+    if (!loadJoinedSegmentCount (workdir, joined))
       return false;
-    const std::string extra_field = method.getExtraFieldName();
-    const tiling::TileGrid grid = plan.getGrid();
-    const io::LasFileInfo* like_las = like.las ? &*like.las : nullptr;
-    TileOutputs tile_outputs (output, grid, plan.origin, like_las);
-    io::LasWriter writer;
-    pcl::PCLPointCloud2 chunk, whole;
-    std::vector<std::uint32_t> values, codes;
-    std::uint64_t points = 0;
-    // One file per tile: a pass over the inputs for as many tiles as files may be
-    // open at once (all of them, mostly).
-    const std::size_t tiles_per_pass = per_tile
-                                           ? TileOutputs::openFilesAllowed()
-                                           : std::max<std::size_t> (grid.size(), 1);
-    for (std::size_t pass_first = 0;
-         pass_first < std::max<std::size_t> (grid.size(), 1);
-         pass_first += tiles_per_pass) {
-      tiling::MergedResults merged;
-      if (segments && min_size > 0)
-        merged.setSegmentsBySize (min_size);
-      if (refined)
-        merged.setResultsName (kRefined);
-      if (method.needsGrow())
-        merged.setGrownSegments (
-            tiling::SegmentPassFiles::named (kGrown),
-            std::max<std::uint64_t> (method.getMinSegmentSize(), 1),
-            joined);
-      if (!merged.open (plan, workdir, kind))
-        return false;
-      if (segments && min_size > 0 && merged.getNumberOfSegments() == 0) {
-        std::cerr << "\nError: no segment of at least " << min_size << " points.\n";
-        return false;
-      }
-      std::size_t input = 0;
-      bool opened = false;
-      while (merged.read (kChunkPoints, chunk, input, values) > 0) {
-        for (auto& v : values)
-          v = v == tiling::TileResults::kNoResult ? 0u : (segments ? v + 1 : v);
-        if (!hasLayout (chunk, layout)) {
-          io::conformToFields (chunk, layout, conformed);
-          chunk = std::move (conformed);
-        }
-        if (!field.attach (chunk, values) ||
-            (!extra_field.empty() &&
-             !attachExtraValues (
-                 workdir, merged.getNextIndex() - values.size(), extra_field, chunk)))
-          return false;
-        if (field.asprs()) {
-          codes = values;
-          if (!method.toAsprs (codes) ||
-              !io::setLabelField (chunk, "classification", codes))
-            return false;
-        }
-        if (per_tile) {
-          if (!tile_outputs.write (chunk, pass_first, pass_first + tiles_per_pass))
-            return false;
-        }
-        else if (las) {
-          if (!opened && !writer.open (output, chunk, plan.origin, like_las))
-            return false;
-          opened = true;
-          if (!writer.write (chunk))
-            return false;
-        }
-        else if (whole.data.empty())
-          whole = chunk;
-        else if (!pcl::PCLPointCloud2::concatenate (whole, chunk)) {
-          std::cerr << "\nError: the chunks of " << plan.inputs[input]
-                    << " cannot be joined to the output.\n";
-          return false;
-        }
-        if (pass_first == 0)
-          points += values.size();
-      }
-      if (merged.failed() || (per_tile && !tile_outputs.finishPass()))
-        return false;
-    }
-    if (per_tile ? !tile_outputs.close()
-        : las    ? !writer.close()
-                 : !io::savePointFile (output, whole, plan.origin, &like))
-      return false;
-    timer.done (points);
-    if (per_tile) {
-      std::cout << "  " << tile_outputs.getNumberOfFiles() << " files, index "
-                << TileOutputs::indexPathOf (output);
-      if (tile_outputs.getPointsInNoTile() > 0)
-        std::cout << "; " << tile_outputs.getPointsInNoTile()
-                  << " points without finite coordinates are in no tile's file";
-      std::cout << "\n";
-    }
+    reading.grown = true;
+    reading.grown_first_id = joined;
+    reading.grown_min_size = std::max<std::uint64_t> (method.getMinSegmentSize(), 1);
   }
-  catch (const std::exception& e) {
-    std::cerr << "\nError: " << e.what() << "\n";
-    return false;
-  }
-  return true;
+  reading.extra_field = method.getExtraFieldName();
+  reading.to_asprs = [&method] (std::vector<std::uint32_t>& codes) {
+    return method.toAsprs (codes);
+  };
+  return writeMergedOutput (plan, field, workdir, output, reading);
 }
+
 } // namespace apps
 } // namespace pcl_ext

@@ -15,6 +15,9 @@
 
 namespace pcl_ext {
 namespace apps {
+/** \brief Points read at a time from an input. */
+constexpr std::size_t kChunkPoints = 1 << 20;
+
 /** \brief The work file of a method's float per point (TileMethod::getExtraValues), as
  * the bits of each float, at the points' global indices. */
 constexpr const char* kExtraValues = "extra";

@@ -2,6 +2,7 @@
  * pcl_ext_tiles: a method over a cloud larger than memory, tile by tile with halos,
  * with the result of the method's own tool on the whole cloud.
  */
+#include "profile_tiles.h"
 #include "second_pass_steps.h"
 #include "tile_scheduler.h"
 #include "tile_steps.h"
@@ -426,6 +427,8 @@ main (int argc, char** argv)
     return runStep (argc, argv);
   if (first == "resume")
     return runResume (argc, argv, *scheduler);
+  if (first == "segment_profiles")
+    return pcl_ext::apps::runProfileTiles (argc, argv, *scheduler);
   if (first == "plan") {
     std::unique_ptr<pcl_ext::apps::TileMethod> method;
     TileOptions options;

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -266,6 +267,31 @@ public:
     return spacing_;
   }
 
+  /** \brief Segment a part of a larger cloud as the whole cloud would be: \a centre,
+   * the mean of the whole cloud's finite points (in the input's frame), about which the
+   * points are computed in float, and \a origins, where profile 0 of each stack starts
+   * (profiles::PipelineParameters::origins, one per stack). Given also the whole
+   * cloud's spacing (setPointSpacing) and stack normals, a part that holds each of its
+   * profiles whole gets the whole cloud's profile edges among its points (a run split
+   * by profiles, e.g. pcl_ext_tiles). Default: a NaN centre and no origins, the
+   * input's own. */
+  void
+  setCloudFrame (const Eigen::Vector3d& centre, const std::vector<double>& origins)
+  {
+    frame_centre_ = centre;
+    frame_origins_ = origins;
+  }
+  const Eigen::Vector3d&
+  getCloudCentre () const
+  {
+    return frame_centre_;
+  }
+  const std::vector<double>&
+  getStackOrigins () const
+  {
+    return frame_origins_;
+  }
+
   /** \brief The profile segmenter. Default Proximity; CurveReconstruction links each
    * point to its nearest and half neighbours (profiles::crustEdges). */
   void
@@ -499,6 +525,9 @@ protected:
   bool corrected_aic_ = false;
   bool side_frames_ = false;
   unsigned int threads_ = 0;
+  Eigen::Vector3d frame_centre_ =
+      Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN());
+  std::vector<double> frame_origins_;
 
   // Results of the last extract().
   pcl::Indices points_; ///< cloud index of each segmented (finite) point

@@ -59,6 +59,12 @@ ProfileSegmentation<PointT>::prepare (std::vector<Eigen::Vector3f>& xyz)
         name);
     return false;
   }
+  if (!frame_centre_.allFinite() && !frame_centre_.array().isNaN().all()) {
+    PCL_ERROR ("[pcl_ext::%s] The cloud centre must be finite (or all NaN: the "
+               "input's).\n",
+               name);
+    return false;
+  }
   if (!validClusterSizes()) {
     PCL_ERROR (
         "[pcl_ext::%s] Need 1 <= minimum cluster size <= maximum cluster size.\n",
@@ -88,6 +94,8 @@ ProfileSegmentation<PointT>::prepare (std::vector<Eigen::Vector3f>& xyz)
     }
   if (!points_.empty())
     centre /= static_cast<double> (points_.size());
+  if (frame_centre_.allFinite())
+    centre = frame_centre_;
   xyz.resize (points_.size());
   for (std::size_t i = 0; i < points_.size(); ++i)
     xyz[i] = ((*input_)[points_[i]].getVector3fMap().template cast<double>() - centre)
@@ -145,6 +153,7 @@ ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
   for (auto& n : p.normals)
     n.normalize();
   used_normals_ = p.normals;
+  p.origins = frame_origins_;
   if (xyz.empty()) {
     PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] No finite point to segment.\n");
     deinitCompute();
@@ -166,8 +175,17 @@ ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
   p.threads = resolveThreadCount (threads_);
 
   profiles::PipelineResult result;
+  if (!p.origins.empty() && p.origins.size() != p.normals.size()) {
+    PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] %zu stack origins for %zu "
+               "stacks.\n",
+               p.origins.size(),
+               p.normals.size());
+    deinitCompute();
+    return;
+  }
   if (!profiles::runProfileSegmentation (xyz, p, result)) {
-    PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] Invalid parameters.\n");
+    PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] Invalid parameters (or a "
+               "point below its stack's given origin).\n");
     deinitCompute();
     return;
   }
