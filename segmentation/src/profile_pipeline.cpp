@@ -33,6 +33,11 @@ validParameters (const PipelineParameters& p)
       return false;
   if (!p.origins.empty() && p.origins.size() != p.normals.size())
     return false;
+  if (!p.mean_gaps.empty() && p.mean_gaps.size() != p.normals.size())
+    return false;
+  for (const double g : p.mean_gaps)
+    if (!(g >= 0.0) || !std::isfinite (g))
+      return false;
   for (const double o : p.origins)
     if (!std::isfinite (o))
       return false;
@@ -162,6 +167,10 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     // mean.
     const float cap = static_cast<float> (parameters.max_threshold);
     for (std::size_t s = 0; s < num_stacks; ++s) {
+      if (!parameters.mean_gaps.empty()) {
+        mean_gap[s] = parameters.mean_gaps[s];
+        continue;
+      }
       double sum = 0.0;
       std::size_t count = 0;
       for (const float g : stack_gaps[s])
@@ -171,6 +180,10 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
         }
       mean_gap[s] = count ? sum / static_cast<double> (count) : 0.0;
     }
+  }
+  if (parameters.local_gaps_only) {
+    result.local_gaps = std::move (stack_gaps);
+    return true;
   }
 
   // The threshold scaled by how much sparser than the stack's mean the point's stretch

@@ -5,6 +5,7 @@
 #include "../profiles/profile_options.h"
 #include "input_fields.h"
 #include "merge_output.h"
+#include "profile_part_steps.h"
 #include "profile_parts.h"
 
 #include <pcl_ext/apps/command_line.h>
@@ -23,6 +24,7 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
+#include <sstream>
 #include <sys/resource.h>
 
 namespace pcl_ext {
@@ -82,9 +84,9 @@ clearWorkdir (const std::string& workdir)
   return true;
 }
 
-/** What a tiled run cannot give yet: the curve fitting's stack-wide medians and the
- * local thresholds' stack-wide mean gap, over every part of a stack, and the cylinder
- * join's reach along an axis. \return false (message printed) for those */
+/** What a run over parts cannot give yet: the curve fitting's stack-wide medians and
+ * curve ends of every stack, and the cylinder join's reach along an axis. \return
+ * false (message printed) for those */
 bool
 supportedOptions (const ProfileOptions& options)
 {
@@ -92,8 +94,6 @@ supportedOptions (const ProfileOptions& options)
   if (options.method == ProfileOptions::Segmentation::ProfileMethod::CurveFitting &&
       !options.automatic())
     missing = "-method curve";
-  else if (options.local_threshold)
-    missing = "-local_threshold";
   else if (options.join_cylinders)
     missing = "-join_cylinders";
   if (!missing)
@@ -163,186 +163,77 @@ plan (const std::vector<std::string>& inputs,
   return true;
 }
 
-/** Segment part \a i and save each point's link to the first point of its component
- * (none for that first point). */
+/** -method auto's choice after its first run (AutoProfileSegmentation): \a rerun when
+ * it adds local thresholds. \return false (message printed) for a choice the parts
+ * cannot give yet */
 bool
-runPart (const ProfileFrame& frame,
-         const ProfileParts& parts,
-         const ProfileOptions& options,
-         const RunOptions& run,
-         std::size_t i)
+chooseAutomatically (const ProfileFrame& frame,
+                     const JoinedParts& joined,
+                     const ProfileOptions& options,
+                     bool verbose,
+                     bool& rerun)
 {
-  std::size_t stack, part;
-  parts.locate (i, stack, part);
-  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  std::vector<std::uint64_t> indices;
-  if (!readProfilePart (
-          profilePartPath (run.workdir, stack, part, "points"), indices, *cloud))
-    return false;
-  ProfileOptions::Segmentation seg;
-  options.apply (seg, run.threads);
-  if (options.automatic()) // AutoProfileSegmentation's first run
-    seg.setProfileSegmentation (ProfileOptions::Segmentation::ProfileMethod::Proximity);
-  seg.setMinClusterSize (1); // the sizes count over all parts, at the merge
-  seg.setStackNormals ({frame.normals[stack]});
-  if (frame.spacing > 0.0)
-    seg.setPointSpacing (frame.spacing);
-  seg.setCloudFrame (frame.centre, {frame.origins[stack]});
-  seg.setInputCloud (cloud);
-  std::vector<pcl::PointIndices> clusters;
-  seg.extract (clusters);
-  if (clusters.empty() && !cloud->empty()) {
-    std::cerr << "Error: part " << i << " (stack " << stack << ") failed (see the "
-              << "message above).\n";
+  const double share =
+      static_cast<double> (joined.largest) / static_cast<double> (frame.points);
+  const auto chosen = profiles::chooseConfiguration (frame.statistics, share);
+  const std::string line =
+      profiles::describeConfiguration (frame.statistics, share, chosen);
+  if (verbose)
+    std::cout << line << "\n";
+  if (chosen.curve_fitting) {
+    std::cerr << "\nError: -method auto chose curve fitting for this cloud (" << line
+              << "), which pcl_ext_tiles segment_profiles does not run yet: run "
+                 "pcl_ext_segment_profiles on the whole cloud.\n";
     return false;
   }
-  std::vector<std::uint64_t> links;
-  for (const auto& c : clusters)
-    for (std::size_t k = 1; k < c.indices.size(); ++k) {
-      links.push_back (indices[c.indices[k]]);
-      links.push_back (indices[c.indices.front()]);
-    }
-  const std::string path = profilePartPath (run.workdir, stack, part, "links");
-  const std::string partial = path + ".partial";
-  std::FILE* file = std::fopen (partial.c_str(), "wb");
-  const bool written =
-      file && std::fwrite (links.data(), sizeof (std::uint64_t), links.size(), file) ==
-                  links.size();
-  if (!file || std::fclose (file) != 0 || !written ||
-      std::rename (partial.c_str(), path.c_str()) != 0) {
-    std::cerr << "Error: cannot write " << path << " (disk full?).\n";
-    std::remove (partial.c_str());
-    return false;
-  }
+  rerun = chosen.local_threshold && !options.local_threshold;
   return true;
 }
 
 bool
-readLinks (const std::string& path, std::vector<std::uint64_t>& links)
+saveMeanGaps (tiling::TilePlan& plan,
+              const std::vector<double>& mean_gaps,
+              const std::string& workdir)
 {
-  links.clear();
-  std::FILE* file = std::fopen (path.c_str(), "rb");
-  if (!file) {
-    std::cerr << "Error: " << path << " is missing: that part has not run.\n";
-    return false;
+  std::string text;
+  char value[32];
+  for (const double g : mean_gaps) {
+    std::snprintf (value, sizeof (value), "%.17g", g);
+    text += (text.empty() ? "" : " ") + std::string (value);
   }
-  std::uint64_t buffer[8192];
-  std::size_t n;
-  while ((n = std::fread (buffer, sizeof (std::uint64_t), 8192, file)) > 0)
-    links.insert (links.end(), buffer, buffer + n);
-  const bool ok = !std::ferror (file) && links.size() % 2 == 0;
-  std::fclose (file);
-  if (!ok)
-    std::cerr << "Error: " << path << " is broken.\n";
-  return ok;
+  plan.settings["profile_mean_gaps"] = text;
+  return tiling::saveTilePlan (planFile (workdir), plan);
 }
 
-/** Join the parts' links over all points, choose as -method auto would, number the
- * segments largest first (ties by first point) and save them as the run's results.
- * \return false (message printed) when a part is missing or the automatic choice is
- * one the parts cannot give */
 bool
-merge (const tiling::TilePlan& plan,
-       const ProfileFrame& frame,
-       const ProfileParts& parts,
-       const ProfileOptions& options,
-       const RunOptions& run,
-       std::uint32_t& segments)
+loadMeanGaps (const tiling::TilePlan& plan, std::vector<double>& mean_gaps)
 {
-  StageTimer timer ("Joining the parts");
-  const std::uint64_t total = plan.getTotalPoints();
-  std::vector<std::uint32_t> parent (total), size (total, 0);
-  std::iota (parent.begin(), parent.end(), 0u);
-  const auto find = [&] (std::uint32_t x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  std::vector<std::uint64_t> links, indices;
-  pcl::PointCloud<pcl::PointXYZ> unused;
-  // Every finite point lies in one part of the first stack.
-  for (std::size_t p = 0; p < parts.firsts[0].size(); ++p) {
-    if (!readProfilePart (
-            profilePartPath (run.workdir, 0, p, "points"), indices, unused))
-      return false;
-    for (const auto i : indices)
-      size[i] = 1;
-  }
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    std::size_t s, p;
-    parts.locate (i, s, p);
-    if (!readLinks (profilePartPath (run.workdir, s, p, "links"), links))
-      return false;
-    for (std::size_t k = 0; k < links.size(); k += 2) {
-      if (links[k] >= total || links[k + 1] >= total) {
-        std::cerr << "Error: part " << i << "'s links are broken.\n";
-        return false;
-      }
-      const std::uint32_t a = find (static_cast<std::uint32_t> (links[k]));
-      const std::uint32_t b = find (static_cast<std::uint32_t> (links[k + 1]));
-      if (a != b) // the smaller index is the root: a component's first point
-        parent[std::max (a, b)] = std::min (a, b);
-    }
-  }
-  std::uint32_t largest = 0;
-  for (std::uint32_t i = 0; i < total; ++i)
-    if (size[i]) {
-      const std::uint32_t root = find (i);
-      if (root != i) {
-        size[root] += 1;
-        size[i] = 0;
-      }
-    }
-  for (std::uint32_t i = 0; i < total; ++i)
-    largest = std::max (largest, size[i]);
-  if (options.automatic()) {
-    const double share =
-        static_cast<double> (largest) / static_cast<double> (frame.points);
-    const auto chosen = profiles::chooseConfiguration (frame.statistics, share);
-    if (run.verbose)
-      std::cout << profiles::describeConfiguration (frame.statistics, share, chosen)
-                << "\n";
-    if (chosen.curve_fitting || chosen.local_threshold) {
-      std::cerr << "\nError: -method auto chose "
-                << (chosen.curve_fitting ? "curve fitting" : "local thresholds")
-                << " for this cloud ("
-                << profiles::describeConfiguration (frame.statistics, share, chosen)
-                << "), which pcl_ext_tiles segment_profiles does not run yet: run "
-                   "pcl_ext_segment_profiles on the whole cloud.\n";
-      return false;
-    }
-  }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> kept; // (size, first point)
-  for (std::uint32_t i = 0; i < total; ++i)
-    if (size[i] >= static_cast<std::uint32_t> (options.min_size))
-      kept.emplace_back (size[i], i);
-  std::sort (kept.begin(), kept.end(), [] (const auto& a, const auto& b) {
-    return a.first != b.first ? a.first > b.first : a.second < b.second;
-  });
-  // size[] becomes each root's segment id (none for the points that are not finite,
-  // their own roots, and for the segments dropped).
-  std::fill (size.begin(), size.end(), tiling::TileResults::kNoResult);
-  for (std::size_t k = 0; k < kept.size(); ++k)
-    size[kept[k].second] = static_cast<std::uint32_t> (k);
-  segments = static_cast<std::uint32_t> (kept.size());
-  if (!tiling::TileResults::create (run.workdir, total))
+  mean_gaps.clear();
+  const auto it = plan.settings.find ("profile_mean_gaps");
+  if (it == plan.settings.end()) {
+    std::cerr << "Error: the plan has no mean gaps.\n";
     return false;
-  std::vector<std::uint64_t> block_indices;
-  std::vector<std::uint32_t> values;
-  for (std::uint64_t first = 0; first < total; first += 1 << 20) {
-    const std::uint64_t end = std::min<std::uint64_t> (total, first + (1 << 20));
-    block_indices.clear();
-    values.clear();
-    for (std::uint64_t i = first; i < end; ++i) {
-      const std::uint32_t root = find (static_cast<std::uint32_t> (i));
-      block_indices.push_back (i);
-      values.push_back (size[root]);
-    }
-    if (!tiling::TileResults::write (run.workdir, block_indices, values))
-      return false;
   }
-  timer.done (total);
+  std::istringstream in (it->second);
+  double g;
+  while (in >> g)
+    mean_gaps.push_back (g);
   return true;
+}
+
+bool
+saveRerun (tiling::TilePlan& plan, bool rerun, const std::string& workdir)
+{
+  plan.settings["profile_rerun"] = rerun ? "1" : "0";
+  return tiling::saveTilePlan (planFile (workdir), plan);
+}
+
+bool
+loadRerun (const tiling::TilePlan& plan, bool& rerun)
+{
+  const auto it = plan.settings.find ("profile_rerun");
+  rerun = it != plan.settings.end() && it->second == "1";
+  return it != plan.settings.end();
 }
 
 /** The inputs, the output and the options of a whole run. \return -1 to go on, else
@@ -427,27 +318,95 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
                         parts.loadFrom (tile_plan.settings, frame.normals.size()));
   if (!ok)
     return 1;
-  std::size_t i, done = 0;
-  scheduler.startPhase (parts.size());
-  while (ok && scheduler.next (i)) {
-    ok = runPart (frame, parts, options, run, i);
-    if (!ok) {
-      std::cerr << "Error: part " << i << " failed; the work folder " << run.workdir
-                << " is kept.\n";
-      break;
+  std::size_t done = 0;
+  // A pass over the parts shared among the processes; \a step names it in messages.
+  const auto over_parts = [&] (const char* step, const auto& run_part) {
+    std::size_t i, count = 0;
+    scheduler.startPhase (parts.size());
+    while (ok && scheduler.next (i)) {
+      ok = run_part (i);
+      if (!ok) {
+        std::cerr << "Error: " << step << " of part " << i << " failed.\n";
+        break;
+      }
+      ++count;
+      ++done;
+      const double seconds =
+          std::chrono::duration<double> (std::chrono::steady_clock::now() - start)
+              .count();
+      if (scheduler.getSize() == 1)
+        std::cout << "  " << step << ": " << count << " / " << parts.size()
+                  << " parts, " << static_cast<long> (seconds) << " s\n";
     }
-    ++done;
-    const double seconds =
-        std::chrono::duration<double> (std::chrono::steady_clock::now() - start)
-            .count();
-    if (scheduler.getSize() == 1)
-      std::cout << "  " << done << " / " << parts.size() << " parts, ETA "
-                << static_cast<long> (seconds / done * (parts.size() - done)) << " s\n";
-  }
-  ok = scheduler.allOk (ok);
+    ok = scheduler.allOk (ok);
+  };
+  PartPass pass;
+  pass.first_automatic = options.automatic();
+  pass.local_threshold = options.local_threshold;
+  // The local thresholds' mean gaps over the whole cloud, before the segmentation.
+  const auto gaps_pass = [&] {
+    ok = scheduler.allOk (ok &&
+                          (!leader || createGapFiles (run.workdir,
+                                                      parts.firsts.size(),
+                                                      tile_plan.getTotalPoints())));
+    over_parts ("local gaps", [&] (std::size_t i) {
+      return computePartGaps (frame, parts, options, pass, run.workdir, run.threads, i);
+    });
+    ok = scheduler.allOk (
+        ok && (!leader || reduceGaps (tile_plan, parts, run.workdir, pass.mean_gaps)));
+    if (leader && ok) {
+      pass.first_automatic = false;
+      ok = saveMeanGaps (tile_plan, pass.mean_gaps, run.workdir);
+    }
+    ok = scheduler.allOk (ok) &&
+         (leader || (tiling::loadTilePlan (planFile (run.workdir), tile_plan) &&
+                     loadMeanGaps (tile_plan, pass.mean_gaps)));
+    ok = scheduler.allOk (ok);
+  };
+  const auto segment_pass = [&] {
+    over_parts ("chains", [&] (std::size_t i) {
+      return segmentPart (frame, parts, options, pass, run.workdir, run.threads, i);
+    });
+  };
+  if (pass.local_threshold)
+    gaps_pass();
+  if (ok)
+    segment_pass();
+  JoinedParts joined;
   std::uint32_t segments = 0;
+  if (ok && options.automatic()) {
+    // -method auto: the choice from the first run's largest segment, as
+    // AutoProfileSegmentation makes it; the other ranks learn it through the plan.
+    bool rerun = false;
+    if (leader) {
+      ok = joinParts (tile_plan, parts, run.workdir, joined) &&
+           chooseAutomatically (frame, joined, options, run.verbose, rerun) &&
+           saveRerun (tile_plan, rerun, run.workdir);
+    }
+    ok = scheduler.allOk (ok) &&
+         (leader || (tiling::loadTilePlan (planFile (run.workdir), tile_plan) &&
+                     loadRerun (tile_plan, rerun)));
+    ok = scheduler.allOk (ok);
+    if (ok && rerun) {
+      pass.local_threshold = true;
+      gaps_pass();
+      pass.first_automatic = false;
+      if (ok)
+        segment_pass();
+      joined = JoinedParts();
+    }
+  }
   if (leader && ok) {
-    ok = merge (tile_plan, frame, parts, options, run, segments);
+    StageTimer timer ("Joining the parts");
+    ok =
+        (!joined.parent.empty() || joinParts (tile_plan, parts, run.workdir, joined)) &&
+        saveSegments (run.workdir,
+                      static_cast<std::uint64_t> (options.min_size),
+                      joined,
+                      segments);
+    if (ok)
+      timer.done (tile_plan.getTotalPoints());
+    joined = JoinedParts();
     if (ok) {
       MergeReading reading;
       reading.segments = true;
@@ -460,8 +419,7 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
   std::cout << (scheduler.getSize() > 1
                     ? "Rank " + std::to_string (scheduler.getRank()) + ": "
                     : std::string())
-            << (ok ? "done: " : "failed after ") << done << " of " << parts.size()
-            << " parts";
+            << (ok ? "done: " : "failed after ") << done << " part runs";
   if (leader && ok)
     std::cout << ", " << segments << " segments";
   std::cout << ", " << tile_plan.getTotalPoints() << " points, " << std::fixed
@@ -471,6 +429,8 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
     std::error_code ignored;
     std::filesystem::remove_all (run.workdir, ignored);
   }
+  if (!ok && leader)
+    std::cerr << "The work folder " << run.workdir << " is kept.\n";
   return ok ? 0 : 1;
 }
 } // namespace apps

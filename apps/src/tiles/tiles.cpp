@@ -30,7 +30,9 @@ constexpr const char* kDescription =
     "of pcl_ext_classify_variance and pcl_ext_segment_variance), crf_classify (-model "
     "model.txt of pcl_ext_crf_train, a model on x y z; a tile widens its margin "
     "until the super-voxels its points lie in are the whole cloud's, and at least "
-    "99 % of the points get pcl_ext_crf_classify's class). An output named "
+    "99 % of the points get pcl_ext_crf_classify's class), segment_profiles (the "
+    "options of pcl_ext_segment_profiles; split by profiles rather than by tiles, "
+    "one command, not in steps; curve fitting not yet). An output named "
     "with a '#' (out_#.las) gives one LAS file per tile, '#' its number, and an index "
     "of the files with their boxes (out_index.csv). Steps for scheduler "
     "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D', "
@@ -119,8 +121,12 @@ parsePlan (int argc,
   if (const int code = cl.parse (argc - first + 1, argv + first - 1); code >= 0)
     return code;
   if (!method) {
-    std::cerr << "Error: unknown method '" << options.method << "' ("
-              << pcl_ext::apps::kTileMethods << ").\n";
+    if (options.method == "segment_profiles")
+      std::cerr << "Error: segment_profiles runs as one command ('pcl_ext_tiles "
+                   "segment_profiles input... output'), not in steps yet.\n";
+    else
+      std::cerr << "Error: unknown method '" << options.method << "' ("
+                << pcl_ext::apps::kTileMethods << ", segment_profiles).\n";
     return 1;
   }
   if (!method->checkOptions (cl))

@@ -38,7 +38,14 @@ struct PipelineParameters {
    * over the stack's mean local gap, at least \a threshold and at most \a
    * max_threshold; the curve window scales with them. */
   bool local_threshold = false;
-  double max_threshold = 0.0;     ///< >= threshold when local_threshold
+  double max_threshold = 0.0; ///< >= threshold when local_threshold
+  /** \brief With local thresholds: each stack's mean local gap, one per normal, given
+   * rather than taken over the points (a run over parts of a cloud gives the whole
+   * cloud's); empty (the default): the points' own. */
+  std::vector<double> mean_gaps;
+  /** \brief With local thresholds: build the stacks and compute the local gaps
+   * (PipelineResult::local_gaps) only, no edges and no segments. */
+  bool local_gaps_only = false;
   double curve_window = 0.0;      ///< > 0 for CurveFitting
   double tangent_radius = 0.0;    ///< > 0 for CurveFitting
   double max_turn = 0.0;          ///< radians
@@ -58,6 +65,9 @@ struct PipelineResult {
   /** \brief Edges of \a edges that follow a curve across a junction of curve ends
    * (CurveFitting only; joinCurvesAcrossJunctions), last in their stack's edges. */
   std::size_t junction_joins = 0;
+  /** \brief With local thresholds: each point's local gap in each stack (localGaps;
+   * at most max_threshold, those at it had no neighbour within reach). */
+  std::vector<std::vector<float>> local_gaps;
   std::vector<std::uint32_t> labels; ///< component of each point
   std::size_t num_segments = 0;
 };

@@ -292,6 +292,37 @@ public:
     return frame_origins_;
   }
 
+  /** \brief With local thresholds, each stack's mean local gap, one per stack, rather
+   * than the input's own (profiles::PipelineParameters::mean_gaps): a part of a cloud
+   * given the whole cloud's (computeLocalGaps over every part) gets the whole cloud's
+   * thresholds. Default: none, the input's. */
+  void
+  setStackMeanGaps (const std::vector<double>& mean_gaps)
+  {
+    mean_gaps_ = mean_gaps;
+  }
+  const std::vector<double>&
+  getStackMeanGaps () const
+  {
+    return mean_gaps_;
+  }
+
+  /** \brief With local thresholds: the local gap of every input point in every stack
+   * (profiles::localGaps; NaN for a point that is not finite or not in the indices),
+   * without segmenting; the mean of those below getUsedMaxThreshold() is a stack's mean
+   * gap. \return false (PCL_ERROR) when the settings are not valid or local thresholds
+   * are off */
+  bool
+  computeLocalGaps (std::vector<std::vector<float>>& gaps);
+
+  /** \brief The longest local threshold of the last extract() or computeLocalGaps():
+   * the maximum threshold factor times the threshold. */
+  double
+  getUsedMaxThreshold () const
+  {
+    return used_max_threshold_;
+  }
+
   /** \brief The profile segmenter. Default Proximity; CurveReconstruction links each
    * point to its nearest and half neighbours (profiles::crustEdges). */
   void
@@ -501,6 +532,12 @@ protected:
   bool
   prepare (std::vector<Eigen::Vector3f>& xyz);
 
+  /** \brief Prepare the points, resolve the settings and run the pipeline (\a
+   * gaps_only: the local gaps only). \return false (PCL_ERROR, deinitCompute done)
+   * when the input or the settings are not valid */
+  bool
+  runPipeline (bool gaps_only, profiles::PipelineResult& result);
+
   /** \brief Resolve spacing, width and threshold into \a parameters. */
   bool
   resolveLengths (const std::vector<Eigen::Vector3f>& xyz,
@@ -528,6 +565,7 @@ protected:
   Eigen::Vector3d frame_centre_ =
       Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN());
   std::vector<double> frame_origins_;
+  std::vector<double> mean_gaps_;
 
   // Results of the last extract().
   pcl::Indices points_; ///< cloud index of each segmented (finite) point
@@ -541,6 +579,7 @@ protected:
   double used_spacing_ = 0.0;
   double used_width_ = 0.0;
   double used_threshold_ = 0.0;
+  double used_max_threshold_ = 0.0;
 };
 } // namespace pcl_ext
 

@@ -130,22 +130,13 @@ ProfileSegmentation<PointT>::resolveLengths (const std::vector<Eigen::Vector3f>&
 }
 
 template <typename PointT>
-void
-ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
+bool
+ProfileSegmentation<PointT>::runPipeline (bool gaps_only,
+                                          profiles::PipelineResult& result)
 {
-  clusters.clear();
-  clusters_.clear();
-  stack_edges_.clear();
-  profile_of_point_.clear();
-  breakpoints_.clear();
-  junction_joins_ = 0;
-  used_normals_.clear();
-  used_spacing_ = used_width_ = used_threshold_ = 0.0;
-  points_.clear();
-
   std::vector<Eigen::Vector3f> xyz;
   if (!prepare (xyz))
-    return;
+    return false;
   profiles::PipelineParameters p;
   p.normals = user_normals_.empty()
                   ? profiles::makeStackNormals (num_stacks_, distribution_)
@@ -157,38 +148,84 @@ ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
   if (xyz.empty()) {
     PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] No finite point to segment.\n");
     deinitCompute();
-    return;
+    return false;
   }
   if (!resolveLengths (xyz, p)) {
     deinitCompute();
-    return;
+    return false;
   }
   p.method = method_;
   p.proximity_neighbours = proximity_k_;
   p.local_threshold = local_threshold_;
   p.max_threshold = max_threshold_factor_ * used_threshold_;
+  used_max_threshold_ = p.max_threshold;
+  p.mean_gaps = mean_gaps_;
+  p.local_gaps_only = gaps_only;
   p.max_turn = max_turn_;
   p.turn_significance = turn_significance_;
   p.corrected_aic = corrected_aic_;
   p.side_frames = side_frames_;
   p.residual_factor = residual_factor_;
   p.threads = resolveThreadCount (threads_);
-
-  profiles::PipelineResult result;
-  if (!p.origins.empty() && p.origins.size() != p.normals.size()) {
-    PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] %zu stack origins for %zu "
-               "stacks.\n",
+  if ((!p.origins.empty() && p.origins.size() != p.normals.size()) ||
+      (!p.mean_gaps.empty() && p.mean_gaps.size() != p.normals.size())) {
+    PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] %zu stack origins and %zu "
+               "mean gaps for %zu stacks.\n",
                p.origins.size(),
+               p.mean_gaps.size(),
                p.normals.size());
     deinitCompute();
-    return;
+    return false;
   }
   if (!profiles::runProfileSegmentation (xyz, p, result)) {
     PCL_ERROR ("[pcl_ext::ProfileSegmentation::extract] Invalid parameters (or a "
                "point below its stack's given origin).\n");
     deinitCompute();
-    return;
+    return false;
   }
+  return true;
+}
+
+template <typename PointT>
+bool
+ProfileSegmentation<PointT>::computeLocalGaps (std::vector<std::vector<float>>& gaps)
+{
+  gaps.clear();
+  if (!local_threshold_) {
+    PCL_ERROR ("[pcl_ext::ProfileSegmentation::computeLocalGaps] Local thresholds are "
+               "off.\n");
+    return false;
+  }
+  profiles::PipelineResult result;
+  if (!runPipeline (true, result))
+    return false;
+  gaps.assign (
+      result.local_gaps.size(),
+      std::vector<float> (input_->size(), std::numeric_limits<float>::quiet_NaN()));
+  for (std::size_t s = 0; s < result.local_gaps.size(); ++s)
+    for (std::size_t i = 0; i < points_.size(); ++i)
+      gaps[s][points_[i]] = result.local_gaps[s][i];
+  deinitCompute();
+  return true;
+}
+
+template <typename PointT>
+void
+ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
+{
+  clusters.clear();
+  clusters_.clear();
+  stack_edges_.clear();
+  profile_of_point_.clear();
+  breakpoints_.clear();
+  junction_joins_ = 0;
+  used_normals_.clear();
+  used_spacing_ = used_width_ = used_threshold_ = used_max_threshold_ = 0.0;
+  points_.clear();
+
+  profiles::PipelineResult result;
+  if (!runPipeline (false, result))
+    return;
 
   // The graph, in cloud indices.
   stack_edges_.resize (result.edges.size());

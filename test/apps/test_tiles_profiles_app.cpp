@@ -1,0 +1,177 @@
+/*
+ * pcl_ext_tiles segment_profiles run as a command: split by profiles, over one process
+ * or several MPI ranks, it gives pcl_ext_segment_profiles's bytes on the whole cloud.
+ */
+#include "../app_test.h"
+
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+
+namespace {
+class TilesProfilesApp : public pcl_ext::test::AppTest {
+protected:
+  TilesProfilesApp() : AppTest (PCL_EXT_TILES_EXE) {}
+
+  /** Generate \a scene with \a points points into \a name. */
+  void
+  generate (const std::string& scene, const std::string& name, int points)
+  {
+    const std::string command = std::string (PCL_EXT_GENERATE_SCENE_EXE) + " " + scene +
+                                " '" + path (name) + "' -points " +
+                                std::to_string (points) + " -seed 2 > /dev/null 2>&1";
+    ASSERT_EQ (std::system (command.c_str()), 0);
+  }
+
+  /** pcl_ext_segment_profiles on \a input into \a output with \a options. */
+  void
+  segmentWhole (const std::string& input,
+                const std::string& output,
+                const std::string& options)
+  {
+    const std::string command = std::string (PCL_EXT_SEGMENT_PROFILES_EXE) + " '" +
+                                path (input) + "' '" + path (output) + "' " + options +
+                                " > '" + path ("whole.log") + "' 2>&1";
+    ASSERT_EQ (std::system (command.c_str()), 0);
+  }
+
+  std::string
+  bytes (const std::string& name) const
+  {
+    std::ifstream in (path (name), std::ios::binary);
+    return std::string ((std::istreambuf_iterator<char> (in)),
+                        std::istreambuf_iterator<char>());
+  }
+
+  void
+  expectSameBytes (const std::string& a, const std::string& b)
+  {
+    ASSERT_TRUE (exists (a)) << a;
+    ASSERT_TRUE (exists (b)) << b;
+    const std::string x = bytes (a), y = bytes (b);
+    EXPECT_GT (x.size(), 1000u);
+    EXPECT_TRUE (x == y) << a << " and " << b << " differ";
+  }
+};
+} // namespace
+
+TEST_F (TilesProfilesApp, PartsOfWholeProfilesGiveTheWholeCloudsSegments)
+{
+  // Cubes on no floor: -method auto keeps proximity chaining. Some points are not
+  // finite (segment 0 in both). One part per stack, then slabs of 0.5 m (tens of
+  // parts a stack): the same bytes as the whole cloud's.
+  generate ("cubes", "cubes.pcd", 20000);
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  ASSERT_EQ (pcl::io::loadPCDFile (path ("cubes.pcd"), cloud), 0);
+  for (std::size_t i = 0; i < cloud.size(); i += 97)
+    cloud[i].x = std::numeric_limits<float>::quiet_NaN();
+  ASSERT_EQ (pcl::io::savePCDFileBinary (path ("scene.pcd"), cloud), 0);
+  segmentWhole ("scene.pcd", "whole.pcd", "-v");
+  std::ifstream log (path ("whole.log"));
+  const std::string text ((std::istreambuf_iterator<char> (log)),
+                          std::istreambuf_iterator<char>());
+  ASSERT_NE (text.find ("chosen: proximity"), std::string::npos) << text;
+  for (const std::string size : {"0", "0.5"}) {
+    ASSERT_EQ (run ("segment_profiles " + path ("scene.pcd") + " " +
+                    path ("t" + size + ".pcd") + " -tile_size " + size + " -v"),
+               0)
+        << output_;
+    EXPECT_NE (output_.find ("chosen: proximity"), std::string::npos) << output_;
+    expectSameBytes ("whole.pcd", "t" + size + ".pcd");
+  }
+  EXPECT_NE (output_.find ("peak memory"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("t0.5.pcd.tiles")); // the work folder is removed
+}
+
+TEST_F (TilesProfilesApp, LocalThresholdsTakeTheWholeCloudsMeanGaps)
+{
+  // Six square patches 1.2 m apart, three sampled every 1 cm and three every 5 cm:
+  // -method auto adds local thresholds (each stack's mean local gap over the whole
+  // cloud, summed over the parts in the points' order) and runs again. The given
+  // segmenters with -local_threshold too.
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int patch = 0; patch < 6; ++patch) {
+    const float step = patch % 2 ? 0.05f : 0.01f;
+    const float x0 = 1.2f * static_cast<float> (patch % 3);
+    const float y0 = 2.5f * static_cast<float> (patch / 3);
+    for (int i = 0; i < 40; ++i)
+      for (int j = 0; j < 40; ++j)
+        cloud.push_back (pcl::PointXYZ (x0 + step * static_cast<float> (i),
+                                        y0 + step * static_cast<float> (j),
+                                        0.3f * step * static_cast<float> (i + j)));
+  }
+  ASSERT_EQ (pcl::io::savePCDFileBinary (path ("patches.pcd"), cloud), 0);
+  segmentWhole ("patches.pcd", "whole.pcd", "-v");
+  std::ifstream log (path ("whole.log"));
+  const std::string text ((std::istreambuf_iterator<char> (log)),
+                          std::istreambuf_iterator<char>());
+  ASSERT_NE (text.find ("chosen: proximity, local thresholds"), std::string::npos)
+      << text;
+  ASSERT_EQ (run ("segment_profiles " + path ("patches.pcd") + " " + path ("t.pcd") +
+                  " -tile_size 0.3"),
+             0)
+      << output_;
+  expectSameBytes ("whole.pcd", "t.pcd");
+  generate ("spheres", "spheres.pcd", 30000);
+  for (const std::string method : {"proximity", "mst"}) {
+    segmentWhole (
+        "spheres.pcd", method + ".pcd", "-method " + method + " -local_threshold");
+    ASSERT_EQ (run ("segment_profiles " + path ("spheres.pcd") + " " +
+                    path ("t_" + method + ".pcd") + " -method " + method +
+                    " -local_threshold -tile_size 1"),
+               0)
+        << output_;
+    expectSameBytes (method + ".pcd", "t_" + method + ".pcd");
+  }
+}
+
+TEST_F (TilesProfilesApp, WhatThePartsCannotGiveYetIsRefused)
+{
+  // A building on the ground: -method auto chooses curve fitting, whose curve ends
+  // are decided over every stack's points; refused after the first run, no output.
+  generate ("building", "building.pcd", 20000);
+  EXPECT_EQ (run ("segment_profiles " + path ("building.pcd") + " " + path ("b.pcd")),
+             1);
+  EXPECT_NE (output_.find ("chose curve fitting"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("b.pcd"));
+  for (const std::string option : {"-method curve", "-join_cylinders"}) {
+    EXPECT_EQ (run ("segment_profiles " + path ("building.pcd") + " " + path ("b.pcd") +
+                    " " + option),
+               1);
+    EXPECT_NE (output_.find ("does not run " + option), std::string::npos) << output_;
+  }
+  EXPECT_FALSE (exists ("b.pcd"));
+}
+
+#ifdef PCL_EXT_MPIEXEC
+TEST_F (TilesProfilesApp, MpiRanksShareThePartsAndGiveTheSameBytes)
+{
+  generate ("spheres", "spheres.pcd", 30000);
+  segmentWhole ("spheres.pcd", "whole.pcd", "-local_threshold");
+  for (const int ranks : {2, 4}) {
+    const std::string out = "mpi" + std::to_string (ranks) + ".pcd";
+    const std::string command =
+        std::string (PCL_EXT_MPIEXEC) + " --allow-run-as-root --oversubscribe -np " +
+        std::to_string (ranks) + " " + PCL_EXT_TILES_EXE + " segment_profiles '" +
+        path ("spheres.pcd") + "' '" + path (out) +
+        "' -local_threshold -tile_size 0.7 -threads 1 > '" + path ("mpi.log") +
+        "' 2>&1";
+    ASSERT_EQ (std::system (command.c_str()), 0) << ranks << " ranks";
+    std::ifstream log (path ("mpi.log"));
+    const std::string text ((std::istreambuf_iterator<char> (log)),
+                            std::istreambuf_iterator<char>());
+    EXPECT_NE (text.find ("Rank " + std::to_string (ranks - 1) + ": done"),
+               std::string::npos)
+        << text;
+    expectSameBytes ("whole.pcd", out);
+  }
+}
+#endif
