@@ -44,14 +44,6 @@ struct RunOptions {
   bool verbose = false;
 };
 
-long
-peakMegabytes ()
-{
-  rusage usage{};
-  ::getrusage (RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024;
-}
-
 std::string
 planFile (const std::string& workdir)
 {
@@ -416,15 +408,10 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
   ok = scheduler.allOk (ok);
   const double seconds =
       std::chrono::duration<double> (std::chrono::steady_clock::now() - start).count();
-  std::cout << (scheduler.getSize() > 1
-                    ? "Rank " + std::to_string (scheduler.getRank()) + ": "
-                    : std::string())
-            << (ok ? "done: " : "failed after ") << done << " part runs";
+  std::string what = std::to_string (done) + " part runs";
   if (leader && ok)
-    std::cout << ", " << segments << " segments";
-  std::cout << ", " << tile_plan.getTotalPoints() << " points, " << std::fixed
-            << std::setprecision (1) << seconds << " s, peak memory " << peakMegabytes()
-            << " MB\n";
+    what += ", " + std::to_string (segments) + " segments";
+  printRunSummary (scheduler, ok, what, tile_plan.getTotalPoints(), seconds);
   if (leader && ok && own_workdir && !run.keep_workdir) {
     std::error_code ignored;
     std::filesystem::remove_all (run.workdir, ignored);

@@ -4,6 +4,9 @@
 #include "tile_scheduler.h"
 
 #include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <sys/resource.h>
 
 #ifdef PCL_EXT_HAVE_MPI
 #include <mpi.h>
@@ -145,5 +148,22 @@ makeTileScheduler (int& argc, char**& argv)
   (void)argv;
   return std::make_unique<SerialScheduler>();
 }
+void
+printRunSummary (const TileScheduler& scheduler,
+                 bool ok,
+                 const std::string& what,
+                 std::uint64_t points,
+                 double seconds)
+{
+  rusage usage{};
+  ::getrusage (RUSAGE_SELF, &usage);
+  std::cout << (scheduler.getSize() > 1
+                    ? "Rank " + std::to_string (scheduler.getRank()) + ": "
+                    : std::string())
+            << (ok ? "done: " : "failed after ") << what << ", " << points
+            << " points, " << std::fixed << std::setprecision (1) << seconds
+            << " s, peak memory " << usage.ru_maxrss / 1024 << " MB\n";
+}
+
 } // namespace apps
 } // namespace pcl_ext

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <string>
 
 namespace pcl_ext {
 namespace apps {
@@ -34,6 +36,15 @@ public:
   virtual bool
   allOk (bool ok) = 0;
 };
+
+/** \brief Print this process's summary line: "[Rank r: ]done: <what>, <points> points,
+ * <seconds> s, peak memory <MB> MB" (or "failed after <what>, ..."). */
+void
+printRunSummary (const TileScheduler& scheduler,
+                 bool ok,
+                 const std::string& what,
+                 std::uint64_t points,
+                 double seconds);
 
 /** \brief The scheduler of this process: MPI when the tool was built with it and
  * started by an MPI launcher (argc and argv go to MPI_Init), one process otherwise. */

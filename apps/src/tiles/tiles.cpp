@@ -17,7 +17,6 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <sys/resource.h>
 
 namespace {
 using pcl_ext::apps::CommandLine;
@@ -82,14 +81,6 @@ struct TileOptions {
     return {"workdir", "threads", "tile_size", "halo", "keep_workdir"};
   }
 };
-
-long
-peakMemoryMegabytes ()
-{
-  rusage usage{};
-  ::getrusage (RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024;
-}
 
 /** The method given as the first argument with its options, the tool's options and the
  * positionals of a plan or a whole run. */
@@ -233,13 +224,12 @@ runTiles (pcl_ext::apps::TileScheduler& scheduler,
   ok = scheduler.allOk (ok);
   const double seconds =
       std::chrono::duration<double> (std::chrono::steady_clock::now() - start).count();
-  std::cout << (scheduler.getSize() > 1
-                    ? "Rank " + std::to_string (scheduler.getRank()) + ": "
-                    : std::string())
-            << (ok ? "done: " : "failed after ") << done << " of " << to_run.size()
-            << " tiles, " << plan.getTotalPoints() << " points, " << std::fixed
-            << std::setprecision (1) << seconds << " s, peak memory "
-            << peakMemoryMegabytes() << " MB\n";
+  pcl_ext::apps::printRunSummary (scheduler,
+                                  ok,
+                                  std::to_string (done) + " of " +
+                                      std::to_string (to_run.size()) + " tiles",
+                                  plan.getTotalPoints(),
+                                  seconds);
   return ok;
 }
 
