@@ -89,6 +89,20 @@ TEST (E57Format, UnpackerReadsValuesAcrossBytesAndPieces)
   EXPECT_EQ (expected, 1000u);
 }
 
+TEST (E57Format, XmlCoordinateMetadataIsTheFilesCrs)
+{
+  std::string xml = e57_test::e57Xml ("");
+  std::string metadata = "unset";
+  pcl_ext::io::parseE57Xml (xml, "mem.e57", &metadata);
+  EXPECT_EQ (metadata, ""); // absent
+  const std::string root = "<e57Root type=\"Structure\" ";
+  xml.insert (xml.find (root) + xml.substr (xml.find (root)).find ('>') + 1,
+              "\n<coordinateMetadata type=\"String\"><![CDATA[ EPSG:32631 ]]>"
+              "</coordinateMetadata>");
+  pcl_ext::io::parseE57Xml (xml, "mem.e57", &metadata);
+  EXPECT_EQ (metadata, "EPSG:32631");
+}
+
 TEST (E57Format, XmlScanPosePrototypeAndLimits)
 {
   const std::string xml = e57_test::e57Xml (

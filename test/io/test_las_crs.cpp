@@ -154,3 +154,39 @@ TEST (LasCoordinateSystem, NoRecordsOrBrokenOnesDeclareNone)
   other.vlrs.push_back ({0, "someone", 2112, "", {'X', 0}});
   EXPECT_FALSE (pcl_ext::io::lasCoordinateSystem (other).declared());
 }
+
+TEST (LasCoordinateSystem, TextsGiveCodesWktOrThemselves)
+{
+  // What an E57 file's coordinateMetadata holds: an EPSG reference, a WKT, or prose.
+  using pcl_ext::io::CrsMatch;
+  using pcl_ext::io::textCoordinateSystem;
+  using Kind = LasCoordinateSystem::Kind;
+  EXPECT_EQ (textCoordinateSystem ("").kind, Kind::None);
+  EXPECT_EQ (textCoordinateSystem ("  \n").kind, Kind::None);
+  const LasCoordinateSystem code = textCoordinateSystem ("EPSG:28992");
+  EXPECT_EQ (code.kind, Kind::Epsg);
+  EXPECT_EQ (code.value, "28992");
+  EXPECT_EQ (textCoordinateSystem (" urn:ogc:def:crs:EPSG::28992 "), code);
+  EXPECT_EQ (textCoordinateSystem (kRdNewWkt1), code);
+  EXPECT_EQ (pcl_ext::io::matchCoordinateSystems (
+                 code, pcl_ext::io::lasCoordinateSystem (withWkt (kRdNewWkt1))),
+             CrsMatch::Same);
+  EXPECT_EQ (
+      pcl_ext::io::matchCoordinateSystems (code, textCoordinateSystem ("EPSG:32631")),
+      CrsMatch::Different);
+  const LasCoordinateSystem named =
+      textCoordinateSystem ("PROJCS[\"Local grid\",GEOGCS[\"WGS 84\"]]");
+  EXPECT_EQ (named.kind, Kind::Wkt);
+  EXPECT_EQ (named.value, "Local grid");
+  // Prose is compared as it is written: the same text is one CRS, another cannot be
+  // told apart from it.
+  const LasCoordinateSystem prose = textCoordinateSystem ("UTM zone 31N, NAP heights");
+  EXPECT_EQ (prose.kind, Kind::Text);
+  EXPECT_NE (prose.describe().find ("UTM zone 31N"), std::string::npos);
+  EXPECT_EQ (pcl_ext::io::matchCoordinateSystems (prose, prose), CrsMatch::Same);
+  EXPECT_EQ (pcl_ext::io::matchCoordinateSystems (
+                 prose, textCoordinateSystem ("WGS 84 / UTM 31N")),
+             CrsMatch::Unknown);
+  EXPECT_EQ (pcl_ext::io::matchCoordinateSystems (prose, code), CrsMatch::Unknown);
+  EXPECT_EQ (textCoordinateSystem ("EPSG:").kind, Kind::Text);
+}

@@ -43,9 +43,10 @@ sameCoordinateSystem (const std::vector<std::string>& inputs)
   for (const auto& input : inputs) {
     tiling::PointFileChunks file;
     file.open (input);
-    const auto& las = file.getDescription().las;
+    const auto& description = file.getDescription();
     const io::LasCoordinateSystem crs =
-        las ? io::lasCoordinateSystem (*las) : io::LasCoordinateSystem();
+        description.las ? io::lasCoordinateSystem (*description.las)
+                        : io::textCoordinateSystem (description.coordinate_metadata);
     if (!crs.declared()) {
       without = without.empty() ? input : without;
       continue;

@@ -21,13 +21,15 @@ unionOfInputFields (const std::vector<std::string>& inputs,
                     pcl::PCLPointCloud2& layout);
 
 /** \brief Whether the inputs can share one output's coordinate reference system: no
- * two LAS / LAZ inputs declare CRSs known to differ (io::matchCoordinateSystems: two
+ * two inputs declare CRSs known to differ (LAS / LAZ: their projection records, E57:
+ * its coordinateMetadata, io::textCoordinateSystem; io::matchCoordinateSystems: two
  * EPSG codes, or two WKT CRSs of two names). Those are refused: a scan in UTM beside
  * one in a national grid is not one project until one of them is reprojected, and the
  * output (whose VLRs are the first input's) would misplace the other. Inputs whose CRS
- * cannot be compared with the first's, or that declare none (other formats, or LAS
- * without a CRS), beside ones that do, get a warning. \throw io::ReadError naming
- * an input that cannot be read \return false (message printed) when they differ */
+ * cannot be compared with the first's, or that declare none (PCD, PLY, PTX, ASCII, or
+ * LAS and E57 without a CRS), beside ones that do, get a warning. \throw io::ReadError
+ * naming an input that cannot be read \return false (message printed) when they differ
+ */
 bool
 sameCoordinateSystem (const std::vector<std::string>& inputs);
 

@@ -18,7 +18,9 @@ void
 loadE57 (const std::string& path, PointTable& table, const E57Options& options)
 {
   detail::E57PagedFile file (path);
-  const std::vector<E57ScanInfo> scans = parseE57Xml (file.readXml(), path);
+  std::string coordinate_metadata;
+  const std::vector<E57ScanInfo> scans =
+      parseE57Xml (file.readXml(), path, &coordinate_metadata);
   if (scans.size() > std::numeric_limits<std::uint16_t>::max() + std::size_t{1})
     throw ReadError (path, 0, "more than 65536 scans");
   detail::TableBuilder out;
@@ -40,6 +42,7 @@ loadE57 (const std::string& path, PointTable& table, const E57Options& options)
           converter.convert (values, count, out);
         });
   }
+  out.table.coordinate_metadata = std::move (coordinate_metadata);
   table = std::move (out.table);
 }
 } // namespace io

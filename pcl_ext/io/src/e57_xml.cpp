@@ -288,7 +288,9 @@ private:
 } // namespace
 
 std::vector<E57ScanInfo>
-parseE57Xml (const std::string& xml, const std::string& path)
+parseE57Xml (const std::string& xml,
+             const std::string& path,
+             std::string* coordinate_metadata)
 {
   const Parser p (path);
   Builder b;
@@ -313,6 +315,8 @@ parseE57Xml (const std::string& xml, const std::string& path)
   if (b.root.children.size() != 1 || b.root.children[0]->name != "e57Root")
     p.fail ("no e57Root element");
   const XmlNode& root = *b.root.children[0];
+  if (coordinate_metadata)
+    *coordinate_metadata = p.text (root, "coordinateMetadata");
   std::vector<E57ScanInfo> scans;
   if (const XmlNode* data3d = root.child ("data3D"))
     for (const auto& c : data3d->children)

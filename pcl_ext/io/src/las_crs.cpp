@@ -130,6 +130,8 @@ LasCoordinateSystem::describe() const
     return "the CRS named \"" + value + "\"";
   case Kind::GeoTiff:
     return "a user-defined GeoTIFF CRS";
+  case Kind::Text:
+    return "the CRS described as \"" + value + "\"";
   case Kind::None:
     break;
   }
@@ -144,7 +146,45 @@ matchCoordinateSystems (const LasCoordinateSystem& a, const LasCoordinateSystem&
     return CrsMatch::Unknown;
   if (a.value == b.value)
     return CrsMatch::Same;
-  return a.kind == Kind::GeoTiff ? CrsMatch::Unknown : CrsMatch::Different;
+  return a.kind == Kind::GeoTiff || a.kind == Kind::Text ? CrsMatch::Unknown
+                                                         : CrsMatch::Different;
+}
+
+LasCoordinateSystem
+textCoordinateSystem (const std::string& text)
+{
+  LasCoordinateSystem crs;
+  const std::string compact =
+      compactWkt (std::vector<std::uint8_t> (text.begin(), text.end()));
+  if (compact.empty())
+    return crs;
+  std::string upper;
+  for (const char c : compact)
+    upper.push_back (static_cast<char> (std::toupper (static_cast<unsigned char> (c))));
+  for (const char* prefix : {"EPSG:", "URN:OGC:DEF:CRS:EPSG::"}) {
+    const std::size_t length = std::strlen (prefix);
+    if (upper.compare (0, length, prefix) == 0 && upper.size() > length &&
+        upper.find_first_not_of ("0123456789", length) == std::string::npos) {
+      crs.kind = LasCoordinateSystem::Kind::Epsg;
+      crs.value = compact.substr (length);
+      return crs;
+    }
+  }
+  // WKT: a keyword, then the CRS's bracket.
+  const std::size_t bracket = compact.find_first_of ("[(");
+  const bool wkt =
+      bracket != std::string::npos && bracket > 0 &&
+      compact.find_first_not_of ("ABCDEFGHIJKLMNOPQRSTUVWXYZ_", 0) == bracket;
+  if (wkt) {
+    const std::string code = outermostEpsgCode (compact);
+    crs.kind =
+        code.empty() ? LasCoordinateSystem::Kind::Wkt : LasCoordinateSystem::Kind::Epsg;
+    crs.value = code.empty() ? outermostName (compact) : code;
+    return crs;
+  }
+  crs.kind = LasCoordinateSystem::Kind::Text;
+  crs.value = text;
+  return crs;
 }
 
 LasCoordinateSystem

@@ -118,6 +118,7 @@ fromTable (const std::string& path, PointTable& table, PointFile& file)
   file.origin = computeLocalOrigin (table);
   toPCLPointCloud2 (table, file.origin, file.cloud);
   file.stations = std::move (table.stations);
+  file.coordinate_metadata = std::move (table.coordinate_metadata);
 }
 } // namespace
 

@@ -87,6 +87,8 @@ struct E57ScanInfo {
  * standard's defaults (0, the type's range, scale 1).
  *
  * \param[in] xml the XML section's text \param[in] path the file, named in errors
+ * \param[out] coordinate_metadata when not null: the root's coordinateMetadata string
+ * (section 8.4.1, the file's coordinate reference system), empty when absent
  * \throw ReadError naming \a path when the XML is not well-formed or nested deeper
  * than 64 levels, has no e57Root, when a data3D child has no points CompressedVector
  * (or its fileOffset / recordCount are missing or not numbers), when a prototype holds
@@ -95,7 +97,9 @@ struct E57ScanInfo {
  * when a pose rotation is zero or not finite
  */
 std::vector<E57ScanInfo>
-parseE57Xml (const std::string& xml, const std::string& path);
+parseE57Xml (const std::string& xml,
+             const std::string& path,
+             std::string* coordinate_metadata = nullptr);
 
 /** \brief Reads values of one bit width from a bytestream (ASTM E2807 section 9.9):
  * value i occupies bits [i * bits, (i + 1) * bits) of the stream, bit k being bit k % 8

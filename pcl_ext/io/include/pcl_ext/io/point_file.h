@@ -70,6 +70,9 @@ struct PointFile {
   PointFileFormat format = PointFileFormat::Unknown; ///< the format read
   std::optional<LasFileInfo> las;    ///< header, VLRs, extra bytes of a LAS / LAZ input
   std::vector<ScanStation> stations; ///< the scans of an E57 / PTX input
+  /** The coordinate reference system an E57 input declares (its coordinateMetadata,
+   * see textCoordinateSystem); empty when none, and for other formats (LAS: \a las). */
+  std::string coordinate_metadata;
   /** The file stored x y z as FLOAT64 (a PCD or PLY written by PDAL, or by
    * savePointFile): PCD / PLY output then stores them as FLOAT64 too. */
   bool double_coordinates = false;

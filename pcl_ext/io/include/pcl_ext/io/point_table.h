@@ -61,6 +61,9 @@ struct PointTable {
   std::vector<std::int32_t> column;             ///< grid column of a structured scan
   std::vector<std::uint16_t> scan;              ///< index into \a stations
   std::vector<ScanStation> stations;            ///< the scans the points come from
+  /** The coordinate reference system the file declares as text (E57:
+   * coordinateMetadata; see textCoordinateSystem), empty when none. */
+  std::string coordinate_metadata;
 
   std::size_t
   size () const
