@@ -106,7 +106,7 @@ cellOf (const Eigen::Vector3f& p, double h)
  * the bins that hold a sampled rank. \return false (message printed) when those bins
  * hold too many points (a cloud of nearly one coordinate) */
 bool
-findSamples (const tiling::TilePlan& plan,
+findSamples (InputPasses& inputs,
              const ProfileFrame& frame,
              const Eigen::Vector3f& lo,
              const Eigen::Vector3f& hi,
@@ -122,7 +122,7 @@ findSamples (const tiling::TilePlan& plan,
     return std::min (kRankBins - 1, static_cast<std::size_t> (std::max (0.0, f)));
   };
   std::vector<std::uint64_t> counts (kRankBins + 1, 0);
-  forEachFinitePoint (plan, [&] (std::uint64_t, const Eigen::Vector3f& local) {
+  inputs.forEachFinitePoint ([&] (std::uint64_t, const Eigen::Vector3f& local) {
     ++counts[bin (centred (local, frame.centre)[axis]) + 1];
   });
   for (std::size_t b = 0; b < kRankBins; ++b)
@@ -152,7 +152,7 @@ findSamples (const tiling::TilePlan& plan,
   };
   std::vector<Ranked> ranked;
   ranked.reserve (held);
-  forEachFinitePoint (plan, [&] (std::uint64_t index, const Eigen::Vector3f& local) {
+  inputs.forEachFinitePoint ([&] (std::uint64_t index, const Eigen::Vector3f& local) {
     const Eigen::Vector3f p = centred (local, frame.centre);
     if (wanted[bin (p[axis])])
       ranked.push_back ({p[axis], index, p});
@@ -185,7 +185,7 @@ findSamples (const tiling::TilePlan& plan,
  * sample whose 16th neighbour lies well within the radius is done, the others are
  * searched again with a radius four times as large, until it spans the cloud. */
 std::vector<profiles::SampledNeighbourhood>
-searchSamples (const tiling::TilePlan& plan,
+searchSamples (InputPasses& inputs,
                const ProfileFrame& frame,
                const Eigen::Vector3f& lo,
                const Eigen::Vector3f& hi,
@@ -221,7 +221,7 @@ searchSamples (const tiling::TilePlan& plan,
             cells[{c.x + dx, c.y + dy, c.z + dz}].push_back (
                 static_cast<std::uint32_t> (s));
     }
-    forEachFinitePoint (plan, [&] (std::uint64_t index, const Eigen::Vector3f& local) {
+    inputs.forEachFinitePoint ([&] (std::uint64_t index, const Eigen::Vector3f& local) {
       const Eigen::Vector3f p = centred (local, frame.centre);
       const auto it = cells.find (cellOf (p, h));
       if (it == cells.end())
@@ -308,18 +308,25 @@ ProfileFrame::loadFrom (const std::map<std::string, std::string>& settings)
 }
 
 void
-forEachFinitePoint (
-    const tiling::TilePlan& plan,
+InputPasses::forEachFinitePoint (
     const std::function<void (std::uint64_t, const Eigen::Vector3f&)>& visit)
 {
+  kept_.resize (plan_.inputs.size());
   pcl::PCLPointCloud2 chunk;
-  for (std::size_t f = 0; f < plan.inputs.size(); ++f) {
-    tiling::PointFileChunks file;
-    file.open (plan.inputs[f]);
-    file.setOrigin (plan.origin);
-    std::uint64_t index = plan.getFirstIndex (f);
+  for (std::size_t f = 0; f < plan_.inputs.size(); ++f) {
+    std::unique_ptr<tiling::PointFileChunks> opened;
+    tiling::PointFileChunks* file = kept_[f].get();
+    if (file)
+      file->rewind();
+    else {
+      opened = std::make_unique<tiling::PointFileChunks>();
+      opened->open (plan_.inputs[f]);
+      opened->setOrigin (plan_.origin);
+      file = opened.get();
+    }
+    std::uint64_t index = plan_.getFirstIndex (f);
     std::size_t n;
-    while ((n = file.read (std::size_t (1) << 20, chunk)) > 0) {
+    while ((n = file->read (std::size_t (1) << 20, chunk)) > 0) {
       const std::uint8_t* xyz = chunk.data.data() + tiling::xyzOffset (chunk);
       for (std::size_t i = 0; i < n; ++i, ++index) {
         Eigen::Vector3f p;
@@ -328,11 +335,13 @@ forEachFinitePoint (
           visit (index, p);
       }
     }
+    if (opened && !opened->getDescription().las)
+      kept_[f] = std::move (opened);
   }
 }
 
 bool
-estimateProfileFrame (const tiling::TilePlan& plan,
+estimateProfileFrame (InputPasses& inputs,
                       const std::vector<Eigen::Vector3f>& normals,
                       bool sample,
                       double width,
@@ -343,7 +352,7 @@ estimateProfileFrame (const tiling::TilePlan& plan,
   frame.normals = normals;
   // The centre as ProfileSegmentation sums it: in double, point after point.
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  forEachFinitePoint (plan, [&] (std::uint64_t, const Eigen::Vector3f& local) {
+  inputs.forEachFinitePoint ([&] (std::uint64_t, const Eigen::Vector3f& local) {
     sum += local.cast<double>();
     ++frame.points;
   });
@@ -363,7 +372,7 @@ estimateProfileFrame (const tiling::TilePlan& plan,
   frame.ends.assign (normals.size(), -std::numeric_limits<double>::infinity());
   Eigen::Vector3f lo = Eigen::Vector3f::Constant (std::numeric_limits<float>::max());
   Eigen::Vector3f hi = -lo;
-  forEachFinitePoint (plan, [&] (std::uint64_t, const Eigen::Vector3f& local) {
+  inputs.forEachFinitePoint ([&] (std::uint64_t, const Eigen::Vector3f& local) {
     const Eigen::Vector3f p = centred (local, frame.centre);
     lo = lo.cwiseMin (p);
     hi = hi.cwiseMax (p);
@@ -376,9 +385,9 @@ estimateProfileFrame (const tiling::TilePlan& plan,
   if (sample && frame.points >= 2) {
     std::vector<std::uint64_t> indices;
     std::vector<Eigen::Vector3f> points;
-    if (!findSamples (plan, frame, lo, hi, indices, points))
+    if (!findSamples (inputs, frame, lo, hi, indices, points))
       return false;
-    const auto neighbourhoods = searchSamples (plan, frame, lo, hi, points);
+    const auto neighbourhoods = searchSamples (inputs, frame, lo, hi, points);
     frame.spacing = profiles::pointSpacingOf (neighbourhoods);
     if (frame.points > kSampleNeighbours)
       frame.statistics = profiles::cloudStatisticsOf (neighbourhoods);

@@ -5,12 +5,15 @@
 #pragma once
 
 #include <pcl_ext/segmentation/profile_auto.h>
+#include <pcl_ext/tiling/point_file_chunks.h>
 #include <pcl_ext/tiling/tile_plan.h>
 
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -44,15 +47,31 @@ struct ProfileFrame {
   loadFrom (const std::map<std::string, std::string>& settings);
 };
 
-/** \brief Call \a visit (global index, x y z relative to the plan's origin) for every
- * finite point of \a plan's inputs, in order. \throw io::ReadError naming an input
- * that cannot be read */
-void
-forEachFinitePoint (
-    const tiling::TilePlan& plan,
-    const std::function<void (std::uint64_t, const Eigen::Vector3f&)>& visit);
+/** \brief Passes over the points of a plan's inputs, in chunks. An input that is not
+ * LAS / LAZ (read whole by tiling::PointFileChunks) is kept between the passes; LAS
+ * and LAZ inputs are opened again for each. */
+class InputPasses {
+public:
+  explicit InputPasses (const tiling::TilePlan& plan) : plan_ (plan) {}
 
-/** \brief The frame of \a plan's inputs for \a normals: the centre and the stack
+  const tiling::TilePlan&
+  getPlan () const
+  {
+    return plan_;
+  }
+
+  /** \brief Call \a visit (global index, x y z relative to the plan's origin) for every
+   * finite point, in order. \throw io::ReadError naming an input that cannot be read */
+  void
+  forEachFinitePoint (
+      const std::function<void (std::uint64_t, const Eigen::Vector3f&)>& visit);
+
+private:
+  const tiling::TilePlan& plan_;
+  std::vector<std::unique_ptr<tiling::PointFileChunks>> kept_;
+};
+
+/** \brief The frame of the inputs for \a normals: the centre and the stack
  * origins (two passes over the inputs) and, when \a sample, the neighbourhoods of the
  * points profiles::sampleNeighbourhoods samples, found exactly over the whole cloud
  * (a pass to rank the points along the sample axis, one to pick the samples, then one
@@ -61,7 +80,7 @@ forEachFinitePoint (
  * \return false (message printed) when the cloud has no finite point, a spacing is
  * needed and cannot be estimated, or the samples' ranks cannot be resolved */
 bool
-estimateProfileFrame (const tiling::TilePlan& plan,
+estimateProfileFrame (InputPasses& inputs,
                       const std::vector<Eigen::Vector3f>& normals,
                       bool sample,
                       double width,

@@ -225,8 +225,7 @@ joinParts (const tiling::TilePlan& plan,
            JoinedParts& joined)
 {
   const std::uint64_t total = plan.getTotalPoints();
-  joined.parent.resize (total);
-  std::iota (joined.parent.begin(), joined.parent.end(), 0u);
+  joined.sets = UnionFind (total);
   joined.size.assign (total, 0);
   joined.largest = 0;
   std::vector<std::uint64_t> links, indices;
@@ -248,15 +247,13 @@ joinParts (const tiling::TilePlan& plan,
         std::cerr << "Error: part " << i << "'s links are broken.\n";
         return false;
       }
-      const std::uint32_t a = joined.find (static_cast<std::uint32_t> (links[k]));
-      const std::uint32_t b = joined.find (static_cast<std::uint32_t> (links[k + 1]));
-      if (a != b) // the smaller index is the root: a component's first point
-        joined.parent[std::max (a, b)] = std::min (a, b);
+      joined.sets.unite (static_cast<std::uint32_t> (links[k]),
+                         static_cast<std::uint32_t> (links[k + 1]));
     }
   }
   for (std::uint32_t i = 0; i < total; ++i)
     if (joined.size[i]) {
-      const std::uint32_t root = joined.find (i);
+      const std::uint32_t root = joined.sets.find (i);
       if (root != i) { // the root, smaller, was counted before
         joined.size[root] += 1;
         joined.size[i] = 0;
@@ -273,7 +270,7 @@ saveSegments (const std::string& workdir,
               JoinedParts& joined,
               std::uint32_t& segments)
 {
-  const std::uint64_t total = joined.parent.size();
+  const std::uint64_t total = joined.sets.size();
   std::vector<std::pair<std::uint32_t, std::uint32_t>> kept; // (size, first point)
   for (std::uint32_t i = 0; i < total; ++i)
     if (joined.size[i] > 0 && joined.size[i] >= min_size)
@@ -298,7 +295,7 @@ saveSegments (const std::string& workdir,
     values.clear();
     for (std::uint64_t i = first; i < end; ++i) {
       indices.push_back (i);
-      values.push_back (id[joined.find (static_cast<std::uint32_t> (i))]);
+      values.push_back (id[joined.sets.find (static_cast<std::uint32_t> (i))]);
     }
     if (!tiling::TileResults::write (workdir, indices, values))
       return false;

@@ -7,6 +7,7 @@
 #include "../profiles/profile_options.h"
 #include "profile_parts.h"
 
+#include <pcl_ext/common/union_find.h>
 #include <pcl_ext/tiling/tile_plan.h>
 
 #include <cstdint>
@@ -61,20 +62,12 @@ segmentPart (const ProfileFrame& frame,
              unsigned int threads,
              std::size_t i);
 
-/** \brief The segments over all points: the parts' links joined (union-find, each
- * component's root its first point). */
+/** \brief The segments over all points: the parts' links joined (each component's root
+ * its first point). */
 struct JoinedParts {
-  std::vector<std::uint32_t> parent;
+  UnionFind sets;
   std::vector<std::uint32_t> size; ///< points of each root's component (0 elsewhere)
   std::uint32_t largest = 0;       ///< points of the largest component
-
-  std::uint32_t
-  find (std::uint32_t x)
-  {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  }
 };
 
 /** \brief Join the links of every part of \a parts. \return false (message printed)

@@ -115,7 +115,7 @@ profileNumber (double t, double origin, double width)
 }
 
 bool
-planProfileParts (const tiling::TilePlan& plan,
+planProfileParts (InputPasses& inputs,
                   const ProfileFrame& frame,
                   double thickness,
                   std::uint64_t max_points,
@@ -142,7 +142,7 @@ planProfileParts (const tiling::TilePlan& plan,
     }
     counts[s].assign (profiles / group[s] + 1, 0);
   }
-  forEachFinitePoint (plan, [&] (std::uint64_t, const Eigen::Vector3f& local) {
+  inputs.forEachFinitePoint ([&] (std::uint64_t, const Eigen::Vector3f& local) {
     const Eigen::Vector3d p = centred (local, frame.centre).cast<double>();
     for (std::size_t s = 0; s < stacks; ++s) {
       const std::uint64_t bin =
@@ -178,7 +178,7 @@ profilePartPath (const std::string& workdir,
 }
 
 bool
-writeProfileParts (const tiling::TilePlan& plan,
+writeProfileParts (InputPasses& inputs,
                    const ProfileFrame& frame,
                    const ProfileParts& parts,
                    const std::string& workdir)
@@ -205,7 +205,7 @@ writeProfileParts (const tiling::TilePlan& plan,
     }
     bool failed = false;
     unsigned char record[kRecordBytes];
-    forEachFinitePoint (plan, [&] (std::uint64_t index, const Eigen::Vector3f& local) {
+    inputs.forEachFinitePoint ([&] (std::uint64_t index, const Eigen::Vector3f& local) {
       const Eigen::Vector3d p = centred (local, frame.centre).cast<double>();
       std::memcpy (record, &index, sizeof (index));
       std::memcpy (record + sizeof (index), local.data(), 3 * sizeof (float));

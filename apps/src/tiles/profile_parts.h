@@ -55,7 +55,7 @@ profileNumber (double t, double origin, double width);
  * io::ReadError naming an input that cannot be read \return false (message printed)
  * when the thickness makes too many slabs */
 bool
-planProfileParts (const tiling::TilePlan& plan,
+planProfileParts (InputPasses& inputs,
                   const ProfileFrame& frame,
                   double thickness,
                   std::uint64_t max_points,
@@ -74,7 +74,7 @@ profilePartPath (const std::string& workdir,
  * pass over the inputs. \throw io::ReadError naming an input that cannot be read
  * \return false (message printed) when a file cannot be written (a full disk) */
 bool
-writeProfileParts (const tiling::TilePlan& plan,
+writeProfileParts (InputPasses& inputs,
                    const ProfileFrame& frame,
                    const ProfileParts& parts,
                    const std::string& workdir);

@@ -127,12 +127,13 @@ plan (const std::vector<std::string>& inputs,
     const bool sample =
         options.automatic() || options.width == 0.0 || options.threshold == 0.0;
     ProfileFrame frame;
+    InputPasses passes (plan);
     if (!estimateProfileFrame (
-            plan, normals, sample, options.width, options.width_factor, frame))
+            passes, normals, sample, options.width, options.width_factor, frame))
       return false;
     ProfileParts parts;
-    if (!planProfileParts (plan, frame, run.tile_size, kPointsPerPart, parts) ||
-        !writeProfileParts (plan, frame, parts, run.workdir))
+    if (!planProfileParts (passes, frame, run.tile_size, kPointsPerPart, parts) ||
+        !writeProfileParts (passes, frame, parts, run.workdir))
       return false;
     plan.settings["method"] = kMethod;
     std::string text;
@@ -391,7 +392,7 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
   if (leader && ok) {
     StageTimer timer ("Joining the parts");
     ok =
-        (!joined.parent.empty() || joinParts (tile_plan, parts, run.workdir, joined)) &&
+        (joined.sets.size() > 0 || joinParts (tile_plan, parts, run.workdir, joined)) &&
         saveSegments (run.workdir,
                       static_cast<std::uint64_t> (options.min_size),
                       joined,
