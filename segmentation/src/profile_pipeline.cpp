@@ -38,6 +38,13 @@ validParameters (const PipelineParameters& p)
   for (const double g : p.mean_gaps)
     if (!(g >= 0.0) || !std::isfinite (g))
       return false;
+  if ((p.stage == PipelineStage::CurveScores || p.stage == PipelineStage::CurveJoins) &&
+      p.method != ProfileMethod::CurveFitting)
+    return false;
+  if (p.stage == PipelineStage::CurveJoins &&
+      (p.given_ends.size() != p.normals.size() ||
+       p.junction_tolerances.size() != p.normals.size()))
+    return false;
   for (const double o : p.origins)
     if (!std::isfinite (o))
       return false;
@@ -54,21 +61,42 @@ validParameters (const PipelineParameters& p)
   return true;
 }
 
-/** The median of the residuals of the evaluated points: the stack's noise level. */
-double
-medianResidual (const std::vector<std::uint8_t>& evaluated,
-                const std::vector<float>& rms)
+/** The values of the evaluated points. */
+std::vector<float>
+evaluatedValues (const std::vector<std::uint8_t>& evaluated,
+                 const std::vector<float>& values)
 {
-  std::vector<float> values;
-  for (std::size_t i = 0; i < rms.size(); ++i)
+  std::vector<float> out;
+  for (std::size_t i = 0; i < values.size(); ++i)
     if (evaluated[i])
-      values.push_back (rms[i]);
+      out.push_back (values[i]);
+  return out;
+}
+} // namespace
+
+double
+upperMedian (std::vector<float> values)
+{
   if (values.empty())
     return 0.0;
   std::nth_element (values.begin(), values.begin() + values.size() / 2, values.end());
   return values[values.size() / 2];
 }
-} // namespace
+
+CurveEndRule
+curveEndRule (double median_rms,
+              double median_noise,
+              const PipelineParameters& parameters)
+{
+  CurveEndRule rule;
+  rule.tolerance =
+      std::max (parameters.residual_factor * median_rms, parameters.min_residual);
+  // A curve through a junction joins two arms for good: it must fit as well as a
+  // typical stretch of the stack's curves, not merely pass for a curve.
+  rule.junction_tolerance = rule.tolerance / parameters.residual_factor;
+  rule.turn_z = parameters.turn_significance * median_noise;
+  return rule;
+}
 
 bool
 runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
@@ -80,6 +108,13 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     return false;
   const std::size_t n = xyz.size();
   const std::size_t num_stacks = parameters.normals.size();
+  if (parameters.stage == PipelineStage::CurveJoins) {
+    bool sizes = parameters.given_breakpoints.size() == n;
+    for (const auto& ends : parameters.given_ends)
+      sizes = sizes && ends.size() == n;
+    if (!sizes)
+      return false;
+  }
   result.stacks.resize (num_stacks);
   result.edges.resize (num_stacks);
   if (n == 0)
@@ -110,7 +145,9 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
       tasks.push_back ({s, p});
 
   const bool curves = parameters.method == ProfileMethod::CurveFitting;
-  std::vector<CurveScores> stack_scores (curves ? num_stacks : 0);
+  // With the curve ends given, the scores that made them are not needed.
+  const bool scoring = curves && parameters.stage != PipelineStage::CurveJoins;
+  std::vector<CurveScores> stack_scores (scoring ? num_stacks : 0);
   for (auto& scores : stack_scores) {
     scores.evaluated.assign (n, 0);
     scores.turn.assign (n, 0.f);
@@ -181,7 +218,7 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
       mean_gap[s] = count ? sum / static_cast<double> (count) : 0.0;
     }
   }
-  if (parameters.local_gaps_only) {
+  if (parameters.stage == PipelineStage::LocalGaps) {
     result.local_gaps = std::move (stack_gaps);
     return true;
   }
@@ -246,7 +283,7 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
         spanningTreeEdges (points, link_threshold, local, link_thresholds);
         break;
       }
-      if (curves) {
+      if (scoring) {
         point_fit.window_scale = nullptr;
         if (local_here) {
           window_scales (thresholds, window_scale);
@@ -276,6 +313,10 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     edges.insert (edges.end(), task_edges[k].begin(), task_edges[k].end());
   }
   task_edges.clear();
+  if (parameters.stage == PipelineStage::CurveScores) {
+    result.curve_scores = std::move (stack_scores);
+    return true;
+  }
 
   // Curves followed across the junctions their ends leave (entangled curves): the joins
   // are edges of their stack, between points that are not curve ends.
@@ -340,6 +381,13 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
         return count;
       };
 
+  if (curves && parameters.stage == PipelineStage::CurveJoins) {
+    // The curve ends of the whole cloud, given: the joins, then the caller labels.
+    result.breakpoints = parameters.given_breakpoints;
+    result.junction_joins =
+        joinAcrossJunctions (parameters.junction_tolerances, parameters.given_ends);
+    return true;
+  }
   if (curves) {
     // A point ends a curve in some stack when the normal turns sharply there, or when
     // its stretch of profile is not one curve (a junction): residual far above the
@@ -356,18 +404,13 @@ runProfileSegmentation (const std::vector<Eigen::Vector3f>& xyz,
     for (std::size_t s = 0; s < num_stacks; ++s) {
       const CurveScores& scores = stack_scores[s];
       own_ends[s].assign (n, 0);
-      const double median = medianResidual (scores.evaluated, scores.rms);
-      const double tolerance =
-          std::max (parameters.residual_factor * median, parameters.min_residual);
-      // A curve through a junction joins two arms for good: it must fit as well as a
-      // typical stretch of the stack's curves, not merely pass for a curve.
-      tolerances.push_back (tolerance / parameters.residual_factor);
-      const double z = parameters.turn_significance *
-                       medianResidual (scores.evaluated, scores.noise);
+      const CurveEndRule rule =
+          curveEndRule (upperMedian (evaluatedValues (scores.evaluated, scores.rms)),
+                        upperMedian (evaluatedValues (scores.evaluated, scores.noise)),
+                        parameters);
+      tolerances.push_back (rule.junction_tolerance);
       for (std::size_t i = 0; i < n; ++i)
-        if (scores.evaluated[i] && ((scores.turn[i] > parameters.max_turn &&
-                                     scores.turn[i] > z * scores.turn_sigma[i]) ||
-                                    scores.rms[i] > tolerance))
+        if (isCurveEnd (scores, i, rule, parameters.max_turn))
           result.breakpoints[i] = own_ends[s][i] = 1;
     }
     stack_scores.clear();

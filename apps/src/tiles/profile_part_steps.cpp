@@ -3,6 +3,7 @@
  */
 #include "profile_part_steps.h"
 
+#include <pcl_ext/segmentation/profile_part_segmentation.h>
 #include <pcl_ext/tiling/tile_results.h>
 
 #include <algorithm>
@@ -33,7 +34,7 @@ setUpPart (const ProfileFrame& frame,
            std::size_t i,
            std::size_t& stack,
            std::vector<std::uint64_t>& indices,
-           ProfileOptions::Segmentation& seg)
+           ProfilePartSegmentation<pcl::PointXYZ>& seg)
 {
   std::size_t part;
   parts.locate (i, stack, part);
@@ -113,7 +114,7 @@ computePartGaps (const ProfileFrame& frame,
 {
   std::size_t stack;
   std::vector<std::uint64_t> indices;
-  ProfileOptions::Segmentation seg;
+  ProfilePartSegmentation<pcl::PointXYZ> seg;
   PartPass gaps_pass = pass;
   gaps_pass.local_threshold = true;
   gaps_pass.mean_gaps.clear();
@@ -195,7 +196,7 @@ segmentPart (const ProfileFrame& frame,
 {
   std::size_t stack, part;
   std::vector<std::uint64_t> indices;
-  ProfileOptions::Segmentation seg;
+  ProfilePartSegmentation<pcl::PointXYZ> seg;
   if (!setUpPart (
           frame, parts, options, pass, workdir, threads, i, stack, indices, seg))
     return false;

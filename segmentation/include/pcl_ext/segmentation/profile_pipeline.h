@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pcl_ext/segmentation/profile_graph.h>
+#include <pcl_ext/segmentation/profile_segmenters.h>
 #include <pcl_ext/segmentation/profile_stacks.h>
 
 #include <Eigen/Core>
@@ -20,6 +21,29 @@ enum class ProfileMethod {
   MinimumSpanningTree, ///< minimum spanning tree cut at the threshold (section 3)
   CurveFitting,        ///< curve fitting with AIC model selection (4.1.2)
   CurveReconstruction  ///< nearest-neighbour crust cut at the threshold (5.2)
+};
+
+/** \brief What a run of the pipeline computes: everything, or one stage of a run over
+ * parts of a cloud, each part holding whole profiles (see ProfileSegmentation). */
+enum class PipelineStage {
+  Segments,  ///< everything (the default)
+  LocalGaps, ///< the stacks and the local gaps (PipelineResult::local_gaps) only
+  /** Curve fitting: the chains (PipelineResult::edges) and every point's scores
+   * (PipelineResult::curve_scores); no curve ends, no segments. */
+  CurveScores,
+  /** Curve fitting with the curve ends given (PipelineParameters::given_ends,
+   * given_breakpoints, junction_tolerances): the chains and the curves followed across
+   * junctions (PipelineResult::edges) and the breakpoints with the points the joins
+   * absorb; no scores, no segments. */
+  CurveJoins
+};
+
+/** \brief The rule that makes a point a curve end in a stack (curve fitting), from the
+ * stack's medians of the evaluated points' residuals and noise. */
+struct CurveEndRule {
+  double tolerance = 0.0;          ///< a larger residual RMS is not one curve
+  double junction_tolerance = 0.0; ///< residual a curve through a junction may have
+  double turn_z = 0.0; ///< a sharp turn must exceed this many times its standard error
 };
 
 /** \brief Everything the pipeline needs; see ProfileSegmentation for the meaning and
@@ -43,9 +67,14 @@ struct PipelineParameters {
    * rather than taken over the points (a run over parts of a cloud gives the whole
    * cloud's); empty (the default): the points' own. */
   std::vector<double> mean_gaps;
-  /** \brief With local thresholds: build the stacks and compute the local gaps
-   * (PipelineResult::local_gaps) only, no edges and no segments. */
-  bool local_gaps_only = false;
+  PipelineStage stage = PipelineStage::Segments; ///< what the run computes
+  /** \brief Stage CurveJoins: each stack's own curve ends, one flag per point. */
+  std::vector<std::vector<std::uint8_t>> given_ends;
+  /** \brief Stage CurveJoins: whether each point ends a curve in any stack of the
+   * whole cloud. */
+  std::vector<std::uint8_t> given_breakpoints;
+  /** \brief Stage CurveJoins: each stack's CurveEndRule::junction_tolerance. */
+  std::vector<double> junction_tolerances;
   double curve_window = 0.0;      ///< > 0 for CurveFitting
   double tangent_radius = 0.0;    ///< > 0 for CurveFitting
   double max_turn = 0.0;          ///< radians
@@ -68,9 +97,39 @@ struct PipelineResult {
   /** \brief With local thresholds: each point's local gap in each stack (localGaps;
    * at most max_threshold, those at it had no neighbour within reach). */
   std::vector<std::vector<float>> local_gaps;
+  /** \brief Stage CurveScores: each stack's scores of every point. */
+  std::vector<CurveScores> curve_scores;
   std::vector<std::uint32_t> labels; ///< component of each point
   std::size_t num_segments = 0;
 };
+
+/** \brief The value at position size / 2 of \a values sorted (the upper median; 0 when
+ * empty): a stack's median residual or noise over its evaluated points. */
+double
+upperMedian (std::vector<float> values);
+
+/** \brief The curve end rule of a stack of medians \a median_rms and \a median_noise:
+ * tolerance max(residual_factor median_rms, min_residual), the junction tolerance that
+ * over the residual factor, turn_z turn_significance median_noise. */
+CurveEndRule
+curveEndRule (double median_rms,
+              double median_noise,
+              const PipelineParameters& parameters);
+
+/** \brief Whether point \a i of \a scores ends a curve by \a rule: evaluated, and a
+ * turn sharper than \a max_turn and than turn_z standard errors, or a residual above
+ * the tolerance. */
+inline bool
+isCurveEnd (const CurveScores& scores,
+            std::size_t i,
+            const CurveEndRule& rule,
+            double max_turn)
+{
+  return scores.evaluated[i] &&
+         ((scores.turn[i] > max_turn &&
+           scores.turn[i] > rule.turn_z * scores.turn_sigma[i]) ||
+          scores.rms[i] > rule.tolerance);
+}
 
 /** \brief Build the stacks, segment every profile (in parallel; the result does not
  * depend on the thread count), and label the connected components of the union of all

@@ -267,62 +267,6 @@ public:
     return spacing_;
   }
 
-  /** \brief Segment a part of a larger cloud as the whole cloud would be: \a centre,
-   * the mean of the whole cloud's finite points (in the input's frame), about which the
-   * points are computed in float, and \a origins, where profile 0 of each stack starts
-   * (profiles::PipelineParameters::origins, one per stack). Given also the whole
-   * cloud's spacing (setPointSpacing) and stack normals, a part that holds each of its
-   * profiles whole gets the whole cloud's profile edges among its points (a run split
-   * by profiles, e.g. pcl_ext_tiles). Default: a NaN centre and no origins, the
-   * input's own. */
-  void
-  setCloudFrame (const Eigen::Vector3d& centre, const std::vector<double>& origins)
-  {
-    frame_centre_ = centre;
-    frame_origins_ = origins;
-  }
-  const Eigen::Vector3d&
-  getCloudCentre () const
-  {
-    return frame_centre_;
-  }
-  const std::vector<double>&
-  getStackOrigins () const
-  {
-    return frame_origins_;
-  }
-
-  /** \brief With local thresholds, each stack's mean local gap, one per stack, rather
-   * than the input's own (profiles::PipelineParameters::mean_gaps): a part of a cloud
-   * given the whole cloud's (computeLocalGaps over every part) gets the whole cloud's
-   * thresholds. Default: none, the input's. */
-  void
-  setStackMeanGaps (const std::vector<double>& mean_gaps)
-  {
-    mean_gaps_ = mean_gaps;
-  }
-  const std::vector<double>&
-  getStackMeanGaps () const
-  {
-    return mean_gaps_;
-  }
-
-  /** \brief With local thresholds: the local gap of every input point in every stack
-   * (profiles::localGaps; NaN for a point that is not finite or not in the indices),
-   * without segmenting; the mean of those below getUsedMaxThreshold() is a stack's mean
-   * gap. \return false (PCL_ERROR) when the settings are not valid or local thresholds
-   * are off */
-  bool
-  computeLocalGaps (std::vector<std::vector<float>>& gaps);
-
-  /** \brief The longest local threshold of the last extract() or computeLocalGaps():
-   * the maximum threshold factor times the threshold. */
-  double
-  getUsedMaxThreshold () const
-  {
-    return used_max_threshold_;
-  }
-
   /** \brief The profile segmenter. Default Proximity; CurveReconstruction links each
    * point to its nearest and half neighbours (profiles::crustEdges). */
   void
@@ -532,11 +476,12 @@ protected:
   bool
   prepare (std::vector<Eigen::Vector3f>& xyz);
 
-  /** \brief Prepare the points, resolve the settings and run the pipeline (\a
-   * gaps_only: the local gaps only). \return false (PCL_ERROR, deinitCompute done)
-   * when the input or the settings are not valid */
+  /** \brief Prepare the points, resolve the settings and run the pipeline to \a stage
+   * (ProfilePartSegmentation's stages: the frame and the given curve ends set by it).
+   * \return false (PCL_ERROR, deinitCompute done) when the input or the settings are
+   * not valid */
   bool
-  runPipeline (bool gaps_only, profiles::PipelineResult& result);
+  runPipeline (profiles::PipelineStage stage, profiles::PipelineResult& result);
 
   /** \brief Resolve spacing, width and threshold into \a parameters. */
   bool
@@ -566,6 +511,10 @@ protected:
       Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN());
   std::vector<double> frame_origins_;
   std::vector<double> mean_gaps_;
+  // The curve ends given to the stage CurveJoins, per input point.
+  std::vector<std::vector<std::uint8_t>> given_ends_;
+  std::vector<std::uint8_t> given_breakpoints_;
+  std::vector<double> junction_tolerances_;
 
   // Results of the last extract().
   pcl::Indices points_; ///< cloud index of each segmented (finite) point

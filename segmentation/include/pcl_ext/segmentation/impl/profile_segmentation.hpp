@@ -131,7 +131,7 @@ ProfileSegmentation<PointT>::resolveLengths (const std::vector<Eigen::Vector3f>&
 
 template <typename PointT>
 bool
-ProfileSegmentation<PointT>::runPipeline (bool gaps_only,
+ProfileSegmentation<PointT>::runPipeline (profiles::PipelineStage stage,
                                           profiles::PipelineResult& result)
 {
   std::vector<Eigen::Vector3f> xyz;
@@ -160,7 +160,21 @@ ProfileSegmentation<PointT>::runPipeline (bool gaps_only,
   p.max_threshold = max_threshold_factor_ * used_threshold_;
   used_max_threshold_ = p.max_threshold;
   p.mean_gaps = mean_gaps_;
-  p.local_gaps_only = gaps_only;
+  p.stage = stage;
+  if (stage == profiles::PipelineStage::CurveJoins) {
+    // The given curve ends, per input point, for the segmented points.
+    p.given_ends.assign (given_ends_.size(), std::vector<std::uint8_t> (xyz.size(), 0));
+    p.given_breakpoints.assign (xyz.size(), 0);
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      const auto index = static_cast<std::size_t> (points_[i]);
+      for (std::size_t s = 0; s < given_ends_.size(); ++s)
+        if (index < given_ends_[s].size())
+          p.given_ends[s][i] = given_ends_[s][index];
+      if (index < given_breakpoints_.size())
+        p.given_breakpoints[i] = given_breakpoints_[index];
+    }
+    p.junction_tolerances = junction_tolerances_;
+  }
   p.max_turn = max_turn_;
   p.turn_significance = turn_significance_;
   p.corrected_aic = corrected_aic_;
@@ -187,29 +201,6 @@ ProfileSegmentation<PointT>::runPipeline (bool gaps_only,
 }
 
 template <typename PointT>
-bool
-ProfileSegmentation<PointT>::computeLocalGaps (std::vector<std::vector<float>>& gaps)
-{
-  gaps.clear();
-  if (!local_threshold_) {
-    PCL_ERROR ("[pcl_ext::ProfileSegmentation::computeLocalGaps] Local thresholds are "
-               "off.\n");
-    return false;
-  }
-  profiles::PipelineResult result;
-  if (!runPipeline (true, result))
-    return false;
-  gaps.assign (
-      result.local_gaps.size(),
-      std::vector<float> (input_->size(), std::numeric_limits<float>::quiet_NaN()));
-  for (std::size_t s = 0; s < result.local_gaps.size(); ++s)
-    for (std::size_t i = 0; i < points_.size(); ++i)
-      gaps[s][points_[i]] = result.local_gaps[s][i];
-  deinitCompute();
-  return true;
-}
-
-template <typename PointT>
 void
 ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
 {
@@ -224,7 +215,7 @@ ProfileSegmentation<PointT>::extract (std::vector<pcl::PointIndices>& clusters)
   points_.clear();
 
   profiles::PipelineResult result;
-  if (!runPipeline (false, result))
+  if (!runPipeline (profiles::PipelineStage::Segments, result))
     return;
 
   // The graph, in cloud indices.
