@@ -133,21 +133,40 @@ TEST_F (TilesProfilesApp, LocalThresholdsTakeTheWholeCloudsMeanGaps)
   }
 }
 
+TEST_F (TilesProfilesApp, CurveFittingOverPartsGivesTheWholeCloudsBytes)
+{
+  // A building on the ground: curve fitting's curve ends come from each stack's
+  // medians over every part, a breakpoint of any stack is one in all, and the segments
+  // around them are labelled over the whole graph. One part per stack, 2 m slabs, and
+  // with local thresholds.
+  generate ("building", "building.pcd", 20000);
+  for (const std::string options :
+       {"-method curve", "-method curve -local_threshold"}) {
+    segmentWhole ("building.pcd", "whole.pcd", options);
+    for (const std::string size : {"0", "2"}) {
+      ASSERT_EQ (run ("segment_profiles " + path ("building.pcd") + " " +
+                      path ("t.pcd") + " " + options + " -tile_size " + size),
+                 0)
+          << output_;
+      expectSameBytes ("whole.pcd", "t.pcd");
+    }
+  }
+}
+
 TEST_F (TilesProfilesApp, WhatThePartsCannotGiveYetIsRefused)
 {
-  // A building on the ground: -method auto chooses curve fitting, whose curve ends
-  // are decided over every stack's points; refused after the first run, no output.
+  // The building: -method auto chooses curve fitting with the cylinder join, which
+  // fits cylinders to whole segments; refused after the first run, no output.
   generate ("building", "building.pcd", 20000);
   EXPECT_EQ (run ("segment_profiles " + path ("building.pcd") + " " + path ("b.pcd")),
              1);
-  EXPECT_NE (output_.find ("chose curve fitting"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("not the cylinder join"), std::string::npos) << output_;
   EXPECT_FALSE (exists ("b.pcd"));
-  for (const std::string option : {"-method curve", "-join_cylinders"}) {
-    EXPECT_EQ (run ("segment_profiles " + path ("building.pcd") + " " + path ("b.pcd") +
-                    " " + option),
-               1);
-    EXPECT_NE (output_.find ("does not run " + option), std::string::npos) << output_;
-  }
+  EXPECT_EQ (run ("segment_profiles " + path ("building.pcd") + " " + path ("b.pcd") +
+                  " -method curve -join_cylinders"),
+             1);
+  EXPECT_NE (output_.find ("does not run -join_cylinders"), std::string::npos)
+      << output_;
   EXPECT_FALSE (exists ("b.pcd"));
 }
 
@@ -173,5 +192,15 @@ TEST_F (TilesProfilesApp, MpiRanksShareThePartsAndGiveTheSameBytes)
         << text;
     expectSameBytes ("whole.pcd", out);
   }
+  // Curve fitting: the ranks share the three passes.
+  generate ("building", "building.pcd", 20000);
+  segmentWhole ("building.pcd", "curve.pcd", "-method curve");
+  const std::string command =
+      std::string (PCL_EXT_MPIEXEC) + " --allow-run-as-root --oversubscribe -np 2 " +
+      PCL_EXT_TILES_EXE + " segment_profiles '" + path ("building.pcd") + "' '" +
+      path ("mpi_curve.pcd") + "' -method curve -tile_size 3 -threads 1 > '" +
+      path ("mpi.log") + "' 2>&1";
+  ASSERT_EQ (std::system (command.c_str()), 0);
+  expectSameBytes ("curve.pcd", "mpi_curve.pcd");
 }
 #endif

@@ -23,6 +23,8 @@ gapsName (std::size_t stack)
   return "profiles_gaps_" + std::to_string (stack);
 }
 
+} // namespace
+
 /** Part \a i's points and the segmentation set up for them as \a pass says. */
 bool
 setUpPart (const ProfileFrame& frame,
@@ -58,7 +60,7 @@ setUpPart (const ProfileFrame& frame,
 }
 
 bool
-writeFile (const std::string& path, const void* data, std::size_t bytes)
+writePartFile (const std::string& path, const void* data, std::size_t bytes)
 {
   const std::string partial = path + ".partial";
   std::FILE* file = std::fopen (partial.c_str(), "wb");
@@ -74,7 +76,7 @@ writeFile (const std::string& path, const void* data, std::size_t bytes)
 }
 
 bool
-readLinks (const std::string& path, std::vector<std::uint64_t>& links)
+readPartLinks (const std::string& path, std::vector<std::uint64_t>& links)
 {
   links.clear();
   std::FILE* file = std::fopen (path.c_str(), "rb");
@@ -92,7 +94,6 @@ readLinks (const std::string& path, std::vector<std::uint64_t>& links)
     std::cerr << "Error: " << path << " is broken.\n";
   return ok;
 }
-} // namespace
 
 bool
 createGapFiles (const std::string& workdir, std::size_t stacks, std::uint64_t points)
@@ -134,7 +135,7 @@ computePartGaps (const ProfileFrame& frame,
   std::size_t part;
   parts.locate (i, stack, part);
   const double longest = seg.getUsedMaxThreshold();
-  return writeFile (
+  return writePartFile (
       profilePartPath (workdir, stack, part, "gaps"), &longest, sizeof (longest));
 }
 
@@ -214,9 +215,26 @@ segmentPart (const ProfileFrame& frame,
       links.push_back (indices[c.indices.front()]);
     }
   parts.locate (i, stack, part);
-  return writeFile (profilePartPath (workdir, stack, part, "links"),
-                    links.data(),
-                    links.size() * sizeof (std::uint64_t));
+  return writePartFile (profilePartPath (workdir, stack, part, "links"),
+                        links.data(),
+                        links.size() * sizeof (std::uint64_t));
+}
+
+bool
+markFinitePoints (const ProfileParts& parts,
+                  const std::string& workdir,
+                  std::vector<std::uint32_t>& flags)
+{
+  std::vector<std::uint64_t> indices;
+  pcl::PointCloud<pcl::PointXYZ> unused;
+  // Every finite point lies in one part of the first stack.
+  for (std::size_t p = 0; p < parts.firsts[0].size(); ++p) {
+    if (!readProfilePart (profilePartPath (workdir, 0, p, "points"), indices, unused))
+      return false;
+    for (const auto i : indices)
+      flags[i] = 1;
+  }
+  return true;
 }
 
 bool
@@ -229,19 +247,13 @@ joinParts (const tiling::TilePlan& plan,
   joined.sets = UnionFind (total);
   joined.size.assign (total, 0);
   joined.largest = 0;
-  std::vector<std::uint64_t> links, indices;
-  pcl::PointCloud<pcl::PointXYZ> unused;
-  // Every finite point lies in one part of the first stack.
-  for (std::size_t p = 0; p < parts.firsts[0].size(); ++p) {
-    if (!readProfilePart (profilePartPath (workdir, 0, p, "points"), indices, unused))
-      return false;
-    for (const auto i : indices)
-      joined.size[i] = 1;
-  }
+  std::vector<std::uint64_t> links;
+  if (!markFinitePoints (parts, workdir, joined.size))
+    return false;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     std::size_t s, p;
     parts.locate (i, s, p);
-    if (!readLinks (profilePartPath (workdir, s, p, "links"), links))
+    if (!readPartLinks (profilePartPath (workdir, s, p, "links"), links))
       return false;
     for (std::size_t k = 0; k < links.size(); k += 2) {
       if (links[k] >= total || links[k + 1] >= total) {
@@ -252,6 +264,14 @@ joinParts (const tiling::TilePlan& plan,
                          static_cast<std::uint32_t> (links[k + 1]));
     }
   }
+  countComponents (joined);
+  return true;
+}
+
+void
+countComponents (JoinedParts& joined)
+{
+  const std::uint64_t total = joined.sets.size();
   for (std::uint32_t i = 0; i < total; ++i)
     if (joined.size[i]) {
       const std::uint32_t root = joined.sets.find (i);
@@ -260,9 +280,9 @@ joinParts (const tiling::TilePlan& plan,
         joined.size[i] = 0;
       }
     }
+  joined.largest = 0;
   for (const std::uint32_t s : joined.size)
     joined.largest = std::max (joined.largest, s);
-  return true;
 }
 
 bool

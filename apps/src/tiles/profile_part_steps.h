@@ -8,6 +8,7 @@
 #include "profile_parts.h"
 
 #include <pcl_ext/common/union_find.h>
+#include <pcl_ext/segmentation/profile_part_segmentation.h>
 #include <pcl_ext/tiling/tile_plan.h>
 
 #include <cstdint>
@@ -23,6 +24,31 @@ struct PartPass {
   bool local_threshold = false;  ///< local thresholds (then mean_gaps is set)
   std::vector<double> mean_gaps; ///< each stack's mean local gap over the whole cloud
 };
+
+/** \brief Part \a i's points (\a indices: their global indices) and \a seg set up for
+ * them as \a pass says: the options, one stack (\a stack), the whole cloud's frame.
+ * \return false (message printed) when its file cannot be read */
+bool
+setUpPart (const ProfileFrame& frame,
+           const ProfileParts& parts,
+           const ProfileOptions& options,
+           const PartPass& pass,
+           const std::string& workdir,
+           unsigned int threads,
+           std::size_t i,
+           std::size_t& stack,
+           std::vector<std::uint64_t>& indices,
+           ProfilePartSegmentation<pcl::PointXYZ>& seg);
+
+/** \brief Write \a bytes of \a data to \a path whole or not at all (through a partial
+ * file renamed). \return false (message printed) on error */
+bool
+writePartFile (const std::string& path, const void* data, std::size_t bytes);
+
+/** \brief Read the pairs of global indices of a part's "links" file. \return false
+ * (message printed) when missing (the part has not run) or broken */
+bool
+readPartLinks (const std::string& path, std::vector<std::uint64_t>& links);
 
 /** \brief The local gap of every point of part \a i in its stack (the pass's settings),
  * saved at the points' global indices (the file of its stack, gapsFileName) with the
@@ -69,6 +95,18 @@ struct JoinedParts {
   std::vector<std::uint32_t> size; ///< points of each root's component (0 elsewhere)
   std::uint32_t largest = 0;       ///< points of the largest component
 };
+
+/** \brief Set \a flags to 1 at the global index of every finite point (every point
+ * of the first stack's parts). \return false (message printed) on error */
+bool
+markFinitePoints (const ProfileParts& parts,
+                  const std::string& workdir,
+                  std::vector<std::uint32_t>& flags);
+
+/** \brief With \a joined's sets made and its size 1 at every finite point: each root's
+ * component size (0 elsewhere) and the largest. */
+void
+countComponents (JoinedParts& joined);
 
 /** \brief Join the links of every part of \a parts. \return false (message printed)
  * when a part has not run or its files are broken */

@@ -5,6 +5,7 @@
 #include "../profiles/profile_options.h"
 #include "input_fields.h"
 #include "merge_output.h"
+#include "profile_curve_steps.h"
 #include "profile_part_steps.h"
 #include "profile_parts.h"
 
@@ -76,17 +77,14 @@ clearWorkdir (const std::string& workdir)
   return true;
 }
 
-/** What a run over parts cannot give yet: the curve fitting's stack-wide medians and
- * curve ends of every stack, and the cylinder join's reach along an axis. \return
- * false (message printed) for those */
+/** What a run over parts cannot give yet: the cylinder join, which fits cylinders to
+ * whole segments and reaches 80 spacings along an axis. \return false (message
+ * printed) for it */
 bool
 supportedOptions (const ProfileOptions& options)
 {
   const char* missing = nullptr;
-  if (options.method == ProfileOptions::Segmentation::ProfileMethod::CurveFitting &&
-      !options.automatic())
-    missing = "-method curve";
-  else if (options.join_cylinders)
+  if (options.join_cylinders)
     missing = "-join_cylinders";
   if (!missing)
     return true;
@@ -174,43 +172,50 @@ chooseAutomatically (const ProfileFrame& frame,
   if (verbose)
     std::cout << line << "\n";
   if (chosen.curve_fitting) {
-    std::cerr << "\nError: -method auto chose curve fitting for this cloud (" << line
-              << "), which pcl_ext_tiles segment_profiles does not run yet: run "
-                 "pcl_ext_segment_profiles on the whole cloud.\n";
+    std::cerr << "\nError: -method auto chose curve fitting with the cylinder join for "
+                 "this cloud ("
+              << line
+              << "); pcl_ext_tiles segment_profiles runs curve fitting (-method curve) "
+                 "but not the cylinder join yet: run pcl_ext_segment_profiles on the "
+                 "whole cloud.\n";
     return false;
   }
   rerun = chosen.local_threshold && !options.local_threshold;
   return true;
 }
 
+/** Save \a values in the plan's settings under \a key (17 digits each). */
 bool
-saveMeanGaps (tiling::TilePlan& plan,
-              const std::vector<double>& mean_gaps,
-              const std::string& workdir)
+saveValues (tiling::TilePlan& plan,
+            const std::string& key,
+            const std::vector<double>& values,
+            const std::string& workdir)
 {
   std::string text;
   char value[32];
-  for (const double g : mean_gaps) {
-    std::snprintf (value, sizeof (value), "%.17g", g);
+  for (const double v : values) {
+    std::snprintf (value, sizeof (value), "%.17g", v);
     text += (text.empty() ? "" : " ") + std::string (value);
   }
-  plan.settings["profile_mean_gaps"] = text;
+  plan.settings[key] = text;
   return tiling::saveTilePlan (planFile (workdir), plan);
 }
 
 bool
-loadMeanGaps (const tiling::TilePlan& plan, std::vector<double>& mean_gaps)
+loadValues (const tiling::TilePlan& plan,
+            const std::string& key,
+            std::vector<double>& values)
 {
-  mean_gaps.clear();
-  const auto it = plan.settings.find ("profile_mean_gaps");
+  values.clear();
+  const auto it = plan.settings.find (key);
   if (it == plan.settings.end()) {
-    std::cerr << "Error: the plan has no mean gaps.\n";
+    std::cerr << "Error: the plan has no " << key << ".\n";
     return false;
   }
   std::istringstream in (it->second);
-  double g;
-  while (in >> g)
-    mean_gaps.push_back (g);
+  double v;
+  while (in >> v)
+    values.push_back (v);
   return true;
 }
 
@@ -349,16 +354,52 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
         ok && (!leader || reduceGaps (tile_plan, parts, run.workdir, pass.mean_gaps)));
     if (leader && ok) {
       pass.first_automatic = false;
-      ok = saveMeanGaps (tile_plan, pass.mean_gaps, run.workdir);
+      ok = saveValues (tile_plan, "profile_mean_gaps", pass.mean_gaps, run.workdir);
     }
     ok = scheduler.allOk (ok) &&
          (leader || (tiling::loadTilePlan (planFile (run.workdir), tile_plan) &&
-                     loadMeanGaps (tile_plan, pass.mean_gaps)));
+                     loadValues (tile_plan, "profile_mean_gaps", pass.mean_gaps)));
     ok = scheduler.allOk (ok);
   };
+  // Curve fitting (-method curve): the scores, each stack's curve ends from its
+  // medians over every part, then the joins across junctions given every stack's ends.
+  const bool curves =
+      !options.automatic() &&
+      options.method == ProfileOptions::Segmentation::ProfileMethod::CurveFitting;
+  std::vector<double> junction_tolerances;
   const auto segment_pass = [&] {
-    over_parts ("chains", [&] (std::size_t i) {
-      return segmentPart (frame, parts, options, pass, run.workdir, run.threads, i);
+    if (!curves) {
+      over_parts ("chains", [&] (std::size_t i) {
+        return segmentPart (frame, parts, options, pass, run.workdir, run.threads, i);
+      });
+      return;
+    }
+    over_parts ("curve scores", [&] (std::size_t i) {
+      return scorePartCurves (frame, parts, options, pass, run.workdir, run.threads, i);
+    });
+    ok = scheduler.allOk (
+        ok &&
+        (!leader ||
+         (findCurveEnds (
+              tile_plan, frame, parts, options, run.workdir, junction_tolerances) &&
+          saveValues (tile_plan,
+                      "profile_junction_tolerances",
+                      junction_tolerances,
+                      run.workdir))));
+    ok = scheduler.allOk (
+        ok &&
+        (leader ||
+         (tiling::loadTilePlan (planFile (run.workdir), tile_plan) &&
+          loadValues (tile_plan, "profile_junction_tolerances", junction_tolerances))));
+    over_parts ("curve joins", [&] (std::size_t i) {
+      return joinPartCurves (frame,
+                             parts,
+                             options,
+                             pass,
+                             junction_tolerances,
+                             run.workdir,
+                             run.threads,
+                             i);
     });
   };
   if (pass.local_threshold)
@@ -391,12 +432,13 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
   }
   if (leader && ok) {
     StageTimer timer ("Joining the parts");
-    ok =
-        (joined.sets.size() > 0 || joinParts (tile_plan, parts, run.workdir, joined)) &&
-        saveSegments (run.workdir,
-                      static_cast<std::uint64_t> (options.min_size),
-                      joined,
-                      segments);
+    ok = (joined.sets.size() > 0 ||
+          (curves ? labelCurveSegments (tile_plan, parts, run.workdir, joined)
+                  : joinParts (tile_plan, parts, run.workdir, joined))) &&
+         saveSegments (run.workdir,
+                       static_cast<std::uint64_t> (options.min_size),
+                       joined,
+                       segments);
     if (ok)
       timer.done (tile_plan.getTotalPoints());
     joined = JoinedParts();

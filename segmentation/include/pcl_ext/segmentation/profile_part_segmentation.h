@@ -97,7 +97,8 @@ public:
 
   /** \brief The curve end rule of a stack whose evaluated points have the medians \a
    * median_rms and \a median_noise over the whole cloud, with the settings of the last
-   * run (profiles::curveEndRule). */
+   * run, or before any, with the settings and the spacing given (setPointSpacing)
+   * (profiles::curveEndRule). */
   profiles::CurveEndRule
   getCurveEndRule (double median_rms, double median_noise) const;
 

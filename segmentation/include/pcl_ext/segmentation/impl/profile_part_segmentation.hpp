@@ -86,7 +86,12 @@ ProfilePartSegmentation<PointT>::getCurveEndRule (double median_rms,
 {
   profiles::PipelineParameters p;
   p.residual_factor = this->residual_factor_;
-  p.min_residual = 0.1 * this->used_threshold_; // as resolveLengths sets it
+  // As resolveLengths sets it; before any run, from the settings and the spacing.
+  const double threshold = this->used_threshold_ > 0.0 ? this->used_threshold_
+                           : this->threshold_ > 0.0
+                               ? this->threshold_
+                               : this->threshold_factor_ * this->spacing_;
+  p.min_residual = 0.1 * threshold;
   p.turn_significance = this->turn_significance_;
   return profiles::curveEndRule (median_rms, median_noise, p);
 }
