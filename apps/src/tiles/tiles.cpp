@@ -31,7 +31,7 @@ constexpr const char* kDescription =
     "until the super-voxels its points lie in are the whole cloud's, and at least "
     "99 % of the points get pcl_ext_crf_classify's class), segment_profiles (the "
     "options of pcl_ext_segment_profiles; split by profiles rather than by tiles, "
-    "one command, not in steps; curve fitting not yet). An output named "
+    "one command, not in steps; not yet the cylinder join). An output named "
     "with a '#' (out_#.las) gives one LAS file per tile, '#' its number, and an index "
     "of the files with their boxes (out_index.csv). Steps for scheduler "
     "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D', "
