@@ -233,12 +233,19 @@ growStep (const tiling::TilePlan& plan,
   std::vector<std::uint32_t> segments, labels;
   std::map<std::uint32_t, std::vector<std::uint32_t>> ids_of_tile;
   const bool refined = method.needsRefine();
-  const auto grow = [&] (const TileCloud& c) {
-    // The segments after the last pass: the second's, numbered over the whole cloud
-    // already, or the tiles' own joined.
+  // The segments after the last pass: the second's, numbered over the whole cloud
+  // already, or the tiles' own joined. Only the points without one are grouped, so
+  // only theirs are the neighbourhoods searched.
+  const auto select = [&] (const TileCloud& c, std::vector<char>& query) {
     if (refined ? !tiling::TileResults::readAt (workdir, c.indices, segments, kRefined)
                 : !readJoinedSegments (workdir, c, ids_of_tile, segments))
       return false;
+    query.resize (segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i)
+      query[i] = segments[i] == tiling::SegmentMerge::kNoSegment;
+    return true;
+  };
+  const auto grow = [&] (const TileCloud& c) {
     return method.grow (c, segments, labels);
   };
   if (!computeOnTile (plan,
@@ -249,7 +256,8 @@ growStep (const tiling::TilePlan& plan,
                       0.0,
                       method,
                       grow,
-                      cloud))
+                      cloud,
+                      select))
     return false;
   std::vector<std::uint64_t> core_indices;
   std::vector<std::uint32_t> core_labels;

@@ -205,8 +205,11 @@ public:
   {
     labels.assign (segments.size(), tiling::SegmentMerge::kNoSegment);
     needed_margin_ = 0.0; // getGrowReach()'s neighbourhoods are all it reads
-    if (tile.core_points == 0)
-      return true;
+    if (tile.core_points == 0 ||
+        std::find (segments.begin(),
+                   segments.end(),
+                   tiling::SegmentMerge::kNoSegment) == segments.end())
+      return true; // no point left out
     if (!hasNeighbourhoods (tile))
       return false;
     auto input = pcl::make_shared<pcl::PointCloud<pcl::Label>>();

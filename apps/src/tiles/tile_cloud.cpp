@@ -65,12 +65,17 @@ ownNeighbourhoodsWithin (const tiling::TilePlan& plan,
                          const tiling::TileGrid& grid,
                          const TileCloud& t,
                          const NeighbourhoodReach& reach,
+                         const std::vector<char>& query,
                          double& short_by)
 {
   const auto& nb = *t.neighbourhoods;
   short_by = 0.0;
   std::vector<char> within (t.cloud->size(), 0);
   for (std::size_t i = 0; i < t.cloud->size(); ++i) {
+    if (!query.empty() && !query[i]) {
+      within[i] = 1; // no row is read: nothing to check
+      continue;
+    }
     const auto& p = (*t.cloud)[i];
     const double space =
         grid.getReach (t.tile, plan.origin.x() + p.x, plan.origin.y() + p.y, t.margin);
@@ -105,7 +110,8 @@ loadTileCloud (const tiling::TilePlan& plan,
                const NeighbourhoodReach& reach,
                unsigned int threads,
                TileCloud& result,
-               double min_margin)
+               double min_margin,
+               const PointSelection& select)
 {
   const tiling::TileGrid grid = plan.getGrid();
   result = TileCloud();
@@ -181,6 +187,18 @@ loadTileCloud (const tiling::TilePlan& plan,
       nb.setMaxRadius (reach.max_radius);
     }
     nb.setNumberOfThreads (threads);
+    std::vector<char> query;
+    if (select) {
+      if (!select (result, query) || query.size() != result.cloud->size())
+        return false;
+      auto chosen = pcl::make_shared<pcl::Indices>();
+      for (std::size_t i = 0; i < query.size(); ++i)
+        if (query[i])
+          chosen->push_back (static_cast<pcl::index_t> (i));
+      if (chosen->empty())
+        return true; // nothing to search: no point of the tile needs a row
+      nb.setIndices (chosen);
+    }
     if (result.cloud->size() <= static_cast<std::size_t> (reach.k) &&
         reach.radius <= 0.0 && tiles.size() == grid.size())
       return true; // fewer points than k in the whole cloud: the method says so
@@ -198,7 +216,7 @@ loadTileCloud (const tiling::TilePlan& plan,
     if (nb.empty())
       short_by = plan.tile_size; // too few points to search: widen
     else {
-      within = ownNeighbourhoodsWithin (plan, grid, result, reach, short_by);
+      within = ownNeighbourhoodsWithin (plan, grid, result, reach, query, short_by);
       for (int h = 1; h < reach.hops; ++h) {
         std::vector<char> next = within;
         for (std::size_t i = 0; i < within.size(); ++i) {

@@ -11,6 +11,7 @@
 #include <pcl/point_types.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,12 @@ struct TileCloud {
   }
 };
 
+/** \brief Which of a tile's loaded points need neighbourhoods: \a query gets one flag
+ * per point of \a cloud (neighbourhoods not searched yet). \return false (message
+ * printed) on error */
+using PointSelection =
+    std::function<bool (const TileCloud& cloud, std::vector<char>& query)>;
+
 /** \brief Load tile \a tile of \a plan from \a folder with neighbourhoods as \a reach
  * says, and check that every core point's result can be that of the whole cloud: each
  * neighbourhood it reaches through (\a reach.hops steps) lies within the points loaded
@@ -69,8 +76,11 @@ struct TileCloud {
  * tiles around) and the search runs again, until all do (at worst the whole cloud).
  * The margin is at least \a min_margin (and the plan's halo). With \a reach.search
  * false, the core and the halo without neighbourhoods, the margin widened only while it
- * holds at most \a reach.k points. \return false (message printed) when a file cannot
- * be read or the search fails */
+ * holds at most \a reach.k points. With \a select, only the points it marks (given the
+ * points loaded, one flag per point) get neighbourhoods and are checked, through the
+ * rows of the marked points alone: for a method that reads no other rows.
+ * \return false (message printed) when a file cannot be read, the search or \a select
+ * fails */
 bool
 loadTileCloud (const tiling::TilePlan& plan,
                const std::string& folder,
@@ -78,6 +88,7 @@ loadTileCloud (const tiling::TilePlan& plan,
                const NeighbourhoodReach& reach,
                unsigned int threads,
                TileCloud& result,
-               double min_margin = 0.0);
+               double min_margin = 0.0,
+               const PointSelection& select = {});
 } // namespace apps
 } // namespace pcl_ext

@@ -18,10 +18,11 @@ computeOnTile (const tiling::TilePlan& plan,
                double margin,
                const TileMethod& method,
                const std::function<bool (const TileCloud&)>& compute,
-               TileCloud& cloud)
+               TileCloud& cloud,
+               const PointSelection& select)
 {
   for (;;) {
-    if (!loadTileCloud (plan, folder, tile, reach, threads, cloud, margin) ||
+    if (!loadTileCloud (plan, folder, tile, reach, threads, cloud, margin, select) ||
         !compute (cloud))
       return false;
     const double needed = method.getNeededMargin();

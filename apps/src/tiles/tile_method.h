@@ -273,7 +273,8 @@ protected:
 /** \brief Load tile \a tile with \a reach from a margin of at least \a margin and run
  * \a compute on it (one of \a method's steps), widening the margin and running again
  * while \a method says it needed more (TileMethod::getNeededMargin), at worst up to the
- * whole cloud. \return false (message printed) when loading or \a compute fails */
+ * whole cloud; \a select as loadTileCloud's. \return false (message printed) when
+ * loading or \a compute fails */
 bool
 computeOnTile (const tiling::TilePlan& plan,
                const std::string& folder,
@@ -283,7 +284,8 @@ computeOnTile (const tiling::TilePlan& plan,
                double margin,
                const TileMethod& method,
                const std::function<bool (const TileCloud&)>& compute,
-               TileCloud& cloud);
+               TileCloud& cloud,
+               const PointSelection& select = {});
 
 /** \brief The method named \a name (classify_variance, ...), or null. */
 std::unique_ptr<TileMethod>

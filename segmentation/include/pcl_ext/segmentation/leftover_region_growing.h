@@ -36,7 +36,8 @@ namespace pcl_ext {
  *
  * Inputs: the segment label of every point of the cloud (any segmentation; 0: none).
  * Neighbourhoods are searched once for the whole cloud or shared through
- * setNeighbourhoods (rows closest first); the first getNormalK() of each row give the
+ * setNeighbourhoods (rows closest first; shared rows of only the points without a
+ * segment will do, the only rows read); the first getNormalK() of each row give the
  * normal and the links. Output: the input labels, with the new segments numbered after
  * the largest input label by decreasing size (ties: the smallest point index first).
  * Deterministic: the groups are the connected components of a symmetric link test.

@@ -129,6 +129,17 @@ protected:
         caller, cloud, indices, k_, radius_, search_, this->threads_, max_radius_);
   }
 
+  /** \brief NeighbourhoodSource::prepareCovering with these options. */
+  const Neighbourhoods<PointT>*
+  prepareNeighbourhoodsCovering (
+      const std::string& caller,
+      const typename Neighbourhoods<PointT>::PointCloudConstPtr& cloud,
+      const std::vector<pcl::index_t>& needed)
+  {
+    return this->source_.prepareCovering (
+        caller, cloud, needed, k_, radius_, search_, this->threads_, max_radius_);
+  }
+
   /** \brief Free a search of our own (the rows can be large). */
   void
   releaseNeighbourhoods ()

@@ -94,6 +94,33 @@ public:
     return own_.get();
   }
 
+  /** \brief As prepare() for every point of \a cloud, except that shared
+   * neighbourhoods of \a cloud computed for only some of its points are used when they
+   * have a row for each of \a needed: a caller that reads the rows of those points
+   * alone (and finds its neighbours among all points) needs no more. */
+  const NeighbourhoodsT*
+  prepareCovering (const std::string& caller,
+                   const typename NeighbourhoodsT::PointCloudConstPtr& cloud,
+                   const std::vector<pcl::index_t>& needed,
+                   int k,
+                   double radius,
+                   const SearchPtr& search,
+                   unsigned int threads,
+                   double max_radius = 0.0)
+  {
+    if (shared_ && !shared_->empty() && shared_->getInputCloud() == cloud) {
+      bool covered = true;
+      for (std::size_t i = 0; i < needed.size() && covered; ++i)
+        covered = shared_->getRowOfPoint (needed[i]) >= 0;
+      if (covered) {
+        own_.reset();
+        return shared_.get();
+      }
+    }
+    return prepare (
+        caller, cloud, pcl::IndicesConstPtr(), k, radius, search, threads, max_radius);
+  }
+
   /** \brief Free a search of our own (the rows can be large). */
   void
   release ()

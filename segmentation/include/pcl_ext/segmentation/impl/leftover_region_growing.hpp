@@ -80,13 +80,6 @@ pcl_ext::LeftoverRegionGrowing<PointT>::compute (LabelCloud& output)
     deinitCompute();
     return false;
   }
-  // Whole-cloud rows: a point's neighbours need not be among the indices.
-  const Neighbourhoods<PointT>* const nb = this->prepareNeighbourhoods (
-      "LeftoverRegionGrowing::compute", input_, pcl::IndicesConstPtr());
-  if (!nb) {
-    deinitCompute();
-    return false;
-  }
   // The points that take part (indexed, finite, without a segment, with a row), in
   // index order; per-point arrays hold only their slot, the rest is per taking part.
   std::vector<std::int32_t> slot (n, -1);
@@ -95,6 +88,19 @@ pcl_ext::LeftoverRegionGrowing<PointT>::compute (LabelCloud& output)
   for (const auto i : *indices_)
     if ((*segments_)[i].label == 0 && pcl::isFinite ((*input_)[i]))
       slot[static_cast<std::size_t> (i)] = 0;
+  // Whole-cloud rows (a point's neighbours need not be among the indices), of those
+  // points alone: shared rows of only them will do.
+  std::vector<pcl::index_t> candidates;
+  for (std::size_t i = 0; i < n; ++i)
+    if (slot[i] == 0)
+      candidates.push_back (static_cast<pcl::index_t> (i));
+  const Neighbourhoods<PointT>* const nb = this->prepareNeighbourhoodsCovering (
+      "LeftoverRegionGrowing::compute", input_, candidates);
+  candidates = std::vector<pcl::index_t>();
+  if (!nb) {
+    deinitCompute();
+    return false;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     if (slot[i] < 0)
       continue;
