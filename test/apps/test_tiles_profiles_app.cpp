@@ -170,6 +170,28 @@ TEST_F (TilesProfilesApp, WhatThePartsCannotGiveYetIsRefused)
   EXPECT_FALSE (exists ("b.pcd"));
 }
 
+TEST_F (TilesProfilesApp, InputsWithoutFinitePointsOrBadOptionsAreRefused)
+{
+  // Every point NaN: refused at the plan, no output; nonsense options before any pass.
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 0; i < 100; ++i)
+    cloud.push_back (pcl::PointXYZ (std::numeric_limits<float>::quiet_NaN(), 0.f, 0.f));
+  ASSERT_EQ (pcl::io::savePCDFileBinary (path ("nan.pcd"), cloud), 0);
+  EXPECT_EQ (run ("segment_profiles " + path ("nan.pcd") + " " + path ("n.pcd")), 1);
+  EXPECT_NE (output_.find ("no point with finite coordinates"), std::string::npos)
+      << output_;
+  EXPECT_FALSE (exists ("n.pcd"));
+  generate ("cubes", "cubes.pcd", 5000);
+  for (const std::string option :
+       {"-method nonsense", "-min_size 0", "-tile_size -1", "-distribution flat"}) {
+    EXPECT_EQ (run ("segment_profiles " + path ("cubes.pcd") + " " + path ("c.pcd") +
+                    " " + option),
+               1)
+        << option;
+    EXPECT_FALSE (exists ("c.pcd")) << option;
+  }
+}
+
 #ifdef PCL_EXT_MPIEXEC
 TEST_F (TilesProfilesApp, MpiRanksShareThePartsAndGiveTheSameBytes)
 {

@@ -110,7 +110,6 @@ findSamples (InputPasses& inputs,
              const ProfileFrame& frame,
              const Eigen::Vector3f& lo,
              const Eigen::Vector3f& hi,
-             std::vector<std::uint64_t>& indices,
              std::vector<Eigen::Vector3f>& points)
 {
   const int axis = profiles::sampleAxis (lo, hi);
@@ -168,13 +167,11 @@ findSamples (InputPasses& inputs,
       start[b] = next;
       next += counts[b + 1] - counts[b];
     }
-  indices.resize (m);
   points.resize (m);
   for (std::size_t s = 0; s < m; ++s) {
     const std::size_t b = static_cast<std::size_t> (
         std::upper_bound (counts.begin(), counts.end(), ranks[s]) - counts.begin() - 1);
     const Ranked& r = ranked[start[b] + (ranks[s] - counts[b])];
-    indices[s] = r.index;
     points[s] = r.point;
   }
   return true;
@@ -383,9 +380,8 @@ estimateProfileFrame (InputPasses& inputs,
     }
   });
   if (sample && frame.points >= 2) {
-    std::vector<std::uint64_t> indices;
     std::vector<Eigen::Vector3f> points;
-    if (!findSamples (inputs, frame, lo, hi, indices, points))
+    if (!findSamples (inputs, frame, lo, hi, points))
       return false;
     const auto neighbourhoods = searchSamples (inputs, frame, lo, hi, points);
     frame.spacing = profiles::pointSpacingOf (neighbourhoods);
