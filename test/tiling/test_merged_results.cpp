@@ -110,6 +110,22 @@ TEST (MergedResults, SegmentsOfTilesJoinAcrossTheHalos)
   EXPECT_EQ (all[0], 0u);
   EXPECT_EQ (all[199], 0u);
   EXPECT_EQ (all[205], SegmentMerge::kNoSegment);
+  // The object, under the size and joined by no halo, is not even kept; each tile's
+  // piece of the wall, as small but joined, is.
+  SegmentMerge merge;
+  ASSERT_TRUE (joinTileSegments (plan, dir, true, 60, merge));
+  const auto object_tile = static_cast<std::uint32_t> (
+      grid.getTile (plan.origin.x() + 12.5, plan.origin.y() + 4.0));
+  ASSERT_NE (object_tile, TileGrid::kNoTile);
+  EXPECT_FALSE (merge.contains (SegmentMerge::key (object_tile, 1)));
+  EXPECT_EQ (merge.number (SegmentMerge::key (object_tile, 1)),
+             SegmentMerge::kNoSegment);
+  for (std::uint32_t t = 0; t < 4; ++t) {
+    const auto wall_tile = static_cast<std::uint32_t> (
+        grid.getTile (plan.origin.x() + 5.0 * t + 2.5, plan.origin.y()));
+    EXPECT_TRUE (merge.contains (SegmentMerge::key (wall_tile, 0))) << t;
+    EXPECT_EQ (merge.number (SegmentMerge::key (wall_tile, 0)), 0u) << t;
+  }
 
   // A tile that did not run: its halo labels are missing, the merge refuses.
   std::remove ((dir + "/tile_1.halo").c_str());

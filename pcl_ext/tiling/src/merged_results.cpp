@@ -47,10 +47,16 @@ joinTileSegments (const TilePlan& plan,
   for (std::size_t t = 0; t < tiles; ++t) {
     if (!loadSegmentSizes (folder, t, sizes, files.sizes))
       return false;
-    for (const auto& s : sizes)
-      merge.addPoints (SegmentMerge::key (static_cast<std::uint32_t> (t), s.label),
-                       s.points,
-                       s.first);
+    for (const auto& s : sizes) {
+      const SegmentMerge::Key key =
+          SegmentMerge::key (static_cast<std::uint32_t> (t), s.label);
+      // A segment no halo joins keeps its own size: under min_size it is dropped
+      // whatever happens, so it is not kept at all (number() gives kNoSegment for a
+      // key it does not know). A scan's many small groups cost no memory then.
+      if (s.points < min_size && !merge.contains (key))
+        continue;
+      merge.addPoints (key, s.points, s.first);
+    }
   }
   merge.numberBySize (min_size);
   return true;

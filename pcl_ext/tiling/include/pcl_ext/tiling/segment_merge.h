@@ -52,6 +52,13 @@ public:
   void
   join (Key owner, Key other);
 
+  /** \brief Whether \a key is known: joined, or given points. */
+  bool
+  contains (Key key) const
+  {
+    return elements_.count (key) > 0;
+  }
+
   /** \brief Segment \a key of a tile has \a points points in the tile's core, the
    * smallest global index among them \a first (what numberBySize() counts). */
   void
