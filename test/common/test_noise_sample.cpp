@@ -96,3 +96,36 @@ TEST (NoiseSample, TooFewOrUnusableNeighbourhoodsGiveNoEstimate)
   EXPECT_FALSE (unusable.valid);
   EXPECT_TRUE (std::isnan (unusable.sigma));
 }
+
+TEST (NoiseSample, CurvatureMedianIsTheSamplesWithTheNoiseRemoved)
+{
+  // Known kappa: l0 = i * 1e-6 over l1 = l2 = 1 for the 20,000 smallest keys 0..19999,
+  // far larger l0 beyond the cut (keys from 10^6), which must not count.
+  std::vector<pcl_ext::KeyedSpread> spreads;
+  const std::size_t n = pcl_ext::kNoiseSampleSize;
+  for (std::size_t i = 0; i < 2 * n; ++i) {
+    pcl_ext::KeyedSpread s;
+    const bool in_sample = i < n;
+    s.key = in_sample ? i : 1000000 + i;
+    s.spread.values = Eigen::Vector3d (in_sample ? i * 1e-6 : 1.0, 1.0, 1.0);
+    s.spread.size = 50;
+    spreads.push_back (s);
+  }
+  // The upper median of l0 / (l0 + 2) over i = 0 .. n - 1: i = n / 2.
+  const auto kappa = [] (double l0) {
+    return static_cast<double> (static_cast<float> (l0 / (l0 + 2.0)));
+  };
+  const double l0 = static_cast<double> (static_cast<float> ((n / 2) * 1e-6));
+  EXPECT_EQ (pcl_ext::sampleCurvatureMedian (spreads, 0.0), kappa (l0));
+  // The noise variance is taken off l0 first (not below 0).
+  EXPECT_EQ (pcl_ext::sampleCurvatureMedian (spreads, 0.001), kappa (l0 - 0.001));
+  EXPECT_EQ (pcl_ext::sampleCurvatureMedian (spreads, 1.0), 0.0);
+  // In another order: the same median.
+  std::reverse (spreads.begin(), spreads.end());
+  EXPECT_EQ (pcl_ext::sampleCurvatureMedian (spreads, 0.0), kappa (l0));
+  // Neighbourhoods without a covariance do not count; none at all: NaN.
+  for (std::size_t i = 0; i < spreads.size(); ++i)
+    spreads[i].spread = pcl_ext::NeighbourhoodSpread();
+  EXPECT_TRUE (std::isnan (pcl_ext::sampleCurvatureMedian (spreads, 0.0)));
+  EXPECT_TRUE (std::isnan (pcl_ext::sampleCurvatureMedian ({}, 0.0)));
+}

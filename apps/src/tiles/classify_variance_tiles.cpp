@@ -28,7 +28,7 @@ public:
   }
 
   bool
-  checkOptions (const CommandLine& cl) override
+  checkOptions (const CommandLine& cl, bool) override
   {
     if (k_ < 3 && radius_ <= 0.0) {
       std::cerr << "Error: -k must be at least 3.\n";

@@ -68,7 +68,7 @@ public:
   }
 
   bool
-  checkOptions (const CommandLine&) override
+  checkOptions (const CommandLine&, bool) override
   {
     if (model_path_.empty()) {
       std::cerr << "Error: pcl_ext_tiles crf_classify needs -model model.txt (written "

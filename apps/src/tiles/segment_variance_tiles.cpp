@@ -43,7 +43,7 @@ public:
   }
 
   bool
-  checkOptions (const CommandLine& cl) override
+  checkOptions (const CommandLine& cl, bool notes) override
   {
     if (!options_.valid (cl) || !checkClassification())
       return false;
@@ -53,16 +53,18 @@ public:
       // The new segments among the points left out stay on (unless -no_leftovers):
       // their pass reads two steps of neighbourhoods, and they raise every scene
       // family well above sections 2 and 3 alone.
-      std::cout << "Note: pcl_ext_tiles segment_variance runs sections 2 and 3"
-                << (options_.leftovers ? " and the new segments among the points left "
-                                         "out (as pcl_ext_segment_variance "
-                                         "-no_reintegrate -leftovers)"
-                                       : " (as pcl_ext_segment_variance "
-                                         "-no_reintegrate)")
-                << " unless -reintegrate is given: section 4's re-integration, a "
-                   "second pass over the tiles, reads as far as three neighbourhood "
-                   "radii of the sparsest points around, which on a scan's sparse "
-                   "edges can be most of the cloud.\n";
+      if (notes)
+        std::cout << "Note: pcl_ext_tiles segment_variance runs sections 2 and 3"
+                  << (options_.leftovers
+                          ? " and the new segments among the points left "
+                            "out (as pcl_ext_segment_variance "
+                            "-no_reintegrate -leftovers)"
+                          : " (as pcl_ext_segment_variance "
+                            "-no_reintegrate)")
+                  << " unless -reintegrate is given: section 4's re-integration, a "
+                     "second pass over the tiles, reads as far as three neighbourhood "
+                     "radii of the sparsest points around, which on a scan's sparse "
+                     "edges can be most of the cloud.\n";
       options_.reintegrate = false;
     }
     std::string reason;

@@ -19,6 +19,10 @@
 
 namespace pcl_ext {
 namespace apps {
+/** \brief The plan's setting of the whole cloud's noise sample cut (NoiseSampleCut),
+ * set by the plan of a method that needsEstimate(). */
+constexpr const char* kNoiseSampleCutSetting = "noise_sample_cut";
+
 /** \brief A method of pcl_ext_tiles: its options (those of its own tool), what it
  * estimates from the whole cloud before the tiles run, and its result on one tile.
  *
@@ -35,9 +39,11 @@ public:
   virtual void
   addOptions (CommandLine& cl) = 0;
 
-  /** \brief Check the options (message printed when they are not valid). */
+  /** \brief Check the options (message printed when they are not valid); \a notes:
+   * also print what the user should know of them (once, at the plan or a whole run,
+   * not in every step). */
   virtual bool
-  checkOptions (const CommandLine& cl) = 0;
+  checkOptions (const CommandLine& cl, bool notes) = 0;
 
   /** \brief Where the result goes in the output (the field of the method's tool). */
   virtual ResultField
@@ -73,6 +79,14 @@ public:
   needsEstimate () const
   {
     return false;
+  }
+
+  /** \brief The points of a tile whose neighbourhoods estimate() reads, given the
+   * plan's \a settings (default: empty, all of them). */
+  virtual PointSelection
+  getEstimateSelection (const std::map<std::string, std::string>& /*settings*/) const
+  {
+    return {};
   }
 
   /** \brief The values of the tile's core points (order free) that reduce() needs, by

@@ -232,9 +232,19 @@ planStep (const std::string& method_name,
     if (method.needsGrow() &&
         !tiling::TileResults::create (workdir, plan.getTotalPoints(), kGrown))
       return false;
+    // The whole cloud's noise sample, known from the points as they are sorted, so
+    // that the estimates read the neighbourhoods of its points alone.
+    NoiseSampleCut sample_cut;
     if (!tiling::TileResults::create (workdir, plan.getTotalPoints()) ||
-        !tiling::writeTiles (plan, workdir, attributes, read_attributes) ||
-        !tiling::saveTilePlan (planPath (workdir), plan))
+        !tiling::writeTiles (plan,
+                             workdir,
+                             attributes,
+                             read_attributes,
+                             method.needsEstimate() ? &sample_cut : nullptr))
+      return false;
+    if (!sample_cut.empty())
+      plan.settings[kNoiseSampleCutSetting] = std::to_string (sample_cut.get());
+    if (!tiling::saveTilePlan (planPath (workdir), plan))
       return false;
   }
   catch (const std::exception& e) {
@@ -274,7 +284,7 @@ loadPlanAndMethod (const std::string& workdir,
   for (const auto& a : args)
     argv.push_back (a.c_str());
   if (cl.parse (static_cast<int> (argv.size()), argv.data()) >= 0 ||
-      !method->checkOptions (cl)) {
+      !method->checkOptions (cl, false)) {
     std::cerr << "Error: the options in " << planPath (workdir) << " are not valid.\n";
     return false;
   }
@@ -304,7 +314,8 @@ estimateStep (const tiling::TilePlan& plan,
                       0.0,
                       method,
                       estimate,
-                      cloud))
+                      cloud,
+                      method.getEstimateSelection (plan.settings)))
     return false;
   for (const auto& [name, v] : values)
     if (!tiling::saveTileValues (workdir, tile, name, v))

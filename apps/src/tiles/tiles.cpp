@@ -120,7 +120,7 @@ parsePlan (int argc,
                 << pcl_ext::apps::kTileMethods << ", segment_profiles).\n";
     return 1;
   }
-  if (!method->checkOptions (cl))
+  if (!method->checkOptions (cl, true))
     return 1;
   if (!method->getExtraFieldName().empty() &&
       method->getExtraFieldName() == field.name()) {

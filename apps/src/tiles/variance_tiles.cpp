@@ -10,6 +10,7 @@
 #include <pcl_ext/features/local_variance.h>
 #include <pcl_ext/tiling/tile_results.h>
 
+#include <cmath>
 #include <cstring>
 #include <iostream>
 #include <limits>
@@ -18,23 +19,15 @@
 namespace pcl_ext {
 namespace apps {
 namespace {
-constexpr const char* kCurvatures = "curvature";
 constexpr const char* kThresholdSetting = "curvature_threshold";
-// A tile's part of the noise sample (when the curvature factor is chosen from the
-// cloud): each point's key in three parts of at most 22 bits (exact in a float), then
-// its neighbourhood's eigenvalues (as floats, as the classifier rounds them) and size.
+// A tile's part of the noise sample: each point's key in three parts of at most 22 bits
+// (exact in a float), then its neighbourhood's eigenvalues (as floats, as the
+// classifier rounds them) and size. The noise, the spacing and the median kappa of the
+// whole cloud are estimated from it.
 constexpr const char* kKeyParts[3] = {
     "lv_noise_key_high", "lv_noise_key_mid", "lv_noise_key_low"};
 constexpr const char* kSpreadValues[4] = {
     "lv_noise_l0", "lv_noise_l1", "lv_noise_l2", "lv_noise_size"};
-// With the noise estimated from the cloud (-preset derived), eq. 4 has the noise
-// removed, which is known only once every tile's sample is in: each core point's
-// eigenvalues (doubles, as the classifier computes them, each in three parts of at most
-// 22 bits), and, in reduce(), the curvatures with the whole cloud's noise removed.
-constexpr const char* kEigenParts[3][3] = {{"lv_l0_high", "lv_l0_mid", "lv_l0_low"},
-                                           {"lv_l1_high", "lv_l1_mid", "lv_l1_low"},
-                                           {"lv_l2_high", "lv_l2_mid", "lv_l2_low"}};
-constexpr const char* kDenoisedCurvatures = "curvature_noise_removed";
 constexpr const char* kNoiseSetting = "noise_sigma";
 /** Setting: "1" when the whole cloud's noise is a range camera's. */
 constexpr const char* kRangeCameraSetting = "range_camera_noise";
@@ -58,19 +51,21 @@ spreadOf (const TileCloud& tile, std::size_t i)
   return spread;
 }
 
-/** The tile's points of the whole cloud's noise sample: every core point whose key is
- * at most the cut of the tile's core keys (the whole cloud's cut is at most that). */
+/** The tile's points of the whole cloud's noise sample: every core point with a
+ * neighbourhood (the plan's sample, getEstimateSelection, or all) whose key is at most
+ * the cut of the tile's core keys (the whole cloud's cut is at most that). */
 void
 saveNoiseSample (const TileCloud& tile,
                  std::map<std::string, std::vector<float>>& values)
 {
   const auto& cloud = *tile.cloud;
+  const auto& nb = *tile.neighbourhoods;
   NoiseSampleCut cut;
   for (std::size_t i = 0; i < cloud.size(); ++i)
     if (tile.core[i])
       cut.add (noiseSampleKeyOf (cloud[i].x, cloud[i].y, cloud[i].z));
   for (std::size_t i = 0; i < cloud.size() && !cut.empty(); ++i) {
-    if (!tile.core[i])
+    if (!tile.core[i] || nb.getRowOfPoint (static_cast<pcl::index_t> (i)) < 0)
       continue;
     const std::uint64_t key = noiseSampleKeyOf (cloud[i].x, cloud[i].y, cloud[i].z);
     if (key > cut.get())
@@ -81,73 +76,6 @@ saveNoiseSample (const TileCloud& tile,
       values[kSpreadValues[v]].push_back (static_cast<float> (spread.values[v]));
     values[kSpreadValues[3]].push_back (static_cast<float> (spread.size));
   }
-}
-
-/** Every core point's eigenvalues (NaN where its neighbourhood has no covariance).
- * The few thousand points of the noise sample among them are decomposed a second time
- * by saveNoiseSample: keeping every point's spread to share would cost more memory
- * than the repeated work costs time. */
-void
-saveEigenvalues (const TileCloud& tile,
-                 std::map<std::string, std::vector<float>>& values)
-{
-  for (std::size_t i = 0; i < tile.cloud->size(); ++i) {
-    if (!tile.core[i])
-      continue;
-    const NeighbourhoodSpread spread = spreadOf (tile, i);
-    const Eigen::Vector3d eigenvalues =
-        spread.size > 0
-            ? spread.values
-            : Eigen::Vector3d::Constant (std::numeric_limits<double>::quiet_NaN());
-    for (int v = 0; v < 3; ++v) {
-      std::uint64_t bits;
-      std::memcpy (&bits, &eigenvalues[v], sizeof (bits));
-      appendKey (values, kEigenParts[v], bits);
-    }
-  }
-}
-
-/** Each tile's curvatures (eq. 4) with the noise variance \a noise_variance removed
- * from l0, as LocalVarianceClassification computes them, saved for nthOfTileValues.
- * \return false (message printed) when a tile's eigenvalues are missing or broken */
-bool
-saveDenoisedCurvatures (const std::string& folder,
-                        std::size_t tiles,
-                        double noise_variance)
-{
-  std::vector<float> parts[3][3], kappa;
-  for (std::size_t t = 0; t < tiles; ++t) {
-    bool read = true;
-    for (int v = 0; v < 3; ++v)
-      for (int p = 0; p < 3; ++p)
-        read =
-            read && tiling::loadTileValues (folder, t, kEigenParts[v][p], parts[v][p]);
-    if (!read)
-      return false;
-    const std::size_t n = parts[0][0].size();
-    for (int v = 0; v < 3; ++v)
-      for (int p = 0; p < 3; ++p)
-        if (parts[v][p].size() != n) {
-          std::cerr << "Error: the eigenvalues of tile " << t << " in " << folder
-                    << " are broken.\n";
-          return false;
-        }
-    kappa.assign (n, std::numeric_limits<float>::quiet_NaN());
-    for (std::size_t i = 0; i < n; ++i) {
-      Eigen::Vector3d values;
-      for (int v = 0; v < 3; ++v) {
-        const std::uint64_t bits = keyAt (parts[v], i);
-        std::memcpy (&values[v], &bits, sizeof (bits));
-      }
-      if (!values.allFinite())
-        continue;
-      values[0] = std::max (values[0] - noise_variance, 0.0);
-      kappa[i] = static_cast<float> (surfaceVariance (values));
-    }
-    if (!tiling::saveTileValues (folder, t, kDenoisedCurvatures, kappa))
-      return false;
-  }
-  return true;
 }
 
 /** The noise sample of every tile of \a folder, keyed. \return false (message printed)
@@ -207,6 +135,7 @@ VarianceTileMethod::checkClassification()
   // sample (reduce()), never each tile's own.
   estimate_noise_ = classifier.getNoiseEstimation();
   curvature_factor_ = classifier.getCurvatureThresholdFactor();
+  given_noise_sigma_ = classifier.getNoiseStandardDeviation();
   return true;
 }
 
@@ -228,50 +157,36 @@ VarianceTileMethod::configure (
   classifier.setNeighbourhoods (tile.neighbourhoods);
 }
 
+PointSelection
+VarianceTileMethod::getEstimateSelection (
+    const std::map<std::string, std::string>& settings) const
+{
+  const auto found = settings.find (kNoiseSampleCutSetting);
+  if (found == settings.end())
+    return {}; // a plan without the cut: every point, each tile's sample cut its own
+  const std::uint64_t cut = std::stoull (found->second);
+  return [cut] (const TileCloud& tile, std::vector<char>& query) {
+    const auto& cloud = *tile.cloud;
+    query.assign (cloud.size(), 0);
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      query[i] =
+          tile.core[i] && noiseSampleKeyOf (cloud[i].x, cloud[i].y, cloud[i].z) <= cut;
+    return true;
+  };
+}
+
 bool
 VarianceTileMethod::estimate (const TileCloud& tile,
                               std::map<std::string, std::vector<float>>& values)
 {
-  const bool derived_threshold = getClassificationOptions().curvature_threshold == 0.0;
-  // Every tile writes what it is asked for, empty or not.
-  if (derived_threshold && !estimate_noise_)
-    values[kCurvatures].clear();
-  if (derived_threshold && estimate_noise_)
-    for (const auto& names : kEigenParts)
-      for (const char* name : names)
-        values[name].clear();
-  if (needsNoiseSample()) {
-    for (const char* name : kKeyParts)
-      values[name].clear();
-    for (const char* name : kSpreadValues)
-      values[name].clear();
-  }
+  // Every tile writes its part, empty or not.
+  for (const char* name : kKeyParts)
+    values[name].clear();
+  for (const char* name : kSpreadValues)
+    values[name].clear();
   if (tile.core_points == 0 || !tile.neighbourhoods || tile.neighbourhoods->empty())
     return true;
-  if (needsNoiseSample())
-    saveNoiseSample (tile, values);
-  if (!derived_threshold)
-    return true;
-  if (estimate_noise_) {
-    saveEigenvalues (tile, values);
-    return true;
-  }
-  auto& curvatures = values[kCurvatures];
-  pcl_ext::LocalVarianceClassification<pcl::PointXYZ> classifier;
-  configure (classifier, tile);
-  // Curvatures only: any threshold but 0 (0 would derive one from this tile).
-  classifier.setTests (decltype (classifier)::CURVATURE_TEST);
-  classifier.setCurvatureThreshold (1.0);
-  pcl::PointCloud<pcl::Label> labels;
-  classifier.classify (labels);
-  const auto& kappa = classifier.getCurvatures();
-  if (kappa.size() != tile.cloud->size()) {
-    std::cerr << "Error: the curvatures of tile " << tile.tile << " failed.\n";
-    return false;
-  }
-  for (std::size_t i = 0; i < kappa.size(); ++i)
-    if (tile.core[i])
-      curvatures.push_back (kappa[i]);
+  saveNoiseSample (tile, values);
   return true;
 }
 
@@ -286,17 +201,17 @@ VarianceTileMethod::reduce (const std::string& folder,
     out << value;
     return out.str();
   };
-  // The whole cloud's noise, as LocalVarianceClassification estimates it.
-  NoiseEstimate noise;
-  if (needsNoiseSample()) {
-    std::vector<KeyedSpread> sample;
-    if (!loadNoiseSample (folder, tiles, sample))
-      return false;
-    noise = estimateNoiseFromSample (std::move (sample));
-  }
+  std::vector<KeyedSpread> sample;
+  if (!loadNoiseSample (folder, tiles, sample))
+    return false;
+  // The whole cloud's noise, as LocalVarianceClassification estimates it: when the
+  // noise is removed or the curvature factor chosen from it.
   using Classification = LocalVarianceClassification<pcl::PointXYZ>;
-  const double sigma =
-      estimate_noise_ ? Classification::noiseSigmaRemovedFor (noise) : 0.0;
+  const bool noise_needed = estimate_noise_ || curvature_factor_ == 0.0;
+  const NoiseEstimate noise =
+      noise_needed ? estimateNoiseFromSample (sample) : NoiseEstimate();
+  const double sigma = estimate_noise_ ? Classification::noiseSigmaRemovedFor (noise)
+                                       : given_noise_sigma_;
   if (estimate_noise_ && !noise.valid)
     std::cerr << "Warning: the noise of the whole cloud cannot be estimated: "
               << noise.reason << "; none is removed (the paper's eq. 4-6).\n";
@@ -304,29 +219,18 @@ VarianceTileMethod::reduce (const std::string& folder,
     settings[kNoiseSetting] = text (sigma);
   // Whether the whole cloud's noise is a range camera's, where the untiled classifier
   // estimates it (the edges are then not narrowed).
-  if (estimate_noise_ || (getClassificationOptions().curvature_threshold == 0.0 &&
-                          curvature_factor_ == 0.0))
+  if (noise_needed)
     settings[kRangeCameraSetting] =
         Classification::isRangeCameraNoise (noise) ? "1" : "0";
   if (getClassificationOptions().curvature_threshold != 0.0)
     return true;
-  // As LocalVarianceClassification derives it: factor * median over every point, the
-  // factor chosen from the whole cloud's noise sample when it is not given.
-  const char* curvatures = kCurvatures;
-  if (estimate_noise_) {
-    if (!saveDenoisedCurvatures (folder, tiles, sigma * sigma))
-      return false;
-    curvatures = kDenoisedCurvatures;
-  }
-  float median = 0.0f;
-  std::uint64_t count = 0;
-  if (!tiling::nthOfTileValues (folder, tiles, curvatures, 0.5, median, count))
-    return false;
+  // As LocalVarianceClassification derives it: factor * the sample's median kappa with
+  // the noise removed, the factor chosen from the whole cloud's noise when not given.
+  const double median = sampleCurvatureMedian (std::move (sample), sigma * sigma);
   const double factor = curvature_factor_ != 0.0
                             ? curvature_factor_
                             : Classification::curvatureFactorFor (noise);
-  settings[kThresholdSetting] =
-      text (count == 0 ? 0.0 : factor * static_cast<double> (median));
+  settings[kThresholdSetting] = text (std::isfinite (median) ? factor * median : 0.0);
   return true;
 }
 

@@ -12,15 +12,13 @@
 namespace pcl_ext {
 namespace apps {
 /** \brief A method on Belton & Lichti's classification: when the curvature threshold is
- * derived (factor x the median curvature kappa, eq. 4, of every point), every tile
- * saves its core points' kappa (estimate()), and the median over all tiles gives the
- * threshold every tile then uses (reduce(), applyEstimates()), as untiled. When the
- * factor is chosen from the cloud, or the noise is estimated from it (-preset derived),
- * every tile also saves its part of the whole cloud's noise sample
- * (pcl_ext::estimateNoiseFromSample), and reduce() estimates the noise as the
- * classifier does. With the noise estimated, kappa has the noise removed, which is
- * known only after every tile: the tiles save their points' eigenvalues instead, and
- * reduce() computes kappa from them once the noise is known. */
+ * derived (factor x the median curvature kappa, eq. 4, of the noise sample) or the
+ * noise is estimated from the cloud, every tile saves the neighbourhoods of its points
+ * of the whole cloud's noise sample (estimate(); the plan knows the sample's cut, so
+ * those are the only neighbourhoods searched), and reduce() estimates from them the
+ * noise and the threshold every tile then uses (applyEstimates()), as the untiled
+ * classifier does (pcl_ext::estimateNoiseFromSample, pcl_ext::sampleCurvatureMedian).
+ */
 class VarianceTileMethod : public TileMethod {
 public:
   NeighbourhoodReach
@@ -31,6 +29,10 @@ public:
   {
     return getClassificationOptions().curvature_threshold == 0.0 || estimate_noise_;
   }
+
+  PointSelection
+  getEstimateSelection (
+      const std::map<std::string, std::string>& settings) const override;
 
   bool
   estimate (const TileCloud& tile,
@@ -79,17 +81,11 @@ protected:
   hasRangeCameraNoise (const std::map<std::string, std::string>& settings);
 
 private:
-  /** \brief Whether the tiles save their part of the whole cloud's noise sample. */
-  bool
-  needsNoiseSample () const
-  {
-    return curvature_factor_ == 0.0 || estimate_noise_;
-  }
-
   double curvature_factor_ =
       0.0; ///< the classifier's after the options (0: from the cloud)
   bool estimate_noise_ =
       false; ///< the noise estimated from the cloud (-preset derived)
+  double given_noise_sigma_ = 0.0; ///< the noise sigma given (-noise_sigma) or 0
 };
 
 /** \brief The adapters of pcl_ext_classify_variance and pcl_ext_segment_variance. */

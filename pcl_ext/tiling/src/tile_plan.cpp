@@ -283,7 +283,8 @@ bool
 writeTiles (const TilePlan& plan,
             const std::string& folder,
             std::size_t attribute_count,
-            const ChunkAttributes& attributes)
+            const ChunkAttributes& attributes,
+            NoiseSampleCut* sample_cut)
 {
   const TileGrid grid = plan.getGrid();
   TilePointWriter writer (folder, grid.size(), 4096, attribute_count);
@@ -337,6 +338,8 @@ writeTiles (const TilePlan& plan,
           return false;
         }
         p.owner = static_cast<std::uint32_t> (owner);
+        if (sample_cut)
+          sample_cut->add (noiseSampleKeyOf (p.x, p.y, p.z));
         grid.getTilesNear (x, y, near);
         const float* a = attribute_count > 0 ? &values[i * attribute_count] : nullptr;
         for (const std::size_t t : near)

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pcl_ext/common/noise_estimation.h>
+#include <pcl_ext/common/noise_sample.h>
 #include <pcl_ext/features/centroid_offset_test_options.h>
 #include <pcl_ext/search/neighbourhood_options.h>
 #include <pcl_ext/point_types.h>
@@ -123,13 +124,15 @@ public:
 
   /** \brief Curvature threshold (the cheap test of section 2.2, on kappa of eq. 4).
    * Valid: >= 0. Default 0: derived from the data as factor * median(kappa)
-   * (setCurvatureThresholdFactor). Most points of a TLS scene lie on smooth surfaces,
-   * so the median kappa is the noise level of a smooth surface at the scene's typical
-   * spacing: for a plane with range noise sigma and neighbourhood radius r (k = pi r^2
-   * / s^2 at spacing s), kappa ~= 2 sigma^2 / r^2, which is also a way to set it by
-   * hand. r varies with range, so one threshold cannot fit a whole TLS scene:
-   * setNoiseStandardDeviation removes that part of kappa per neighbourhood. Points
-   * below it are never re-checked, so a low value costs time, not accuracy.
+   * (setCurvatureThresholdFactor), the median over the noise sample's twenty thousand
+   * points chosen by position (sampleCurvatureMedian), which fixes it on a cloud of any
+   * size and which the tiles of a cloud give exactly. Most points of a TLS scene lie on
+   * smooth surfaces, so the median kappa is the noise level of a smooth surface at the
+   * scene's typical spacing: for a plane with range noise sigma and neighbourhood
+   * radius r (k = pi r^2 / s^2 at spacing s), kappa ~= 2 sigma^2 / r^2, which is also a
+   * way to set it by hand. r varies with range, so one threshold cannot fit a whole TLS
+   * scene: setNoiseStandardDeviation removes that part of kappa per neighbourhood.
+   * Points below it are never re-checked, so a low value costs time, not accuracy.
    * getCurvatureThresholdUsed() gives the value of the last classify(). */
   void
   setCurvatureThreshold (double threshold)
@@ -207,9 +210,7 @@ public:
   }
 
   /** \brief kappa (eq. 4) of every point of the input cloud as the last classify()
-   * computed it (indexed like the cloud; NaN where not computed): the values whose
-   * median the derived curvature threshold is a multiple of, e.g. to derive one
-   * threshold for the tiles of a cloud too large to classify whole. */
+   * computed it (indexed like the cloud; NaN where not computed). */
   const std::vector<float>&
   getCurvatures () const
   {
@@ -439,14 +440,17 @@ protected:
   widenBoundaries (const Neighbourhoods<PointT>& nb,
                    pcl::PointCloud<pcl::Label>& labels) const;
 
+  /** \brief The factor times the median kappa of the noise sample (with the noise
+   * removed): sampleCurvatureMedian. */
   double
   deriveCurvatureThreshold () const;
 
-  /** \brief The noise and spacing of the cloud from its noise sample
-   * (setNoiseEstimation, or the curvature factor chosen from the cloud). */
+  /** \brief The noise sample's neighbourhoods (noiseSampleKeyOf): what the noise and
+   * spacing (setNoiseEstimation, or the curvature factor chosen from the cloud) and
+   * the median kappa of a derived curvature threshold are estimated from. */
   template <bool dense>
   void
-  estimateNoise (const Neighbourhoods<PointT>& nb);
+  sampleNeighbourhoods (const Neighbourhoods<PointT>& nb);
 
   /** \brief The noise sigma to remove from the estimate (setNoiseEstimation). */
   void
@@ -466,6 +470,7 @@ protected:
   bool estimate_noise_ = false;
   double noise_sigma_used_ = 0.0;
   NoiseEstimate noise_estimate_;
+  std::vector<KeyedSpread> noise_sample_; ///< during classify()
   bool boundary_band_ = false;
   double boundary_band_fraction_ = 1.0;
   double crease_angle_ = 0.0;

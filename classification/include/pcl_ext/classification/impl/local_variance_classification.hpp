@@ -122,7 +122,7 @@ pcl_ext::LocalVarianceClassification<PointT>::computeCovariances (
 template <typename PointT>
 template <bool dense>
 void
-pcl_ext::LocalVarianceClassification<PointT>::estimateNoise (
+pcl_ext::LocalVarianceClassification<PointT>::sampleNeighbourhoods (
     const Neighbourhoods<PointT>& nb)
 {
   // The rows of the points of smallest position key (a few thousand neighbourhoods
@@ -161,7 +161,7 @@ pcl_ext::LocalVarianceClassification<PointT>::estimateNoise (
     spread.values = local.eigen.values;
     spread.size = local.size;
   }
-  noise_estimate_ = estimateNoiseFromSample (std::move (sample));
+  noise_sample_ = std::move (sample);
 }
 
 template <typename PointT>
@@ -194,16 +194,9 @@ template <typename PointT>
 double
 pcl_ext::LocalVarianceClassification<PointT>::deriveCurvatureThreshold() const
 {
-  std::vector<float> values;
-  values.reserve (indices_->size());
-  for (const auto idx : *indices_)
-    if (std::isfinite (kappa_[idx]))
-      values.push_back (kappa_[idx]);
-  if (values.empty())
-    return 0.0;
-  auto middle = values.begin() + values.size() / 2;
-  std::nth_element (values.begin(), middle, values.end());
-  return curvature_factor_used_ * static_cast<double> (*middle);
+  const double median =
+      sampleCurvatureMedian (noise_sample_, noise_sigma_used_ * noise_sigma_used_);
+  return std::isfinite (median) ? curvature_factor_used_ * median : 0.0;
 }
 
 template <typename PointT>
@@ -369,12 +362,15 @@ pcl_ext::LocalVarianceClassification<PointT>::classify (
   noise_sigma_used_ = noise_sigma_;
   const bool threshold_derived =
       (tests_ & CURVATURE_TEST) && curvature_threshold_ == 0.0;
-  if (estimate_noise_ || (threshold_derived && curvature_factor_ == 0.0)) {
+  noise_sample_.clear();
+  if (estimate_noise_ || threshold_derived) {
     if (input_->is_dense)
-      estimateNoise<true> (*nb);
+      sampleNeighbourhoods<true> (*nb);
     else
-      estimateNoise<false> (*nb);
+      sampleNeighbourhoods<false> (*nb);
   }
+  if (estimate_noise_ || (threshold_derived && curvature_factor_ == 0.0))
+    noise_estimate_ = estimateNoiseFromSample (noise_sample_);
   if (estimate_noise_)
     removeEstimatedNoise();
   curvature_factor_used_ = !threshold_derived ? 0.0
@@ -395,6 +391,8 @@ pcl_ext::LocalVarianceClassification<PointT>::classify (
     labels.width = input_->width;
     labels.height = input_->height;
   }
+  noise_sample_.clear();
+  noise_sample_.shrink_to_fit();
   label (*nb, labels);
   normals_.clear();
   normals_.shrink_to_fit();

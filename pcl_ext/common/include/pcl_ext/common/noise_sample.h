@@ -69,4 +69,14 @@ struct KeyedSpread {
  * tiles store them), so that the result does not depend on the order or the parts. */
 NoiseEstimate
 estimateNoiseFromSample (std::vector<KeyedSpread> candidates);
+
+/** \brief The median surface variation (kappa, eq. 4 of Belton & Lichti 2006) over the
+ * noise sample in \a candidates, chosen and rounded as estimateNoiseFromSample does,
+ * with \a noise_variance taken off the smallest eigenvalue (at least 0), as
+ * LocalVarianceClassification computes kappa: the median its curvature threshold is
+ * derived from. The sample's twenty thousand points chosen by position fix the median
+ * of a cloud of any size, and the tiles of a cloud give the same one. The upper median
+ * for an even count; NaN when no neighbourhood of the sample has a covariance. */
+double
+sampleCurvatureMedian (std::vector<KeyedSpread> candidates, double noise_variance);
 } // namespace pcl_ext

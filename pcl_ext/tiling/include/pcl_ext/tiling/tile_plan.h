@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <pcl_ext/common/noise_sample.h>
 #include <pcl_ext/tiling/tile_grid.h>
 
 #include <pcl/PCLPointCloud2.h>
@@ -105,14 +106,18 @@ using ChunkAttributes = std::function<bool (const pcl::PCLPointCloud2& chunk,
  * \a folder (tile_<t>.points: each point of a tile's core or halo, see
  * TilePointWriter), reading the inputs in chunks. Points that are not finite go to no
  * tile. With \a attribute_count > 0, \a attributes gives that many values per point,
- * saved beside (tile_<t>.attributes). \throw io::ReadError naming an input that cannot
- * be read \return false (PCL_ERROR) when a point lies outside the plan's box (an input
- * changed since the plan, or a LAS header whose box lies), the attributes cannot be
- * read or a file cannot be written */
+ * saved beside (tile_<t>.attributes). With \a sample_cut, every finite point's
+ * noiseSampleKeyOf (of its coordinates relative to the plan's origin, as the tiles hold
+ * them) is added to it: the whole cloud's noise sample is then known before any tile
+ * runs. \throw io::ReadError naming an input that cannot be read \return false
+ * (PCL_ERROR) when a point lies outside the plan's box (an input changed since the
+ * plan, or a LAS header whose box lies), the attributes cannot be read or a file cannot
+ * be written */
 bool
 writeTiles (const TilePlan& plan,
             const std::string& folder,
             std::size_t attribute_count = 0,
-            const ChunkAttributes& attributes = {});
+            const ChunkAttributes& attributes = {},
+            NoiseSampleCut* sample_cut = nullptr);
 } // namespace tiling
 } // namespace pcl_ext
