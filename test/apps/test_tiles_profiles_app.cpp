@@ -153,21 +153,41 @@ TEST_F (TilesProfilesApp, CurveFittingOverPartsGivesTheWholeCloudsBytes)
   }
 }
 
-TEST_F (TilesProfilesApp, WhatThePartsCannotGiveYetIsRefused)
+TEST_F (TilesProfilesApp, AutoOnTouchingSurfacesFitsCurvesAndJoinsCylinders)
 {
-  // The building: -method auto chooses curve fitting with the cylinder join, which
-  // fits cylinders to whole segments; refused after the first run, no output.
-  generate ("building", "building.pcd", 20000);
-  EXPECT_EQ (run ("segment_profiles " + path ("building.pcd") + " " + path ("b.pcd")),
-             1);
-  EXPECT_NE (output_.find ("not the cylinder join"), std::string::npos) << output_;
-  EXPECT_FALSE (exists ("b.pcd"));
-  EXPECT_EQ (run ("segment_profiles " + path ("building.pcd") + " " + path ("b.pcd") +
-                  " -method curve -join_cylinders"),
-             1);
-  EXPECT_NE (output_.find ("does not run -join_cylinders"), std::string::npos)
+  // Coaxial pipes on the ground, a noisy scan for its spacing: -method auto chooses
+  // curve fitting for noisy scans (profiles 2.5 spacings wide: the parts are planned
+  // again), side frames and the cylinder join, which runs once over the whole cloud's
+  // segments and joins two cylinders. Its defaults, one part a stack and 1 m slabs;
+  // then the join after proximity chaining (-join_cylinders): the whole cloud's bytes.
+  generate ("coaxial", "coaxial.pcd", 30000);
+  segmentWhole ("coaxial.pcd", "whole.pcd", "-v");
+  std::ifstream log (path ("whole.log"));
+  const std::string text ((std::istreambuf_iterator<char> (log)),
+                          std::istreambuf_iterator<char>());
+  ASSERT_NE (text.find ("chosen: curve fitting for noisy scans, side frames, cylinder "
+                        "join"),
+             std::string::npos)
+      << text;
+  ASSERT_NE (text.find (", 2 cylinders joined"), std::string::npos) << text;
+  for (const std::string size : {"0", "1"}) {
+    ASSERT_EQ (run ("segment_profiles " + path ("coaxial.pcd") + " " + path ("t.pcd") +
+                    " -v -tile_size " + size),
+               0)
+        << output_;
+    EXPECT_NE (output_.find ("parts of whole profiles of the noisy-scan width"),
+               std::string::npos)
+        << output_;
+    EXPECT_NE (output_.find ("  2 cylinders joined"), std::string::npos) << output_;
+    expectSameBytes ("whole.pcd", "t.pcd");
+  }
+  generate ("pipes", "pipes.pcd", 30000);
+  segmentWhole ("pipes.pcd", "joined.pcd", "-method proximity -join_cylinders");
+  ASSERT_EQ (run ("segment_profiles " + path ("pipes.pcd") + " " + path ("tj.pcd") +
+                  " -method proximity -join_cylinders -tile_size 1"),
+             0)
       << output_;
-  EXPECT_FALSE (exists ("b.pcd"));
+  expectSameBytes ("joined.pcd", "tj.pcd");
 }
 
 TEST_F (TilesProfilesApp, InputsWithoutFinitePointsOrBadOptionsAreRefused)
@@ -224,5 +244,16 @@ TEST_F (TilesProfilesApp, MpiRanksShareThePartsAndGiveTheSameBytes)
       path ("mpi.log") + "' 2>&1";
   ASSERT_EQ (std::system (command.c_str()), 0);
   expectSameBytes ("curve.pcd", "mpi_curve.pcd");
+  // -method auto's choice, the parts planned again and the cylinder join: the ranks
+  // learn the choice and the new parts through the plan.
+  generate ("coaxial", "coaxial.pcd", 30000);
+  segmentWhole ("coaxial.pcd", "auto.pcd", "");
+  const std::string automatic =
+      std::string (PCL_EXT_MPIEXEC) + " --allow-run-as-root --oversubscribe -np 2 " +
+      PCL_EXT_TILES_EXE + " segment_profiles '" + path ("coaxial.pcd") + "' '" +
+      path ("mpi_auto.pcd") + "' -tile_size 1 -threads 1 > '" + path ("mpi.log") +
+      "' 2>&1";
+  ASSERT_EQ (std::system (automatic.c_str()), 0);
+  expectSameBytes ("auto.pcd", "mpi_auto.pcd");
 }
 #endif

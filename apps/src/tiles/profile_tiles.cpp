@@ -6,6 +6,7 @@
 #include "input_fields.h"
 #include "merge_output.h"
 #include "profile_curve_steps.h"
+#include "profile_cylinder_join.h"
 #include "profile_part_steps.h"
 #include "profile_parts.h"
 
@@ -77,22 +78,6 @@ clearWorkdir (const std::string& workdir)
   return true;
 }
 
-/** What a run over parts cannot give yet: the cylinder join, which fits cylinders to
- * whole segments and reaches 80 spacings along an axis. \return false (message
- * printed) for it */
-bool
-supportedOptions (const ProfileOptions& options)
-{
-  const char* missing = nullptr;
-  if (options.join_cylinders)
-    missing = "-join_cylinders";
-  if (!missing)
-    return true;
-  std::cerr << "Error: pcl_ext_tiles segment_profiles does not run " << missing
-            << " yet: run pcl_ext_segment_profiles on the whole cloud.\n";
-  return false;
-}
-
 bool
 plan (const std::vector<std::string>& inputs,
       const ProfileOptions& options,
@@ -154,34 +139,37 @@ plan (const std::vector<std::string>& inputs,
   return true;
 }
 
-/** -method auto's choice after its first run (AutoProfileSegmentation): \a rerun when
- * it adds local thresholds. \return false (message printed) for a choice the parts
- * cannot give yet */
-bool
-chooseAutomatically (const ProfileFrame& frame,
-                     const JoinedParts& joined,
-                     const ProfileOptions& options,
-                     bool verbose,
-                     bool& rerun)
+/** -method auto's choice after its first run (AutoProfileSegmentation), from the
+ * whole cloud's statistics and the share of its largest segment. */
+profiles::AutoConfiguration
+chooseAutomatically (const ProfileFrame& frame, const JoinedParts& joined, bool verbose)
 {
   const double share =
       static_cast<double> (joined.largest) / static_cast<double> (frame.points);
   const auto chosen = profiles::chooseConfiguration (frame.statistics, share);
-  const std::string line =
-      profiles::describeConfiguration (frame.statistics, share, chosen);
   if (verbose)
-    std::cout << line << "\n";
-  if (chosen.curve_fitting) {
-    std::cerr << "\nError: -method auto chose curve fitting with the cylinder join for "
-                 "this cloud ("
-              << line
-              << "); pcl_ext_tiles segment_profiles runs curve fitting (-method curve) "
-                 "but not the cylinder join yet: run pcl_ext_segment_profiles on the "
-                 "whole cloud.\n";
-    return false;
+    std::cout << profiles::describeConfiguration (frame.statistics, share, chosen)
+              << "\n";
+  return chosen;
+}
+
+/** The options of AutoProfileSegmentation's second run after its choice \a chosen:
+ * curve fitting, the noisy-scan settings where the paper's values were left, side
+ * frames, local thresholds. */
+void
+applyChoice (const profiles::AutoConfiguration& chosen, ProfileOptions& options)
+{
+  if (chosen.curve_fitting)
+    options.method = ProfileOptions::Segmentation::ProfileMethod::CurveFitting;
+  if (chosen.noisy) {
+    options.aicc = true;
+    if (options.turn_significance == 0.0)
+      options.turn_significance = 3.0;
+    if (options.width_factor == 1.5)
+      options.width_factor = 2.5;
   }
-  rerun = chosen.local_threshold && !options.local_threshold;
-  return true;
+  options.side_frames = options.side_frames || chosen.side_frames;
+  options.local_threshold = options.local_threshold || chosen.local_threshold;
 }
 
 /** Save \a values in the plan's settings under \a key (17 digits each). */
@@ -220,18 +208,66 @@ loadValues (const tiling::TilePlan& plan,
 }
 
 bool
-saveRerun (tiling::TilePlan& plan, bool rerun, const std::string& workdir)
+saveChoice (tiling::TilePlan& plan,
+            const profiles::AutoConfiguration& chosen,
+            const std::string& workdir)
 {
-  plan.settings["profile_rerun"] = rerun ? "1" : "0";
+  plan.settings["profile_auto"] = std::to_string (chosen.curve_fitting) + " " +
+                                  std::to_string (chosen.noisy) + " " +
+                                  std::to_string (chosen.local_threshold) + " " +
+                                  std::to_string (chosen.side_frames) + " " +
+                                  std::to_string (chosen.join_cylinders);
   return tiling::saveTilePlan (planFile (workdir), plan);
 }
 
 bool
-loadRerun (const tiling::TilePlan& plan, bool& rerun)
+loadChoice (const tiling::TilePlan& plan, profiles::AutoConfiguration& chosen)
 {
-  const auto it = plan.settings.find ("profile_rerun");
-  rerun = it != plan.settings.end() && it->second == "1";
-  return it != plan.settings.end();
+  const auto it = plan.settings.find ("profile_auto");
+  if (it == plan.settings.end())
+    return false;
+  std::istringstream in (it->second);
+  int flags[5];
+  for (int& f : flags)
+    if (!(in >> f))
+      return false;
+  chosen.curve_fitting = flags[0];
+  chosen.noisy = flags[1];
+  chosen.local_threshold = flags[2];
+  chosen.side_frames = flags[3];
+  chosen.join_cylinders = flags[4];
+  return true;
+}
+
+/** Parts of whole profiles of the frame's new width \a width (AutoProfileSegmentation's
+ * noisy-scan width), their files written again and saved in the plan. \return false
+ * (message printed) on error */
+bool
+replanParts (tiling::TilePlan& plan,
+             const RunOptions& run,
+             double width,
+             ProfileFrame& frame,
+             ProfileParts& parts)
+{
+  try {
+    frame.width = width;
+    InputPasses passes (plan);
+    parts = ProfileParts();
+    if (!planProfileParts (passes, frame, run.tile_size, kPointsPerPart, parts) ||
+        !writeProfileParts (passes, frame, parts, run.workdir))
+      return false;
+    frame.saveTo (plan.settings);
+    parts.saveTo (plan.settings);
+    if (!tiling::saveTilePlan (planFile (run.workdir), plan))
+      return false;
+    std::cout << parts.size() << " parts of whole profiles of the noisy-scan width "
+              << std::setprecision (6) << width << "\n";
+    return true;
+  }
+  catch (const std::exception& e) {
+    std::cerr << "\nError: " << e.what() << "\n";
+    return false;
+  }
 }
 
 /** The inputs, the output and the options of a whole run. \return -1 to go on, else
@@ -271,7 +307,7 @@ parse (int argc,
                 "configuration chosen from them (-method auto)");
   if (const int code = cl.parse (argc, argv); code >= 0)
     return code;
-  if (!options.valid() || !supportedOptions (options))
+  if (!options.valid())
     return 1;
   if (!(run.tile_size >= 0.0) || !std::isfinite (run.tile_size)) {
     std::cerr << "Error: -tile_size must be >= 0.\n";
@@ -363,9 +399,10 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
   };
   // Curve fitting (-method curve): the scores, each stack's curve ends from its
   // medians over every part, then the joins across junctions given every stack's ends.
-  const bool curves =
+  bool curves =
       !options.automatic() &&
       options.method == ProfileOptions::Segmentation::ProfileMethod::CurveFitting;
+  bool join_cylinders = options.join_cylinders;
   std::vector<double> junction_tolerances;
   const auto segment_pass = [&] {
     if (!curves) {
@@ -411,20 +448,40 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
   if (ok && options.automatic()) {
     // -method auto: the choice from the first run's largest segment, as
     // AutoProfileSegmentation makes it; the other ranks learn it through the plan.
-    bool rerun = false;
+    profiles::AutoConfiguration chosen;
     if (leader) {
-      ok = joinParts (tile_plan, parts, run.workdir, joined) &&
-           chooseAutomatically (frame, joined, options, run.verbose, rerun) &&
-           saveRerun (tile_plan, rerun, run.workdir);
+      ok = joinParts (tile_plan, parts, run.workdir, joined);
+      if (ok) {
+        chosen = chooseAutomatically (frame, joined, run.verbose);
+        ok = saveChoice (tile_plan, chosen, run.workdir);
+      }
     }
     ok = scheduler.allOk (ok) &&
          (leader || (tiling::loadTilePlan (planFile (run.workdir), tile_plan) &&
-                     loadRerun (tile_plan, rerun)));
+                     loadChoice (tile_plan, chosen)));
     ok = scheduler.allOk (ok);
-    if (ok && rerun) {
-      pass.local_threshold = true;
-      gaps_pass();
+    const bool had_gaps = pass.local_threshold;
+    if (ok && (chosen.curve_fitting || (chosen.local_threshold && !had_gaps))) {
+      applyChoice (chosen, options);
+      curves = chosen.curve_fitting;
+      join_cylinders = join_cylinders || chosen.join_cylinders;
       pass.first_automatic = false;
+      pass.local_threshold = options.local_threshold;
+      // The noisy-scan width: profiles of that width, in parts of their own.
+      const double width =
+          options.width > 0.0 ? options.width : options.width_factor * frame.spacing;
+      const bool new_width = width != frame.width;
+      if (new_width) {
+        ok = scheduler.allOk (!leader ||
+                              replanParts (tile_plan, run, width, frame, parts));
+        ok = scheduler.allOk (
+            ok &&
+            (leader || (tiling::loadTilePlan (planFile (run.workdir), tile_plan) &&
+                        frame.loadFrom (tile_plan.settings) &&
+                        parts.loadFrom (tile_plan.settings, frame.normals.size()))));
+      }
+      if (ok && pass.local_threshold && (!had_gaps || new_width))
+        gaps_pass();
       if (ok)
         segment_pass();
       joined = JoinedParts();
@@ -442,6 +499,16 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
     if (ok)
       timer.done (tile_plan.getTotalPoints());
     joined = JoinedParts();
+    if (ok && join_cylinders) {
+      StageTimer joining ("Joining cylinders");
+      std::size_t cylinders = 0;
+      ok = joinProfileCylinders (
+          tile_plan, parts, options, run.workdir, run.threads, segments, cylinders);
+      if (ok) {
+        joining.done (tile_plan.getTotalPoints());
+        std::cout << "  " << cylinders << " cylinders joined\n";
+      }
+    }
     if (ok) {
       MergeReading reading;
       reading.segments = true;
