@@ -26,6 +26,12 @@ joinProfileCylinders (const tiling::TilePlan& plan,
 {
   cylinders = 0;
   const std::uint64_t total = plan.getTotalPoints();
+  if (total > static_cast<std::uint64_t> (std::numeric_limits<pcl::index_t>::max())) {
+    std::cerr << "Error: the cylinder join indexes a cloud of at most "
+              << std::numeric_limits<pcl::index_t>::max()
+              << " points (PCL's indices), not " << total << ".\n";
+    return false;
+  }
   // The whole cloud as the untiled tool holds it: every point at its global index,
   // those that are not finite (in no part) NaN.
   auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
