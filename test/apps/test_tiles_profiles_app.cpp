@@ -203,7 +203,12 @@ TEST_F (TilesProfilesApp, InputsWithoutFinitePointsOrBadOptionsAreRefused)
   EXPECT_FALSE (exists ("n.pcd"));
   generate ("cubes", "cubes.pcd", 5000);
   for (const std::string option :
-       {"-method nonsense", "-min_size 0", "-tile_size -1", "-distribution flat"}) {
+       {"-method nonsense",
+        "-min_size 0",
+        "-tile_size -1",
+        "-distribution flat",
+        "-join_cylinders -cylinder_tolerance 0",
+        "-join_cylinders -cylinder_min_radius 0.5 -cylinder_max_radius 0.1"}) {
     EXPECT_EQ (run ("segment_profiles " + path ("cubes.pcd") + " " + path ("c.pcd") +
                     " " + option),
                1)

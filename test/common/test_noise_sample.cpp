@@ -123,6 +123,14 @@ TEST (NoiseSample, CurvatureMedianIsTheSamplesWithTheNoiseRemoved)
   // In another order: the same median.
   std::reverse (spreads.begin(), spreads.end());
   EXPECT_EQ (pcl_ext::sampleCurvatureMedian (spreads, 0.0), kappa (l0));
+  // Eigenvalues that are not finite give no kappa and do not count.
+  auto with_nan = spreads;
+  for (std::size_t i = 0; i < n; i += 2)
+    with_nan[with_nan.size() - 1 - i].spread.values[1] =
+        std::numeric_limits<double>::quiet_NaN();
+  const double odd = pcl_ext::sampleCurvatureMedian (with_nan, 0.0);
+  EXPECT_TRUE (std::isfinite (odd));
+  EXPECT_NE (odd, kappa (l0)); // the median of the other half
   // Neighbourhoods without a covariance do not count; none at all: NaN.
   for (std::size_t i = 0; i < spreads.size(); ++i)
     spreads[i].spread = pcl_ext::NeighbourhoodSpread();

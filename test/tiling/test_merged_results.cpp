@@ -41,9 +41,22 @@ TEST (MergedResults, SegmentsOfTilesJoinAcrossTheHalos)
   ASSERT_TRUE (planTiles ({input}, 5.0, 1.0, plan));
   EXPECT_EQ (plan.getTotalPoints(), 211u);
   ASSERT_TRUE (TileResults::create (dir, plan.getTotalPoints()));
-  ASSERT_TRUE (writeTiles (plan, dir));
+  pcl_ext::NoiseSampleCut sample_cut;
+  ASSERT_TRUE (writeTiles (plan, dir, 0, {}, &sample_cut));
   const TileGrid grid = plan.getGrid();
   ASSERT_GE (grid.size(), 4u);
+  // The noise sample's cut of the finite points as the tiles hold them (the NaN point
+  // has none): fewer points than the sample, so the largest key of all.
+  pcl_ext::NoiseSampleCut of_tiles;
+  for (std::size_t t = 0; t < grid.size(); ++t) {
+    std::vector<TilePoint> points;
+    ASSERT_TRUE (readTilePoints (dir, t, points));
+    for (const auto& p : points)
+      if (p.owner == t)
+        of_tiles.add (pcl_ext::noiseSampleKeyOf (p.x, p.y, p.z));
+  }
+  ASSERT_FALSE (sample_cut.empty());
+  EXPECT_EQ (sample_cut.get(), of_tiles.get());
 
   // Each tile labels its wall points 0 and the object 1 (y above 2), core and halo.
   std::size_t halo_points = 0;

@@ -135,50 +135,6 @@ TEST (TileResults, SegmentSizesRoundTrip)
   testing::internal::GetCapturedStderr();
 }
 
-TEST (TileResults, NthValueOverAllTilesIsNthElementsAnswer)
-{
-  const std::string dir = freshFolder ("tile_values");
-  std::mt19937 rng (5);
-  std::normal_distribution<float> normal (0.0f, 2.0f);
-  std::vector<float> all;
-  for (std::size_t t = 0; t < 4; ++t) {
-    std::vector<float> values (t == 2 ? 0 : 10001 + t); // tile 2: no core point
-    for (auto& v : values)
-      v = normal (rng);
-    if (t == 1) {
-      values[0] = std::numeric_limits<float>::quiet_NaN(); // not counted
-      values[1] = 0.0f;
-      values[2] = -0.0f;
-      values[3] = 1e-30f;
-    }
-    for (const float v : values)
-      if (std::isfinite (v))
-        all.push_back (v);
-    ASSERT_TRUE (pcl_ext::tiling::saveTileValues (dir, t, "kappa", values));
-  }
-  for (const double fraction : {0.0, 0.1, 0.5, 0.9, 1.0}) {
-    float value;
-    std::uint64_t count;
-    ASSERT_TRUE (
-        pcl_ext::tiling::nthOfTileValues (dir, 4, "kappa", fraction, value, count));
-    EXPECT_EQ (count, all.size());
-    std::vector<float> sorted = all;
-    const std::size_t rank =
-        std::min (all.size() - 1, static_cast<std::size_t> (all.size() * fraction));
-    std::nth_element (sorted.begin(), sorted.begin() + rank, sorted.end());
-    EXPECT_EQ (value, sorted[rank]) << fraction;
-  }
-  float value;
-  std::uint64_t count;
-  testing::internal::CaptureStderr();
-  EXPECT_FALSE (pcl_ext::tiling::nthOfTileValues (dir, 5, "kappa", 0.5, value, count));
-  testing::internal::GetCapturedStderr();
-  ASSERT_TRUE (pcl_ext::tiling::saveTileValues (dir, 0, "empty", {}));
-  ASSERT_TRUE (pcl_ext::tiling::nthOfTileValues (dir, 1, "empty", 0.5, value, count));
-  EXPECT_EQ (count, 0u);
-  EXPECT_TRUE (std::isnan (value));
-}
-
 TEST (TileResults, TilesNotRunAreFound)
 {
   const std::string dir = freshFolder ("tile_done");

@@ -97,8 +97,8 @@ public:
     return true;
   }
 
-  /** \brief From the statistics of all tiles (tiling::nthOfTileValues over \a tiles
-   * tiles of \a folder), the settings run() reads. \return false on error */
+  /** \brief From what estimate() saved for the \a tiles tiles of \a folder
+   * (tiling::loadTileValues), the settings run() reads. \return false on error */
   virtual bool
   reduce (const std::string&, std::size_t, std::map<std::string, std::string>&)
   {

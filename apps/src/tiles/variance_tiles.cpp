@@ -11,9 +11,7 @@
 #include <pcl_ext/tiling/tile_results.h>
 
 #include <cmath>
-#include <cstring>
 #include <iostream>
-#include <limits>
 #include <sstream>
 
 namespace pcl_ext {

@@ -66,66 +66,10 @@ readAllAt (int fd, void* bytes, std::size_t size, std::uint64_t offset)
   return true;
 }
 
-/** An unsigned key of a float that sorts as the floats do. */
-std::uint32_t
-orderKey (float v)
-{
-  std::uint32_t bits;
-  std::memcpy (&bits, &v, 4);
-  return (bits & 0x80000000u) ? ~bits : (bits | 0x80000000u);
-}
-
-float
-fromOrderKey (std::uint32_t key)
-{
-  const std::uint32_t bits = (key & 0x80000000u) ? (key & 0x7FFFFFFFu) : ~key;
-  float v;
-  std::memcpy (&v, &bits, 4);
-  return v;
-}
-
 std::string
 valuesPath (const std::string& folder, std::size_t tile, const std::string& name)
 {
   return folder + "/tile_" + std::to_string (tile) + "." + name;
-}
-
-/** Calls \a visit with every finite value of the tiles' files; false when one is
- * missing or broken. */
-template <typename Visit>
-bool
-forEachTileValue (const std::string& folder,
-                  std::size_t tiles,
-                  const std::string& name,
-                  Visit visit)
-{
-  std::vector<float> block (kBlockValues);
-  for (std::size_t t = 0; t < tiles; ++t) {
-    const std::string path = valuesPath (folder, t, name);
-    std::ifstream in (path, std::ios::binary);
-    if (!in) {
-      PCL_ERROR ("[pcl_ext::tiling::nthOfTileValues] %s is missing (tile %zu not "
-                 "estimated).\n",
-                 path.c_str(),
-                 t);
-      return false;
-    }
-    while (in) {
-      in.read (reinterpret_cast<char*> (block.data()),
-               static_cast<std::streamsize> (block.size() * sizeof (float)));
-      const std::streamsize got = in.gcount();
-      if (got % static_cast<std::streamsize> (sizeof (float)) != 0) {
-        PCL_ERROR ("[pcl_ext::tiling::nthOfTileValues] %s is broken.\n", path.c_str());
-        return false;
-      }
-      for (std::streamsize i = 0;
-           i < got / static_cast<std::streamsize> (sizeof (float));
-           ++i)
-        if (std::isfinite (block[static_cast<std::size_t> (i)]))
-          visit (block[static_cast<std::size_t> (i)]);
-    }
-  }
-  return true;
 }
 
 /** Writes \a count records of \a size bytes, record i filled by \a fill (i, bytes),
@@ -492,44 +436,5 @@ loadTileValues (const std::string& folder,
   return true;
 }
 
-bool
-nthOfTileValues (const std::string& folder,
-                 std::size_t tiles,
-                 const std::string& name,
-                 double fraction,
-                 float& value,
-                 std::uint64_t& count)
-{
-  value = std::numeric_limits<float>::quiet_NaN();
-  count = 0;
-  // Pass 1: how many values share each high half of the order key.
-  std::vector<std::uint64_t> high (1u << 16, 0);
-  if (!forEachTileValue (folder, tiles, name, [&] (float v) {
-        ++high[orderKey (v) >> 16];
-        ++count;
-      }))
-    return false;
-  if (count == 0)
-    return true;
-  std::uint64_t rank =
-      static_cast<std::uint64_t> (static_cast<double> (count) * fraction);
-  rank = std::min (rank, count - 1);
-  std::uint32_t bin = 0;
-  while (rank >= high[bin])
-    rank -= high[bin++];
-  // Pass 2: the low halves within that bin.
-  std::vector<std::uint64_t> low (1u << 16, 0);
-  if (!forEachTileValue (folder, tiles, name, [&] (float v) {
-        const std::uint32_t key = orderKey (v);
-        if ((key >> 16) == bin)
-          ++low[key & 0xFFFFu];
-      }))
-    return false;
-  std::uint32_t rest = 0;
-  while (rank >= low[rest])
-    rank -= low[rest++];
-  value = fromOrderKey ((bin << 16) | rest);
-  return true;
-}
 } // namespace tiling
 } // namespace pcl_ext

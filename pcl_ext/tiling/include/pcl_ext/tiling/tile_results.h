@@ -190,17 +190,5 @@ loadTileValues (const std::string& folder,
                 const std::string& name,
                 std::vector<float>& values);
 
-/** \brief The value of rank floor(n * \a fraction) (0-based, at most n - 1) among the n
- * finite values of tiles 0 .. \a tiles - 1 saved under \a name: what std::nth_element
- * gives on all of them together, found in two passes over the files whatever their
- * size. \param[out] count n \return false (PCL_ERROR names the file) when a file is
- * missing or broken; true with \a count 0 (and \a value NaN) when no value is finite */
-bool
-nthOfTileValues (const std::string& folder,
-                 std::size_t tiles,
-                 const std::string& name,
-                 double fraction,
-                 float& value,
-                 std::uint64_t& count);
 } // namespace tiling
 } // namespace pcl_ext
