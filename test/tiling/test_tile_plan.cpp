@@ -142,3 +142,31 @@ TEST (TilePlan, InputsFarApartAreRefused)
   EXPECT_FALSE (loadTilePlan (dir + "/bad.txt", plan));
   testing::internal::GetCapturedStderr();
 }
+
+TEST (TilePlan, RelativeInputsAreKeptAsAbsolutePaths)
+{
+  const std::string dir = freshFolder ("tile_plan_relative");
+  lineFile (dir + "/a.pcd", 10, {0.f, 0.f, 0.f});
+  char cwd[4096];
+  ASSERT_NE (::getcwd (cwd, sizeof (cwd)), nullptr);
+  ASSERT_EQ (::chdir (dir.c_str()), 0);
+  TilePlan plan;
+  const bool planned = planTiles ({"a.pcd"}, 5.0, 0.5, plan);
+  char here[4096];
+  const bool known = ::getcwd (here, sizeof (here)) != nullptr;
+  ASSERT_EQ (::chdir (cwd), 0);
+  ASSERT_TRUE (planned);
+  ASSERT_TRUE (known);
+  ASSERT_EQ (plan.inputs.size(), 1u);
+  EXPECT_EQ (plan.inputs[0], std::string (here) + "/a.pcd");
+  // Read from another working folder: the tiles' cores hold the input's ten points.
+  ASSERT_TRUE (writeTiles (plan, dir));
+  std::size_t owned = 0;
+  for (std::size_t t = 0; t < plan.getGrid().size(); ++t) {
+    std::vector<TilePoint> tile;
+    ASSERT_TRUE (readTilePoints (dir, t, tile));
+    owned += std::count_if (
+        tile.begin(), tile.end(), [t] (const TilePoint& p) { return p.owner == t; });
+  }
+  EXPECT_EQ (owned, 10u);
+}

@@ -11,6 +11,7 @@
 #include <pcl/console/print.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -18,6 +19,8 @@
 #include <limits>
 #include <stdexcept>
 #include <sstream>
+
+#include <unistd.h>
 
 namespace pcl_ext {
 namespace tiling {
@@ -27,6 +30,18 @@ constexpr const char* kPlanHeader = "pcl_ext tile plan 1";
  * coordinates and LAS header bounds rounded to the file's scale. */
 constexpr double kBoxMargin = 0.01;
 constexpr std::size_t kChunkPoints = 1 << 20;
+
+/** \a path made absolute (a relative one joined to the working folder), so that the
+ * steps of a plan find its inputs from any working folder; as given where the working
+ * folder cannot be read. */
+std::string
+absolutePath (const std::string& path)
+{
+  char cwd[PATH_MAX];
+  if (path.empty() || path.front() == '/' || ::getcwd (cwd, sizeof (cwd)) == nullptr)
+    return path;
+  return std::string (cwd) + "/" + path;
+}
 
 std::string
 number (double v)
@@ -156,7 +171,7 @@ planTiles (const std::vector<std::string>& inputs,
       lo = lo.cwiseMin (a);
       hi = hi.cwiseMax (b);
     }
-    plan.inputs.push_back (inputs[i]);
+    plan.inputs.push_back (absolutePath (inputs[i]));
     plan.counts.push_back (file.getPointCount());
   }
   if (!lo.allFinite() || !hi.allFinite()) {

@@ -27,7 +27,7 @@ namespace tiling {
  * handed to the methods relative to \a origin (the origin io::loadPointFile gives the
  * first input), the tiles are laid in the inputs' own (double) coordinates. */
 struct TilePlan {
-  std::vector<std::string> inputs;
+  std::vector<std::string> inputs;                  ///< absolute paths (planTiles)
   std::vector<std::uint64_t> counts;                ///< points per input
   Eigen::Vector3d origin = Eigen::Vector3d::Zero(); ///< of every chunk's x y z
   Eigen::Vector2d min = Eigen::Vector2d::Zero();    ///< box of the points (x, y)
@@ -66,9 +66,11 @@ loadTilePlan (const std::string& path, TilePlan& plan);
 
 /** \brief The plan of the inputs: counts, origin and box (each input opened through
  * PointFileChunks: LAS / LAZ headers only, other formats read), the grid of
- * \a tile_size with \a halo. \throw io::ReadError naming an input that cannot be read;
- * \return false (PCL_ERROR) when there is no point with finite coordinates, the tile
- * size or halo is not valid, or the inputs are more than 1e6 m apart */
+ * \a tile_size with \a halo; the inputs are kept as absolute paths, so that any
+ * step finds them from any working folder. \throw io::ReadError naming an input that
+ * cannot be read; \return false (PCL_ERROR) when there is no point with finite
+ * coordinates, the tile size or halo is not valid, or the inputs are more than 1e6 m
+ * apart */
 bool
 planTiles (const std::vector<std::string>& inputs,
            double tile_size,
