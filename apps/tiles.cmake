@@ -7,6 +7,7 @@ pcl_ext_add_app(tiles
     src/tiles/merge_output.cpp
     src/tiles/profile_frame.cpp
     src/tiles/profile_parts.cpp
+    src/tiles/profile_stages.cpp
     src/tiles/profile_tiles.cpp
     src/tiles/profile_part_steps.cpp
     src/tiles/profile_curve_steps.cpp

@@ -1,41 +1,22 @@
 /*
- * pcl_ext_tiles segment_profiles: Sithole & Mapurisa's segmentation split by profiles.
+ * pcl_ext_tiles segment_profiles: Sithole & Mapurisa's segmentation split by profiles,
+ * as one command (under mpirun too) or in steps.
  */
 #include "profile_tiles.h"
-#include "../profiles/profile_options.h"
-#include "input_fields.h"
-#include "merge_output.h"
-#include "profile_curve_steps.h"
-#include "profile_cylinder_join.h"
-#include "profile_part_steps.h"
-#include "profile_parts.h"
+#include "profile_stages.h"
 
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/output.h>
-#include <pcl_ext/io/read_error.h>
-#include <pcl_ext/segmentation/profile_stacks.h>
-#include <pcl_ext/tiling/tile_results.h>
 
-#include <algorithm>
-#include <cerrno>
 #include <chrono>
-#include <cstdio>
-#include <cstring>
+#include <cmath>
 #include <filesystem>
-#include <iomanip>
+#include <fstream>
 #include <iostream>
-#include <memory>
-#include <numeric>
-#include <sstream>
-#include <sys/resource.h>
 
 namespace pcl_ext {
 namespace apps {
 namespace {
-/** At most this many points in a part (unless one profile holds more): with the
- * segmentation's arrays a process stays well under 2 GB. */
-constexpr std::uint64_t kPointsPerPart = 4000000;
-constexpr const char* kMethod = "segment_profiles";
 
 /** The tool's own options beside the segmentation's. */
 struct RunOptions {
@@ -46,235 +27,12 @@ struct RunOptions {
   bool verbose = false;
 };
 
-std::string
-planFile (const std::string& workdir)
-{
-  return workdir + "/plan.txt";
-}
-
-/** Remove what an earlier run left in \a workdir: only the names this run writes. */
-bool
-clearWorkdir (const std::string& workdir)
-{
-  std::error_code error;
-  std::filesystem::create_directories (workdir, error);
-  if (error || !std::filesystem::is_directory (workdir)) {
-    std::cerr << "Error: cannot make the work folder " << workdir << ".\n";
-    return false;
-  }
-  std::vector<std::filesystem::path> earlier;
-  for (const auto& entry : std::filesystem::directory_iterator (workdir, error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind ("profiles_", 0) == 0 || name == "plan.txt" || name == "results.bin")
-      earlier.push_back (entry.path());
-  }
-  for (const auto& path : earlier)
-    std::filesystem::remove (path, error);
-  if (error) {
-    std::cerr << "Error: cannot clear the work folder " << workdir << ": "
-              << error.message() << ".\n";
-    return false;
-  }
-  return true;
-}
-
-bool
-plan (const std::vector<std::string>& inputs,
-      const ProfileOptions& options,
-      const RunOptions& run,
-      const std::vector<std::string>& arguments,
-      tiling::TilePlan& plan)
-{
-  if (!clearWorkdir (run.workdir))
-    return false;
-  StageTimer timer ("Planning");
-  try {
-    // The grid only lays the files of an output named with '#'.
-    if (!tiling::planTiles (inputs, 1e9, 0.0, plan))
-      return false;
-    const double tile_size = run.tile_size > 0.0
-                                 ? run.tile_size
-                                 : tiling::fitTileSize (plan, kPointsPerPart / 2);
-    if (!tiling::planTiles (inputs, tile_size, 0.0, plan))
-      return false;
-    pcl::PCLPointCloud2 layout;
-    if (!unionOfInputFields (inputs, layout) || !sameCoordinateSystem (inputs))
-      return false;
-    if (plan.getTotalPoints() >= tiling::TileResults::kNoResult) {
-      std::cerr << "\nError: " << plan.getTotalPoints()
-                << " points: segment_profiles merges at most 4,294,967,294.\n";
-      return false;
-    }
-    const auto normals =
-        profiles::makeStackNormals (options.stacks, options.stackDistribution());
-    const bool sample =
-        options.automatic() || options.width == 0.0 || options.threshold == 0.0;
-    ProfileFrame frame;
-    InputPasses passes (plan);
-    if (!estimateProfileFrame (
-            passes, normals, sample, options.width, options.width_factor, frame))
-      return false;
-    ProfileParts parts;
-    if (!planProfileParts (passes, frame, run.tile_size, kPointsPerPart, parts) ||
-        !writeProfileParts (passes, frame, parts, run.workdir))
-      return false;
-    plan.settings["method"] = kMethod;
-    std::string text;
-    for (const auto& a : arguments)
-      text += (text.empty() ? "" : "\t") + a;
-    plan.settings["arguments"] = text;
-    frame.saveTo (plan.settings);
-    parts.saveTo (plan.settings);
-    if (!tiling::saveTilePlan (planFile (run.workdir), plan))
-      return false;
-    timer.done (plan.getTotalPoints());
-    std::cout << parts.size() << " parts of whole profiles (" << normals.size()
-              << " stacks, width " << std::setprecision (6) << frame.width << ") in "
-              << run.workdir << "\n";
-  }
-  catch (const std::exception& e) {
-    std::cerr << "\nError: " << e.what() << "\n";
-    return false;
-  }
-  return true;
-}
-
-/** -method auto's choice after its first run (AutoProfileSegmentation), from the
- * whole cloud's statistics and the share of its largest segment. */
-profiles::AutoConfiguration
-chooseAutomatically (const ProfileFrame& frame, const JoinedParts& joined, bool verbose)
-{
-  const double share =
-      static_cast<double> (joined.largest) / static_cast<double> (frame.points);
-  const auto chosen = profiles::chooseConfiguration (frame.statistics, share);
-  if (verbose)
-    std::cout << profiles::describeConfiguration (frame.statistics, share, chosen)
-              << "\n";
-  return chosen;
-}
-
-/** The options of AutoProfileSegmentation's second run after its choice \a chosen:
- * curve fitting, the noisy-scan settings where the paper's values were left, side
- * frames, local thresholds. */
-void
-applyChoice (const profiles::AutoConfiguration& chosen, ProfileOptions& options)
-{
-  if (chosen.curve_fitting)
-    options.method = ProfileOptions::Segmentation::ProfileMethod::CurveFitting;
-  if (chosen.noisy) {
-    options.aicc = true;
-    if (options.turn_significance == 0.0)
-      options.turn_significance = 3.0;
-    if (options.width_factor == 1.5)
-      options.width_factor = 2.5;
-  }
-  options.side_frames = options.side_frames || chosen.side_frames;
-  options.local_threshold = options.local_threshold || chosen.local_threshold;
-}
-
-/** Save \a values in the plan's settings under \a key (17 digits each). */
-bool
-saveValues (tiling::TilePlan& plan,
-            const std::string& key,
-            const std::vector<double>& values,
-            const std::string& workdir)
-{
-  std::string text;
-  char value[32];
-  for (const double v : values) {
-    std::snprintf (value, sizeof (value), "%.17g", v);
-    text += (text.empty() ? "" : " ") + std::string (value);
-  }
-  plan.settings[key] = text;
-  return tiling::saveTilePlan (planFile (workdir), plan);
-}
-
-bool
-loadValues (const tiling::TilePlan& plan,
-            const std::string& key,
-            std::vector<double>& values)
-{
-  values.clear();
-  const auto it = plan.settings.find (key);
-  if (it == plan.settings.end()) {
-    std::cerr << "Error: the plan has no " << key << ".\n";
-    return false;
-  }
-  std::istringstream in (it->second);
-  double v;
-  while (in >> v)
-    values.push_back (v);
-  return true;
-}
-
-bool
-saveChoice (tiling::TilePlan& plan,
-            const profiles::AutoConfiguration& chosen,
-            const std::string& workdir)
-{
-  plan.settings["profile_auto"] = std::to_string (chosen.curve_fitting) + " " +
-                                  std::to_string (chosen.noisy) + " " +
-                                  std::to_string (chosen.local_threshold) + " " +
-                                  std::to_string (chosen.side_frames) + " " +
-                                  std::to_string (chosen.join_cylinders);
-  return tiling::saveTilePlan (planFile (workdir), plan);
-}
-
-bool
-loadChoice (const tiling::TilePlan& plan, profiles::AutoConfiguration& chosen)
-{
-  const auto it = plan.settings.find ("profile_auto");
-  if (it == plan.settings.end())
-    return false;
-  std::istringstream in (it->second);
-  int flags[5];
-  for (int& f : flags)
-    if (!(in >> f))
-      return false;
-  chosen.curve_fitting = flags[0];
-  chosen.noisy = flags[1];
-  chosen.local_threshold = flags[2];
-  chosen.side_frames = flags[3];
-  chosen.join_cylinders = flags[4];
-  return true;
-}
-
-/** Parts of whole profiles of the frame's new width \a width (AutoProfileSegmentation's
- * noisy-scan width), their files written again and saved in the plan. \return false
- * (message printed) on error */
-bool
-replanParts (tiling::TilePlan& plan,
-             const RunOptions& run,
-             double width,
-             ProfileFrame& frame,
-             ProfileParts& parts)
-{
-  try {
-    frame.width = width;
-    InputPasses passes (plan);
-    parts = ProfileParts();
-    if (!planProfileParts (passes, frame, run.tile_size, kPointsPerPart, parts) ||
-        !writeProfileParts (passes, frame, parts, run.workdir))
-      return false;
-    frame.saveTo (plan.settings);
-    parts.saveTo (plan.settings);
-    if (!tiling::saveTilePlan (planFile (run.workdir), plan))
-      return false;
-    std::cout << parts.size() << " parts of whole profiles of the noisy-scan width "
-              << std::setprecision (6) << width << "\n";
-    return true;
-  }
-  catch (const std::exception& e) {
-    std::cerr << "\nError: " << e.what() << "\n";
-    return false;
-  }
-}
-
-/** The inputs, the output and the options of a whole run. \return -1 to go on, else
- * the exit code */
+/** The inputs, the output (\a whole_run; else -workdir is required) and the options of
+ * a run or its plan; argv[1] is the method. \return -1 to go on, else the exit code */
 int
 parse (int argc,
        char** argv,
+       bool whole_run,
        CommandLine& cl,
        ProfileOptions& options,
        RunOptions& run,
@@ -284,15 +42,17 @@ parse (int argc,
        std::vector<std::string>& arguments)
 {
   std::string method;
-  cl.addPositional ("METHOD", method, kMethod);
+  cl.addPositional ("METHOD", method, "segment_profiles");
   cl.addPositionalList ("input", inputs, kInputFormats);
-  cl.addPositional ("output", output, kOutputFormats);
+  if (whole_run)
+    cl.addPositional ("output", output, kOutputFormats);
   options.addTo (cl);
   field.addTo (cl);
   cl.addOption ("workdir",
                 run.workdir,
-                "work folder of the parts (default: the output's name + .tiles, "
-                "removed at the end)");
+                whole_run ? "work folder of the parts (default: the output's name + "
+                            ".tiles, removed at the end)"
+                          : "work folder of the parts (required)");
   cl.addOption ("threads", run.threads, "OpenMP threads per process (0: all cores)");
   cl.addOption ("tile_size",
                 run.tile_size,
@@ -313,13 +73,203 @@ parse (int argc,
     std::cerr << "Error: -tile_size must be >= 0.\n";
     return 1;
   }
-  if (!field.checkOutput (output))
+  if (whole_run && !field.checkOutput (output))
     return 1;
+  if (!whole_run && run.workdir.empty()) {
+    std::cerr << "Error: -workdir is required.\n";
+    return 1;
+  }
   arguments =
       cl.getGivenOptions ({"workdir", "threads", "tile_size", "keep_workdir", "v"});
   return -1;
 }
+
+/** The passes from where \a run stands, each shared among the processes and reduced
+ * by the first, then its merge into \a output; \a done counts the parts this process
+ * ran. \return whether every process succeeded */
+bool
+runPasses (TileScheduler& scheduler,
+           ProfileRun& run,
+           const RunOptions& options,
+           ResultField& field,
+           const std::string& output,
+           std::chrono::steady_clock::time_point start,
+           std::size_t& done,
+           std::uint32_t& segments)
+{
+  const bool leader = scheduler.getRank() == 0;
+  bool ok = true;
+  JoinedParts joined;
+  while (ok && run.stage != ProfileStage::Merge) {
+    const std::string stage = stageName (run.stage);
+    std::size_t i, count = 0;
+    scheduler.startPhase (run.parts.size());
+    while (ok && scheduler.next (i)) {
+      ok = runProfilePart (run, options.workdir, options.threads, i);
+      if (!ok) {
+        std::cerr << "Error: pass '" << stage << "' of part " << i
+                  << " failed; the work folder " << options.workdir
+                  << " is kept: run 'pcl_ext_tiles part " << i << " -workdir "
+                  << options.workdir << "', then 'next', or 'resume'.\n";
+        break;
+      }
+      ++count;
+      ++done;
+      const double seconds =
+          std::chrono::duration<double> (std::chrono::steady_clock::now() - start)
+              .count();
+      if (scheduler.getSize() == 1)
+        std::cout << "  " << stage << ": " << count << " / " << run.parts.size()
+                  << " parts, " << static_cast<long> (seconds) << " s\n";
+    }
+    ok = scheduler.allOk (ok);
+    ok = scheduler.allOk (
+        ok &&
+        (!leader || advanceProfileRun (run, options.workdir, options.verbose, joined)));
+    ok = scheduler.allOk (ok && (leader || loadProfileRun (options.workdir, run)));
+  }
+  if (leader && ok)
+    ok = mergeProfileRun (
+        run, options.workdir, options.threads, field, output, joined, segments);
+  return scheduler.allOk (ok);
+}
+
+/** The summary line of every process. */
+void
+summarise (const TileScheduler& scheduler,
+           bool ok,
+           std::size_t done,
+           std::uint32_t segments,
+           std::uint64_t points,
+           std::chrono::steady_clock::time_point start)
+{
+  const double seconds =
+      std::chrono::duration<double> (std::chrono::steady_clock::now() - start).count();
+  std::string what = std::to_string (done) + " part runs";
+  if (scheduler.getRank() == 0 && ok)
+    what += ", " + std::to_string (segments) + " segments";
+  printRunSummary (scheduler, ok, what, points, seconds);
+}
+
+/** -workdir's value in argv, empty when not given. */
+std::string
+workdirArgument (int argc, char** argv)
+{
+  for (int i = 1; i + 1 < argc; ++i)
+    if (std::string (argv[i]) == "-workdir")
+      return argv[i + 1];
+  return "";
+}
 } // namespace
+
+int
+runProfileStep (int argc, char** argv, TileScheduler& scheduler)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::string step = argv[1];
+  const bool takes_output = step == "merge" || step == "resume";
+  std::string argument;
+  RunOptions options;
+  CommandLine cl ("pcl_ext_tiles " + step,
+                  "A step of a segment_profiles plan: 'part I' runs the plan's pass on "
+                  "part I, 'next' reduces what every part saved and names the next "
+                  "pass, 'merge output' writes the segments once no pass is left, "
+                  "'resume output' runs the passes left and merges.");
+  if (step == "part")
+    cl.addPositional ("I", argument, "part index");
+  else if (takes_output)
+    cl.addPositional ("output", argument, kOutputFormats);
+  cl.addOption ("workdir", options.workdir, "work folder of the plan (required)");
+  cl.addOption ("threads", options.threads, "OpenMP threads (0: all cores)");
+  cl.addSwitch ("v",
+                options.verbose,
+                "print the configuration -method auto chooses (next, resume)");
+  if (const int code = cl.parse (argc - 1, argv + 1); code >= 0)
+    return code;
+  if (options.workdir.empty()) {
+    std::cerr << "Error: -workdir is required.\n";
+    return 1;
+  }
+  ProfileRun run;
+  CommandLine plan_options ("pcl_ext_tiles", "The options of the plan.");
+  ResultField field = segmentIdField();
+  if (!loadProfileRun (options.workdir, plan_options, field, run) ||
+      (takes_output && !field.checkOutput (argument)))
+    return 1;
+  std::size_t done = 0;
+  std::uint32_t segments = 0;
+  if (step == "resume") {
+    if (scheduler.getRank() == 0)
+      std::cout << "Resuming at pass '" << stageName (run.stage) << "' of "
+                << run.parts.size() << " parts in " << options.workdir << "\n";
+    const bool ok =
+        runPasses (scheduler, run, options, field, argument, start, done, segments);
+    summarise (scheduler, ok, done, segments, run.plan.getTotalPoints(), start);
+    return ok ? 0 : 1;
+  }
+  if (step == "merge") {
+    JoinedParts joined;
+    return mergeProfileRun (
+               run, options.workdir, options.threads, field, argument, joined, segments)
+               ? 0
+               : 1;
+  }
+  if (step == "next") {
+    JoinedParts joined;
+    if (!advanceProfileRun (run, options.workdir, options.verbose, joined))
+      return 1;
+    std::cout << "Next: " << stageName (run.stage);
+    if (run.stage != ProfileStage::Merge)
+      std::cout << " on " << run.parts.size() << " parts";
+    std::cout << "\n";
+    return 0;
+  }
+  char* end = nullptr;
+  const unsigned long long part = std::strtoull (argument.c_str(), &end, 10);
+  if (argument.empty() || *end != '\0' || part >= run.parts.size()) {
+    std::cerr << "Error: part '" << argument << "' is not one of 0 .. "
+              << run.parts.size() - 1 << ".\n";
+    return 1;
+  }
+  return runProfilePart (run, options.workdir, options.threads, part) ? 0 : 1;
+}
+
+bool
+isProfilePlan (int argc, char** argv)
+{
+  const std::string workdir = workdirArgument (argc, argv);
+  std::ifstream plan (workdir + "/plan.txt");
+  for (std::string line; !workdir.empty() && std::getline (plan, line);)
+    if (line == "setting method segment_profiles")
+      return true;
+  return false;
+}
+
+int
+planProfileTiles (int argc, char** argv)
+{
+  ProfileOptions options;
+  RunOptions run;
+  std::vector<std::string> inputs, arguments;
+  std::string unused;
+  CommandLine cl ("pcl_ext_tiles plan",
+                  "segment_profiles in steps: the plan of the parts in -workdir, then "
+                  "'part I' for every part and 'next', again until 'next' names the "
+                  "merge, then 'merge output'.");
+  ResultField field = segmentIdField(); // reads cl: declared after it
+  if (const int code =
+          parse (argc, argv, false, cl, options, run, field, inputs, unused, arguments);
+      code >= 0)
+    return code;
+  if (!planProfileRun (inputs, options, run.tile_size, arguments, run.workdir))
+    return 1;
+  ProfileRun loaded;
+  if (!loadProfileRun (run.workdir, loaded))
+    return 1;
+  std::cout << "Next: " << stageName (loaded.stage) << " on " << loaded.parts.size()
+            << " parts\n";
+  return 0;
+}
 
 int
 runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
@@ -336,192 +286,22 @@ runProfileTiles (int argc, char** argv, TileScheduler& scheduler)
                   "one stack (the parts shared among the ranks under mpirun).");
   ResultField field = segmentIdField(); // reads cl: declared after it
   if (const int code =
-          parse (argc, argv, cl, options, run, field, inputs, output, arguments);
+          parse (argc, argv, true, cl, options, run, field, inputs, output, arguments);
       code >= 0)
     return code;
   const bool own_workdir = run.workdir.empty();
   if (own_workdir)
     run.workdir = output + ".tiles";
-  tiling::TilePlan tile_plan;
-  bool ok = !leader || plan (inputs, options, run, arguments, tile_plan);
-  ok = scheduler.allOk (ok) &&
-       (leader || tiling::loadTilePlan (planFile (run.workdir), tile_plan));
-  ProfileFrame frame;
-  ProfileParts parts;
-  ok = scheduler.allOk (ok && frame.loadFrom (tile_plan.settings) &&
-                        parts.loadFrom (tile_plan.settings, frame.normals.size()));
-  if (!ok)
+  // Rank 0 plans; every process follows the plan's passes.
+  bool ok = !leader ||
+            planProfileRun (inputs, options, run.tile_size, arguments, run.workdir);
+  ProfileRun state;
+  if (!scheduler.allOk (ok) || !scheduler.allOk (loadProfileRun (run.workdir, state)))
     return 1;
   std::size_t done = 0;
-  // A pass over the parts shared among the processes; \a step names it in messages.
-  const auto over_parts = [&] (const char* step, const auto& run_part) {
-    std::size_t i, count = 0;
-    scheduler.startPhase (parts.size());
-    while (ok && scheduler.next (i)) {
-      ok = run_part (i);
-      if (!ok) {
-        std::cerr << "Error: " << step << " of part " << i << " failed.\n";
-        break;
-      }
-      ++count;
-      ++done;
-      const double seconds =
-          std::chrono::duration<double> (std::chrono::steady_clock::now() - start)
-              .count();
-      if (scheduler.getSize() == 1)
-        std::cout << "  " << step << ": " << count << " / " << parts.size()
-                  << " parts, " << static_cast<long> (seconds) << " s\n";
-    }
-    ok = scheduler.allOk (ok);
-  };
-  PartPass pass;
-  pass.first_automatic = options.automatic();
-  pass.local_threshold = options.local_threshold;
-  // The local thresholds' mean gaps over the whole cloud, before the segmentation.
-  const auto gaps_pass = [&] {
-    ok = scheduler.allOk (ok &&
-                          (!leader || createGapFiles (run.workdir,
-                                                      parts.firsts.size(),
-                                                      tile_plan.getTotalPoints())));
-    over_parts ("local gaps", [&] (std::size_t i) {
-      return computePartGaps (frame, parts, options, pass, run.workdir, run.threads, i);
-    });
-    ok = scheduler.allOk (
-        ok && (!leader || reduceGaps (tile_plan, parts, run.workdir, pass.mean_gaps)));
-    if (leader && ok) {
-      pass.first_automatic = false;
-      ok = saveValues (tile_plan, "profile_mean_gaps", pass.mean_gaps, run.workdir);
-    }
-    ok = scheduler.allOk (ok) &&
-         (leader || (tiling::loadTilePlan (planFile (run.workdir), tile_plan) &&
-                     loadValues (tile_plan, "profile_mean_gaps", pass.mean_gaps)));
-    ok = scheduler.allOk (ok);
-  };
-  // Curve fitting (-method curve): the scores, each stack's curve ends from its
-  // medians over every part, then the joins across junctions given every stack's ends.
-  bool curves =
-      !options.automatic() &&
-      options.method == ProfileOptions::Segmentation::ProfileMethod::CurveFitting;
-  bool join_cylinders = options.join_cylinders;
-  std::vector<double> junction_tolerances;
-  const auto segment_pass = [&] {
-    if (!curves) {
-      over_parts ("chains", [&] (std::size_t i) {
-        return segmentPart (frame, parts, options, pass, run.workdir, run.threads, i);
-      });
-      return;
-    }
-    over_parts ("curve scores", [&] (std::size_t i) {
-      return scorePartCurves (frame, parts, options, pass, run.workdir, run.threads, i);
-    });
-    ok = scheduler.allOk (
-        ok &&
-        (!leader ||
-         (findCurveEnds (
-              tile_plan, frame, parts, options, run.workdir, junction_tolerances) &&
-          saveValues (tile_plan,
-                      "profile_junction_tolerances",
-                      junction_tolerances,
-                      run.workdir))));
-    ok = scheduler.allOk (
-        ok &&
-        (leader ||
-         (tiling::loadTilePlan (planFile (run.workdir), tile_plan) &&
-          loadValues (tile_plan, "profile_junction_tolerances", junction_tolerances))));
-    over_parts ("curve joins", [&] (std::size_t i) {
-      return joinPartCurves (frame,
-                             parts,
-                             options,
-                             pass,
-                             junction_tolerances,
-                             run.workdir,
-                             run.threads,
-                             i);
-    });
-  };
-  if (pass.local_threshold)
-    gaps_pass();
-  if (ok)
-    segment_pass();
-  JoinedParts joined;
   std::uint32_t segments = 0;
-  if (ok && options.automatic()) {
-    // -method auto: the choice from the first run's largest segment, as
-    // AutoProfileSegmentation makes it; the other ranks learn it through the plan.
-    profiles::AutoConfiguration chosen;
-    if (leader) {
-      ok = joinParts (tile_plan, parts, run.workdir, joined);
-      if (ok) {
-        chosen = chooseAutomatically (frame, joined, run.verbose);
-        ok = saveChoice (tile_plan, chosen, run.workdir);
-      }
-    }
-    ok = scheduler.allOk (ok) &&
-         (leader || (tiling::loadTilePlan (planFile (run.workdir), tile_plan) &&
-                     loadChoice (tile_plan, chosen)));
-    ok = scheduler.allOk (ok);
-    const bool had_gaps = pass.local_threshold;
-    if (ok && (chosen.curve_fitting || (chosen.local_threshold && !had_gaps))) {
-      applyChoice (chosen, options);
-      curves = chosen.curve_fitting;
-      join_cylinders = join_cylinders || chosen.join_cylinders;
-      pass.first_automatic = false;
-      pass.local_threshold = options.local_threshold;
-      // The noisy-scan width: profiles of that width, in parts of their own.
-      const double width =
-          options.width > 0.0 ? options.width : options.width_factor * frame.spacing;
-      const bool new_width = width != frame.width;
-      if (new_width) {
-        ok = scheduler.allOk (!leader ||
-                              replanParts (tile_plan, run, width, frame, parts));
-        ok = scheduler.allOk (
-            ok &&
-            (leader || (tiling::loadTilePlan (planFile (run.workdir), tile_plan) &&
-                        frame.loadFrom (tile_plan.settings) &&
-                        parts.loadFrom (tile_plan.settings, frame.normals.size()))));
-      }
-      if (ok && pass.local_threshold && (!had_gaps || new_width))
-        gaps_pass();
-      if (ok)
-        segment_pass();
-      joined = JoinedParts();
-    }
-  }
-  if (leader && ok) {
-    StageTimer timer ("Joining the parts");
-    ok = (joined.sets.size() > 0 ||
-          (curves ? labelCurveSegments (tile_plan, parts, run.workdir, joined)
-                  : joinParts (tile_plan, parts, run.workdir, joined))) &&
-         saveSegments (run.workdir,
-                       static_cast<std::uint64_t> (options.min_size),
-                       joined,
-                       segments);
-    if (ok)
-      timer.done (tile_plan.getTotalPoints());
-    joined = JoinedParts();
-    if (ok && join_cylinders) {
-      StageTimer joining ("Joining cylinders");
-      std::size_t cylinders = 0;
-      ok = joinProfileCylinders (
-          tile_plan, parts, options, run.workdir, run.threads, segments, cylinders);
-      if (ok) {
-        joining.done (tile_plan.getTotalPoints());
-        std::cout << "  " << cylinders << " cylinders joined\n";
-      }
-    }
-    if (ok) {
-      MergeReading reading;
-      reading.segments = true;
-      ok = writeMergedOutput (tile_plan, field, run.workdir, output, reading);
-    }
-  }
-  ok = scheduler.allOk (ok);
-  const double seconds =
-      std::chrono::duration<double> (std::chrono::steady_clock::now() - start).count();
-  std::string what = std::to_string (done) + " part runs";
-  if (leader && ok)
-    what += ", " + std::to_string (segments) + " segments";
-  printRunSummary (scheduler, ok, what, tile_plan.getTotalPoints(), seconds);
+  ok = runPasses (scheduler, state, run, field, output, start, done, segments);
+  summarise (scheduler, ok, done, segments, state.plan.getTotalPoints(), start);
   if (leader && ok && own_workdir && !run.keep_workdir) {
     std::error_code ignored;
     std::filesystem::remove_all (run.workdir, ignored);

@@ -20,8 +20,26 @@ namespace apps {
  * cloud's frame (ProfileSegmentation::setCloudFrame) and its chains saved as links to
  * the first point of their component, (4) the merge joins the links of all parts over
  * all points (union-find), numbers the segments largest first and writes the output.
- * \return the exit code */
+ * The passes and where the run stands are kept in the plan (ProfileRun), so that the
+ * same run goes in steps (planProfileTiles, runProfileStep). \return the exit code */
 int
 runProfileTiles (int argc, char** argv, TileScheduler& scheduler);
+
+/** \brief `pcl_ext_tiles plan segment_profiles input... -workdir D [options]` (argv[1]
+ * the method): the plan of the parts and its first pass. \return the exit code */
+int
+planProfileTiles (int argc, char** argv);
+
+/** \brief `part I`, `next`, `merge output` or `resume output` (argv[1]) with -workdir
+ * of a segment_profiles plan: part I's share of the plan's pass; the parts' results
+ * reduced and the next pass named; the merge once no pass is left; the passes left
+ * (the current one on every part again) and the merge, shared among the MPI ranks.
+ * \return the exit code */
+int
+runProfileStep (int argc, char** argv, TileScheduler& scheduler);
+
+/** \brief Whether argv's -workdir holds a segment_profiles plan. */
+bool
+isProfilePlan (int argc, char** argv);
 } // namespace apps
 } // namespace pcl_ext

@@ -30,8 +30,10 @@ constexpr const char* kDescription =
     "model.txt of pcl_ext_crf_train, a model on x y z; a tile widens its margin "
     "until the super-voxels its points lie in are the whole cloud's, and at least "
     "99 % of the points get pcl_ext_crf_classify's class), segment_profiles (the "
-    "options of pcl_ext_segment_profiles; split by profiles rather than by tiles, "
-    "one command, not in steps; not yet the cylinder join). An output named "
+    "options of pcl_ext_segment_profiles; split by profiles rather than by tiles, in "
+    "steps 'plan segment_profiles input... -workdir D', then 'part I -workdir D' for "
+    "every part and 'next -workdir D', again until 'next' names the merge). An output "
+    "named "
     "with a '#' (out_#.las) gives one LAS file per tile, '#' its number, and an index "
     "of the files with their boxes (out_index.csv). Steps for scheduler "
     "array jobs: 'plan METHOD input... -workdir D', then 'estimate I -workdir D', "
@@ -112,12 +114,8 @@ parsePlan (int argc,
   if (const int code = cl.parse (argc - first + 1, argv + first - 1); code >= 0)
     return code;
   if (!method) {
-    if (options.method == "segment_profiles")
-      std::cerr << "Error: segment_profiles runs as one command ('pcl_ext_tiles "
-                   "segment_profiles input... output'), not in steps yet.\n";
-    else
-      std::cerr << "Error: unknown method '" << options.method << "' ("
-                << pcl_ext::apps::kTileMethods << ", segment_profiles).\n";
+    std::cerr << "Error: unknown method '" << options.method << "' ("
+              << pcl_ext::apps::kTileMethods << ", segment_profiles).\n";
     return 1;
   }
   if (!method->checkOptions (cl, true))
@@ -418,6 +416,10 @@ main (int argc, char** argv)
   // Under mpirun every rank runs main; the steps are for one process each.
   const auto scheduler = pcl_ext::apps::makeTileScheduler (argc, argv);
   const std::string first = argc > 1 ? argv[1] : "";
+  if (first == "part" || first == "next" ||
+      ((first == "merge" || first == "resume") &&
+       pcl_ext::apps::isProfilePlan (argc, argv)))
+    return pcl_ext::apps::runProfileStep (argc, argv, *scheduler);
   if (first == "estimate" || first == "tile" || first == "refine" || first == "grow" ||
       first == "merge")
     return runStep (argc, argv);
@@ -425,6 +427,8 @@ main (int argc, char** argv)
     return runResume (argc, argv, *scheduler);
   if (first == "segment_profiles")
     return pcl_ext::apps::runProfileTiles (argc, argv, *scheduler);
+  if (first == "plan" && argc > 2 && std::string (argv[2]) == "segment_profiles")
+    return pcl_ext::apps::planProfileTiles (argc - 1, argv + 1);
   if (first == "plan") {
     std::unique_ptr<pcl_ext::apps::TileMethod> method;
     TileOptions options;
