@@ -6,6 +6,9 @@
 # before it saved: the estimates into the plan, the segments joined), then the merge, each
 # job waiting for the one before.
 # Without sbatch the same steps run here, one after another.
+# segment_profiles runs its passes over the parts one at a time, as each depends on what
+# the one before found (-method auto's choice, the curve ends): here the script waits for
+# every job (sbatch --wait), so keep it running (in a job of its own, or under nohup).
 #
 #   scripts/tiles_slurm.sh METHOD OUTPUT INPUT... [-- OPTIONS]
 #
@@ -24,7 +27,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
 
 if [ $# -lt 3 ] || [ "$1" = "-h" ] || [ "$1" = "--help" ]; then
-  sed -n '2,17p' "${BASH_SOURCE[0]}"
+  sed -n '2,20p' "${BASH_SOURCE[0]}"
   [ $# -ge 1 ] && { [ "$1" = "-h" ] || [ "$1" = "--help" ]; } && exit 0
   exit 2
 fi
@@ -50,6 +53,41 @@ if [ ! -x "$tool" ]; then
 fi
 workdir="${WORKDIR:-$output.tiles}"
 threads="${THREADS:-}"
+have_sbatch=0
+command -v sbatch >/dev/null 2>&1 && have_sbatch=1
+# shellcheck disable=SC2206
+extra=(${SBATCH_OPTIONS:-})
+task_threads="${threads:-\${SLURM_CPUS_PER_TASK:-0}}"
+q() { printf '%q' "$1"; }
+
+if [ "$method" = segment_profiles ]; then
+  "$tool" plan segment_profiles "${inputs[@]}" -workdir "$workdir" "${options[@]}"
+  setting() { awk -v k="$1" '$1 == "setting" && $2 == k { print $3 }' "$workdir/plan.txt"; }
+  [ "$have_sbatch" -eq 1 ] || echo "sbatch not found: running the parts here, one after another."
+  # A pass over every part, then its reduction, until the plan names the merge.
+  while [ "$(setting profile_stage)" != merge ]; do
+    stage="$(setting profile_stage)"
+    last=$(($(setting profile_part_count) - 1))
+    if [ "$have_sbatch" -eq 0 ]; then
+      for i in $(seq 0 "$last"); do
+        "$tool" part "$i" -workdir "$workdir" -threads "${threads:-0}"
+      done
+      "$tool" next -workdir "$workdir"
+    else
+      sbatch --wait --parsable "${extra[@]}" --job-name="pcl_ext_$stage" --array="0-$last" \
+        --wrap="$(q "$tool") part \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads" >/dev/null
+      sbatch --wait --parsable "${extra[@]}" --job-name=pcl_ext_next \
+        --wrap="$(q "$tool") next -workdir $(q "$workdir")" >/dev/null
+    fi
+  done
+  if [ "$have_sbatch" -eq 0 ]; then
+    exec "$tool" merge "$output" -workdir "$workdir"
+  fi
+  sbatch --wait --parsable "${extra[@]}" --job-name=pcl_ext_merge \
+    --wrap="$(q "$tool") merge $(q "$output") -workdir $(q "$workdir")" >/dev/null
+  echo "Done: $output"
+  exit 0
+fi
 
 "$tool" plan "$method" "${inputs[@]}" -workdir "$workdir" "${options[@]}"
 tiles=0
@@ -68,7 +106,7 @@ second_pass=0
 grow_pass=0
 [ -e "$workdir/grown.bin" ] && grow_pass=1
 
-if ! command -v sbatch >/dev/null 2>&1; then
+if [ "$have_sbatch" -eq 0 ]; then
   echo "sbatch not found: running the $tiles tiles here, one after another."
   for t in $(seq 0 "$last"); do
     "$tool" estimate "$t" -workdir "$workdir" -threads "${threads:-0}"
@@ -89,10 +127,6 @@ if ! command -v sbatch >/dev/null 2>&1; then
   exec "$tool" merge "$output" -workdir "$workdir"
 fi
 
-# shellcheck disable=SC2206
-extra=(${SBATCH_OPTIONS:-})
-task_threads="${threads:-\${SLURM_CPUS_PER_TASK:-0}}"
-q() { printf '%q' "$1"; }
 estimate=$(sbatch --parsable "${extra[@]}" --job-name=pcl_ext_estimate --array="0-$last" \
   --wrap="$(q "$tool") estimate \$SLURM_ARRAY_TASK_ID -workdir $(q "$workdir") -threads $task_threads")
 # A pass over the tiles after job $2: tile 0 alone first (in the tiles' pass it reduces the

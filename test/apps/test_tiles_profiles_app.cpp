@@ -3,6 +3,7 @@
  * or several MPI ranks, it gives pcl_ext_segment_profiles's bytes on the whole cloud.
  */
 #include "../app_test.h"
+#include "sbatch_shim.h"
 
 #include <pcl/io/pcd_io.h>
 #include <pcl/point_types.h>
@@ -14,7 +15,9 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 class TilesProfilesApp : public pcl_ext::test::AppTest {
@@ -188,6 +191,76 @@ TEST_F (TilesProfilesApp, AutoOnTouchingSurfacesFitsCurvesAndJoinsCylinders)
              0)
       << output_;
   expectSameBytes ("joined.pcd", "tj.pcd");
+}
+
+TEST_F (TilesProfilesApp, StepsAndTheSlurmScriptFollowTheCommandsPasses)
+{
+  // -method auto on coaxial pipes in steps: chains, the choice (curve fitting for a
+  // noisy scan: parts of the wider profiles planned again), the curve scores, the curve
+  // joins and the merge with the cylinder join, each pass named by the step before it.
+  // The merge before the passes and parts that do not exist are refused; a run stopped
+  // after one part resumes; the Slurm script loops over the passes. All give the whole
+  // cloud's bytes.
+  generate ("coaxial", "coaxial.pcd", 30000);
+  segmentWhole ("coaxial.pcd", "whole.pcd", "");
+  const std::string work = " -workdir '" + path ("work") + "' -threads 1";
+  ASSERT_EQ (run ("plan segment_profiles '" + path ("coaxial.pcd") + "'" + work +
+                  " -tile_size 1"),
+             0)
+      << output_;
+  std::string named = output_;
+  EXPECT_EQ (run ("merge '" + path ("early.pcd") + "'" + work), 1);
+  EXPECT_NE (output_.find ("is at 'chains'"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("early.pcd"));
+  std::vector<std::string> stages;
+  for (int pass = 0; pass < 6; ++pass) {
+    const std::size_t at = named.find ("Next: ");
+    ASSERT_NE (at, std::string::npos) << named;
+    std::istringstream next (named.substr (at + 6));
+    std::string stage, on;
+    std::size_t parts = 0;
+    next >> stage >> on >> parts;
+    stages.push_back (stage);
+    if (stage == "merge")
+      break;
+    ASSERT_GT (parts, 1u);
+    EXPECT_EQ (run ("part " + std::to_string (parts) + work), 1);
+    for (std::size_t i = 0; i < parts; ++i)
+      ASSERT_EQ (run ("part " + std::to_string (i) + work), 0) << output_;
+    ASSERT_EQ (run ("next" + work), 0) << output_;
+    named = output_;
+  }
+  EXPECT_EQ (
+      stages,
+      (std::vector<std::string>{"chains", "curve_scores", "curve_joins", "merge"}));
+  ASSERT_EQ (run ("merge '" + path ("steps.pcd") + "'" + work), 0) << output_;
+  EXPECT_NE (output_.find ("  2 cylinders joined"), std::string::npos) << output_;
+  expectSameBytes ("whole.pcd", "steps.pcd");
+
+  // Stopped after one part of the first pass: resume runs the passes left.
+  const std::string again = " -workdir '" + path ("again") + "' -threads 1";
+  ASSERT_EQ (run ("plan segment_profiles '" + path ("coaxial.pcd") + "'" + again), 0);
+  ASSERT_EQ (run ("part 0" + again), 0) << output_;
+  ASSERT_EQ (run ("resume '" + path ("resumed.pcd") + "'" + again), 0) << output_;
+  expectSameBytes ("whole.pcd", "resumed.pcd");
+
+  const std::string shims = path ("shims");
+  pcl_ext::test::writeSbatchShim (shims);
+  const std::string command =
+      "PATH=" + shims + ":$PATH PCL_EXT_TILES=" + PCL_EXT_TILES_EXE + " bash " +
+      PCL_EXT_SOURCE_DIR + "/scripts/tiles_slurm.sh segment_profiles '" +
+      path ("slurm.pcd") + "' '" + path ("coaxial.pcd") + "' -- -tile_size 1 > '" +
+      path ("slurm.log") + "' 2>&1";
+  ASSERT_EQ (std::system (command.c_str()), 0);
+  expectSameBytes ("whole.pcd", "slurm.pcd");
+  const std::vector<std::string> jobs = pcl_ext::test::sbatchJobs (shims);
+  ASSERT_EQ (jobs.size(), 7u);
+  for (const std::size_t pass : {0u, 2u, 4u}) {
+    EXPECT_EQ (jobs[pass].rfind ("array=0-", 0), 0u) << jobs[pass];
+    EXPECT_NE (jobs[pass].find (" part $SLURM_ARRAY_TASK_ID"), std::string::npos);
+    EXPECT_NE (jobs[pass + 1].find (" next"), std::string::npos) << jobs[pass + 1];
+  }
+  EXPECT_NE (jobs[6].find (" merge "), std::string::npos) << jobs[6];
 }
 
 TEST_F (TilesProfilesApp, InputsWithoutFinitePointsOrBadOptionsAreRefused)
