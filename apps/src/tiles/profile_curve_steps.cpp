@@ -241,18 +241,10 @@ labelCurveSegments (const tiling::TilePlan& plan,
                     JoinedParts& joined)
 {
   const std::uint64_t total = plan.getTotalPoints();
-  std::vector<std::vector<profiles::GraphEdge>> edges (parts.firsts.size());
   std::vector<std::uint8_t> breakpoints (total, 0);
-  std::vector<std::uint64_t> links;
   std::vector<std::uint32_t> flags;
   for (std::size_t s = 0; s < parts.firsts.size(); ++s) {
-    // The stack's edges in the order of its profiles, as the pipeline lists them.
     for (std::size_t p = 0; p < parts.firsts[s].size(); ++p) {
-      if (!readPartLinks (profilePartPath (workdir, s, p, "links"), links))
-        return false;
-      for (std::size_t k = 0; k < links.size(); k += 2)
-        edges[s].push_back ({static_cast<std::uint32_t> (links[k]),
-                             static_cast<std::uint32_t> (links[k + 1])});
       std::vector<unsigned char> bytes;
       if (!readWhole (profilePartPath (workdir, s, p, "absorbed"), bytes))
         return false;
@@ -278,19 +270,36 @@ labelCurveSegments (const tiling::TilePlan& plan,
           breakpoints[first + k] = 1;
     }
   }
+  flags = std::vector<std::uint32_t>();
+  // The edges read from the parts' links each time the labelling asks, a part at a
+  // time, stack after stack in the order of their profiles, as the pipeline lists them.
+  bool read = true;
+  const auto for_each_edge = [&] (const profiles::EdgeVisitor& visit) {
+    for (std::size_t s = 0; read && s < parts.firsts.size(); ++s)
+      for (std::size_t p = 0; read && p < parts.firsts[s].size(); ++p)
+        read = forEachPartLink (profilePartPath (workdir, s, p, "links"),
+                                total,
+                                [&visit] (std::uint64_t a, std::uint64_t b) {
+                                  visit (static_cast<std::uint32_t> (a),
+                                         static_cast<std::uint32_t> (b));
+                                });
+  };
   std::vector<std::uint32_t> labels;
-  profiles::labelSegments (total, edges, breakpoints, labels);
-  edges.clear();
-  breakpoints.clear();
+  profiles::labelSegments (total, for_each_edge, breakpoints, labels);
+  breakpoints = std::vector<std::uint8_t>();
+  if (!read)
+    return false;
   // Each label's first point is its root.
   std::vector<std::uint32_t> first (total, tiling::TileResults::kNoResult);
   joined.sets = UnionFind (total);
-  joined.size.assign (total, 0);
   for (std::uint32_t i = 0; i < total; ++i) {
     if (first[labels[i]] == tiling::TileResults::kNoResult)
       first[labels[i]] = i;
     joined.sets.unite (i, first[labels[i]]);
   }
+  labels = std::vector<std::uint32_t>();
+  first = std::vector<std::uint32_t>();
+  joined.size.assign (total, 0);
   if (!markFinitePoints (parts, workdir, joined.size))
     return false;
   countComponents (joined);

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <numeric>
 
@@ -76,19 +77,29 @@ writePartFile (const std::string& path, const void* data, std::size_t bytes)
 }
 
 bool
-readPartLinks (const std::string& path, std::vector<std::uint64_t>& links)
+forEachPartLink (const std::string& path,
+                 std::uint64_t points,
+                 const std::function<void (std::uint64_t, std::uint64_t)>& visit)
 {
-  links.clear();
   std::FILE* file = std::fopen (path.c_str(), "rb");
   if (!file) {
     std::cerr << "Error: " << path << " is missing: that part has not run.\n";
     return false;
   }
-  std::uint64_t buffer[8192];
+  // An even number of indices a read, so that a pair never straddles two.
+  std::vector<std::uint64_t> buffer (1 << 16);
   std::size_t n;
-  while ((n = std::fread (buffer, sizeof (std::uint64_t), 8192, file)) > 0)
-    links.insert (links.end(), buffer, buffer + n);
-  const bool ok = !std::ferror (file) && links.size() % 2 == 0;
+  bool ok = true;
+  while (ok && (n = std::fread (
+                    buffer.data(), sizeof (std::uint64_t), buffer.size(), file)) > 0) {
+    ok = n % 2 == 0;
+    for (std::size_t k = 0; ok && k < n; k += 2) {
+      ok = buffer[k] < points && buffer[k + 1] < points;
+      if (ok)
+        visit (buffer[k], buffer[k + 1]);
+    }
+  }
+  ok = ok && !std::ferror (file);
   std::fclose (file);
   if (!ok)
     std::cerr << "Error: " << path << " is broken.\n";
@@ -247,22 +258,18 @@ joinParts (const tiling::TilePlan& plan,
   joined.sets = UnionFind (total);
   joined.size.assign (total, 0);
   joined.largest = 0;
-  std::vector<std::uint64_t> links;
   if (!markFinitePoints (parts, workdir, joined.size))
     return false;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     std::size_t s, p;
     parts.locate (i, s, p);
-    if (!readPartLinks (profilePartPath (workdir, s, p, "links"), links))
+    if (!forEachPartLink (profilePartPath (workdir, s, p, "links"),
+                          total,
+                          [&joined] (std::uint64_t a, std::uint64_t b) {
+                            joined.sets.unite (static_cast<std::uint32_t> (a),
+                                               static_cast<std::uint32_t> (b));
+                          }))
       return false;
-    for (std::size_t k = 0; k < links.size(); k += 2) {
-      if (links[k] >= total || links[k + 1] >= total) {
-        std::cerr << "Error: part " << i << "'s links are broken.\n";
-        return false;
-      }
-      joined.sets.unite (static_cast<std::uint32_t> (links[k]),
-                         static_cast<std::uint32_t> (links[k + 1]));
-    }
   }
   countComponents (joined);
   return true;

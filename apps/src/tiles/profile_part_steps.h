@@ -12,6 +12,7 @@
 #include <pcl_ext/tiling/tile_plan.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,10 +46,13 @@ setUpPart (const ProfileFrame& frame,
 bool
 writePartFile (const std::string& path, const void* data, std::size_t bytes);
 
-/** \brief Read the pairs of global indices of a part's "links" file. \return false
- * (message printed) when missing (the part has not run) or broken */
+/** \brief \a visit every pair of global indices of a part's "links" file, read in
+ * blocks. \return false (message printed) when missing (the part has not run) or
+ * broken (an odd count, an index not below \a points) */
 bool
-readPartLinks (const std::string& path, std::vector<std::uint64_t>& links);
+forEachPartLink (const std::string& path,
+                 std::uint64_t points,
+                 const std::function<void (std::uint64_t, std::uint64_t)>& visit);
 
 /** \brief The local gap of every point of part \a i in its stack (the pass's settings),
  * saved at the points' global indices (the file of its stack, gapsFileName) with the

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace pcl_ext {
@@ -33,6 +34,23 @@ struct GraphEdge {
 std::size_t
 labelSegments (std::size_t num_points,
                const std::vector<std::vector<GraphEdge>>& stack_edges,
+               const std::vector<std::uint8_t>& breakpoints,
+               std::vector<std::uint32_t>& labels);
+
+/** \brief Called with every edge (source, target). */
+using EdgeVisitor = std::function<void (std::uint32_t, std::uint32_t)>;
+/** \brief Calls its visitor with every edge of every stack, stack after stack, in the
+ * same order every time it is called. */
+using ForEachEdge = std::function<void (const EdgeVisitor&)>;
+
+/** \brief labelSegments over edges that are not held: \a for_each_edge streams them
+ * (from files, say) up to three times. Besides the labels it holds about 13 bytes a
+ * point, and the edges of the points that join a segment through the waves (the
+ * breakpoints and the components without interior) with their neighbours. The same
+ * labels as labelSegments over the same edges in the same order. */
+std::size_t
+labelSegments (std::size_t num_points,
+               const ForEachEdge& for_each_edge,
                const std::vector<std::uint8_t>& breakpoints,
                std::vector<std::uint32_t>& labels);
 } // namespace profiles
