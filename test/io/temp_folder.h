@@ -7,18 +7,28 @@
 #include <gtest/gtest.h>
 
 #include <dirent.h>
+#include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
+/** A folder of this process for \a name, emptied the first time the process asks for
+ * it: a folder of an earlier process with the same id (ids are reused) would hold its
+ * files. */
 inline std::string
 freshFolder (const std::string& name)
 {
   const std::string dir =
       testing::TempDir() + "/pcl_ext_" + name + "_" + std::to_string (::getpid());
+  static std::set<std::string> made;
+  if (made.insert (dir).second) {
+    std::error_code ignored;
+    std::filesystem::remove_all (dir, ignored);
+  }
   ::mkdir (dir.c_str(), 0755);
   return dir;
 }
