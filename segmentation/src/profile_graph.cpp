@@ -153,15 +153,18 @@ labelSegments (std::size_t n,
       root[open_points[p]] = sets.find (open_points[p]);
   }
 
-  labels.assign (n, 0);
+  // The components numbered in order of first vertex, in place of the roots (the sets
+  // are not needed any more: their memory goes to the numbering).
+  sets = UnionFind();
   std::vector<std::uint32_t> number (n, kNone);
   std::uint32_t count = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
     std::uint32_t& id = number[root[i]];
     if (id == kNone)
       id = count++;
-    labels[i] = id;
+    root[i] = id;
   }
+  labels.swap (root);
   return count;
 }
 } // namespace profiles

@@ -289,16 +289,20 @@ labelCurveSegments (const tiling::TilePlan& plan,
   breakpoints = std::vector<std::uint8_t>();
   if (!read)
     return false;
-  // Each label's first point is its root.
-  std::vector<std::uint32_t> first (total, tiling::TileResults::kNoResult);
+  // Each label's first point is its root. The labels are numbered in order of first
+  // point, so label l's first point is at or after l: it is kept at labels[l], whose
+  // own label has been read by then.
   joined.sets = UnionFind (total);
+  std::uint32_t count = 0;
   for (std::uint32_t i = 0; i < total; ++i) {
-    if (first[labels[i]] == tiling::TileResults::kNoResult)
-      first[labels[i]] = i;
-    joined.sets.unite (i, first[labels[i]]);
+    const std::uint32_t label = labels[i];
+    if (label == count) {
+      labels[label] = i;
+      ++count;
+    }
+    joined.sets.unite (i, labels[label]);
   }
   labels = std::vector<std::uint32_t>();
-  first = std::vector<std::uint32_t>();
   joined.size.assign (total, 0);
   if (!markFinitePoints (parts, workdir, joined.size))
     return false;

@@ -54,7 +54,7 @@ joinPartCurves (const ProfileFrame& frame,
 
 /** \brief The segments of every part's edges and every stack's breakpoints
  * (profiles::labelSegments over all points, the edges read from the parts' files each
- * time it asks; about 20 bytes a point and the edges of the points the waves join), as
+ * time it asks; about 12 bytes a point and the edges of the points the waves join), as
  * joined components for saveSegments. \return false (message printed) on error */
 bool
 labelCurveSegments (const tiling::TilePlan& plan,

@@ -44,7 +44,7 @@ using EdgeVisitor = std::function<void (std::uint32_t, std::uint32_t)>;
 using ForEachEdge = std::function<void (const EdgeVisitor&)>;
 
 /** \brief labelSegments over edges that are not held: \a for_each_edge streams them
- * (from files, say) up to three times. Besides the labels it holds about 13 bytes a
+ * (from files, say) up to three times. Besides the labels it holds about 9 bytes a
  * point, and the edges of the points that join a segment through the waves (the
  * breakpoints and the components without interior) with their neighbours. The same
  * labels as labelSegments over the same edges in the same order. */
