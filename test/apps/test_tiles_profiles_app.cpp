@@ -237,10 +237,28 @@ TEST_F (TilesProfilesApp, StepsAndTheSlurmScriptFollowTheCommandsPasses)
   EXPECT_NE (output_.find ("  2 cylinders joined"), std::string::npos) << output_;
   expectSameBytes ("whole.pcd", "steps.pcd");
 
-  // Stopped after one part of the first pass: resume runs the passes left.
+  // Stopped after one part of the first pass, whose links file then lost a value: the
+  // reduction names the broken file; a plan that stopped while its parts were written
+  // again is refused; resume runs the passes left.
   const std::string again = " -workdir '" + path ("again") + "' -threads 1";
   ASSERT_EQ (run ("plan segment_profiles '" + path ("coaxial.pcd") + "'" + again), 0);
   ASSERT_EQ (run ("part 0" + again), 0) << output_;
+  const std::string links = path ("again/profiles_0_0.links");
+  const std::string good = bytes ("again/profiles_0_0.links");
+  ASSERT_GT (good.size(), 8u);
+  std::ofstream (links, std::ios::binary) << good.substr (0, good.size() - 8);
+  EXPECT_EQ (run ("next" + again), 1);
+  EXPECT_NE (output_.find ("profiles_0_0.links is broken"), std::string::npos)
+      << output_;
+  const std::string plan = bytes ("again/plan.txt");
+  const std::string stage = "setting profile_stage chains";
+  ASSERT_NE (plan.find (stage), std::string::npos) << plan;
+  std::string stopped = plan;
+  stopped.replace (plan.find (stage), stage.size(), "setting profile_stage replanning");
+  std::ofstream (path ("again/plan.txt")) << stopped;
+  EXPECT_EQ (run ("part 0" + again), 1);
+  EXPECT_NE (output_.find ("plan it again"), std::string::npos) << output_;
+  std::ofstream (path ("again/plan.txt")) << plan;
   ASSERT_EQ (run ("resume '" + path ("resumed.pcd") + "'" + again), 0) << output_;
   expectSameBytes ("whole.pcd", "resumed.pcd");
 

@@ -28,38 +28,6 @@ constexpr std::size_t kRankBins = std::size_t (1) << 20;
 /** At most this many points are held to resolve the samples' ranks. */
 constexpr std::size_t kMaxRankPoints = std::size_t (1) << 24;
 
-std::string
-joinValues (const double* values, std::size_t n, int digits)
-{
-  std::string text;
-  char buffer[64];
-  for (std::size_t i = 0; i < n; ++i) {
-    std::snprintf (buffer, sizeof (buffer), "%.*g", digits, values[i]);
-    text += (i ? " " : "") + std::string (buffer);
-  }
-  return text;
-}
-
-bool
-parseValues (const std::map<std::string, std::string>& settings,
-             const std::string& key,
-             std::vector<double>& values)
-{
-  values.clear();
-  const auto it = settings.find (key);
-  if (it == settings.end())
-    return false;
-  std::istringstream in (it->second);
-  std::string word;
-  while (in >> word) {
-    char* end = nullptr;
-    values.push_back (std::strtod (word.c_str(), &end));
-    if (end == word.c_str() || *end != '\0')
-      return false;
-  }
-  return true;
-}
-
 /** An entry of a sample's neighbours: squared distance, then global index, as the
  * untiled sweep orders them (by position in the cloud, which follows the index). */
 struct Neighbour {
@@ -250,6 +218,38 @@ searchSamples (InputPasses& inputs,
   return result;
 }
 } // namespace
+
+std::string
+joinValues (const double* values, std::size_t n, int digits)
+{
+  std::string text;
+  char buffer[64];
+  for (std::size_t i = 0; i < n; ++i) {
+    std::snprintf (buffer, sizeof (buffer), "%.*g", digits, values[i]);
+    text += (i ? " " : "") + std::string (buffer);
+  }
+  return text;
+}
+
+bool
+parseValues (const std::map<std::string, std::string>& settings,
+             const std::string& key,
+             std::vector<double>& values)
+{
+  values.clear();
+  const auto it = settings.find (key);
+  if (it == settings.end())
+    return false;
+  std::istringstream in (it->second);
+  std::string word;
+  while (in >> word) {
+    char* end = nullptr;
+    values.push_back (std::strtod (word.c_str(), &end));
+    if (end == word.c_str() || *end != '\0')
+      return false;
+  }
+  return true;
+}
 
 void
 ProfileFrame::saveTo (std::map<std::string, std::string>& settings) const

@@ -87,6 +87,17 @@ estimateProfileFrame (InputPasses& inputs,
                       double width_factor,
                       ProfileFrame& frame);
 
+/** \brief \a n values as a plan setting's text, \a digits significant digits each. */
+std::string
+joinValues (const double* values, std::size_t n, int digits);
+
+/** \brief The values of a plan setting \a key written by joinValues. \return false when
+ * it is missing or not a list of numbers */
+bool
+parseValues (const std::map<std::string, std::string>& settings,
+             const std::string& key,
+             std::vector<double>& values);
+
 /** \brief The point as ProfileSegmentation computes it: relative to the centre, in
  * float. */
 inline Eigen::Vector3f

@@ -6,12 +6,12 @@
 #include "merge_output.h"
 #include "profile_curve_steps.h"
 #include "profile_cylinder_join.h"
+#include "tile_steps.h"
 
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/segmentation/profile_stacks.h>
 #include <pcl_ext/tiling/tile_results.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -39,12 +39,6 @@ constexpr const char* kTolerancesSetting = "profile_junction_tolerances";
 /** The stage while the parts are written again for -method auto's new width. */
 constexpr const char* kReplanning = "replanning";
 
-std::string
-planFile (const std::string& workdir)
-{
-  return workdir + "/plan.txt";
-}
-
 /** Remove what an earlier run left in \a workdir: only the names this run writes. */
 bool
 clearWorkdir (const std::string& workdir)
@@ -69,29 +63,6 @@ clearWorkdir (const std::string& workdir)
     return false;
   }
   return true;
-}
-
-std::string
-joinValues (const std::vector<double>& values)
-{
-  std::string text;
-  char value[32];
-  for (const double v : values) {
-    std::snprintf (value, sizeof (value), "%.17g", v);
-    text += (text.empty() ? "" : " ") + std::string (value);
-  }
-  return text;
-}
-
-std::vector<double>
-splitValues (const std::string& text)
-{
-  std::vector<double> values;
-  std::istringstream in (text);
-  double v;
-  while (in >> v)
-    values.push_back (v);
-  return values;
 }
 
 std::string
@@ -187,7 +158,7 @@ startStage (tiling::TilePlan& plan,
       !createGapFiles (workdir, parts.firsts.size(), plan.getTotalPoints()))
     return false;
   plan.settings[kStageSetting] = stageName (next);
-  return tiling::saveTilePlan (planFile (workdir), plan);
+  return tiling::saveTilePlan (planPath (workdir), plan);
 }
 
 /** The run's state from its loaded plan and options. */
@@ -226,8 +197,12 @@ deriveRun (ProfileRun& run)
     }
   }
   run.pass.local_threshold = run.options.local_threshold;
-  run.pass.mean_gaps = splitValues (setting (kMeanGapsSetting));
-  run.junction_tolerances = splitValues (setting (kTolerancesSetting));
+  // Absent until their pass has run.
+  if ((settings.count (kMeanGapsSetting) &&
+       !parseValues (settings, kMeanGapsSetting, run.pass.mean_gaps)) ||
+      (settings.count (kTolerancesSetting) &&
+       !parseValues (settings, kTolerancesSetting, run.junction_tolerances)))
+    return false;
   const std::size_t stacks = run.frame.normals.size();
   return (run.pass.mean_gaps.empty() || run.pass.mean_gaps.size() == stacks) &&
          (run.junction_tolerances.empty() ||
@@ -285,12 +260,17 @@ afterSegmentation (ProfileRun& run,
     // Marked, so that a run that dies while the part files change is not resumed on
     // files its plan does not describe.
     settings[kStageSetting] = kReplanning;
-    if (!tiling::saveTilePlan (planFile (workdir), run.plan))
+    if (!tiling::saveTilePlan (planPath (workdir), run.plan))
       return false;
     try {
       run.frame.width = width;
-      const double thickness = std::stod (settings.at (kThicknessSetting));
-      if (!writeParts (run.plan, run.frame, thickness, workdir, run.parts))
+      std::vector<double> thickness;
+      if (!parseValues (settings, kThicknessSetting, thickness) ||
+          thickness.size() != 1) {
+        std::cerr << "Error: the plan in " << workdir << " has no part thickness.\n";
+        return false;
+      }
+      if (!writeParts (run.plan, run.frame, thickness.front(), workdir, run.parts))
         return false;
     }
     catch (const std::exception& e) {
@@ -363,17 +343,12 @@ planProfileRun (const std::vector<std::string>& inputs,
     if (!estimateProfileFrame (
             passes, normals, sample, options.width, options.width_factor, frame))
       return false;
-    char value[32];
-    std::snprintf (value, sizeof (value), "%.17g", thickness);
-    plan.settings[kThicknessSetting] = value;
+    plan.settings[kThicknessSetting] = joinValues (&thickness, 1, 17);
     ProfileParts parts;
     if (!writeParts (plan, frame, thickness, workdir, parts))
       return false;
     plan.settings["method"] = kMethod;
-    std::string text;
-    for (const auto& a : arguments)
-      text += (text.empty() ? "" : "\t") + a;
-    plan.settings["arguments"] = text;
+    plan.settings["arguments"] = joinArguments (arguments);
     const bool curves =
         !options.automatic() &&
         options.method == ProfileOptions::Segmentation::ProfileMethod::CurveFitting;
@@ -398,7 +373,7 @@ loadProfileRun (const std::string& workdir,
                 ProfileRun& run)
 {
   run = ProfileRun();
-  if (!tiling::loadTilePlan (planFile (workdir), run.plan))
+  if (!tiling::loadTilePlan (planPath (workdir), run.plan))
     return false;
   if (run.plan.settings["method"] != kMethod) {
     std::cerr << "Error: the plan in " << workdir << " is not segment_profiles'.\n";
@@ -412,10 +387,8 @@ loadProfileRun (const std::string& workdir,
   }
   run.options.addTo (cl);
   field.addTo (cl);
-  std::vector<std::string> args{"pcl_ext_tiles"};
-  std::istringstream in (run.plan.settings["arguments"]);
-  for (std::string a; std::getline (in, a, '\t');)
-    args.push_back (a);
+  std::vector<std::string> args = splitArguments (run.plan.settings["arguments"]);
+  args.insert (args.begin(), "pcl_ext_tiles");
   std::vector<const char*> argv;
   for (const auto& a : args)
     argv.push_back (a.c_str());
@@ -484,7 +457,8 @@ advanceProfileRun (ProfileRun& run,
   case ProfileStage::LocalGaps:
     if (!reduceGaps (run.plan, run.parts, workdir, run.pass.mean_gaps))
       return false;
-    settings[kMeanGapsSetting] = joinValues (run.pass.mean_gaps);
+    settings[kMeanGapsSetting] =
+        joinValues (run.pass.mean_gaps.data(), run.pass.mean_gaps.size(), 17);
     next = run.curves ? ProfileStage::CurveScores : ProfileStage::Chains;
     break;
   case ProfileStage::CurveScores:
@@ -495,7 +469,8 @@ advanceProfileRun (ProfileRun& run,
                         workdir,
                         run.junction_tolerances))
       return false;
-    settings[kTolerancesSetting] = joinValues (run.junction_tolerances);
+    settings[kTolerancesSetting] =
+        joinValues (run.junction_tolerances.data(), run.junction_tolerances.size(), 17);
     next = ProfileStage::CurveJoins;
     break;
   case ProfileStage::Chains:

@@ -4,6 +4,7 @@
  */
 #include "profile_tiles.h"
 #include "profile_stages.h"
+#include "tile_steps.h"
 
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/output.h>
@@ -238,7 +239,7 @@ bool
 isProfilePlan (int argc, char** argv)
 {
   const std::string workdir = workdirArgument (argc, argv);
-  std::ifstream plan (workdir + "/plan.txt");
+  std::ifstream plan (planPath (workdir));
   for (std::string line; !workdir.empty() && std::getline (plan, line);)
     if (line == "setting method segment_profiles")
       return true;

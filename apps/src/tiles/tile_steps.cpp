@@ -36,15 +36,6 @@ namespace {
  * (docs/tiles.md has the measurements). */
 constexpr std::uint64_t kPointsPerTile = 2500000;
 
-std::string
-joinArguments (const std::vector<std::string>& args)
-{
-  std::string text;
-  for (const auto& a : args)
-    text += (text.empty() ? "" : "\t") + a;
-  return text;
-}
-
 /** A halo for \a reach from the first million points of \a input: the 99th percentile
  * of the neighbourhood radii of a sample of them, through every step a result reaches,
  * with a quarter more (and, for a method that searches by itself, its radius added). A
@@ -130,6 +121,17 @@ removeEarlierRun (const std::string& workdir)
   return true;
 }
 
+} // namespace
+
+std::string
+joinArguments (const std::vector<std::string>& args)
+{
+  std::string text;
+  for (const auto& a : args)
+    text += (text.empty() ? "" : "\t") + a;
+  return text;
+}
+
 std::vector<std::string>
 splitArguments (const std::string& text)
 {
@@ -140,7 +142,6 @@ splitArguments (const std::string& text)
     args.push_back (a);
   return args;
 }
-} // namespace
 
 std::string
 planPath (const std::string& workdir)

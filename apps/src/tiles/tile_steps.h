@@ -27,6 +27,14 @@ constexpr const char* kExtraValues = "extra";
 std::vector<tiling::SegmentSize>
 segmentSizes (const TileCloud& cloud, const std::vector<std::uint32_t>& labels);
 
+/** \brief A method's options as one plan setting (tab-separated). */
+std::string
+joinArguments (const std::vector<std::string>& args);
+
+/** \brief The options joined by joinArguments. */
+std::vector<std::string>
+splitArguments (const std::string& text);
+
 /** \brief The plan's file in a work folder. */
 std::string
 planPath (const std::string& workdir);
