@@ -12,6 +12,7 @@ pcl_ext_add_app(tiles
     src/tiles/profile_part_steps.cpp
     src/tiles/profile_curve_steps.cpp
     src/tiles/profile_cylinder_join.cpp
+    src/tiles/segment_points_file.cpp
     src/tiles/second_pass_steps.cpp
     src/tiles/tile_intersections.cpp
     src/tiles/tile_outputs.cpp

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 
 namespace pcl_ext {
 namespace cylinder_join {
@@ -37,15 +38,47 @@ segmentSeed (std::uint64_t seed, std::size_t segment)
   return splitMix64 (seed + 0x9E3779B97F4A7C15ull * segment);
 }
 
+/** The coordinates of the inliers of \a run's pieces, segment by segment in ascending
+ * order and by index within a segment (the order of their positions when the segments
+ * lie one after the other), each segment loaded once. \return false when the source
+ * fails */
+bool
+gatherRunInliers (const SegmentSource& source,
+                  const std::vector<Piece>& pieces,
+                  const std::vector<std::uint32_t>& run,
+                  std::vector<Eigen::Vector3d>& subset)
+{
+  subset.clear();
+  std::map<std::uint32_t, std::vector<std::uint32_t>> by_segment;
+  for (const auto k : run)
+    by_segment[pieces[k].segment].push_back (k);
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::uint32_t> inliers;
+  for (const auto& [segment, held] : by_segment) {
+    if (!source.load (segment, points))
+      return false;
+    inliers.clear();
+    for (const auto k : held)
+      inliers.insert (inliers.end(),
+                      pieces[k].cylinder.inliers.begin(),
+                      pieces[k].cylinder.inliers.end());
+    std::sort (inliers.begin(), inliers.end());
+    for (const auto i : inliers)
+      subset.push_back (points[i]);
+  }
+  return true;
+}
+
 /** Refits each straight run (pieces joined as continuations along one axis, not
  * through an elbow) as one cylinder, or cone, over all its pieces' inliers, and gives
  * each piece the run's axis, radius and taper over its own extent. A piece alone is
  * often a short strip seen from one side (the underside of a pipe next to a support),
  * whose radius its own points fix poorly: the narrower the arc, the more the radius
  * trades against the axis's position. All the run's points fix it. A run whose fit
- * degenerates or leaves the radius or taper range keeps its pieces' own fits. */
-void
-refitStraightRuns (const std::vector<Eigen::Vector3d>& xyz,
+ * degenerates or leaves the radius or taper range keeps its pieces' own fits. \return
+ * false when the source fails */
+bool
+refitStraightRuns (const SegmentSource& source,
                    const JoinParameters& p,
                    UnionFind& runs,
                    std::vector<Piece>& pieces)
@@ -54,34 +87,36 @@ refitStraightRuns (const std::vector<Eigen::Vector3d>& xyz,
   std::map<std::uint32_t, std::vector<std::uint32_t>> members; // root -> pieces
   for (std::uint32_t k = 0; k < n; ++k)
     members[runs.find (k)].push_back (k);
-  std::vector<std::uint32_t> subset;
+  std::vector<Eigen::Vector3d> subset, points;
+  std::vector<std::uint32_t> all;
   for (const auto& [root, run] : members) {
     if (run.size() < 2)
       continue;
     // Started from the piece with most inliers, the best fitted alone.
     std::uint32_t largest = run.front();
-    subset.clear();
-    for (const auto k : run) {
-      const auto& inliers = pieces[k].cylinder.inliers;
-      subset.insert (subset.end(), inliers.begin(), inliers.end());
-      if (inliers.size() > pieces[largest].cylinder.inliers.size())
+    for (const auto k : run)
+      if (pieces[k].cylinder.inliers.size() > pieces[largest].cylinder.inliers.size())
         largest = k;
-    }
-    std::sort (subset.begin(), subset.end());
+    if (!gatherRunInliers (source, pieces, run, subset))
+      return false;
+    all.resize (subset.size());
+    std::iota (all.begin(), all.end(), 0u);
     const cylinders::Cylinder& start = pieces[largest].cylinder;
     Eigen::Vector3d point = start.point, axis = start.axis;
     const bool cone = p.detection.max_taper > 0.0;
     double radius = start.radius, taper = cone ? start.taper : 0.0;
     if (!cylinders::refineCylinder (
-            xyz, subset, point, axis, radius, cone ? &taper : nullptr) ||
+            subset, all, point, axis, radius, cone ? &taper : nullptr) ||
         radius < p.detection.min_radius || radius > p.detection.max_radius ||
         std::abs (taper) > p.detection.max_taper)
       continue;
     for (const auto k : run) {
       cylinders::Cylinder& c = pieces[k].cylinder;
+      if (!source.load (pieces[k].segment, points))
+        return false;
       double t_min = std::numeric_limits<double>::infinity(), t_max = -t_min;
       for (const auto i : c.inliers) {
-        const double t = (xyz[i] - point).dot (axis);
+        const double t = (points[i] - point).dot (axis);
         t_min = std::min (t_min, t);
         t_max = std::max (t_max, t);
       }
@@ -93,7 +128,43 @@ refitStraightRuns (const std::vector<Eigen::Vector3d>& xyz,
       c.half_length = 0.5 * (t_max - t_min);
     }
   }
+  return true;
 }
+
+/** The segments of joinCylinderSegments, held in memory: each segment's positions in
+ * \a xyz. */
+class HeldSegments : public SegmentSource {
+public:
+  HeldSegments (const std::vector<Eigen::Vector3d>& xyz,
+                const std::vector<std::vector<std::uint32_t>>& members)
+  : xyz_ (xyz), members_ (members)
+  {}
+
+  std::size_t
+  size () const override
+  {
+    return members_.size();
+  }
+
+  std::size_t
+  pointCount (std::size_t s) const override
+  {
+    return members_[s].size();
+  }
+
+  bool
+  load (std::size_t s, std::vector<Eigen::Vector3d>& points) const override
+  {
+    points.resize (members_[s].size());
+    for (std::size_t k = 0; k < points.size(); ++k)
+      points[k] = xyz_[members_[s][k]];
+    return true;
+  }
+
+private:
+  const std::vector<Eigen::Vector3d>& xyz_;
+  const std::vector<std::vector<std::uint32_t>>& members_;
+};
 } // namespace
 
 bool
@@ -152,6 +223,141 @@ continues (const cylinders::Cylinder& a,
 }
 
 bool
+joinSegments (const SegmentSource& source, const JoinParameters& p, SegmentJoin& result)
+{
+  result = SegmentJoin();
+  if (!validParameters (p))
+    return false;
+  const std::size_t segment_count = source.size();
+  if (segment_count >= kNoSegment / 2)
+    return false;
+
+  // The cylinders of each segment, in its slot: deterministic for any number of
+  // threads.
+  std::vector<std::vector<cylinders::Cylinder>> found (segment_count);
+  bool loaded = true;
+#pragma omp parallel num_threads(static_cast <int> (p.threads))
+  {
+    std::vector<Eigen::Vector3d> points;
+#pragma omp for schedule(dynamic, 1)
+    for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t> (segment_count); ++s) {
+      if (source.pointCount (s) < p.detection.min_points)
+        continue;
+      if (!source.load (s, points)) {
+#pragma omp atomic write
+        loaded = false;
+        continue;
+      }
+      cylinders::DetectionParameters detection = p.detection;
+      detection.seed = segmentSeed (p.detection.seed, static_cast<std::size_t> (s));
+      cylinders::detectCylinders (points, detection, found[s]);
+    }
+  }
+  if (!loaded)
+    return false;
+  for (std::uint32_t s = 0; s < segment_count; ++s)
+    for (auto& cylinder : found[s]) {
+      Piece piece;
+      piece.segment = s;
+      piece.cylinder = std::move (cylinder);
+      result.pieces.push_back (std::move (piece));
+    }
+  found.clear();
+
+  // Groups of pieces that continue one another, and within them the straight runs
+  // (pieces joined along one axis), each refitted as one cylinder.
+  std::vector<Piece>& pieces = result.pieces;
+  const std::size_t n = pieces.size();
+  const double parallel = std::cos (p.max_axis_angle);
+  UnionFind sets (n), runs (n);
+  for (std::uint32_t a = 0; a < n; ++a)
+    for (std::uint32_t b = a + 1; b < n; ++b) {
+      const cylinders::Cylinder &ca = pieces[a].cylinder, &cb = pieces[b].cylinder;
+      if (!continues (ca, cb, p))
+        continue;
+      sets.unite (a, b);
+      if (std::abs (ca.axis.dot (cb.axis)) >= parallel)
+        runs.unite (a, b);
+    }
+  if (!refitStraightRuns (source, p, runs, pieces))
+    return false;
+  std::vector<std::uint32_t> root_of (n), group_size (n, 0);
+  for (std::uint32_t k = 0; k < n; ++k)
+    ++group_size[root_of[k] = sets.find (k)];
+
+  // Which joined groups each segment holds pieces of, and how much of it each covers.
+  std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>>
+      cover; // segment -> root -> points
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const std::uint32_t root = root_of[k];
+    if (group_size[root] >= 2)
+      cover[pieces[k].segment][root] += pieces[k].cylinder.inliers.size();
+  }
+  std::uint32_t next = static_cast<std::uint32_t> (segment_count);
+  std::vector<std::uint32_t> label_of_root (n, kNoSegment);
+  result.whole.assign (segment_count, kNoSegment);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const std::uint32_t root = root_of[k];
+    if (group_size[root] < 2)
+      continue;
+    if (label_of_root[root] == kNoSegment)
+      label_of_root[root] = next++;
+    const std::uint32_t label = label_of_root[root];
+    pieces[k].joined = label;
+    const auto& held = cover[pieces[k].segment];
+    if (held.size() == 1 &&
+        static_cast<double> (held.begin()->second) >=
+            p.whole_segment_fraction * source.pointCount (pieces[k].segment))
+      result.whole[pieces[k].segment] = label;
+  }
+  result.labels = next;
+
+  // Segments without a piece of their own that lie on a joined group's surface, between
+  // or next to its pieces (the fragments a segmenter leaves where a branch leaves a
+  // trunk): they join the group whole when most of their points are on it.
+  std::vector<std::uint32_t> joined_pieces;
+  for (std::uint32_t k = 0; k < n; ++k)
+    if (group_size[root_of[k]] >= 2)
+      joined_pieces.push_back (k);
+  if (p.absorb_fraction <= 0.0 || joined_pieces.empty())
+    return true;
+  const double tol = p.detection.distance_tolerance;
+#pragma omp parallel num_threads(static_cast <int> (p.threads))
+  {
+    std::vector<Eigen::Vector3d> points;
+    std::vector<std::size_t> on;
+#pragma omp for schedule(dynamic, 1)
+    for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t> (segment_count); ++s) {
+      const std::size_t size = source.pointCount (s);
+      if (cover.count (static_cast<std::uint32_t> (s)) || size == 0)
+        continue;
+      if (!source.load (s, points)) {
+#pragma omp atomic write
+        loaded = false;
+        continue;
+      }
+      on.assign (n, 0);
+      for (const auto& q : points)
+        for (const auto k : joined_pieces) {
+          const cylinders::Cylinder& c = pieces[k].cylinder;
+          const Eigen::Vector3d w = q - c.point;
+          const double t = w.dot (c.axis);
+          if (std::abs (t) > c.half_length + p.max_gap)
+            continue;
+          if (std::abs ((w - t * c.axis).norm() - (c.radius + c.taper * t)) <= tol) {
+            ++on[root_of[k]];
+            break;
+          }
+        }
+      const auto most = std::max_element (on.begin(), on.end());
+      if (static_cast<double> (*most) >= p.absorb_fraction * size)
+        result.whole[s] = label_of_root[most - on.begin()];
+    }
+  }
+  return loaded;
+}
+
+bool
 joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
                       const std::vector<std::vector<std::uint32_t>>& segments,
                       const JoinParameters& p,
@@ -175,120 +381,23 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
     if (result.labels[i] != kNoSegment)
       members[result.labels[i]].push_back (i);
 
-  // The cylinders of each segment, in its slot: deterministic for any number of
-  // threads.
-  std::vector<std::vector<cylinders::Cylinder>> found (segments.size());
-#pragma omp parallel num_threads(static_cast <int> (p.threads))
-  {
-    std::vector<Eigen::Vector3d> points;
-#pragma omp for schedule(dynamic, 1)
-    for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t> (segments.size()); ++s) {
-      const auto& own = members[s];
-      if (own.size() < p.detection.min_points)
-        continue;
-      points.resize (own.size());
-      for (std::size_t k = 0; k < own.size(); ++k)
-        points[k] = xyz[own[k]];
-      cylinders::DetectionParameters detection = p.detection;
-      detection.seed = segmentSeed (p.detection.seed, static_cast<std::size_t> (s));
-      cylinders::detectCylinders (points, detection, found[s]);
-      for (auto& cylinder : found[s])
-        for (auto& i : cylinder.inliers)
-          i = own[i];
-    }
-  }
+  SegmentJoin join;
+  if (!joinSegments (HeldSegments (xyz, members), p, join))
+    return false;
   for (std::uint32_t s = 0; s < segments.size(); ++s)
-    for (auto& cylinder : found[s]) {
-      Piece piece;
-      piece.segment = s;
-      piece.cylinder = std::move (cylinder);
-      result.pieces.push_back (std::move (piece));
-    }
-
-  // Groups of pieces that continue one another, and within them the straight runs
-  // (pieces joined along one axis), each refitted as one cylinder.
-  const std::size_t n = result.pieces.size();
-  const double parallel = std::cos (p.max_axis_angle);
-  UnionFind sets (n), runs (n);
-  for (std::uint32_t a = 0; a < n; ++a)
-    for (std::uint32_t b = a + 1; b < n; ++b) {
-      const cylinders::Cylinder &ca = result.pieces[a].cylinder,
-                                &cb = result.pieces[b].cylinder;
-      if (!continues (ca, cb, p))
-        continue;
-      sets.unite (a, b);
-      if (std::abs (ca.axis.dot (cb.axis)) >= parallel)
-        runs.unite (a, b);
-    }
-  refitStraightRuns (xyz, p, runs, result.pieces);
-  std::vector<std::uint32_t> group_size (n, 0);
-  for (std::uint32_t k = 0; k < n; ++k)
-    ++group_size[sets.find (k)];
-
-  // Which joined groups each segment holds pieces of, and how much of it each covers.
-  std::map<std::uint32_t, std::map<std::uint32_t, std::size_t>>
-      cover; // segment -> root -> points
-  for (std::uint32_t k = 0; k < n; ++k) {
-    const std::uint32_t root = sets.find (k);
-    if (group_size[root] >= 2)
-      cover[result.pieces[k].segment][root] += result.pieces[k].cylinder.inliers.size();
-  }
-  std::uint32_t next = static_cast<std::uint32_t> (segments.size());
-  std::vector<std::uint32_t> label_of_root (n, kNoSegment);
-  for (std::uint32_t k = 0; k < n; ++k) {
-    Piece& piece = result.pieces[k];
-    const std::uint32_t root = sets.find (k);
-    if (group_size[root] < 2)
-      continue;
-    if (label_of_root[root] == kNoSegment)
-      label_of_root[root] = next++;
-    const std::uint32_t label = label_of_root[root];
-    const auto& held = cover[piece.segment];
-    const auto& own = members[piece.segment];
-    if (held.size() == 1 && static_cast<double> (held.begin()->second) >=
-                                p.whole_segment_fraction * own.size())
-      for (const auto i : own)
-        result.labels[i] = label;
-    else
-      for (const auto i : piece.cylinder.inliers)
-        result.labels[i] = label;
-  }
-
-  // Segments without a piece of their own that lie on a joined group's surface, between
-  // or next to its pieces (the fragments a segmenter leaves where a branch leaves a
-  // trunk): they join the group whole when most of their points are on it.
-  if (p.absorb_fraction > 0.0) {
-    std::vector<std::uint32_t> joined_pieces;
-    for (std::uint32_t k = 0; k < n; ++k)
-      if (group_size[sets.find (k)] >= 2)
-        joined_pieces.push_back (k);
-    const double tol = p.detection.distance_tolerance;
-    for (std::uint32_t s = 0; s < segments.size(); ++s) {
-      if (cover.count (s) || members[s].empty())
-        continue;
-      std::vector<std::size_t> on (n, 0);
+    if (join.whole[s] != kNoSegment)
       for (const auto i : members[s])
-        for (const auto k : joined_pieces) {
-          const cylinders::Cylinder& c = result.pieces[k].cylinder;
-          const Eigen::Vector3d w = xyz[i] - c.point;
-          const double t = w.dot (c.axis);
-          if (std::abs (t) > c.half_length + p.max_gap)
-            continue;
-          if (std::abs ((w - t * c.axis).norm() - (c.radius + c.taper * t)) <= tol) {
-            ++on[sets.find (k)];
-            break;
-          }
-        }
-      const auto most = std::max_element (on.begin(), on.end());
-      if (most != on.end() &&
-          static_cast<double> (*most) >= p.absorb_fraction * members[s].size())
-        for (const auto i : members[s])
-          result.labels[i] = label_of_root[most - on.begin()];
-    }
+        result.labels[i] = join.whole[s];
+  for (auto& piece : join.pieces) {
+    for (auto& i : piece.cylinder.inliers)
+      i = members[piece.segment][i];
+    if (piece.joined != kNoSegment && join.whole[piece.segment] == kNoSegment)
+      for (const auto i : piece.cylinder.inliers)
+        result.labels[i] = piece.joined;
   }
 
   // Consecutive labels: the input segments that kept points, then the joined groups.
-  std::vector<std::uint32_t> compact (next, kNoSegment);
+  std::vector<std::uint32_t> compact (join.labels, kNoSegment);
   std::uint32_t count = 0;
   for (auto& label : result.labels)
     if (label != kNoSegment) {
@@ -297,10 +406,10 @@ joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
       label = compact[label];
     }
   result.num_segments = count;
-  for (std::uint32_t k = 0; k < n; ++k) {
-    const std::uint32_t label = label_of_root[sets.find (k)];
-    result.pieces[k].joined = label == kNoSegment ? kNoSegment : compact[label];
-  }
+  for (auto& piece : join.pieces)
+    if (piece.joined != kNoSegment)
+      piece.joined = compact[piece.joined];
+  result.pieces = std::move (join.pieces);
   return true;
 }
 } // namespace cylinder_join

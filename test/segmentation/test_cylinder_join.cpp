@@ -1,6 +1,7 @@
 /*
  * Tests of the cylinder join on plain coordinates (cylinder_join.h): when two cylinders
- * continue one another, and the joined labels of a pipe cut into two segments.
+ * continue one another, the joined labels of a pipe cut into two segments, and the join
+ * over segments loaded one at a time.
  */
 #include <pcl_ext/common/random.h>
 #include <pcl_ext/segmentation/cylinder_join.h>
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -206,4 +208,91 @@ TEST (CylinderJoin, StraightRunIsFittedAsOneCylinder)
   for (std::size_t s = 0; s < segments.size(); ++s)
     EXPECT_EQ (found[s], 1) << "segment " << s;
   EXPECT_EQ (result.num_segments, 1u);
+}
+
+namespace {
+/** Segments held apart, loaded one at a time, as a caller that reads them from disk
+ * would; \a failing (if set) cannot be loaded. */
+class SeparateSegments : public SegmentSource {
+public:
+  std::vector<std::vector<Eigen::Vector3d>> points;
+  std::size_t failing = std::numeric_limits<std::size_t>::max();
+
+  std::size_t
+  size () const override
+  {
+    return points.size();
+  }
+  std::size_t
+  pointCount (std::size_t s) const override
+  {
+    return points[s].size();
+  }
+  bool
+  load (std::size_t s, std::vector<Eigen::Vector3d>& out) const override
+  {
+    if (s == failing)
+      return false;
+    out = points[s];
+    return true;
+  }
+};
+} // namespace
+
+TEST (CylinderJoin, SegmentsLoadedOneAtATimeGiveTheSameJoin)
+{
+  // Segments 0 and 1: the spans of a pipe (x = 0 to 1.5 and 2.1 to 3.6); 2: a ring of
+  // it 6 cm long between them, too short for a cylinder of its own; 3: ground under it.
+  std::mt19937 rng (5);
+  std::vector<Eigen::Vector3d> xyz;
+  std::vector<std::vector<std::uint32_t>> segments (4);
+  addPipe (0.0, 1.5, rng, xyz, segments[0]);
+  addPipe (2.1, 1.5, rng, xyz, segments[1]);
+  addPipe (1.7, 0.06, rng, xyz, segments[2]);
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 20; ++j) {
+      segments[3].push_back (static_cast<std::uint32_t> (xyz.size()));
+      xyz.emplace_back (0.05 * i, -0.5 + 0.05 * j, 0.0);
+    }
+  JoinResult held;
+  ASSERT_TRUE (joinCylinderSegments (xyz, segments, JoinParameters(), held));
+
+  SeparateSegments separate;
+  for (const auto& segment : segments) {
+    separate.points.emplace_back();
+    for (const auto i : segment)
+      separate.points.back().push_back (xyz[i]);
+  }
+  SegmentJoin join;
+  ASSERT_TRUE (joinSegments (separate, JoinParameters(), join));
+  // The spans joined in one group (label 4, the first after the segments), the ring on
+  // it moved there whole, the ground kept.
+  ASSERT_EQ (join.pieces.size(), 2u);
+  EXPECT_EQ (join.labels, 5u);
+  ASSERT_EQ (join.whole.size(), 4u);
+  EXPECT_EQ (join.whole[0], 4u);
+  EXPECT_EQ (join.whole[1], 4u);
+  EXPECT_EQ (join.whole[2], 4u);
+  EXPECT_EQ (join.whole[3], kNoSegment);
+  // The same pieces and labels as the join over the held points.
+  ASSERT_EQ (held.pieces.size(), join.pieces.size());
+  for (std::size_t k = 0; k < join.pieces.size(); ++k) {
+    const Cylinder &a = held.pieces[k].cylinder, &b = join.pieces[k].cylinder;
+    EXPECT_EQ (held.pieces[k].segment, join.pieces[k].segment);
+    EXPECT_EQ (a.radius, b.radius);
+    EXPECT_EQ (a.point, b.point);
+    EXPECT_EQ (a.axis, b.axis);
+    ASSERT_EQ (a.inliers.size(), b.inliers.size());
+    for (std::size_t i = 0; i < a.inliers.size(); ++i)
+      EXPECT_EQ (a.inliers[i], segments[join.pieces[k].segment][b.inliers[i]]);
+  }
+  EXPECT_EQ (held.num_segments, 2u);
+  for (std::size_t s = 0; s < 3; ++s)
+    for (const auto i : segments[s])
+      EXPECT_EQ (held.labels[i], held.labels[segments[0][0]]) << "point " << i;
+  EXPECT_NE (held.labels[segments[3][0]], held.labels[segments[0][0]]);
+
+  // A segment that cannot be loaded: false.
+  separate.failing = 1;
+  EXPECT_FALSE (joinSegments (separate, JoinParameters(), join));
 }

@@ -1,18 +1,98 @@
 /*
- * pcl_ext_tiles segment_profiles: the cylinder join over the whole cloud's segments.
+ * pcl_ext_tiles segment_profiles: the cylinder join over the whole cloud's segments,
+ * read one segment at a time.
  */
 #include "profile_cylinder_join.h"
 
+#include "segment_points_file.h"
+
+#include <pcl_ext/segmentation/profile_stacks.h>
 #include <pcl_ext/tiling/tile_results.h>
 
 #include <algorithm>
 #include <iostream>
 #include <limits>
+#include <numeric>
 
 namespace pcl_ext {
 namespace apps {
 namespace {
 constexpr std::uint64_t kChunk = 1 << 20;
+constexpr std::uint32_t kNone = tiling::TileResults::kNoResult;
+
+/** The spacing the join's lengths follow: CylinderSegmentJoin's estimate over the
+ * segments' points (profiles::estimatePointSpacing), which it holds while it estimates
+ * (12 bytes a point, and 8 more while they are sorted along an axis); -1 when a file
+ * cannot be read. */
+double
+estimateSpacing (const SegmentPointsFile& points)
+{
+  std::vector<Eigen::Vector3f> xyz;
+  std::vector<Eigen::Vector3d> segment;
+  for (std::size_t s = 0; s < points.size(); ++s) {
+    if (!points.load (s, segment))
+      return -1.0;
+    for (const auto& p : segment)
+      xyz.push_back (p.cast<float>());
+  }
+  return profiles::estimatePointSpacing (xyz);
+}
+
+/** The points that move with their pieces alone (their segment does not move whole):
+ * global index and label, by index. */
+bool
+movedInliers (const SegmentPointsFile& points,
+              const cylinder_join::SegmentJoin& join,
+              std::vector<std::pair<std::uint64_t, std::uint32_t>>& moved)
+{
+  moved.clear();
+  std::vector<std::uint64_t> indices;
+  std::size_t loaded = std::numeric_limits<std::size_t>::max();
+  for (const auto& piece : join.pieces) {
+    if (piece.joined == cylinder_join::kNoSegment ||
+        join.whole[piece.segment] != cylinder_join::kNoSegment)
+      continue;
+    if (piece.segment != loaded && !points.loadIndices (piece.segment, indices))
+      return false;
+    loaded = piece.segment;
+    for (const auto i : piece.cylinder.inliers)
+      moved.emplace_back (indices[i], piece.joined);
+  }
+  std::sort (moved.begin(), moved.end());
+  return true;
+}
+
+/** Each point's label after the join, a chunk of the results at a time: \a visit
+ * (first index, labels; kNone where the point is in no segment). */
+template <typename Visit>
+bool
+forEachJoinedChunk (const std::string& workdir,
+                    std::uint64_t total,
+                    const cylinder_join::SegmentJoin& join,
+                    const std::vector<std::pair<std::uint64_t, std::uint32_t>>& moved,
+                    Visit visit)
+{
+  std::vector<std::uint32_t> ids;
+  auto next_move = moved.begin();
+  for (std::uint64_t first = 0; first < total; first += kChunk) {
+    const auto n = static_cast<std::size_t> (std::min (kChunk, total - first));
+    if (!tiling::TileResults::read (workdir, first, n, ids))
+      return false;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (ids[k] == kNone)
+        continue;
+      const std::uint64_t index = first + k;
+      while (next_move != moved.end() && next_move->first < index)
+        ++next_move;
+      if (next_move != moved.end() && next_move->first == index)
+        ids[k] = next_move->second;
+      else if (join.whole[ids[k]] != cylinder_join::kNoSegment)
+        ids[k] = join.whole[ids[k]];
+    }
+    visit (first, ids);
+  }
+  return true;
+}
 } // namespace
 
 bool
@@ -26,74 +106,97 @@ joinProfileCylinders (const tiling::TilePlan& plan,
 {
   cylinders = 0;
   const std::uint64_t total = plan.getTotalPoints();
-  if (total > static_cast<std::uint64_t> (std::numeric_limits<pcl::index_t>::max())) {
-    std::cerr << "Error: the cylinder join indexes a cloud of at most "
-              << std::numeric_limits<pcl::index_t>::max()
-              << " points (PCL's indices), not " << total << ".\n";
+  std::vector<std::string> point_files;
+  for (std::size_t p = 0; p < parts.firsts[0].size(); ++p)
+    point_files.push_back (profilePartPath (workdir, 0, p, "points"));
+  SegmentPointsFile points;
+  if (!points.build (workdir, point_files, segments, total))
+    return false;
+  for (std::size_t s = 0; s < points.size(); ++s)
+    if (points.pointCount (s) >
+        static_cast<std::size_t> (std::numeric_limits<pcl::index_t>::max())) {
+      std::cerr << "Error: the cylinder join fits segments of at most "
+                << std::numeric_limits<pcl::index_t>::max()
+                << " points (PCL's indices); segment " << s << " holds "
+                << points.pointCount (s) << ".\n";
+      return false;
+    }
+
+  // The settings as CylinderSegmentJoin resolves them.
+  CylinderSegmentJoin<pcl::PointXYZ> settings = options.makeJoin();
+  settings.setNumberOfThreads (threads);
+  const double spacing =
+      settings.getLengthsFollowSpacing() ? estimateSpacing (points) : 0.0;
+  if (spacing < 0.0)
+    return false;
+  if (settings.getLengthsFollowSpacing() && !(spacing > 0.0)) {
+    std::cerr << "Error: the point spacing of the segments cannot be estimated (fewer "
+                 "than 7 distinct points); give the cylinder join's lengths.\n";
     return false;
   }
-  // The whole cloud as the untiled tool holds it: every point at its global index,
-  // those that are not finite (in no part) NaN.
-  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  cloud->resize (total, pcl::PointXYZ (nan, nan, nan));
-  cloud->is_dense = false;
+  const cylinder_join::JoinParameters parameters = settings.getParameters (spacing);
+  if (!cylinder_join::validParameters (parameters)) {
+    std::cerr << "Error: invalid cylinder join settings.\n";
+    return false;
+  }
+  cylinder_join::SegmentJoin join;
+  if (!cylinder_join::joinSegments (points, parameters, join)) {
+    std::cerr << "Error: joining the cylinders failed.\n";
+    return false;
+  }
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> moved;
+  if (!movedInliers (points, join, moved))
+    return false;
+  for (const auto& piece : join.pieces)
+    cylinders += piece.joined != cylinder_join::kNoSegment;
+
+  // The joined segments numbered as CylinderSegmentJoin numbers them: largest first,
+  // ties by their first point.
+  std::vector<std::uint64_t> sizes (join.labels, 0),
+      firsts (join.labels, std::numeric_limits<std::uint64_t>::max());
+  if (!forEachJoinedChunk (
+          workdir,
+          total,
+          join,
+          moved,
+          [&] (std::uint64_t first, const std::vector<std::uint32_t>& labels) {
+            for (std::size_t k = 0; k < labels.size(); ++k)
+              if (labels[k] != kNone) {
+                ++sizes[labels[k]];
+                firsts[labels[k]] = std::min (firsts[labels[k]], first + k);
+              }
+          }))
+    return false;
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t label = 0; label < join.labels; ++label)
+    if (sizes[label] > 0)
+      order.push_back (label);
+  std::sort (order.begin(), order.end(), [&] (std::uint32_t a, std::uint32_t b) {
+    return sizes[a] != sizes[b] ? sizes[a] > sizes[b] : firsts[a] < firsts[b];
+  });
+  std::vector<std::uint32_t> rank (join.labels, kNone);
+  for (std::size_t k = 0; k < order.size(); ++k)
+    rank[order[k]] = static_cast<std::uint32_t> (k);
+  segments = static_cast<std::uint32_t> (order.size());
+
   std::vector<std::uint64_t> indices;
-  pcl::PointCloud<pcl::PointXYZ> points;
-  for (std::size_t p = 0; p < parts.firsts[0].size(); ++p) {
-    if (!readProfilePart (profilePartPath (workdir, 0, p, "points"), indices, points))
-      return false;
-    for (std::size_t k = 0; k < indices.size(); ++k)
-      (*cloud)[indices[k]] = points[k];
-  }
-  // The segments, each point's index ascending, as the segmenter lists them.
-  std::vector<pcl::PointIndices> clusters (segments);
-  std::vector<std::uint32_t> ids;
-  for (std::uint64_t first = 0; first < total; first += kChunk) {
-    const auto n = static_cast<std::size_t> (std::min (kChunk, total - first));
-    if (!tiling::TileResults::read (workdir, first, n, ids))
-      return false;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (ids[k] == tiling::TileResults::kNoResult)
-        continue;
-      if (ids[k] >= segments) {
-        std::cerr << "Error: the segments in " << workdir << " are broken.\n";
-        return false;
-      }
-      clusters[ids[k]].indices.push_back (static_cast<pcl::index_t> (first + k));
-    }
-  }
-  CylinderSegmentJoin<pcl::PointXYZ> join = options.makeJoin();
-  join.setInputCloud (cloud);
-  join.setInputSegments (clusters);
-  join.setNumberOfThreads (threads);
-  join.join (clusters);
-  if (clusters.empty()) {
-    std::cerr << "Error: joining the cylinders failed (see the message above).\n";
+  std::vector<std::uint32_t> values;
+  bool written = true;
+  if (!forEachJoinedChunk (
+          workdir,
+          total,
+          join,
+          moved,
+          [&] (std::uint64_t first, const std::vector<std::uint32_t>& labels) {
+            indices.resize (labels.size());
+            std::iota (indices.begin(), indices.end(), first);
+            values.resize (labels.size());
+            for (std::size_t k = 0; k < labels.size(); ++k)
+              values[k] = labels[k] == kNone ? kNone : rank[labels[k]];
+            written = written && tiling::TileResults::write (workdir, indices, values);
+          }))
     return false;
-  }
-  for (const auto& c : join.getCylinders())
-    cylinders += c.output_segment >= 0;
-  cloud.reset();
-  ids.assign (total, tiling::TileResults::kNoResult);
-  for (std::size_t c = 0; c < clusters.size(); ++c)
-    for (const auto i : clusters[c].indices)
-      ids[static_cast<std::size_t> (i)] = static_cast<std::uint32_t> (c);
-  segments = static_cast<std::uint32_t> (clusters.size());
-  clusters.clear();
-  for (std::uint64_t first = 0; first < total; first += kChunk) {
-    const std::uint64_t end = std::min (total, first + kChunk);
-    indices.clear();
-    std::vector<std::uint32_t> values;
-    values.reserve (static_cast<std::size_t> (end - first));
-    for (std::uint64_t i = first; i < end; ++i) {
-      indices.push_back (i);
-      values.push_back (ids[static_cast<std::size_t> (i)]);
-    }
-    if (!tiling::TileResults::write (workdir, indices, values))
-      return false;
-  }
-  return true;
+  return written;
 }
 } // namespace apps
 } // namespace pcl_ext

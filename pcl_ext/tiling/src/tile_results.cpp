@@ -3,6 +3,8 @@
  */
 #include <pcl_ext/tiling/tile_results.h>
 
+#include <pcl_ext/tiling/positioned_io.h>
+
 #include "record_file.h"
 
 #include <pcl_ext/io/file_output.h>
@@ -27,44 +29,6 @@ namespace {
 constexpr std::size_t kHaloRecordBytes = 16;
 constexpr std::size_t kSizeRecordBytes = 20;
 constexpr std::size_t kBlockValues = 1 << 16;
-
-/** Writes all of \a bytes at \a offset. */
-bool
-writeAt (int fd, const void* bytes, std::size_t size, std::uint64_t offset)
-{
-  const auto* p = static_cast<const char*> (bytes);
-  while (size > 0) {
-    const ssize_t w = ::pwrite (fd, p, size, static_cast<off_t> (offset));
-    if (w <= 0) {
-      if (w < 0 && errno == EINTR)
-        continue;
-      return false;
-    }
-    p += w;
-    size -= static_cast<std::size_t> (w);
-    offset += static_cast<std::uint64_t> (w);
-  }
-  return true;
-}
-
-/** Reads all of \a size bytes at \a offset; false at the end of the file first. */
-bool
-readAllAt (int fd, void* bytes, std::size_t size, std::uint64_t offset)
-{
-  auto* p = static_cast<char*> (bytes);
-  while (size > 0) {
-    const ssize_t r = ::pread (fd, p, size, static_cast<off_t> (offset));
-    if (r <= 0) {
-      if (r < 0 && errno == EINTR)
-        continue;
-      return false;
-    }
-    p += r;
-    size -= static_cast<std::size_t> (r);
-    offset += static_cast<std::uint64_t> (r);
-  }
-  return true;
-}
 
 std::string
 valuesPath (const std::string& folder, std::size_t tile, const std::string& name)
@@ -161,10 +125,10 @@ TileResults::write (const std::string& folder,
       ++j;
     const std::uint64_t end = (indices[j - 1] + 1) * sizeof (std::uint32_t);
     ok = end <= static_cast<std::uint64_t> (st.st_size) &&
-         writeAt (fd,
-                  values.data() + i,
-                  (j - i) * sizeof (std::uint32_t),
-                  indices[i] * sizeof (std::uint32_t));
+         writeAllAt (fd,
+                     values.data() + i,
+                     (j - i) * sizeof (std::uint32_t),
+                     indices[i] * sizeof (std::uint32_t));
     i = j;
   }
   ok = (::close (fd) == 0) && ok;

@@ -50,6 +50,40 @@ struct JoinResult {
   std::size_t num_segments = 0;
 };
 
+/** \brief The points of the segments to join, one segment at a time: held in memory,
+ * or read from disk by a caller that cannot hold the cloud (pcl_ext_tiles). */
+class SegmentSource {
+public:
+  virtual ~SegmentSource() = default;
+
+  /** \brief The number of segments. */
+  virtual std::size_t
+  size () const = 0;
+
+  /** \brief The number of points of segment \a s. */
+  virtual std::size_t
+  pointCount (std::size_t s) const = 0;
+
+  /** \brief The coordinates of segment \a s's points, in their order, best centred near
+   * the origin; called from several threads at once. \return false on a failure (which
+   * the source reports) */
+  virtual bool
+  load (std::size_t s, std::vector<Eigen::Vector3d>& points) const = 0;
+};
+
+/** \brief The join over a SegmentSource, per segment rather than per point. */
+struct SegmentJoin {
+  /** \brief In segment order, then the order found; a piece's inliers are indices into
+   * its segment's points, and \a joined the label of its group (numbered from the
+   * number of segments on) or kNoSegment. */
+  std::vector<Piece> pieces;
+  /** \brief Per segment, the label all its points take (its pieces' group, or the
+   * group it lies on); kNoSegment where it keeps its own label (its index) but for the
+   * inliers of its pieces in a group, which take the group's label. */
+  std::vector<std::uint32_t> whole;
+  std::uint32_t labels = 0; ///< segments plus groups: every label is below
+};
+
 /** \brief Check \a p; false when a value is out of range. */
 bool
 validParameters (const JoinParameters& p);
@@ -74,6 +108,17 @@ continues (const cylinders::Cylinder& a,
  * xyz; a position in no segment, or in an earlier one, keeps the label it has
  * (kNoSegment or the earlier segment's) \return false when a parameter is invalid or a
  * position is out of range */
+/** \brief What joinCylinderSegments does, over segments that a source loads one at a
+ * time (at most one per thread), so that the cloud need not be held: the segments'
+ * cylinders, the groups and straight runs, and the labels per segment (see
+ * SegmentJoin). Positions in the order of joinCylinderSegments are the segments' points
+ * one segment after the other, and the result is the same. \return false when a
+ * parameter is invalid or the source fails */
+bool
+joinSegments (const SegmentSource& source,
+              const JoinParameters& p,
+              SegmentJoin& result);
+
 bool
 joinCylinderSegments (const std::vector<Eigen::Vector3d>& xyz,
                       const std::vector<std::vector<std::uint32_t>>& segments,

@@ -399,6 +399,22 @@ public:
   void
   join (std::vector<pcl::PointIndices>& segments);
 
+  /** \brief Whether a length follows the point spacing (is not set in the cloud's
+   * units), so that join() needs the spacing. */
+  bool
+  getLengthsFollowSpacing () const
+  {
+    return !tolerance_ || !min_radius_ || !max_radius_ || !max_gap_ ||
+           !neighbourhood_radius_;
+  }
+
+  /** \brief The settings join() runs with where the point spacing is \a spacing: the
+   * lengths not set in the cloud's units are their factors times it, and the threads
+   * resolved (0: all cores). For a caller that runs the join over segments it reads
+   * one at a time (cylinder_join::joinSegments). */
+  cylinder_join::JoinParameters
+  getParameters (double spacing) const;
+
   /** \brief The cylinders found by the last join(). */
   const std::vector<JoinedCylinder>&
   getCylinders () const

@@ -24,8 +24,7 @@ CylinderSegmentJoin<PointT>::join (std::vector<pcl::PointIndices>& segments)
   cylinders_.clear();
   used_spacing_ = 0.0;
   used_ = cylinder_join::JoinParameters();
-  cylinder_join::JoinParameters p = parameters_;
-  p.threads = resolveThreadCount (threads_);
+  cylinder_join::JoinParameters p;
   if (!(spacing_ >= 0.0) || !std::isfinite (spacing_)) {
     PCL_ERROR ("[pcl_ext::%s] Invalid point spacing %g: need 0 (estimated) or > 0.\n",
                name,
@@ -169,14 +168,27 @@ CylinderSegmentJoin<PointT>::join (std::vector<pcl::PointIndices>& segments)
 }
 
 template <typename PointT>
+cylinder_join::JoinParameters
+CylinderSegmentJoin<PointT>::getParameters (double spacing) const
+{
+  cylinder_join::JoinParameters p = parameters_;
+  p.threads = resolveThreadCount (threads_);
+  p.detection.distance_tolerance = tolerance_.value_or (tolerance_factor_ * spacing);
+  p.detection.min_radius = min_radius_.value_or (min_radius_factor_ * spacing);
+  p.detection.max_radius = max_radius_.value_or (max_radius_factor_ * spacing);
+  p.detection.neighbourhood_radius =
+      neighbourhood_radius_.value_or (neighbourhood_factor_ * spacing);
+  p.max_gap = max_gap_.value_or (max_gap_factor_ * spacing);
+  return p;
+}
+
+template <typename PointT>
 bool
 CylinderSegmentJoin<PointT>::resolveLengths (const std::vector<Eigen::Vector3d>& xyz,
                                              cylinder_join::JoinParameters& p)
 {
   used_spacing_ = spacing_;
-  const bool from_spacing = !tolerance_ || !min_radius_ || !max_radius_ || !max_gap_ ||
-                            !neighbourhood_radius_;
-  if (from_spacing && !(used_spacing_ > 0.0)) {
+  if (getLengthsFollowSpacing() && !(used_spacing_ > 0.0)) {
     std::vector<Eigen::Vector3f> points (xyz.size());
     for (std::size_t i = 0; i < xyz.size(); ++i)
       points[i] = xyz[i].cast<float>();
@@ -184,13 +196,7 @@ CylinderSegmentJoin<PointT>::resolveLengths (const std::vector<Eigen::Vector3d>&
     if (!(used_spacing_ > 0.0))
       return false;
   }
-  const double s = used_spacing_;
-  p.detection.distance_tolerance = tolerance_.value_or (tolerance_factor_ * s);
-  p.detection.min_radius = min_radius_.value_or (min_radius_factor_ * s);
-  p.detection.max_radius = max_radius_.value_or (max_radius_factor_ * s);
-  p.detection.neighbourhood_radius =
-      neighbourhood_radius_.value_or (neighbourhood_factor_ * s);
-  p.max_gap = max_gap_.value_or (max_gap_factor_ * s);
+  p = getParameters (used_spacing_);
   return true;
 }
 } // namespace pcl_ext
