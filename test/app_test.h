@@ -55,14 +55,31 @@ protected:
   int
   run (const std::string& args)
   {
+    return run (args, executable_);
+  }
+
+  /** Runs \a program (a command line) with \a args, as run() runs the tool. */
+  int
+  run (const std::string& args, const std::string& program)
+  {
     const std::string command =
-        executable_ + " " + args + " > '" + path ("log.txt") + "' 2>&1";
+        program + " " + args + " > '" + path ("log.txt") + "' 2>&1";
     const int status = std::system (command.c_str());
     std::ifstream in (path ("log.txt"));
     std::stringstream s;
     s << in.rdbuf();
     output_ = s.str();
     return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
+  }
+
+  /** Runs the tool with \a args as run() does, but with the file size limit \a
+   * kilobytes (writes beyond it fail as on a full disk: SIGXFSZ is ignored). */
+  int
+  runOnFullDisk (const std::string& args, int kilobytes)
+  {
+    return run ("",
+                "bash -c \"trap '' XFSZ; ulimit -f " + std::to_string (kilobytes) +
+                    "; exec " + executable_ + " " + args + "\"");
   }
 
   std::string dir_;

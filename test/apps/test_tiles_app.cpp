@@ -91,21 +91,6 @@ protected:
     EXPECT_TRUE (tiled.records == whole_.records) << output;
   }
 
-  /** Runs the tool through the shell with the file size limit \a kilobytes (writes
-   * beyond it fail as on a full disk: SIGXFSZ is ignored); the exit code. */
-  int
-  runOnFullDisk (const std::string& args, int kilobytes)
-  {
-    const std::string command =
-        "bash -c \"trap '' XFSZ; ulimit -f " + std::to_string (kilobytes) + "; exec " +
-        PCL_EXT_TILES_EXE + " " + args + "\" > '" + path ("full.txt") + "' 2>&1";
-    const int status = std::system (command.c_str());
-    std::ifstream in (path ("full.txt"));
-    output_.assign ((std::istreambuf_iterator<char> (in)),
-                    std::istreambuf_iterator<char>());
-    return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
-  }
-
   LasContent whole_;
 };
 

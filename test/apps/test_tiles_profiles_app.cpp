@@ -200,7 +200,7 @@ TEST_F (TilesProfilesApp, StepsAndTheSlurmScriptFollowTheCommandsPasses)
   // joins and the merge with the cylinder join, each pass named by the step before it.
   // The merge before the passes and parts that do not exist are refused; a run stopped
   // after one part resumes; the Slurm script loops over the passes. All give the whole
-  // cloud's bytes.
+  // cloud's bytes, and so does a merge run again after the disk was full.
   generate ("coaxial", "coaxial.pcd", 30000);
   segmentWhole ("coaxial.pcd", "whole.pcd", "");
   const std::string work = " -workdir '" + path ("work") + "' -threads 1";
@@ -233,8 +233,16 @@ TEST_F (TilesProfilesApp, StepsAndTheSlurmScriptFollowTheCommandsPasses)
   EXPECT_EQ (
       stages,
       (std::vector<std::string>{"chains", "curve_scores", "curve_joins", "merge"}));
+  // The work folder fills up while the cylinder join groups the points by segment (a
+  // file may not exceed 200 KB; their coordinates need 12 bytes a point): a message and
+  // no output; the merge then runs again.
+  EXPECT_EQ (runOnFullDisk ("merge '" + path ("steps.pcd") + "'" + work, 200), 1);
+  EXPECT_NE (output_.find ("segment_points.xyz (disk full?)"), std::string::npos)
+      << output_;
+  EXPECT_FALSE (exists ("steps.pcd"));
   ASSERT_EQ (run ("merge '" + path ("steps.pcd") + "'" + work), 0) << output_;
   EXPECT_NE (output_.find ("  2 cylinders joined"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("work/segment_points.xyz"));
   expectSameBytes ("whole.pcd", "steps.pcd");
 
   // Stopped after one part of the first pass, whose links file then lost a value: the
