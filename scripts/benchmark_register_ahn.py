@@ -2,7 +2,7 @@
 """Khoshelham & Gorte registration with its defaults on the AHN3 tiles, moved.
 
   scripts/benchmark_register_ahn.py BUILD_DIR [-data DIR] [-tiles 2386_9702,2397_9705]
-      [-keep DIR] [-- OPTIONS]
+      [-keep DIR] [-cases N] [-- OPTIONS]
 
 DIR is the folder amsterdam_ahn3_bgt_footprints of the shared data (default: from the
 environment variable PCL_EXT_SHARED_DATA_DIR). Each tile's labelled cloud is turned about
@@ -13,7 +13,11 @@ of the data set, and given to `pcl_ext_register_to_map cloud footprints out -tra
 T.txt` with the options after `--` (none: the defaults). The error is that of the written
 transform against the truth: the rotation angle, and the displacement of the moved
 cloud's centre. Tile 2386_9702 is for tuning, 2397_9705 for the report. Prints one line
-per case and the mean per tile.
+per case and the mean per tile. With -cases N (more than 8), the cases after the eight are
+drawn from a fixed sequence (splitmix64 from seed 1) in the same ranges: yaw within 5
+degrees, a tilt of up to 1 degree about a horizontal axis in any direction, shifts of up to
+3.6 m; the result of one case can move by degrees when the cloud moves by a decimetre (the
+walls the search matches change), so a mean over many cases says more than eight.
 """
 import math
 import os
@@ -36,6 +40,41 @@ PERTURBATIONS = [
     (4.0, 0.0, "x", -1.0, -1.0),
     (-4.0, 1.0, "x", 2.5, 2.5),
 ]
+
+
+def splitmix64(state):
+    """The next state and a uniform value in [0, 1)."""
+    state = (state + 0x9E3779B97F4A7C15) & 0xFFFFFFFFFFFFFFFF
+    z = state
+    z = ((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9) & 0xFFFFFFFFFFFFFFFF
+    z = ((z ^ (z >> 27)) * 0x94D049BB133111EB) & 0xFFFFFFFFFFFFFFFF
+    z ^= z >> 31
+    return state, (z >> 11) / float(1 << 53)
+
+
+def drawn_perturbations(count):
+    """count cases: yaw, tilt, tilt axis direction (degrees from x), shift x, shift y."""
+    state, cases = 1, []
+    for _ in range(count):
+        values = []
+        for _ in range(5):
+            state, u = splitmix64(state)
+            values.append(u)
+        shift = 3.6 * math.sqrt(values[3])
+        cases.append((10.0 * values[0] - 5.0, values[1], 360.0 * values[2],
+                      shift * math.cos(2 * math.pi * values[4]),
+                      shift * math.sin(2 * math.pi * values[4])))
+    return cases
+
+
+def tilt_rotation(axis, degrees):
+    """A turn by degrees about the x or y axis, or about the horizontal axis at the given
+    angle (degrees) from x."""
+    if axis in ("x", "y"):
+        return rotation(axis, degrees)
+    a = math.radians(axis)
+    return multiply(rotation("z", math.degrees(a)),
+                    multiply(rotation("x", degrees), rotation("z", -math.degrees(a))))
 
 
 def rotation(axis, degrees):
@@ -107,12 +146,14 @@ def main():
     build = argv[0]
     args = {"data": os.path.join(os.environ.get("PCL_EXT_SHARED_DATA_DIR", ""),
                                  "amsterdam_ahn3_bgt_footprints"),
-            "tiles": "2386_9702,2397_9705", "keep": ""}
+            "tiles": "2386_9702,2397_9705", "keep": "", "cases": "8"}
     for i in range(1, len(argv), 2):
         key = argv[i].lstrip("-")
         if key not in args or i + 1 >= len(argv):
             sys.exit("unknown or incomplete option %s\n%s" % (argv[i], __doc__))
         args[key] = argv[i + 1]
+    cases = int(args["cases"])
+    perturbations = PERTURBATIONS[:cases] + drawn_perturbations(max(0, cases - 8))
     register = os.path.join(build, "apps", "pcl_ext_register_to_map")
     folder = args["keep"] or tempfile.mkdtemp(prefix="kg_ahn_")
     os.makedirs(folder, exist_ok=True)
@@ -124,8 +165,8 @@ def main():
         points, origin = read_cloud(os.path.join(args["data"], "ahn_%s.pcd" % tile))
         centre = [sum(p[k] for p in points) / len(points) for k in range(3)]
         rotations, translations = [], []
-        for case, (yaw, tilt, axis, dx, dy) in enumerate(PERTURBATIONS, 1):
-            r = multiply(rotation("z", yaw), rotation(axis, tilt))
+        for case, (yaw, tilt, axis, dx, dy) in enumerate(perturbations, 1):
+            r = multiply(rotation("z", yaw), tilt_rotation(axis, tilt))
             rc = [sum(r[i][k] * centre[k] for k in range(3)) for i in range(3)]
             # Turned about the centre, shifted in plan: the centre keeps its height.
             move = rigid(r, [centre[0] + dx - rc[0], centre[1] + dy - rc[1],
@@ -170,16 +211,21 @@ def main():
             yaw_error = math.degrees(math.atan2(e[1][0] - e[0][1], e[0][0] + e[1][1]))
             rotations.append(rot)
             translations.append(trans)
+            axis_name = axis if isinstance(axis, str) else "%.0f deg" % axis
             print("%s case %d (yaw %+.1f, tilt %.1f about %s, shift %+.1f %+.1f): rotation "
                   "%.2f deg (yaw %+.2f, tilt %.2f), translation %.2f m" % (
-                      tile, case, yaw, tilt, axis, dx, dy, rot, yaw_error, tilt_error, trans),
+                      tile, case, yaw, tilt, axis_name, dx, dy, rot, yaw_error, tilt_error,
+                      trans),
                   flush=True)
         if rotations:
-            print("%s: mean rotation %.2f deg (worst %.2f), mean translation %.2f m (worst "
-                  "%.2f), %d of %d registered%s" % (
-                      tile, sum(rotations) / len(rotations), max(rotations),
+            ordered = sorted(rotations)
+            median = 0.5 * (ordered[(len(ordered) - 1) // 2] + ordered[len(ordered) // 2])
+            within = sum(1 for r, t in zip(rotations, translations) if r < 1.0 and t < 0.5)
+            print("%s: mean rotation %.2f deg (median %.2f, worst %.2f), mean translation "
+                  "%.2f m (worst %.2f), %d of %d registered, %d within 1 deg and 0.5 m%s" % (
+                      tile, sum(rotations) / len(rotations), median, max(rotations),
                       sum(translations) / len(translations), max(translations),
-                      len(rotations), len(PERTURBATIONS),
+                      len(rotations), len(perturbations), within,
                       " (options: %s)" % " ".join(extra) if extra else ""), flush=True)
     return status
 
