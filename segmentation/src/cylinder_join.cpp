@@ -38,30 +38,34 @@ segmentSeed (std::uint64_t seed, std::size_t segment)
   return splitMix64 (seed + 0x9E3779B97F4A7C15ull * segment);
 }
 
-/** The coordinates of the inliers of \a run's pieces, segment by segment in ascending
- * order and by index within a segment (the order of their positions when the segments
- * lie one after the other), each segment loaded once. \return false when the source
- * fails */
+/** The coordinates of the inliers of \a run's pieces: \a subset all of them, segment by
+ * segment in ascending order and by index within a segment (the order of their
+ * positions when the segments lie one after the other), \a own those of each piece of
+ * the run in turn; each segment loaded once. \return false when the source fails */
 bool
 gatherRunInliers (const SegmentSource& source,
                   const std::vector<Piece>& pieces,
                   const std::vector<std::uint32_t>& run,
-                  std::vector<Eigen::Vector3d>& subset)
+                  std::vector<Eigen::Vector3d>& subset,
+                  std::vector<std::vector<Eigen::Vector3d>>& own)
 {
   subset.clear();
-  std::map<std::uint32_t, std::vector<std::uint32_t>> by_segment;
-  for (const auto k : run)
-    by_segment[pieces[k].segment].push_back (k);
+  own.assign (run.size(), {});
+  std::map<std::uint32_t, std::vector<std::size_t>> by_segment; // segment -> in run
+  for (std::size_t r = 0; r < run.size(); ++r)
+    by_segment[pieces[run[r]].segment].push_back (r);
   std::vector<Eigen::Vector3d> points;
   std::vector<std::uint32_t> inliers;
   for (const auto& [segment, held] : by_segment) {
     if (!source.load (segment, points))
       return false;
     inliers.clear();
-    for (const auto k : held)
-      inliers.insert (inliers.end(),
-                      pieces[k].cylinder.inliers.begin(),
-                      pieces[k].cylinder.inliers.end());
+    for (const auto r : held) {
+      const auto& piece_inliers = pieces[run[r]].cylinder.inliers;
+      inliers.insert (inliers.end(), piece_inliers.begin(), piece_inliers.end());
+      for (const auto i : piece_inliers)
+        own[r].push_back (points[i]);
+    }
     std::sort (inliers.begin(), inliers.end());
     for (const auto i : inliers)
       subset.push_back (points[i]);
@@ -87,7 +91,8 @@ refitStraightRuns (const SegmentSource& source,
   std::map<std::uint32_t, std::vector<std::uint32_t>> members; // root -> pieces
   for (std::uint32_t k = 0; k < n; ++k)
     members[runs.find (k)].push_back (k);
-  std::vector<Eigen::Vector3d> subset, points;
+  std::vector<Eigen::Vector3d> subset;
+  std::vector<std::vector<Eigen::Vector3d>> own;
   std::vector<std::uint32_t> all;
   for (const auto& [root, run] : members) {
     if (run.size() < 2)
@@ -97,7 +102,7 @@ refitStraightRuns (const SegmentSource& source,
     for (const auto k : run)
       if (pieces[k].cylinder.inliers.size() > pieces[largest].cylinder.inliers.size())
         largest = k;
-    if (!gatherRunInliers (source, pieces, run, subset))
+    if (!gatherRunInliers (source, pieces, run, subset, own))
       return false;
     all.resize (subset.size());
     std::iota (all.begin(), all.end(), 0u);
@@ -110,13 +115,11 @@ refitStraightRuns (const SegmentSource& source,
         radius < p.detection.min_radius || radius > p.detection.max_radius ||
         std::abs (taper) > p.detection.max_taper)
       continue;
-    for (const auto k : run) {
-      cylinders::Cylinder& c = pieces[k].cylinder;
-      if (!source.load (pieces[k].segment, points))
-        return false;
+    for (std::size_t r = 0; r < run.size(); ++r) {
+      cylinders::Cylinder& c = pieces[run[r]].cylinder;
       double t_min = std::numeric_limits<double>::infinity(), t_max = -t_min;
-      for (const auto i : c.inliers) {
-        const double t = (points[i] - point).dot (axis);
+      for (const auto& q : own[r]) {
+        const double t = (q - point).dot (axis);
         t_min = std::min (t_min, t);
         t_max = std::max (t_max, t);
       }

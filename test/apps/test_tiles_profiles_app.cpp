@@ -200,7 +200,8 @@ TEST_F (TilesProfilesApp, StepsAndTheSlurmScriptFollowTheCommandsPasses)
   // joins and the merge with the cylinder join, each pass named by the step before it.
   // The merge before the passes and parts that do not exist are refused; a run stopped
   // after one part resumes; the Slurm script loops over the passes. All give the whole
-  // cloud's bytes, and so does a merge run again after the disk was full.
+  // cloud's bytes, and so does a merge run again after a broken part file or a full
+  // disk.
   generate ("coaxial", "coaxial.pcd", 30000);
   segmentWhole ("coaxial.pcd", "whole.pcd", "");
   const std::string work = " -workdir '" + path ("work") + "' -threads 1";
@@ -233,6 +234,17 @@ TEST_F (TilesProfilesApp, StepsAndTheSlurmScriptFollowTheCommandsPasses)
   EXPECT_EQ (
       stages,
       (std::vector<std::string>{"chains", "curve_scores", "curve_joins", "merge"}));
+  // A part's points cut short: the merge names the file and writes nothing.
+  const std::string points_file = path ("work/profiles_0_0.points");
+  const std::string all_points = bytes ("work/profiles_0_0.points");
+  ASSERT_GT (all_points.size(), 5u);
+  std::ofstream (points_file, std::ios::binary)
+      << all_points.substr (0, all_points.size() - 5);
+  EXPECT_EQ (run ("merge '" + path ("steps.pcd") + "'" + work), 1);
+  EXPECT_NE (output_.find ("profiles_0_0.points is broken"), std::string::npos)
+      << output_;
+  EXPECT_FALSE (exists ("steps.pcd"));
+  std::ofstream (points_file, std::ios::binary) << all_points;
   // The work folder fills up while the cylinder join groups the points by segment (a
   // file may not exceed 200 KB; their coordinates need 12 bytes a point): a message and
   // no output; the merge then runs again.

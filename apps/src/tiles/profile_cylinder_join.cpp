@@ -28,6 +28,10 @@ double
 estimateSpacing (const SegmentPointsFile& points)
 {
   std::vector<Eigen::Vector3f> xyz;
+  std::size_t total = 0;
+  for (std::size_t s = 0; s < points.size(); ++s)
+    total += points.pointCount (s);
+  xyz.reserve (total);
   std::vector<Eigen::Vector3d> segment;
   for (std::size_t s = 0; s < points.size(); ++s) {
     if (!points.load (s, segment))

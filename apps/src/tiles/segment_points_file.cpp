@@ -95,8 +95,14 @@ SegmentPointsFile::build (const std::string& workdir,
     for (std::size_t k = 0; k < indices.size(); ++k) {
       const std::uint32_t id =
           indices[k] < total ? ids[indices[k]] : tiling::TileResults::kNoResult;
-      if (id != tiling::TileResults::kNoResult)
-        places.emplace_back (next[id]++, static_cast<std::uint32_t> (k));
+      if (id == tiling::TileResults::kNoResult)
+        continue;
+      if (next[id] == first_[id + 1]) {
+        std::cerr << "Error: " << path << " holds a point of segment " << id
+                  << " that another part holds too.\n";
+        return false;
+      }
+      places.emplace_back (next[id]++, static_cast<std::uint32_t> (k));
     }
     std::sort (places.begin(), places.end());
     place_xyz.resize (3 * places.size());
