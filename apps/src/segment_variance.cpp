@@ -10,6 +10,8 @@
 #include "variance/segment_variance_options.h"
 
 #include <pcl_ext/segmentation/local_surface_intersection.h>
+#include <pcl_ext/segmentation/coplanar_segment_merging.h>
+#include <pcl_ext/segmentation/leftover_plane_assignment.h>
 #include <pcl_ext/segmentation/leftover_region_growing.h>
 #include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
@@ -27,8 +29,10 @@
 #include <pcl/common/io.h>
 #include <pcl/conversions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <set>
 
 int
 main (int argc, char** argv)
@@ -163,6 +167,42 @@ main (int argc, char** argv)
     labels = grown;
   }
 
+  if (options.merge) {
+    pcl_ext::CoplanarSegmentMerging<pcl::PointXYZ> merging;
+    options.configure (cloud, nb, threads, merging);
+    merging.setSegmentLabels (pcl::make_shared<pcl::PointCloud<pcl::Label>> (labels));
+    pcl::PointCloud<pcl::Label> merged;
+    pcl_ext::apps::StageTimer stage ("Merging interleaved pieces of one plane");
+    if (!merging.compute (merged)) {
+      std::cerr << "Error: merging the segments failed (see the message above).\n";
+      return 1;
+    }
+    const auto& r = merging.getReport();
+    stage.done (cloud->size());
+    std::cout << r.segments << " segments, " << r.merges
+              << " merged into others: " << r.result << " left\n";
+    labels = merged;
+  }
+
+  if (options.assign) {
+    pcl_ext::LeftoverPlaneAssignment<pcl::PointXYZ> assignment;
+    options.configure (cloud, nb, threads, assignment);
+    assignment.setSegmentLabels (
+        pcl::make_shared<pcl::PointCloud<pcl::Label>> (labels));
+    pcl::PointCloud<pcl::Label> assigned;
+    pcl_ext::apps::StageTimer stage ("Assigning the points left over");
+    if (!assignment.compute (assigned)) {
+      std::cerr << "Error: assigning the points left over failed (see the message "
+                   "above).\n";
+      return 1;
+    }
+    const auto& r = assignment.getReport();
+    stage.done (r.examined);
+    std::cout << r.assigned << " of the " << r.examined
+              << " points without a segment lie on a neighbouring segment's plane\n";
+    labels = assigned;
+  }
+
   std::vector<std::uint32_t> ids (labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i)
     ids[i] = labels[i].label;
@@ -173,7 +213,11 @@ main (int argc, char** argv)
 #ifdef PCL_EXT_HAVE_VISUALIZATION
     pcl_ext::apps::StageTimer render ("Rendering " + png_path);
     pcl_ext::visualization::View view;
-    view.title = "Belton & Lichti: " + std::to_string (clusters.size()) + " segments";
+    // The segments of the output, every stage's (not section 3's alone).
+    const std::size_t segments =
+        std::set<std::uint32_t> (ids.begin(), ids.end()).size() -
+        (std::find (ids.begin(), ids.end(), 0u) != ids.end() ? 1 : 0);
+    view.title = "Belton & Lichti: " + std::to_string (segments) + " segments";
     view.layers.push_back ({pcl_ext::visualization::makeColouredCloud (
         *cloud, pcl_ext::visualization::colourByLabel (ids))});
     view.legend.push_back (

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <string>
 
@@ -280,9 +281,14 @@ TEST_F (SegmentVarianceApp, LeftoverSegmentsOnlyAddToTheOthers)
 {
   // The new segments among the points left out (the default) never change a point that
   // sections 3 and 4 segmented, and are numbered after their segments.
-  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("kept.pcd") + " -no_leftovers"), 0)
+  // (The merging and the assignment after them are left out of both.)
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("kept.pcd") +
+                  " -no_leftovers -no_merge -no_assign"),
+             0)
       << output_;
-  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("grown.pcd")), 0) << output_;
+  ASSERT_EQ (
+      run (path ("cube.pcd") + " " + path ("grown.pcd") + " -no_merge -no_assign"), 0)
+      << output_;
   EXPECT_NE (output_.find ("points without one"), std::string::npos) << output_;
   pcl::PointCloud<pcl::PointXYZRGBL> kept, grown;
   ASSERT_EQ (pcl_ext::test::loadResult (path ("kept.pcd"), "segment", kept), 0);
@@ -304,4 +310,49 @@ TEST_F (SegmentVarianceApp, LeftoverSegmentsOnlyAddToTheOthers)
   EXPECT_EQ (run (io + " -leftover_angle 95"), 1);
   EXPECT_EQ (run (io + " -leftover_angle nan"), 1);
   EXPECT_FALSE (exists ("out.pcd"));
+}
+
+TEST_F (SegmentVarianceApp, MergingAndAssignmentOnlyJoinSegmentsAndFillTheRest)
+{
+  // The last two default stages: segments are merged whole (two points together before
+  // are together after) and a point left over only joins a segment; none loses one.
+  ASSERT_EQ (
+      run (path ("cube.pcd") + " " + path ("before.pcd") + " -no_merge -no_assign"), 0)
+      << output_;
+  ASSERT_EQ (run (path ("cube.pcd") + " " + path ("after.pcd")), 0) << output_;
+  EXPECT_NE (output_.find ("merged into others"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("lie on a neighbouring segment's plane"), std::string::npos)
+      << output_;
+  pcl::PointCloud<pcl::PointXYZRGBL> before, after;
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("before.pcd"), "segment", before), 0);
+  ASSERT_EQ (pcl_ext::test::loadResult (path ("after.pcd"), "segment", after), 0);
+  ASSERT_EQ (before.size(), after.size());
+  std::map<std::uint32_t, std::uint32_t> now;
+  std::size_t segmented_before = 0, segmented_after = 0;
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    segmented_before += before[i].label != 0;
+    segmented_after += after[i].label != 0;
+    if (before[i].label == 0)
+      continue;
+    ASSERT_NE (after[i].label, 0u) << i;
+    const auto it = now.emplace (before[i].label, after[i].label).first;
+    ASSERT_EQ (it->second, after[i].label) << i;
+  }
+  EXPECT_GE (segmented_after, segmented_before);
+  // The cube's six faces are six planes at right angles: nothing to merge.
+  std::set<std::uint32_t> targets;
+  for (const auto& p : now)
+    targets.insert (p.second);
+  EXPECT_EQ (targets.size(), now.size());
+  const std::string io = path ("cube.pcd") + " " + path ("out.pcd");
+  EXPECT_EQ (run (io + " -merge -no_merge"), 1);
+  EXPECT_EQ (run (io + " -assign -no_assign"), 1);
+  EXPECT_FALSE (exists ("out.pcd"));
+  // -preset paper leaves both out; -merge and -assign add them to it.
+  ASSERT_EQ (run (io + " -preset paper"), 0) << output_;
+  EXPECT_EQ (output_.find ("merged into others"), std::string::npos) << output_;
+  ASSERT_EQ (run (io + " -preset paper -merge -assign"), 0) << output_;
+  EXPECT_NE (output_.find ("merged into others"), std::string::npos) << output_;
+  EXPECT_NE (output_.find ("lie on a neighbouring segment's plane"), std::string::npos)
+      << output_;
 }

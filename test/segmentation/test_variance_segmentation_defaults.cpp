@@ -1,8 +1,9 @@
 /*
  * Belton & Lichti's segmentation with the defaults of pcl_ext_segment_variance (k = 50,
  * the classification's defaults, region growing, section 4's re-integration, new
- * segments among the points left out, segments of at least 50 points) on generated
- * indoor scenes at seeds that were not used to choose them, against pcl::RegionGrowing
+ * segments among the points left out, segments of at least 50 points, interleaved
+ * pieces of one plane merged, the points left over put where they fit) on generated
+ * scenes at seeds that were not used to choose them, against pcl::RegionGrowing
  * as PCL's region-growing tutorial sets it (normals of 50 neighbours, growing over 30,
  * smoothness 3 degrees, curvature threshold 1.0, segments of at least 50 points).
  * Nothing is taken from the generator but the truth. The figures of every family and
@@ -10,6 +11,8 @@
  */
 #include <pcl_ext/classification/variance_segmentation.h>
 #include <pcl_ext/evaluation/segmentation_metrics.h>
+#include <pcl_ext/segmentation/coplanar_segment_merging.h>
+#include <pcl_ext/segmentation/leftover_plane_assignment.h>
 #include <pcl_ext/segmentation/leftover_region_growing.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
@@ -72,10 +75,24 @@ segmentWithDefaults (const Cloud::ConstPtr& cloud)
       pcl::make_shared<pcl::PointCloud<pcl::Label>> (reintegrated));
   leftovers.setMinClusterSize (kDefaultsMinSize);
   leftovers.setNumberOfThreads (kThreads);
-  pcl::PointCloud<pcl::Label> grown;
-  EXPECT_TRUE (leftovers.compute (grown));
+  auto grown = pcl::make_shared<pcl::PointCloud<pcl::Label>>();
+  EXPECT_TRUE (leftovers.compute (*grown));
+  pcl_ext::CoplanarSegmentMerging<Point> merging;
+  merging.setInputCloud (cloud);
+  merging.setNeighbourhoods (nb);
+  merging.setSegmentLabels (grown);
+  merging.setNumberOfThreads (kThreads);
+  auto merged = pcl::make_shared<pcl::PointCloud<pcl::Label>>();
+  EXPECT_TRUE (merging.compute (*merged));
+  pcl_ext::LeftoverPlaneAssignment<Point> assignment;
+  assignment.setInputCloud (cloud);
+  assignment.setNeighbourhoods (nb);
+  assignment.setSegmentLabels (merged);
+  assignment.setNumberOfThreads (kThreads);
+  pcl::PointCloud<pcl::Label> assigned;
+  EXPECT_TRUE (assignment.compute (assigned));
   std::vector<std::uint32_t> ids;
-  for (const auto& l : grown)
+  for (const auto& l : assigned)
     ids.push_back (l.label);
   return ids;
 }
@@ -108,10 +125,11 @@ segmentWithPcl (const Cloud::ConstPtr& cloud)
 /** Mean best IoU of the defaults and of pcl::RegionGrowing on generated \a family at
  * \a seed, printed. */
 std::pair<double, double>
-scoreBoth (const char* family, std::uint64_t seed)
+scoreBoth (const char* family, std::uint64_t seed, int superfluous_planes = 0)
 {
   pcl_ext::simulation::SceneParameters parameters;
   parameters.seed = seed;
+  parameters.superfluous_planes = superfluous_planes;
   pcl_ext::simulation::SyntheticScene scene;
   EXPECT_TRUE (pcl_ext::simulation::generateScene (family, parameters, scene));
   auto cloud = pcl::make_shared<Cloud>();
@@ -149,5 +167,18 @@ TEST (VarianceSegmentationDefaults, PipesUnseenSeedsAheadOfPclRegionGrowing)
   for (const auto seed : kDefaultsUnseenSeeds) {
     const auto [ours, pcl] = scoreBoth ("pipes", seed);
     EXPECT_GE (ours, pcl + 0.10) << "seed " << seed;
+  }
+}
+
+// Building with two superfluous planes (a neighbouring building and an interior wall
+// seen through the windows, sparse at 40-60 m): their scan lines and stations' grids,
+// each a segment after sections 3 and 4, merged into whole planes, and the roof's
+// patches seen from the ground with them, put the defaults ahead of
+// pcl::RegionGrowing (0.804 against 0.815 without the merging and the assignment).
+TEST (VarianceSegmentationDefaults, BuildingUnseenSeedsAheadOfPclRegionGrowing)
+{
+  for (const auto seed : kDefaultsUnseenSeeds) {
+    const auto [ours, pcl] = scoreBoth ("building", seed, 2);
+    EXPECT_GT (ours, pcl + 0.02) << "seed " << seed;
   }
 }

@@ -67,6 +67,23 @@ public:
                      "edges can be most of the cloud.\n";
       options_.reintegrate = false;
     }
+    // Not yet tile by tile: the merging of interleaved pieces of one plane and the
+    // assignment of the points left over, which pcl_ext_segment_variance runs after
+    // section 4 (docs/tiles.md, "Not yet done").
+    if (cl.given ("merge") || cl.given ("assign")) {
+      std::cerr
+          << "Error: pcl_ext_tiles segment_variance does not yet merge interleaved "
+             "pieces of one plane (-merge) or assign the points left over "
+             "(-assign); pcl_ext_segment_variance does.\n";
+      return false;
+    }
+    if (notes && options_.reintegrate && (options_.merge || options_.assign))
+      std::cout
+          << "Note: pcl_ext_tiles segment_variance -reintegrate gives "
+             "pcl_ext_segment_variance -no_merge -no_assign's result: the merging "
+             "of interleaved pieces of one plane and the assignment of the points "
+             "left over do not run tile by tile yet.\n";
+    options_.merge = options_.assign = false;
     std::string reason;
     if (!options_.intersections_path.empty() &&
         !io::canWritePointFile (options_.intersections_path, &reason)) {

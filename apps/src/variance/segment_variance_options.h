@@ -9,6 +9,8 @@
 
 #include <pcl_ext/classification/local_variance_classification.h>
 #include <pcl_ext/search/neighbourhoods.h>
+#include <pcl_ext/segmentation/coplanar_segment_merging.h>
+#include <pcl_ext/segmentation/leftover_plane_assignment.h>
 #include <pcl_ext/segmentation/leftover_region_growing.h>
 #include <pcl_ext/segmentation/local_surface_intersection.h>
 #include <pcl_ext/segmentation/variance_region_growing.h>
@@ -35,6 +37,10 @@ struct SegmentVarianceOptions {
   bool leftovers = false; ///< after valid(): on with section 4 unless -no_leftovers
   bool no_leftovers = false;
   double leftover_angle = 25.0; ///< degrees
+  bool merge = false;           ///< after valid(): on with section 4 unless -no_merge
+  bool no_merge = false;
+  bool assign = false; ///< after valid(): on with section 4 unless -no_assign
+  bool no_assign = false;
   VarianceClassificationOptions classification;
 
   void
@@ -81,6 +87,18 @@ struct SegmentVarianceOptions {
         "the largest angle (degrees) between the normals of two linked "
         "points without a segment, each fitted to its 12 nearest points (CGAL's "
         "default for its region growing)");
+    cl.addSwitch ("merge",
+                  merge,
+                  "merge the segments that are interleaved pieces of one plane (beyond "
+                  "the paper; on by default with section 4)");
+    cl.addSwitch ("no_merge", no_merge, "keep those pieces apart");
+    cl.addSwitch (
+        "assign",
+        assign,
+        "last, put each point still without a segment into the neighbouring "
+        "segment whose local plane it lies on, within 3 RMS residuals (beyond "
+        "the paper; on by default with section 4)");
+    cl.addSwitch ("no_assign", no_assign, "leave those points unsegmented");
     cl.addOption (
         "parallel_angle",
         parallel_angle,
@@ -138,6 +156,15 @@ struct SegmentVarianceOptions {
     // pipes, door jambs and narrow faces have no surface point to grow from
     // (docs/belton_lichti.md).
     leftovers = leftovers || (reintegrate && !no_leftovers);
+    if ((merge && no_merge) || (assign && no_assign)) {
+      std::cerr
+          << "Error: give -merge or -no_merge, -assign or -no_assign, not both.\n";
+      return false;
+    }
+    // The interleaved pieces of sparse planes merged and the points left over put
+    // where they fit, with section 4 by default (docs/belton_lichti.md).
+    merge = merge || (reintegrate && !no_merge);
+    assign = assign || (reintegrate && !no_assign);
     return true;
   }
 
@@ -211,6 +238,32 @@ struct SegmentVarianceOptions {
     growing.setAngleThreshold (leftover_angle * M_PI / 180.0);
     growing.setMinClusterSize (static_cast<pcl::uindex_t> (min_size));
     growing.setNumberOfThreads (threads);
+  }
+
+  /** \brief Set up the merging of interleaved coplanar segments of \a cloud on its
+   * computed neighbourhoods \a nb; the segment labels are the caller's. */
+  void
+  configure (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+             const Neighbourhoods<pcl::PointXYZ>::Ptr& nb,
+             unsigned int threads,
+             CoplanarSegmentMerging<pcl::PointXYZ>& merging) const
+  {
+    merging.setInputCloud (cloud);
+    merging.setNeighbourhoods (nb);
+    merging.setNumberOfThreads (threads);
+  }
+
+  /** \brief Set up the assignment of the points left over of \a cloud on its computed
+   * neighbourhoods \a nb; the segment labels are the caller's. */
+  void
+  configure (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+             const Neighbourhoods<pcl::PointXYZ>::Ptr& nb,
+             unsigned int threads,
+             LeftoverPlaneAssignment<pcl::PointXYZ>& assignment) const
+  {
+    assignment.setInputCloud (cloud);
+    assignment.setNeighbourhoods (nb);
+    assignment.setNumberOfThreads (threads);
   }
 };
 } // namespace apps
