@@ -93,28 +93,36 @@ meanSquaredPlaneDistance (const SegmentPlaneFit& b, const SegmentPlaneFit& a)
 }
 } // namespace
 
-std::vector<std::uint32_t>
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
 mergeInterleavedCoplanarSegments (const SegmentContacts& contacts,
                                   const CoplanarMergeCriteria& criteria,
                                   std::size_t* merges)
 {
-  std::uint32_t largest = 0;
+  // The segments by rank in label order (any labels, however large), so that the
+  // smaller rank is the smaller label.
+  std::vector<std::uint32_t> labels;
   for (const auto& [label, s] : contacts.planes())
-    largest = std::max (largest, label);
-  const std::size_t size = static_cast<std::size_t> (largest) + 1;
-  // The groups, under their smallest label: plane sums and contacts both ways.
+    labels.push_back (label);
+  const std::size_t size = labels.size();
+  const auto rankOf = [&labels] (std::uint32_t label) -> std::ptrdiff_t {
+    const auto it = std::lower_bound (labels.begin(), labels.end(), label);
+    return it != labels.end() && *it == label ? it - labels.begin() : -1;
+  };
+  // The groups, under their smallest rank: plane sums and contacts both ways.
   std::vector<SegmentContacts::PlaneSums> sums (size);
   std::vector<std::map<std::uint32_t, std::size_t>> out (size), in (size);
   std::vector<std::uint32_t> version (size, 0);
-  for (const auto& [label, s] : contacts.planes())
-    sums[label] = s;
+  {
+    std::size_t r = 0;
+    for (const auto& [label, s] : contacts.planes())
+      sums[r++] = s;
+  }
   for (const auto& [pair, count] : contacts.contacts()) {
-    const auto [a, b] = pair;
-    if (a == 0 || b == 0 || a == b || !contacts.planes().count (a) ||
-        !contacts.planes().count (b))
+    const std::ptrdiff_t a = rankOf (pair.first), b = rankOf (pair.second);
+    if (a < 0 || b < 0 || a == b)
       continue;
-    out[a][b] += count;
-    in[b][a] += count;
+    out[static_cast<std::size_t> (a)][static_cast<std::uint32_t> (b)] += count;
+    in[static_cast<std::size_t> (b)][static_cast<std::uint32_t> (a)] += count;
   }
   const double min_cos = std::cos (criteria.max_angle);
   // The share of the smaller group's points in contact with the larger, where the two
@@ -152,7 +160,8 @@ mergeInterleavedCoplanarSegments (const SegmentContacts& contacts,
     bool
     operator<(const Candidate& o) const
     {
-      // Highest share first; ties by the labels, so the order is the same in every run.
+      // Highest share first; ties by the ranks (the labels' order), so the order is the
+      // same in every run.
       if (fraction != o.fraction)
         return fraction < o.fraction;
       if (a != o.a)
@@ -168,7 +177,7 @@ mergeInterleavedCoplanarSegments (const SegmentContacts& contacts,
     if (f >= 0.0)
       queue.push ({f, a, b, version[a], version[b]});
   };
-  for (std::uint32_t a = 1; a <= largest; ++a)
+  for (std::uint32_t a = 0; a < size; ++a)
     for (const auto& [b, count] : out[a])
       if (a < b || !out[b].count (a))
         consider (a, b);
@@ -181,7 +190,7 @@ mergeInterleavedCoplanarSegments (const SegmentContacts& contacts,
     if (parent[c.a] != c.a || parent[c.b] != c.b || version[c.a] != c.version_a ||
         version[c.b] != c.version_b)
       continue;
-    // Merge b into a (a < b: the group keeps its smallest label).
+    // Merge b into a (a < b: the group keeps its smallest rank, so label).
     const std::uint32_t a = c.a, b = c.b;
     parent[b] = a;
     sums[a].add (sums[b]);
@@ -220,13 +229,15 @@ mergeInterleavedCoplanarSegments (const SegmentContacts& contacts,
       x = parent[x];
     return x;
   };
-  std::vector<std::uint32_t> result (size, 0), renumbered (size, 0);
+  // The groups numbered 1, 2, ... in the order of their smallest labels.
+  std::vector<std::uint32_t> renumbered (size, 0);
   std::uint32_t next = 0;
-  for (std::uint32_t l = 1; l <= largest; ++l)
-    if (parent[l] == l && contacts.planes().count (l))
-      renumbered[l] = ++next;
-  for (std::uint32_t l = 1; l <= largest; ++l)
-    result[l] = renumbered[root (l)];
+  for (std::uint32_t r = 0; r < size; ++r)
+    if (parent[r] == r)
+      renumbered[r] = ++next;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> result (size);
+  for (std::uint32_t r = 0; r < size; ++r)
+    result[r] = {labels[r], renumbered[root (r)]};
   return result;
 }
 } // namespace pcl_ext

@@ -143,6 +143,18 @@ TEST (CoplanarSegmentMerging, AnyThreadCountAndPartsSummedGiveTheSameMerges)
 }
 
 namespace {
+/** The new label of \a label in the result of mergeInterleavedCoplanarSegments (0:
+ * none). */
+std::uint32_t
+newLabel (const std::vector<std::pair<std::uint32_t, std::uint32_t>>& map,
+          std::uint32_t label)
+{
+  for (const auto& [old_label, new_label] : map)
+    if (old_label == label)
+      return new_label;
+  return 0;
+}
+
 /** The plane sums of \a n points spread over a square of side \a size centred at
  * (\a x, 0) in the plane z = \a z, 1 mm noise. */
 pcl_ext::SegmentContacts::PlaneSums
@@ -175,12 +187,11 @@ TEST (MergeInterleavedCoplanarSegments, APieceBetweenTwoSurfacesJoinsOneOfThem)
   std::size_t merges = 0;
   const auto map = pcl_ext::mergeInterleavedCoplanarSegments (
       contacts, pcl_ext::CoplanarMergeCriteria(), &merges);
-  ASSERT_EQ (map.size(), 4u);
+  ASSERT_EQ (map.size(), 3u);
   EXPECT_EQ (merges, 1u);
-  EXPECT_EQ (map[0], 0u);
-  EXPECT_EQ (map[1], 1u);
-  EXPECT_EQ (map[3], 1u);
-  EXPECT_EQ (map[2], 2u);
+  EXPECT_EQ (newLabel (map, 1), 1u);
+  EXPECT_EQ (newLabel (map, 3), 1u);
+  EXPECT_EQ (newLabel (map, 2), 2u);
 }
 
 TEST (MergeInterleavedCoplanarSegments, SumsFarFromTheOriginKeepTheirResiduals)
@@ -212,7 +223,35 @@ TEST (MergeInterleavedCoplanarSegments, SumsFarFromTheOriginKeepTheirResiduals)
   const auto map = pcl_ext::mergeInterleavedCoplanarSegments (
       contacts, pcl_ext::CoplanarMergeCriteria(), &merges);
   EXPECT_EQ (merges, 0u);
-  EXPECT_NE (map[1], map[2]);
+  EXPECT_NE (newLabel (map, 1), newLabel (map, 2));
+}
+
+TEST (MergeInterleavedCoplanarSegments, AnyLabelsHoweverLarge)
+{
+  // Labels near the largest 32-bit value: only those in use are stored; the result is
+  // that of small labels in the same order.
+  pcl_ext::RandomStream random (12);
+  pcl_ext::SegmentContacts large, small;
+  const std::uint32_t big = 4294967290u;
+  const auto a = patch (500, 0.0, 1.0, 0.0, random),
+             b = patch (400, 0.2, 1.0, 0.0, random);
+  large.addPoints (big, a);
+  large.addPoints (big + 3, b);
+  large.addContacts (big + 3, big, 300);
+  small.addPoints (1, a);
+  small.addPoints (2, b);
+  small.addContacts (2, 1, 300);
+  std::size_t merges = 0;
+  const auto map = pcl_ext::mergeInterleavedCoplanarSegments (
+      large, pcl_ext::CoplanarMergeCriteria(), &merges);
+  EXPECT_EQ (merges, 1u);
+  ASSERT_EQ (map.size(), 2u);
+  EXPECT_EQ (newLabel (map, big), 1u);
+  EXPECT_EQ (newLabel (map, big + 3), 1u);
+  const auto reference = pcl_ext::mergeInterleavedCoplanarSegments (
+      small, pcl_ext::CoplanarMergeCriteria());
+  EXPECT_EQ (newLabel (reference, 1), 1u);
+  EXPECT_EQ (newLabel (reference, 2), 1u);
 }
 
 TEST (CoplanarSegmentMerging, BadInputGivesAnErrorAndNoOutput)

@@ -104,11 +104,12 @@ struct CoplanarMergeCriteria {
  * the one it is most a part of and does not chain them together. Ties go to the
  * smaller labels: the result is the same in every run and for any order in which the
  * sums were added.
- * \return the new label of every label from 0 to the largest in \a contacts: each
+ * \return (label, new label) for every segment of \a contacts, in label order: each
  * group of merged segments takes the smallest of their labels, and the labels left are
- * renumbered 1, 2, ... in their order (0 and labels without points give 0)
+ * renumbered 1, 2, ... in their order (any labels, however large: only those in use
+ * are stored)
  * \param[out] merges when not null, the number of merges */
-std::vector<std::uint32_t>
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
 mergeInterleavedCoplanarSegments (const SegmentContacts& contacts,
                                   const CoplanarMergeCriteria& criteria,
                                   std::size_t* merges = nullptr);

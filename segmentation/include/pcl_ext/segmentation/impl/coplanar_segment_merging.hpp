@@ -160,13 +160,28 @@ pcl_ext::CoplanarSegmentMerging<PointT>::compute (LabelCloud& output)
   SegmentContacts contacts;
   if (!accumulate (contacts))
     return false;
-  const std::vector<std::uint32_t> map =
+  const auto map =
       mergeInterleavedCoplanarSegments (contacts, criteria_, &report_.merges);
   report_.segments = contacts.planes().size();
   report_.result = report_.segments - report_.merges;
   output = *segments_;
-  for (auto& l : output)
-    l.label = l.label < map.size() ? map[l.label] : 0;
+  // Points of a label with no finite indexed point (none in the map) get 0.
+  std::uint32_t last = 0, last_new = 0;
+  for (auto& l : output) {
+    if (l.label == 0)
+      continue;
+    if (l.label != last) {
+      last = l.label;
+      const auto it =
+          std::lower_bound (map.begin(),
+                            map.end(),
+                            l.label,
+                            [] (const std::pair<std::uint32_t, std::uint32_t>& e,
+                                std::uint32_t v) { return e.first < v; });
+      last_new = it != map.end() && it->first == l.label ? it->second : 0;
+    }
+    l.label = last_new;
+  }
   return true;
 }
 
