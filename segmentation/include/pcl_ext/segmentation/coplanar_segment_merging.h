@@ -41,6 +41,15 @@ namespace pcl_ext {
  *
  * Bad input (no cloud, an empty one, labels of the wrong size, indices out of range,
  * parameters out of range) gives a PCL_ERROR and an empty output.
+ *
+ * \code
+ * pcl_ext::CoplanarSegmentMerging<pcl::PointXYZ> merging;
+ * merging.setInputCloud (cloud);
+ * merging.setNeighbourhoods (nb);      // the segmentation's own, or none: searched
+ * merging.setSegmentLabels (labels);   // e.g. LeftoverRegionGrowing's output
+ * pcl::PointCloud<pcl::Label> merged;
+ * merging.compute (merged);
+ * \endcode
  */
 template <typename PointT>
 class CoplanarSegmentMerging : public pcl::PCLBase<PointT>,

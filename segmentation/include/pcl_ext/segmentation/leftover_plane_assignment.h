@@ -34,6 +34,15 @@ namespace pcl_ext {
  * shared (rows closest first, of the points without a segment). Output: the labels,
  * with the points assigned. Bad input (no cloud, an empty one, labels of the wrong
  * size, indices out of range, parameters out of range): PCL_ERROR and empty output.
+ *
+ * \code
+ * pcl_ext::LeftoverPlaneAssignment<pcl::PointXYZ> assignment;
+ * assignment.setInputCloud (cloud);
+ * assignment.setNeighbourhoods (nb);     // the segmentation's own, or none: searched
+ * assignment.setSegmentLabels (labels);  // e.g. CoplanarSegmentMerging's output
+ * pcl::PointCloud<pcl::Label> assigned;
+ * assignment.compute (assigned);
+ * \endcode
  */
 template <typename PointT>
 class LeftoverPlaneAssignment : public pcl::PCLBase<PointT>,
