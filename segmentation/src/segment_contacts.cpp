@@ -11,39 +11,9 @@
 
 namespace pcl_ext {
 void
-SegmentContacts::PlaneSums::add (const PlaneSums& other)
-{
-  if (other.n == 0)
-    return;
-  if (n == 0) {
-    *this = other;
-    return;
-  }
-  // sum (q - r)(q - r)^T with q - r = (q - r') + t, t = r' - r.
-  const Eigen::Vector3d t = other.reference - reference;
-  const double m = static_cast<double> (other.n);
-  sum_squares += other.sum_squares + t * other.sum.transpose() +
-                 other.sum * t.transpose() + m * t * t.transpose();
-  sum += other.sum + m * t;
-  n += other.n;
-}
-
-std::size_t
-SegmentContacts::PlaneSums::finish (Eigen::Vector3d& centroid,
-                                    Eigen::Matrix3d& covariance) const
-{
-  if (n == 0)
-    return 0;
-  const Eigen::Vector3d mean = sum / static_cast<double> (n);
-  covariance = sum_squares / static_cast<double> (n) - mean * mean.transpose();
-  centroid = reference + mean;
-  return n;
-}
-
-void
 SegmentContacts::addPoints (std::uint32_t segment, const PlaneSums& sums)
 {
-  if (segment != 0 && sums.n != 0)
+  if (segment != 0 && sums.size() != 0)
     planes_[segment].add (sums);
 }
 
@@ -75,10 +45,9 @@ SegmentPlaneFit
 segmentPlaneOf (const SegmentContacts::PlaneSums& s)
 {
   SegmentPlaneFit p;
-  p.n = s.n;
-  if (s.n == 0)
+  p.n = s.finish (p.covariance, p.centroid);
+  if (p.n == 0)
     return p;
-  s.finish (p.centroid, p.covariance);
   computeEigenDecomposition (p.covariance, p.eigen);
   return p;
 }

@@ -206,3 +206,32 @@ TEST (Covariance, DegenerateAndInvalidInput)
   nan_cov (1, 1) = NAN;
   EXPECT_FALSE (pcl_ext::computeEigenDecomposition (nan_cov, bad));
 }
+
+TEST (Covariance, SumsOfPartsAddedGiveTheWholeCovariance)
+{
+  // Points 6,000 km from the origin with 1 mm of spread across a 10 m patch, summed in
+  // three parts (each around its own first point) and added: the covariance and
+  // centroid of all of them summed at once, the 1 mm kept.
+  std::mt19937 rng (7);
+  std::uniform_real_distribution<double> along (0.0, 10.0);
+  std::normal_distribution<double> noise (0.0, 0.001);
+  pcl_ext::CovarianceSums whole, parts[3];
+  for (int i = 0; i < 3000; ++i) {
+    const Eigen::Vector3d p (
+        6.0e6 + along (rng), 6.0e6 + along (rng), 50.0 + noise (rng));
+    whole.add (p);
+    parts[i % 3].add (p);
+  }
+  pcl_ext::CovarianceSums added;
+  added.add (parts[0]);
+  added.add (pcl_ext::CovarianceSums()); // nothing to add
+  added.add (parts[1]);
+  added.add (parts[2]);
+  Eigen::Matrix3d c_whole, c_added;
+  Eigen::Vector3d m_whole, m_added;
+  ASSERT_EQ (whole.finish (c_whole, m_whole), 3000u);
+  ASSERT_EQ (added.finish (c_added, m_added), 3000u);
+  EXPECT_LT ((m_whole - m_added).norm(), 1e-6);
+  EXPECT_LT ((c_whole - c_added).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_NEAR (c_added (2, 2), 1e-6, 2e-7);
+}

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <vector>
@@ -132,7 +133,7 @@ TEST (CoplanarSegmentMerging, AnyThreadCountAndPartsSummedGiveTheSameMerges)
   EXPECT_EQ (part_a.contacts(), whole.contacts());
   ASSERT_EQ (part_a.planes().size(), whole.planes().size());
   for (const auto& [label, sums] : whole.planes())
-    EXPECT_EQ (part_a.planes().at (label).n, sums.n);
+    EXPECT_EQ (part_a.planes().at (label).size(), sums.size());
   std::size_t merges_whole = 0, merges_parts = 0;
   EXPECT_EQ (pcl_ext::mergeInterleavedCoplanarSegments (
                  whole, pcl_ext::CoplanarMergeCriteria(), &merges_whole),
@@ -214,7 +215,7 @@ TEST (MergeInterleavedCoplanarSegments, SumsFarFromTheOriginKeepTheirResiduals)
     contacts.addPoints (label, part_a);
     Eigen::Vector3d centroid;
     Eigen::Matrix3d covariance;
-    ASSERT_EQ (part_a.finish (centroid, covariance), 400u);
+    ASSERT_EQ (part_a.finish (covariance, centroid), 400u);
     EXPECT_NEAR (covariance (2, 2), 1e-6, 3e-7);
   }
   contacts.addContacts (1, 2, 300);
@@ -283,6 +284,34 @@ TEST (CoplanarSegmentMerging, BadInputGivesAnErrorAndNoOutput)
   merging.setCriteria (bad);
   EXPECT_FALSE (merging.compute (out));
   EXPECT_TRUE (out.empty());
+  // A point without coordinates takes no part (its segment's label is mapped as the
+  // others'); the rest merge as before.
+  {
+    auto cloud = pcl::make_shared<Cloud> (*s.cloud);
+    (*cloud)[0].x = std::numeric_limits<float>::quiet_NaN();
+    merging.setCriteria (pcl_ext::CoplanarMergeCriteria());
+    merging.setInputCloud (cloud);
+    ASSERT_TRUE (merging.compute (out));
+    ASSERT_EQ (out.size(), cloud->size());
+    EXPECT_EQ (out[1].label, 1u);
+    merging.setInputCloud (s.cloud);
+  }
+  // Fewer points than the neighbourhood's k: the search refuses, no output.
+  {
+    auto tiny = pcl::make_shared<Cloud>();
+    auto labels = pcl::make_shared<Labels>();
+    for (int i = 0; i < 4; ++i) {
+      tiny->push_back (Point (0.1f * i, 0.0f, 0.0f));
+      pcl::Label l;
+      l.label = 1 + i % 2;
+      labels->push_back (l);
+    }
+    pcl_ext::CoplanarSegmentMerging<Point> small;
+    small.setInputCloud (tiny);
+    small.setSegmentLabels (labels);
+    EXPECT_FALSE (small.compute (out));
+    EXPECT_TRUE (out.empty());
+  }
   // No segment at all: nothing to merge, the labels as they were.
   auto none = pcl::make_shared<Labels>();
   none->resize (s.cloud->size());

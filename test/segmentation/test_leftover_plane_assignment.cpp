@@ -157,6 +157,20 @@ TEST (LeftoverPlaneAssignment, BadInputGivesAnErrorAndNoOutput)
   assignment.setDistanceFactor (std::numeric_limits<double>::infinity());
   EXPECT_FALSE (assignment.compute (out));
   EXPECT_TRUE (out.empty());
+  // Fewer points than the neighbourhood's k: the search refuses, no output.
+  {
+    auto tiny = pcl::make_shared<Cloud>();
+    auto labels = pcl::make_shared<Labels>();
+    for (int i = 0; i < 4; ++i) {
+      tiny->push_back (Point (0.1f * i, 0.0f, 0.0f));
+      labels->push_back (pcl::Label{i == 0 ? 0u : 1u});
+    }
+    pcl_ext::LeftoverPlaneAssignment<Point> small;
+    small.setInputCloud (tiny);
+    small.setSegmentLabels (labels);
+    EXPECT_FALSE (small.compute (out));
+    EXPECT_TRUE (out.empty());
+  }
   // Non-finite points are never assigned; the others are as before.
   assignment.setDistanceFactor (3.0);
   auto cloud = pcl::make_shared<Cloud> (*s.cloud);

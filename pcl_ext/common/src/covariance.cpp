@@ -8,6 +8,30 @@
 #include <cmath>
 #include <limits>
 
+void
+pcl_ext::CovarianceSums::add (const CovarianceSums& other)
+{
+  if (other.n_ == 0)
+    return;
+  if (n_ == 0) {
+    *this = other;
+    return;
+  }
+  // With q - c = (q - c') + t, t = c' - c: sum (q - c)(q - c)^T = S' + t s'^T + s' t^T
+  // + m t t^T, s' and S' the other's first and second sums, m its count.
+  const Eigen::Vector3d t = other.centre_ - centre_;
+  const Eigen::Vector3d& s = other.sum_;
+  const double m = static_cast<double> (other.n_);
+  xx_ += other.xx_ + 2.0 * t.x() * s.x() + m * t.x() * t.x();
+  xy_ += other.xy_ + t.x() * s.y() + s.x() * t.y() + m * t.x() * t.y();
+  xz_ += other.xz_ + t.x() * s.z() + s.x() * t.z() + m * t.x() * t.z();
+  yy_ += other.yy_ + 2.0 * t.y() * s.y() + m * t.y() * t.y();
+  yz_ += other.yz_ + t.y() * s.z() + s.y() * t.z() + m * t.y() * t.z();
+  zz_ += other.zz_ + 2.0 * t.z() * s.z() + m * t.z() * t.z();
+  sum_ += s + m * t;
+  n_ += other.n_;
+}
+
 std::size_t
 pcl_ext::CovarianceSums::finish (Eigen::Matrix3d& covariance,
                                  Eigen::Vector3d& centroid) const

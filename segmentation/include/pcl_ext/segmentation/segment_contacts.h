@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <pcl_ext/common/covariance.h>
+
 #include <Eigen/Core>
 
 #include <cstddef>
@@ -20,34 +22,10 @@ namespace pcl_ext {
  * whole cloud. Label 0 (no segment) is never recorded. */
 class SegmentContacts {
 public:
-  /** \brief The plane sums of one segment, its points in one frame for every part,
-   * around a reference point (the first point added) so that a segment far from the
-   * frame's origin keeps its residuals in double precision. */
-  struct PlaneSums {
-    std::size_t n = 0;
-    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();         ///< of p - reference
-    Eigen::Matrix3d sum_squares = Eigen::Matrix3d::Zero(); ///< of (p - r)(p - r)^T
-
-    void
-    add (const Eigen::Vector3d& point)
-    {
-      if (n == 0)
-        reference = point;
-      const Eigen::Vector3d d = point - reference;
-      ++n;
-      sum += d;
-      sum_squares += d * d.transpose();
-    }
-
-    /** \brief Add another part's sums, moved to this reference. */
-    void
-    add (const PlaneSums& other);
-
-    /** \brief The points' mean and population covariance. \return n */
-    std::size_t
-    finish (Eigen::Vector3d& centroid, Eigen::Matrix3d& covariance) const;
-  };
+  /** \brief The plane sums of one segment: its points' running sums around a
+   * reference point (pcl_ext::CovarianceSums), so that a segment far from the frame's
+   * origin keeps its residuals in double precision. */
+  using PlaneSums = CovarianceSums;
 
   /** \brief Add the sums of points of segment \a segment (> 0). */
   void

@@ -73,6 +73,11 @@ public:
     ++n_;
   }
 
+  /** \brief Add the sums of other points (another part of a cloud), moved to this
+   * centre: the same covariance as had their points been added here. */
+  void
+  add (const CovarianceSums& other);
+
   /** \brief The number of points added. */
   std::size_t
   size () const

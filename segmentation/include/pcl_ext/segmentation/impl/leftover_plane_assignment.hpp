@@ -7,6 +7,7 @@
 #include <pcl_ext/common/indices.h>
 #include <pcl_ext/common/parallel.h>
 #include <pcl_ext/segmentation/leftover_plane_assignment.h>
+#include <pcl_ext/segmentation/local_planes.h>
 
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
@@ -109,20 +110,16 @@ pcl_ext::LeftoverPlaneAssignment<PointT>::compute (LabelCloud& output)
             const auto& q = (*input_)[j];
             sums.add (Eigen::Vector3d (q.x, q.y, q.z));
           }
-        if (sums.size() < kMinPlanePoints)
-          continue;
-        Eigen::Matrix3d covariance;
-        Eigen::Vector3d centroid;
-        sums.finish (covariance, centroid);
-        EigenDecomposition plane;
-        if (!computeEigenDecomposition (covariance, plane) ||
-            plane.values (1) < 0.05 * plane.values (2))
+        // The candidate's local plane, as section 4 fits one (a line has none here).
+        LocalPlane plane;
+        if (sums.size() < kMinPlanePoints || !fitLocalPlane (sums, nullptr, plane) ||
+            plane.variance1 < 0.05 * plane.variance2)
           continue;
         // A floor under the residual: an exact plane has none.
-        const double residual = std::max (std::sqrt (std::max (plane.values (0), 0.0)),
-                                          1e-6 * std::sqrt (plane.values (2)));
+        const double residual =
+            std::max (plane.rms, 1e-6 * std::sqrt (plane.variance2));
         const double ratio =
-            std::abs (plane.normal().dot (point - centroid)) / residual;
+            std::abs (plane.normal.dot (point - plane.centroid)) / residual;
         if (ratio <= distance_factor_ && ratio < best) {
           best = ratio;
           joins[static_cast<std::size_t> (s)] = b;
