@@ -201,3 +201,46 @@ TEST (KdTree3f, SearchOfPointsHandlesEdgeCases)
     }
   }
 }
+
+TEST (KdTree3f, TheTreeIsTheSameBuiltOnAnyNumberOfThreads)
+{
+  // Large enough for the parallel build (the serial one below 65,536 points): the mixed
+  // cloud 30 times over, shifted, with its duplicates and sparse points.
+  const auto base = mixedCloud();
+  std::vector<float> xyz;
+  for (int copy = 0; copy < 30; ++copy)
+    for (std::size_t i = 0; i < base.size(); i += 3)
+      xyz.insert (xyz.end(),
+                  {base[i] + 0.5f * static_cast<float> (copy % 6),
+                   base[i + 1] + 0.7f * static_cast<float> (copy / 6),
+                   base[i + 2]});
+  std::vector<pcl::index_t> ids (xyz.size() / 3);
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    ids[i] = static_cast<pcl::index_t> (i);
+  ASSERT_GT (ids.size(), 65536u);
+
+  pcl_ext::search::KdTree3f serial;
+  serial.build (xyz, ids, 24, 1);
+  for (const unsigned int threads : {2u, 3u, 8u}) {
+    pcl_ext::search::KdTree3f parallel;
+    parallel.build (xyz, ids, 24, threads);
+    ASSERT_EQ (parallel.size(), serial.size());
+    EXPECT_EQ (parallel.leafRanges(), serial.leafRanges()) << threads << " threads";
+    for (std::size_t pos = 0; pos < serial.size(); ++pos) {
+      ASSERT_EQ (parallel.pointIndex (pos), serial.pointIndex (pos)) << pos;
+      ASSERT_TRUE (std::equal (
+          serial.point (pos), serial.point (pos) + 3, parallel.point (pos)));
+    }
+    // The searches walk the nodes' split values: the same results from both trees.
+    std::vector<pcl::index_t> a (50), b (50);
+    std::vector<float> da (50), db (50);
+    for (std::size_t pos = 0; pos < serial.size(); pos += 997) {
+      ASSERT_EQ (serial.nearestKSearch (serial.point (pos), 50, a.data(), da.data()),
+                 50u);
+      ASSERT_EQ (parallel.nearestKSearch (serial.point (pos), 50, b.data(), db.data()),
+                 50u);
+      EXPECT_EQ (a, b) << pos;
+      EXPECT_EQ (da, db) << pos;
+    }
+  }
+}

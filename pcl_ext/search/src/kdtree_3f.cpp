@@ -86,11 +86,13 @@ KdTree3f::~KdTree3f() = default;
 void
 KdTree3f::build (std::vector<float> xyz,
                  std::vector<pcl::index_t> point_indices,
-                 unsigned int leaf_size)
+                 unsigned int leaf_size,
+                 unsigned int threads)
 {
   static std::atomic<std::uint64_t> builds{0};
   impl_->generation = ++builds;
   impl_->tree.reset();
+  impl_->parts.clear();
   sortAlongZOrder (xyz, point_indices);
   impl_->data.xyz = std::move (xyz);
   impl_->point_indices = std::move (point_indices);
@@ -100,7 +102,10 @@ KdTree3f::build (std::vector<float> xyz,
   impl_->tree.reset (new detail::Tree (
       3,
       impl_->data,
-      nanoflann::KDTreeSingleIndexAdaptorParams (std::max (1u, leaf_size))));
+      nanoflann::KDTreeSingleIndexAdaptorParams (
+          std::max (1u, leaf_size),
+          nanoflann::KDTreeSingleIndexAdaptorFlags::SkipInitialBuildIndex)));
+  detail::buildTree (*impl_->tree, impl_->parts, std::max (1u, threads));
 
   // Reorder the coordinates into the tree's leaf order and make the tree's permutation
   // the identity: a leaf's points then sit next to each other in memory, and so do the

@@ -57,6 +57,15 @@ private:
 /** Buckets of the counting sorts on squared distance. */
 constexpr std::size_t num_buckets = 64;
 
+/** A query's first, tighter limit: r_p + guess_share * |q - p| for the nearest ranked
+ * point p, where r_p + |q - p| is the bound the k-th distance cannot exceed. Within a
+ * leaf the k-th distance changes far less than the points' separation (neighbouring
+ * points share most neighbours), so the tighter limit nearly always holds k candidates
+ * and leaves fewer to sort; when it does not, the query is ranked again under the
+ * bound. 0.15-0.3 were equally fast on the 1M-point indoor scene (docs/benchmarks.md).
+ */
+constexpr float guess_share = 0.25f;
+
 /** Scratch space of nearestKSearchOfPoints, one per thread so that calls need no
  * allocation once warm. */
 struct BatchScratch {
@@ -324,38 +333,47 @@ KdTree3f::nearestKSearchOfPoints (std::size_t first,
   // the fewer candidates pass it, the less there is to sort.
   s.done_pos.clear();
   s.done_kth.clear();
+  const pcl::index_t* point_indices = impl_->point_indices.data();
+  // Ranks the shared candidates within \a limit of q (those within limit + |q - a| of
+  // the anchor); false if fewer than k lie within it.
+  const auto rankShared = [&] (const float* q, float limit) {
+    const float reach = (limit + distance (q, a)) * margin;
+    const std::size_t m = s.shell_end[bucketOf (reach * reach, s.shell_scale)];
+    return rankCandidates (q, m, k, limit * limit + 1e-30f, point_indices, s);
+  };
+  // The same for a run whose points search on their own: the points within the limit.
+  const auto rankAround = [&] (const float* q, float limit) {
+    const float sqr_limit = limit * limit + 1e-30f;
+    CollectingResultSet collect (s.candidates, sqr_limit * margin);
+    impl_->tree->findNeighbors (collect, q, nanoflann::SearchParams());
+    gatherCoordinates (xyz, s);
+    return rankCandidates (q, s.candidates.size(), k, sqr_limit, point_indices, s);
+  };
   for (std::size_t step = 0; step < last - first; ++step) {
     const std::size_t pos =
         step == 0 ? anchor : first + step - (first + step <= anchor ? 1 : 0);
     const float* q = &xyz[3 * pos];
     float bound = std::numeric_limits<float>::max();
-    for (std::size_t i = 0; i < s.done_pos.size(); ++i)
-      bound = std::min (bound, s.done_kth[i] + distance (q, &xyz[3 * s.done_pos[i]]));
+    float guess = std::numeric_limits<float>::max();
+    for (std::size_t i = 0; i < s.done_pos.size(); ++i) {
+      const float d = distance (q, &xyz[3 * s.done_pos[i]]);
+      bound = std::min (bound, s.done_kth[i] + d);
+      guess = std::min (guess, s.done_kth[i] + guess_share * d);
+    }
     pcl::index_t* out_indices = indices + (pos - first) * k;
     float* out_sqr = sqr_distances + (pos - first) * k;
+    bool ranked = false;
     if (step == 0)
-      bound = r;
-    else if (!shared) {
+      ranked = shared ? rankShared (q, r * margin) : rankAround (q, r * margin);
+    else if (shared)
+      ranked = rankShared (q, guess * margin) || rankShared (q, bound * margin);
+    else {
       // The exact k-th distance, by a search that the bound prunes from the start.
       const float reach = bound * margin;
       nearestKSearch (q, k, out_indices, out_sqr, reach * reach + 1e-30f);
-      bound = std::sqrt (out_sqr[k - 1]);
+      ranked = rankAround (q, std::sqrt (out_sqr[k - 1]) * margin);
     }
-    bound *= margin;
-    const float sqr_limit = bound * bound + 1e-30f;
-    std::size_t m;
-    if (shared) {
-      // Only candidates within bound + |q - a| of the anchor can be within bound of q.
-      const float reach = (bound + distance (q, a)) * margin;
-      m = s.shell_end[bucketOf (reach * reach, s.shell_scale)];
-    }
-    else {
-      CollectingResultSet collect (s.candidates, sqr_limit * margin);
-      impl_->tree->findNeighbors (collect, q, nanoflann::SearchParams());
-      gatherCoordinates (xyz, s);
-      m = s.candidates.size();
-    }
-    if (rankCandidates (q, m, k, sqr_limit, impl_->point_indices.data(), s))
+    if (ranked)
       for (std::size_t j = 0; j < k; ++j) {
         out_indices[j] =
             static_cast<pcl::index_t> (static_cast<std::uint32_t> (s.sorted[j]));

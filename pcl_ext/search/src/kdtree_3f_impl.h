@@ -43,12 +43,19 @@ using Tree =
                                         FlatCloud,
                                         3,
                                         std::uint32_t>;
+
+/** Builds \a tree (made with SkipInitialBuildIndex) as its buildIndex() does, the
+ * subtrees below its top levels on up to \a threads threads; their nodes live in the
+ * pools of \a parts, which must live as long as the tree. */
+void
+buildTree (Tree& tree, std::vector<std::unique_ptr<Tree>>& parts, unsigned int threads);
 } // namespace detail
 
 struct KdTree3f::Impl {
   detail::FlatCloud data;
   std::vector<pcl::index_t> point_indices; // tree position -> caller's point index
   std::unique_ptr<detail::Tree> tree;
+  std::vector<std::unique_ptr<detail::Tree>> parts; // own nodes of the tree
   std::uint64_t generation = 0; // a build number unique in the process
 };
 } // namespace search

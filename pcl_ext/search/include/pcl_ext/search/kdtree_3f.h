@@ -35,11 +35,13 @@ public:
 
   /** \brief Build over \a xyz (3 floats per point, all finite) with the given point
    * indices. \param[in] leaf_size the maximum number of points in a leaf (nanoflann's
-   * leaf_max_size) */
+   * leaf_max_size) \param[in] threads threads for the build (the tree is the same for
+   * any number) */
   void
   build (std::vector<float> xyz,
          std::vector<pcl::index_t> point_indices,
-         unsigned int leaf_size = 24);
+         unsigned int leaf_size = 24,
+         unsigned int threads = 1);
 
   /** \brief Number of points in the tree. */
   std::size_t

@@ -71,6 +71,20 @@ public:
     return tree_;
   }
 
+  /** \brief Threads for building the tree in setInputCloud (default 1; 0: all cores).
+   * The tree and every search result are the same for any number. */
+  void
+  setNumberOfThreads (unsigned int threads)
+  {
+    threads_ = threads;
+  }
+
+  unsigned int
+  getNumberOfThreads () const
+  {
+    return threads_;
+  }
+
   /** \brief Maximum points per leaf. */
   unsigned int
   getLeafSize () const
@@ -85,6 +99,7 @@ protected:
 
   KdTree3f tree_;
   unsigned int leaf_size_;
+  unsigned int threads_ = 1;
 };
 } // namespace search
 } // namespace pcl_ext

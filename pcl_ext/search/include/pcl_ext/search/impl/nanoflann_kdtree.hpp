@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl_ext/search/nanoflann_kdtree.h>
+#include <pcl_ext/common/parallel.h>
 
 #include <pcl/common/point_tests.h>
 
@@ -37,7 +38,8 @@ pcl_ext::search::NanoflannKdTree<PointT>::setInputCloud (
       ids.push_back (idx);
     }
   }
-  tree_.build (std::move (xyz), std::move (ids), leaf_size_);
+  tree_.build (
+      std::move (xyz), std::move (ids), leaf_size_, resolveThreadCount (threads_));
 }
 
 template <typename PointT>

@@ -99,8 +99,11 @@ pcl_ext::Neighbourhoods<PointT>::compute()
   // allocation. Ours is dropped after the search: the rows are what is kept (the tree
   // would add about 24 bytes a point to them).
   const bool own_search = !search_;
-  if (own_search)
-    search_.reset (new search::NanoflannKdTree<PointT>);
+  if (own_search) {
+    auto own = pcl::make_shared<search::NanoflannKdTree<PointT>>();
+    own->setNumberOfThreads (threads_);
+    search_ = own;
+  }
   search_->setInputCloud (input_);
   const auto* tree =
       dynamic_cast<const search::NanoflannKdTree<PointT>*> (search_.get());
