@@ -27,9 +27,12 @@ spreadBits (std::uint32_t x)
 /** Reorders points (and their indices) along a Z-order curve over a 1024^3 grid of
  * their bounding box. nanoflann's build then reads nearby memory when it partitions a
  * subtree, which makes it much faster on clouds stored in arbitrary order
- * (docs/shared_machinery.md). LSD radix sort: linear, stable, deterministic. */
+ * (docs/shared_machinery.md). LSD radix sort: linear, stable, deterministic; the codes
+ * and the gather on \a threads threads. */
 void
-sortAlongZOrder (std::vector<float>& xyz, std::vector<pcl::index_t>& ids)
+sortAlongZOrder (std::vector<float>& xyz,
+                 std::vector<pcl::index_t>& ids,
+                 unsigned int threads)
 {
   const std::size_t n = ids.size();
   if (n < 2)
@@ -46,7 +49,9 @@ sortAlongZOrder (std::vector<float>& xyz, std::vector<pcl::index_t>& ids)
   for (int d = 0; d < 3; ++d)
     scale[d] = hi[d] > lo[d] ? 1023.0 / (static_cast<double> (hi[d]) - lo[d]) : 0.0;
   std::vector<std::uint32_t> code (n), order (n), code_tmp (n), order_tmp (n);
-  for (std::size_t i = 0; i < n; ++i) {
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (n);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
     std::uint32_t c = 0;
     for (int d = 0; d < 3; ++d)
       c |= spreadBits (static_cast<std::uint32_t> ((xyz[3 * i + d] - lo[d]) * scale[d]))
@@ -54,14 +59,18 @@ sortAlongZOrder (std::vector<float>& xyz, std::vector<pcl::index_t>& ids)
     code[i] = c;
     order[i] = static_cast<std::uint32_t> (i);
   }
-  for (int shift = 0; shift < 32; shift += 8) {
-    std::size_t count[257] = {0};
+  // The codes have 30 bits: three passes of 10.
+  constexpr int digit = 10;
+  constexpr std::size_t buckets = std::size_t{1} << digit;
+  std::vector<std::size_t> start (buckets + 1);
+  for (int shift = 0; shift < 30; shift += digit) {
+    std::fill (start.begin(), start.end(), 0);
     for (std::size_t i = 0; i < n; ++i)
-      ++count[((code[i] >> shift) & 0xff) + 1];
-    for (int b = 0; b < 256; ++b)
-      count[b + 1] += count[b];
+      ++start[((code[i] >> shift) & (buckets - 1)) + 1];
+    for (std::size_t b = 0; b < buckets; ++b)
+      start[b + 1] += start[b];
     for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t dst = count[(code[i] >> shift) & 0xff]++;
+      const std::size_t dst = start[(code[i] >> shift) & (buckets - 1)]++;
       code_tmp[dst] = code[i];
       order_tmp[dst] = order[i];
     }
@@ -70,8 +79,9 @@ sortAlongZOrder (std::vector<float>& xyz, std::vector<pcl::index_t>& ids)
   }
   std::vector<float> sorted_xyz (3 * n);
   std::vector<pcl::index_t> sorted_ids (n);
-  for (std::size_t i = 0; i < n; ++i) {
-    std::copy_n (&xyz[3 * order[i]], 3, &sorted_xyz[3 * i]);
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    std::copy_n (&xyz[3 * static_cast<std::size_t> (order[i])], 3, &sorted_xyz[3 * i]);
     sorted_ids[i] = ids[order[i]];
   }
   xyz.swap (sorted_xyz);
@@ -93,7 +103,7 @@ KdTree3f::build (std::vector<float> xyz,
   impl_->generation = ++builds;
   impl_->tree.reset();
   impl_->parts.clear();
-  sortAlongZOrder (xyz, point_indices);
+  sortAlongZOrder (xyz, point_indices, std::max (1u, threads));
   impl_->data.xyz = std::move (xyz);
   impl_->point_indices = std::move (point_indices);
   const std::size_t n = impl_->data.kdtree_get_point_count();
@@ -114,7 +124,9 @@ KdTree3f::build (std::vector<float> xyz,
   auto& order = impl_->tree->vAcc;
   std::vector<float> sorted_xyz (3 * n);
   std::vector<pcl::index_t> sorted_indices (n);
-  for (std::size_t pos = 0; pos < n; ++pos) {
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t> (n);
+#pragma omp parallel for num_threads(std::max(1u, threads)) schedule(static)
+  for (std::ptrdiff_t pos = 0; pos < count; ++pos) {
     const std::size_t old = order[pos];
     std::copy_n (&impl_->data.xyz[3 * old], 3, &sorted_xyz[3 * pos]);
     sorted_indices[pos] = impl_->point_indices[old];
