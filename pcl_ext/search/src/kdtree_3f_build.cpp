@@ -18,7 +18,7 @@ struct Planned {
   Node* node = nullptr;
   std::size_t left = 0, right = 0;
   BoundingBox box;                   // a part's: tightened to its points by its build
-  std::uint32_t cut = 0;             // a node's split axis
+  Tree::Dimension cut = 0;           // a node's split axis
   std::size_t first = 0, second = 0; // a node's children in the plan
   Node* part_root = nullptr;
 };
