@@ -254,6 +254,65 @@ TEST (Neighbourhoods, DuplicatePointsAreOrdinaryNeighbours)
     EXPECT_EQ (nb[r].sqr_distances[1], 0.0f); // its twin
 }
 
+TEST (Neighbourhoods, AStackOfCopiesOfOnePointGivesEachCopyTheCopiesOfSmallestIndex)
+{
+  // 200,000 copies of one point (a file whose coordinates collapsed, no-return points
+  // at the origin) among 2,000 others, every fourth point of the cloud a copy beyond
+  // the first 2,000: each copy's k nearest are the k copies of smallest index, at
+  // distance 0, whichever pass searches it (a search that walked every copy for every
+  // copy would not finish).
+  auto cloud = randomCloud (2000, 9);
+  const Point stack (0.5f, 0.5f, 0.1f);
+  std::vector<pcl::index_t> copies;
+  for (std::size_t i = 0; i < 200000; ++i) {
+    if (i % 4 == 0)
+      cloud->push_back (Point (0.5f + 1e-3f * static_cast<float> (i % 997),
+                               0.4f,
+                               0.2f)); // others between the copies
+    copies.push_back (static_cast<pcl::index_t> (cloud->size()));
+    cloud->push_back (stack);
+  }
+  pcl::IndicesPtr every_other (new pcl::Indices);
+  for (std::size_t i = 0; i < cloud->size(); i += 2)
+    every_other->push_back (static_cast<pcl::index_t> (i));
+  for (const int k : {50, 10}) {
+    for (const bool subset : {false, true}) {
+      pcl_ext::Neighbourhoods<Point> nb;
+      nb.setInputCloud (cloud);
+      if (subset)
+        nb.setIndices (every_other);
+      nb.setKSearch (k);
+      nb.setNumberOfThreads (2);
+      ASSERT_TRUE (nb.compute());
+      std::size_t checked = 0;
+      for (std::size_t r = 0; r < nb.size(); ++r) {
+        const pcl::index_t i =
+            subset ? (*every_other)[r] : static_cast<pcl::index_t> (r);
+        const auto row = nb[r];
+        ASSERT_EQ (row.size(), static_cast<std::size_t> (k));
+        if (!((*cloud)[i].getVector3fMap() == stack.getVector3fMap()))
+          continue;
+        for (int j = 0; j < k; ++j) {
+          ASSERT_EQ (row[j], copies[static_cast<std::size_t> (j)])
+              << "k " << k << (subset ? " subset" : "") << " row " << r;
+          ASSERT_EQ (row.sqr_distances[j], 0.0f);
+        }
+        ++checked;
+      }
+      EXPECT_EQ (checked, subset ? 100000u : 200000u);
+      // The other points' rows as brute force ranks them (a sample).
+      for (std::size_t r = 0; r < nb.size(); r += 7919) {
+        const pcl::index_t i =
+            subset ? (*every_other)[r] : static_cast<pcl::index_t> (r);
+        const auto truth = bruteForce (*cloud, (*cloud)[i]);
+        for (int j = 0; j < k; ++j)
+          ASSERT_EQ (nb[r][j], truth[static_cast<std::size_t> (j)].index)
+              << "k " << k << " row " << r << " rank " << j;
+      }
+    }
+  }
+}
+
 TEST (Neighbourhoods, BadInputGivesAnErrorAndNothing)
 {
   pcl_ext::Neighbourhoods<Point> nb;

@@ -297,19 +297,41 @@ KdTree3f::nearestKSearchOfPoints (std::size_t first,
   // The anchor's exact k-th distance r. The previous anchor this thread searched in
   // this tree bounds it (any bound only prunes; r does not depend on it).
   float hint = std::numeric_limits<float>::max();
-  if (s.tree == impl_.get() && s.generation == impl_->generation && s.anchor_k == k) {
+  const bool same_tree =
+      s.tree == impl_.get() && s.generation == impl_->generation && s.anchor_k == k;
+  if (same_tree) {
     const float reach = (s.anchor_kth + distance (a, s.anchor)) * (1.0f + 1e-4f);
     hint = reach * reach + 1e-30f;
   }
-  s.first_indices.resize (k);
-  s.first_sqr_dist.resize (k);
-  nearestKSearch (a, k, s.first_indices.data(), s.first_sqr_dist.data(), hint);
+  // k or more points at the previous anchor's very position, and this anchor there too:
+  // its k nearest are the same, the k of them with the smallest indices (a search would
+  // walk every copy, so a stack of m copies would cost m^2).
+  const bool on_previous_stack = same_tree && s.anchor_kth == 0.0f &&
+                                 std::equal (a, a + 3, s.anchor) &&
+                                 s.first_indices.size() == k;
+  if (!on_previous_stack) {
+    s.first_indices.resize (k);
+    s.first_sqr_dist.resize (k);
+    nearestKSearch (a, k, s.first_indices.data(), s.first_sqr_dist.data(), hint);
+  }
   const float r = std::sqrt (s.first_sqr_dist[k - 1]);
   s.tree = impl_.get();
   s.generation = impl_->generation;
   s.anchor_k = k;
   s.anchor_kth = r;
   std::copy_n (a, 3, s.anchor);
+  if (r == 0.0f && spread == 0.0f) {
+    // The whole run is a stack of k or more copies of one point: every point's k
+    // nearest are the anchor's.
+    for (std::size_t pos = first; pos < last; ++pos) {
+      std::copy (
+          s.first_indices.begin(), s.first_indices.end(), indices + (pos - first) * k);
+      std::copy (s.first_sqr_dist.begin(),
+                 s.first_sqr_dist.end(),
+                 sqr_distances + (pos - first) * k);
+    }
+    return k;
+  }
   // r bounds the k-th distance of every point q of the run by r + |q - anchor|, and all
   // points within that bound of q lie within r + 2 * spread of the anchor: the
   // candidates. Relative margins keep float rounding on the safe side.

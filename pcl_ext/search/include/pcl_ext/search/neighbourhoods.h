@@ -12,6 +12,10 @@
 #include <vector>
 
 namespace pcl_ext {
+namespace search {
+class KdTree3f;
+} // namespace search
+
 /** \brief Where each row of a pcl_ext::Neighbourhoods lies in its array of neighbour
  * indices, for code that is not a template over the point type. */
 struct NeighbourRowsView {
@@ -273,6 +277,10 @@ protected:
 
   void
   searchWithTree ();
+
+  /** \brief The rows of finite points, in the order of their points in \a tree. */
+  std::vector<std::size_t>
+  rowsInTreeOrder (const search::KdTree3f& tree) const;
 
   void
   searchWithSearchMethod ();

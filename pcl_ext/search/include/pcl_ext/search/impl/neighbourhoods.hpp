@@ -261,37 +261,48 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree()
     return;
   }
 
-  // One search per point, in the tree's leaf order for the whole cloud (consecutive
-  // queries then walk the same branches and leaves) and in index order otherwise. Each
-  // query's k-th distance bounds the next one's (|q' - x| <= |q' - q| + |q - x|), so
-  // the search prunes from its first step. Work is split into fixed runs of queries,
-  // each started without a bound, so the result (ties included) is the same for any
-  // number of threads.
-  const std::size_t n = whole_cloud ? tree.size() : rows;
+  // One search per point, in the tree's leaf order (consecutive queries then walk the
+  // same branches and leaves; for a subset of the cloud, its rows in the order of their
+  // points in the tree). Each query's k-th distance bounds the next one's (|q' - x| <=
+  // |q' - q| + |q - x|), so the search prunes from its first step. Work is split into
+  // fixed runs of queries, each started without a bound, so the result (ties included)
+  // is the same for any number of threads.
+  std::vector<std::size_t> order;
+  if (!whole_cloud)
+    order = rowsInTreeOrder (tree);
+  const std::size_t n = whole_cloud ? tree.size() : order.size();
   constexpr std::size_t run = 256;
   const std::ptrdiff_t num_runs = static_cast<std::ptrdiff_t> ((n + run - 1) / run);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1) default(none)       \
-    shared(tree, k, n, num_runs, whole_cloud, store)
+    shared(tree, k, n, num_runs, whole_cloud, store, order)
   for (std::ptrdiff_t r = 0; r < num_runs; ++r) {
     std::vector<float> scratch (store ? 0 : k);
     float previous[3] = {0, 0, 0};
     float previous_kth = -1.0f; // k-th distance of the previous query; < 0: none
+    std::size_t previous_row = 0;
     const std::size_t last = std::min (n, static_cast<std::size_t> (r + 1) * run);
     for (std::size_t j = static_cast<std::size_t> (r) * run; j < last; ++j) {
-      std::size_t row;
+      const std::size_t row =
+          whole_cloud ? static_cast<std::size_t> (tree.pointIndex (j)) : order[j];
       float q[3];
-      if (whole_cloud) {
-        row = static_cast<std::size_t> (tree.pointIndex (j));
+      if (whole_cloud)
         std::copy_n (tree.point (j), 3, q);
-      }
       else {
-        row = j;
         const PointT& p = (*input_)[(*indices_)[row]];
-        if (!pcl::isFinite (p))
-          continue;
         q[0] = p.x;
         q[1] = p.y;
         q[2] = p.z;
+      }
+      float* d2 = store ? &sqr_distances_[row * k] : scratch.data();
+      if (previous_kth == 0.0f && std::equal (q, q + 3, previous)) {
+        // k or more copies of the previous query's point, and this query one of them:
+        // the same k nearest (those of the smallest indices), without walking every
+        // copy again (a stack of m copies would cost m^2).
+        std::copy_n (&indices_flat_[previous_row * k], k, &indices_flat_[row * k]);
+        if (store)
+          std::copy_n (&sqr_distances_[previous_row * k], k, d2);
+        previous_row = row;
+        continue;
       }
       float bound = std::numeric_limits<float>::max();
       if (previous_kth >= 0.0f) {
@@ -302,12 +313,40 @@ pcl_ext::Neighbourhoods<PointT>::searchWithTree()
         // Widened by a relative margin so float rounding never drops a true neighbour.
         bound = reach * reach * (1.0f + 1e-4f) + 1e-30f;
       }
-      float* d2 = store ? &sqr_distances_[row * k] : scratch.data();
       tree.nearestKSearch (q, k, &indices_flat_[row * k], d2, bound);
       std::copy_n (q, 3, previous);
       previous_kth = d2[k - 1];
+      previous_row = row;
     }
   }
+}
+
+template <typename PointT>
+std::vector<std::size_t>
+pcl_ext::Neighbourhoods<PointT>::rowsInTreeOrder (const search::KdTree3f& tree) const
+{
+  // Each point's place in the tree, then the rows of finite points by it (a counting
+  // sort: rows of one point keep their order).
+  const std::size_t rows = indices_->size();
+  std::vector<std::uint32_t> place (input_->size(), 0);
+  for (std::size_t pos = 0; pos < tree.size(); ++pos)
+    place[static_cast<std::size_t> (tree.pointIndex (pos))] =
+        static_cast<std::uint32_t> (pos);
+  std::vector<std::size_t> start (tree.size() + 1, 0);
+  std::vector<char> finite (rows, 0);
+  for (std::size_t row = 0; row < rows; ++row) {
+    const pcl::index_t i = (*indices_)[row];
+    finite[row] = pcl::isFinite ((*input_)[i]);
+    if (finite[row])
+      ++start[place[static_cast<std::size_t> (i)] + 1];
+  }
+  for (std::size_t pos = 0; pos < tree.size(); ++pos)
+    start[pos + 1] += start[pos];
+  std::vector<std::size_t> order (start.back());
+  for (std::size_t row = 0; row < rows; ++row)
+    if (finite[row])
+      order[start[place[static_cast<std::size_t> ((*indices_)[row])]]++] = row;
+  return order;
 }
 
 template <typename PointT>
