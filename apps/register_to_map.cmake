@@ -1,6 +1,6 @@
 # pcl_ext_register_to_map: register a building scan to its footprint by plane matching
 # (Khoshelham & Gorte 2009).
-set(register_to_map_deps pcl_ext::registration pcl_ext::io pcl_ext_apps_common)
+set(register_to_map_deps pcl_ext::registration pcl_ext::search pcl_ext::io pcl_ext_apps_common)
 if(TARGET pcl_ext::visualization)
   list(APPEND register_to_map_deps pcl_ext::visualization)
 endif()

@@ -9,6 +9,7 @@
 #include <pcl_ext/io/transform_file.h>
 #include <pcl_ext/registration/plane_matching_registration.h>
 #include <pcl_ext/registration/roof_outline_plane_extraction.h>
+#include <pcl_ext/search/cloud_noise.h>
 #include <pcl_ext/io/point_file.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
@@ -190,7 +191,12 @@ main (int argc, char** argv)
   cl.addOption ("building_label",
                 building_label,
                 "roof_outline: class of building points (LAS: 6)");
-  cl.addOption ("threshold", threshold, "sac: RANSAC inlier distance (m)");
+  cl.addOption (
+      "threshold",
+      threshold,
+      "sac: RANSAC inlier distance (m); when left out: three times the scan's "
+      "noise sigma, at least half its point spacing (0.4 when they cannot be "
+      "estimated)");
   cl.addOption ("min_inliers", min_inliers, "sac: least points of a plane");
   cl.addOption ("max_planes", max_planes, "sac: most planes");
   cl.addOption ("floor",
@@ -349,6 +355,25 @@ main (int argc, char** argv)
       std::any_of (labels->begin(), labels->end(), [&] (const pcl::Label& l) {
         return l.label == building_label;
       });
+  if (!roof_outline && !cl.given ("threshold")) {
+    // The inlier distance from the scan: three noise sigmas, at least half the point
+    // spacing (a noise-free cloud), as estimated from the flattest neighbourhoods.
+    const pcl_ext::NoiseEstimate noise =
+        pcl_ext::estimateCloudNoise (*scan, 50, static_cast<unsigned int> (threads));
+    if (noise.valid) {
+      threshold = std::max (3.0 * noise.sigma, 0.5 * noise.spacing);
+      std::printf ("RANSAC inlier distance %.3g m (from the scan: noise sigma %.3g m, "
+                   "point spacing %.3g m)\n",
+                   threshold,
+                   noise.sigma,
+                   noise.spacing);
+    }
+    else
+      std::printf ("RANSAC inlier distance %.3g m (the scan's noise could not be "
+                   "estimated: %s)\n",
+                   threshold,
+                   noise.reason.c_str());
+  }
   if (!roof_outline) {
     pcl_ext::SACPlaneExtraction<Point> extraction;
     extraction.setDistanceThreshold (threshold);
