@@ -2,6 +2,7 @@
  * pcl_ext_register_to_map: register a building scan to its 2D footprint by plane
  * matching (Khoshelham & Gorte 2009).
  */
+#include "register_to_map_defaults.h"
 #include "register_to_map_output.h"
 
 #include <pcl_ext/io/cloud_fields.h>
@@ -9,7 +10,6 @@
 #include <pcl_ext/io/transform_file.h>
 #include <pcl_ext/registration/plane_matching_registration.h>
 #include <pcl_ext/registration/roof_outline_plane_extraction.h>
-#include <pcl_ext/search/cloud_noise.h>
 #include <pcl_ext/io/point_file.h>
 #include <pcl_ext/apps/command_line.h>
 #include <pcl_ext/apps/input.h>
@@ -355,25 +355,8 @@ main (int argc, char** argv)
       std::any_of (labels->begin(), labels->end(), [&] (const pcl::Label& l) {
         return l.label == building_label;
       });
-  if (!roof_outline && !cl.given ("threshold")) {
-    // The inlier distance from the scan: three noise sigmas, at least half the point
-    // spacing (a noise-free cloud), as estimated from the flattest neighbourhoods.
-    const pcl_ext::NoiseEstimate noise =
-        pcl_ext::estimateCloudNoise (*scan, 50, static_cast<unsigned int> (threads));
-    if (noise.valid) {
-      threshold = std::max (3.0 * noise.sigma, 0.5 * noise.spacing);
-      std::printf ("RANSAC inlier distance %.3g m (from the scan: noise sigma %.3g m, "
-                   "point spacing %.3g m)\n",
-                   threshold,
-                   noise.sigma,
-                   noise.spacing);
-    }
-    else
-      std::printf ("RANSAC inlier distance %.3g m (the scan's noise could not be "
-                   "estimated: %s)\n",
-                   threshold,
-                   noise.reason.c_str());
-  }
+  if (!roof_outline && !cl.given ("threshold"))
+    threshold = pcl_ext::apps::ransacInlierDistance (*scan, threads, threshold);
   if (!roof_outline) {
     pcl_ext::SACPlaneExtraction<Point> extraction;
     extraction.setDistanceThreshold (threshold);
