@@ -194,10 +194,13 @@ main (int argc, char** argv)
   cl.addOption (
       "threshold",
       threshold,
-      "sac: RANSAC inlier distance (m); when left out: three times the scan's "
-      "noise sigma, at least half its point spacing (0.4 when they cannot be "
-      "estimated)");
-  cl.addOption ("min_inliers", min_inliers, "sac: least points of a plane");
+      "sac: RANSAC inlier distance (m); left out: 3 noise sigmas of the scan, "
+      "at least half its spacing (0.4 when they cannot be estimated)");
+  cl.addOption (
+      "min_inliers",
+      min_inliers,
+      "sac: least points of a plane; left out: those of 1.25 m^2 at the scan's "
+      "spacing, at least 50 (200 when it cannot be estimated)");
   cl.addOption ("max_planes", max_planes, "sac: most planes");
   cl.addOption ("floor",
                 floor_height,
@@ -355,12 +358,16 @@ main (int argc, char** argv)
       std::any_of (labels->begin(), labels->end(), [&] (const pcl::Label& l) {
         return l.label == building_label;
       });
-  if (!roof_outline && !cl.given ("threshold"))
-    threshold = pcl_ext::apps::ransacInlierDistance (*scan, threads, threshold);
   if (!roof_outline) {
+    const auto settings =
+        pcl_ext::apps::wallExtractionSettings (*scan,
+                                               threads,
+                                               {threshold, min_inliers},
+                                               !cl.given ("threshold"),
+                                               !cl.given ("min_inliers"));
     pcl_ext::SACPlaneExtraction<Point> extraction;
-    extraction.setDistanceThreshold (threshold);
-    extraction.setMinInliers (min_inliers);
+    extraction.setDistanceThreshold (settings.inlier_distance);
+    extraction.setMinInliers (settings.min_inliers);
     extraction.setMaxPlanes (max_planes);
     if (walls == "auto" && has_buildings) {
       std::vector<pcl::PointIndices> sets;
