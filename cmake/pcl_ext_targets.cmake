@@ -16,9 +16,12 @@ function(pcl_ext_add_module module)
   if(ARG_SOURCES)
     add_library(${target} ${ARG_SOURCES})
     set(scope PUBLIC)
+    # Installed, a module finds the modules it needs beside it (a consumer's runpath
+    # covers only its own direct dependencies), wherever the prefix is.
     set_target_properties(${target} PROPERTIES
       VERSION ${PROJECT_VERSION}
-      SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
+      SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}
+      INSTALL_RPATH "$ORIGIN")
     target_compile_options(${target} PRIVATE -Wall -Wextra)
     if(PCL_EXT_POINT_TYPES)
       # The Boost.Preprocessor sequence instantiate.h expects: (pcl::PointXYZ)(pcl::PointXYZRGB)
