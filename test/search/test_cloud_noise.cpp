@@ -2,6 +2,7 @@
  * Tests of estimateCloudNoise: the noise and spacing of whole clouds of known noise and
  * spacing, georeferenced too, and the clouds it cannot estimate from.
  */
+#include <pcl_ext/common/noise_sample.h>
 #include <pcl_ext/common/random.h>
 #include <pcl_ext/search/cloud_noise.h>
 
@@ -61,6 +62,34 @@ TEST (CloudNoise, TheSameOnAnyThreadCountAndFarFromTheOrigin)
       pcl_ext::estimateCloudNoise (noisyCorner (120, 0.02, 0.003, 500.0, 300.0), 50, 2);
   ASSERT_TRUE (far.valid) << far.reason;
   EXPECT_NEAR (far.sigma, 0.003, 0.0005);
+}
+
+TEST (CloudNoise, AStackOfCopiesOfOnePointIsSearchedOnce)
+{
+  // 100,000 copies of one point beside the walls: all of them are in the sample or
+  // none is (the sample is chosen by position); their neighbourhoods have no extent
+  // and are not used, so the walls give the estimate.
+  const Cloud walls = noisyCorner (120, 0.02, 0.003, 0.0, 0.0);
+  // A position whose copies are in the sample: a key among the smallest of the walls'.
+  pcl_ext::NoiseSampleCut walls_cut;
+  for (const auto& p : walls)
+    walls_cut.add (pcl_ext::noiseSampleKeyOf (p.x, p.y, p.z));
+  pcl::PointXYZ copy (1.0f, -1.0f, 1.0f);
+  while (pcl_ext::noiseSampleKeyOf (copy.x, copy.y, copy.z) >= walls_cut.get() / 2)
+    copy.z += 0.25f;
+  Cloud cloud = walls;
+  for (int i = 0; i < 100000; ++i)
+    cloud.push_back (copy);
+  const auto estimate = pcl_ext::estimateCloudNoise (cloud, 50, 2);
+  ASSERT_TRUE (estimate.valid) << estimate.reason;
+  EXPECT_NEAR (estimate.sigma, 0.003, 0.0005);
+  // A cloud of copies alone: nothing to estimate from, said so.
+  Cloud stack;
+  for (int i = 0; i < 100000; ++i)
+    stack.push_back (pcl::PointXYZ (1.0f, 2.0f, 3.0f));
+  const auto none = pcl_ext::estimateCloudNoise (stack, 50, 2);
+  EXPECT_FALSE (none.valid);
+  EXPECT_FALSE (none.reason.empty());
 }
 
 TEST (CloudNoise, SaysWhyItCannotEstimate)
