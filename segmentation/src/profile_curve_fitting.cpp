@@ -195,6 +195,8 @@ scoreCurveTurns (const ProfilePoints& profile,
       parameters.window_scale && parameters.window_scale->size() == n
           ? parameters.window_scale
           : nullptr;
+  std::vector<std::uint32_t> window_points;
+  std::vector<float> window_d2;
   for (std::uint32_t i = 0; i < n; ++i) {
     const double scale_i =
         window_scale ? std::max (1.0, double ((*window_scale)[i])) : 1.0;
@@ -205,19 +207,32 @@ scoreCurveTurns (const ProfilePoints& profile,
     if ((hi[chain[i]] - lo[chain[i]]).norm() < 2.0 * window_i)
       continue;
     const Eigen::Vector2f& p = profile.uv[i];
+    // The window's points of the chain, searched once for the direction, the side
+    // frames and the fits, in the grid's order: the tangent radius's points come in the
+    // order a search of that radius gives (the same sums, term by term).
+    window_points.clear();
+    window_d2.clear();
+    grid.forEachWithin (
+        p, static_cast<float> (window_i), [&] (std::uint32_t j, float d2) {
+          if (chain[j] == chain[i]) {
+            window_points.push_back (j);
+            window_d2.push_back (d2);
+          }
+        });
     // Local direction of the curve: principal axis of the nearby points of the chain.
+    const float tangent_reach = static_cast<float> (tangent_radius);
+    const float tangent_reach2 = tangent_reach * tangent_reach;
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
     std::size_t count = 0;
-    grid.forEachWithin (
-        p, static_cast<float> (tangent_radius), [&] (std::uint32_t j, float) {
-          if (chain[j] != chain[i])
-            return;
-          const Eigen::Vector2d d = (profile.uv[j] - p).cast<double>();
-          mean += d;
-          cov += d * d.transpose();
-          ++count;
-        });
+    for (std::size_t w = 0; w < window_points.size(); ++w) {
+      if (!(window_d2[w] <= tangent_reach2))
+        continue;
+      const Eigen::Vector2d d = (profile.uv[window_points[w]] - p).cast<double>();
+      mean += d;
+      cov += d * d.transpose();
+      ++count;
+    }
     if (count < 3)
       continue;
     mean /= static_cast<double> (count);
@@ -243,18 +258,15 @@ scoreCurveTurns (const ProfilePoints& profile,
       Eigen::Vector2d sum[2] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
       Eigen::Matrix2d second[2] = {Eigen::Matrix2d::Zero(), Eigen::Matrix2d::Zero()};
       double count_side[2] = {0.0, 0.0};
-      grid.forEachWithin (
-          p, static_cast<float> (window_i), [&] (std::uint32_t j, float) {
-            if (chain[j] != chain[i])
-              return;
-            const Eigen::Vector2d d = (profile.uv[j] - p).cast<double>() / scale;
-            for (int k = 0; k < 2; ++k)
-              if (k == 0 ? e.dot (d) <= 0.0 : e.dot (d) >= 0.0) {
-                sum[k] += d;
-                second[k] += d * d.transpose();
-                count_side[k] += 1.0;
-              }
-          });
+      for (const std::uint32_t j : window_points) {
+        const Eigen::Vector2d d = (profile.uv[j] - p).cast<double>() / scale;
+        for (int k = 0; k < 2; ++k)
+          if (k == 0 ? e.dot (d) <= 0.0 : e.dot (d) >= 0.0) {
+            sum[k] += d;
+            second[k] += d * d.transpose();
+            count_side[k] += 1.0;
+          }
+      }
       for (int k = 0; k < 2; ++k)
         if (count_side[k] >= 3.0) {
           const Eigen::Vector2d m = sum[k] / count_side[k];
@@ -270,9 +282,7 @@ scoreCurveTurns (const ProfilePoints& profile,
     const Eigen::Vector2d normal_axis[2] = {Eigen::Vector2d (-axis[0][1], axis[0][0]),
                                             Eigen::Vector2d (-axis[1][1], axis[1][0])};
     double side_reach[2] = {0.0, 0.0};
-    grid.forEachWithin (p, static_cast<float> (window_i), [&] (std::uint32_t j, float) {
-      if (chain[j] != chain[i])
-        return;
+    for (const std::uint32_t j : window_points) {
       const Eigen::Vector2d d = (profile.uv[j] - p).cast<double>();
       const double x = e.dot (d) / scale;
       const double t = (static_cast<double> (profile.t[j]) - profile.t[i]) / scale;
@@ -284,7 +294,7 @@ scoreCurveTurns (const ProfilePoints& profile,
           reach[k] = std::max (reach[k], std::abs (x));
           side_reach[k] = std::max (side_reach[k], k == 0 ? -xs : xs);
         }
-    });
+    }
     // A side shorter than 40% of the window is a curve end: nothing to compare with.
     if (side[0].n < min_side || side[1].n < min_side || reach[0] < 0.4 ||
         reach[1] < 0.4)
