@@ -31,9 +31,13 @@ namespace pcl_ext {
  *   points (if they are less than setMinCreaseAngle apart there is no crease); every
  *   point of the neighbourhood is given to the nearer plane and the planes refitted,
  *   up to three times.
- * - A crease: the planes make at least the minimum angle and each fits its points
- *   within setMaxResidual times the neighbourhood's nearest-neighbour spacing (a
- *   curved surface, a pipe, fits two planes worse than the noise of two faces).
+ * - A crease: the planes make at least the minimum angle, each fits its points
+ *   within setMaxResidual times the neighbourhood's nearest-neighbour spacing, and the
+ *   neighbourhood's cross-section has a kink at their line: the section's height over
+ *   the distance across the line fits two lines meeting there (c0 + c1 x + c2 |x|)
+ *   better than a smooth bend (c0 + c1 x + c2 x^2). The curved side of a narrow pipe,
+ *   whose normals turn by more than the minimum angle within a neighbourhood, fits two
+ *   planes too; its section is a bend, not a kink.
  * - On it: the point lies within setBandWidth times the point spacing of the line of
  *   intersection, the spacing sqrt(pi r^2 / k) of the point's neighbourhood of k
  *   points within radius r.
@@ -135,7 +139,7 @@ public:
 
   /** \brief Largest root mean square distance of a face's points from its plane, as a
    * multiple of the median distance from the neighbourhood's points to their nearest
-   * neighbour (default 0.2). */
+   * neighbour (default 0.4). */
   void
   setMaxResidual (double ratio)
   {
@@ -187,7 +191,7 @@ protected:
   int normal_k_ = 12;
   double max_patch_curvature_ = 0.15;
   double min_angle_ = 30.0 * M_PI / 180.0;
-  double max_residual_ = 0.2;
+  double max_residual_ = 0.4;
   double band_width_ = 1.0;
   Report report_;
 };

@@ -61,6 +61,63 @@ pcl_ext::EdgeLocalisation<PointT>::checkInputs (const char* name) const
   return true;
 }
 
+namespace pcl_ext {
+namespace detail {
+/** \brief Whether the neighbourhood's cross-section across the line where two planes
+ * meet has a kink there: the section's height y over the distance x across the line,
+ * with its axis between the two faces, is fitted by y = c0 + c1 x + c2 |x| (two lines
+ * meeting at the line: a crease) and by y = c0 + c1 x + c2 x^2 (a smooth bend: the
+ * curved side of a pipe, which two planes also fit); the crease's model must fit
+ * better. */
+inline bool
+kinkedSection (const std::vector<Eigen::Vector3d>& points,
+               const std::vector<std::uint8_t>& on_a,
+               const Eigen::Vector3d& normal_a,
+               const Eigen::Vector3d& normal_b,
+               const Eigen::Vector3d& foot,
+               const Eigen::Vector3d& direction)
+{
+  const Eigen::Vector3d d = direction.normalized();
+  // Each face's direction away from the line, within the section: the side its points
+  // lie on.
+  Eigen::Vector3d along_a = d.cross (normal_a).normalized(),
+                  along_b = d.cross (normal_b).normalized();
+  double side_a = 0.0, side_b = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d v = points[i] - foot;
+    (on_a[i] ? side_a : side_b) += (on_a[i] ? along_a : along_b).dot (v);
+  }
+  if (side_a < 0.0)
+    along_a = -along_a;
+  if (side_b < 0.0)
+    along_b = -along_b;
+  const Eigen::Vector3d x_axis = (along_a - along_b).normalized(),
+                        y_axis = (along_a + along_b).normalized();
+  if (!x_axis.allFinite() || !y_axis.allFinite())
+    return true;
+  Eigen::Matrix3d kink_g = Eigen::Matrix3d::Zero(), bend_g = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d kink_b = Eigen::Vector3d::Zero(), bend_b = Eigen::Vector3d::Zero();
+  double yy = 0.0;
+  for (const auto& p : points) {
+    const Eigen::Vector3d v = p - foot;
+    const double x = x_axis.dot (v), y = y_axis.dot (v);
+    const Eigen::Vector3d kink (1.0, x, std::abs (x)), bend (1.0, x, x * x);
+    kink_g += kink * kink.transpose();
+    bend_g += bend * bend.transpose();
+    kink_b += y * kink;
+    bend_b += y * bend;
+    yy += y * y;
+  }
+  const auto rss = [yy] (const Eigen::Matrix3d& g, const Eigen::Vector3d& b) {
+    const Eigen::Vector3d c = g.ldlt().solve (b);
+    return c.allFinite() ? yy - c.dot (b) : -1.0;
+  };
+  const double kink_rss = rss (kink_g, kink_b), bend_rss = rss (bend_g, bend_b);
+  return !(kink_rss >= 0.0 && bend_rss >= 0.0) || kink_rss < bend_rss;
+}
+} // namespace detail
+} // namespace pcl_ext
+
 template <typename PointT>
 bool
 pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
@@ -256,6 +313,9 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
             (*input_)[candidates[c]].getVector3fMap().template cast<double>();
         Eigen::Vector3d foot, direction;
         if (!intersectLocalPlanes (plane_a, plane_b, q, q, foot, direction))
+          return kNone;
+        if (!detail::kinkedSection (
+                points, on_a, plane_a.normal, plane_b.normal, foot, direction))
           return kNone;
         return (foot - q).norm() <= band_width_ * spacing ? kNear : kFar;
       };
