@@ -32,12 +32,16 @@ namespace pcl_ext {
  *   point of the neighbourhood is given to the nearer plane and the planes refitted,
  *   up to three times.
  * - A crease: the planes make at least the minimum angle, each fits its points
- *   within setMaxResidual times the neighbourhood's nearest-neighbour spacing, and the
- *   neighbourhood's cross-section has a kink at their line: the section's height over
- *   the distance across the line fits two lines meeting there (c0 + c1 x + c2 |x|)
- *   better than a smooth bend (c0 + c1 x + c2 x^2). The curved side of a narrow pipe,
- *   whose normals turn by more than the minimum angle within a neighbourhood, fits two
- *   planes too; its section is a bend, not a kink.
+ *   within setMaxResidual times the neighbourhood's nearest-neighbour spacing or
+ *   setNoiseFactor times the local noise (the median RMS residual of the neighbours'
+ *   patches), whichever is larger, and the neighbourhood's cross-section has a kink at
+ *   their line: the section's height over the distance across the line fits two lines
+ *   meeting there (c0 + c1 x + c2 |x|) better than a smooth bend (c0 + c1 x + c2 x^2),
+ *   with c2 beyond setKinkSignificance standard errors. The curved side of a narrow
+ *   pipe, whose normals turn by more than the minimum angle within a neighbourhood,
+ *   fits two planes too; its section is a bend, not a kink. Where the noise is as large
+ *   as the spacing (a scanner's near field), faces fit their planes only within the
+ *   noise, and the kink's significance keeps the noise from making creases.
  * - On it: the point lies within setBandWidth times the point spacing of the line of
  *   intersection, the spacing sqrt(pi r^2 / k) of the point's neighbourhood of k
  *   points within radius r.
@@ -152,6 +156,36 @@ public:
     return max_residual_;
   }
 
+  /** \brief Faces may fit their planes within this multiple of the local noise
+   * (the median RMS residual of the neighbours' normal patches) where that exceeds the
+   * spacing-based limit (setMaxResidual); default 3, 0: the spacing-based limit alone.
+   */
+  void
+  setNoiseFactor (double factor)
+  {
+    noise_factor_ = factor;
+  }
+
+  double
+  getNoiseFactor () const
+  {
+    return noise_factor_;
+  }
+
+  /** \brief Standard errors by which the kink of a crease's cross-section must exceed
+   * zero (default 3; 0: the kink need only fit better than a smooth bend). */
+  void
+  setKinkSignificance (double standard_errors)
+  {
+    kink_significance_ = standard_errors;
+  }
+
+  double
+  getKinkSignificance () const
+  {
+    return kink_significance_;
+  }
+
   /** \brief Half-width of the band kept along a crease, as a multiple of the point
    * spacing (default 1). */
   void
@@ -192,6 +226,8 @@ protected:
   double max_patch_curvature_ = 0.15;
   double min_angle_ = 30.0 * M_PI / 180.0;
   double max_residual_ = 0.4;
+  double noise_factor_ = 3.0;
+  double kink_significance_ = 3.0;
   double band_width_ = 1.0;
   Report report_;
 };

@@ -54,6 +54,17 @@ pcl_ext::EdgeLocalisation<PointT>::checkInputs (const char* name) const
         "%s maximum residual = %g; it must be finite and > 0.\n", name, max_residual_);
     return false;
   }
+  if (!(noise_factor_ >= 0.0) || !std::isfinite (noise_factor_)) {
+    PCL_ERROR (
+        "%s noise factor = %g; it must be finite and >= 0.\n", name, noise_factor_);
+    return false;
+  }
+  if (!(kink_significance_ >= 0.0) || !std::isfinite (kink_significance_)) {
+    PCL_ERROR ("%s kink significance = %g; it must be finite and >= 0.\n",
+               name,
+               kink_significance_);
+    return false;
+  }
   if (!(band_width_ > 0.0) || !std::isfinite (band_width_)) {
     PCL_ERROR ("%s band width = %g; it must be finite and > 0.\n", name, band_width_);
     return false;
@@ -68,14 +79,16 @@ namespace detail {
  * with its axis between the two faces, is fitted by y = c0 + c1 x + c2 |x| (two lines
  * meeting at the line: a crease) and by y = c0 + c1 x + c2 x^2 (a smooth bend: the
  * curved side of a pipe, which two planes also fit); the crease's model must fit
- * better. */
+ * better, and its kink c2 must exceed \a significance times its standard error (noise
+ * alone bends a section as often one way as the other). */
 inline bool
 kinkedSection (const std::vector<Eigen::Vector3d>& points,
                const std::vector<std::uint8_t>& on_a,
                const Eigen::Vector3d& normal_a,
                const Eigen::Vector3d& normal_b,
                const Eigen::Vector3d& foot,
-               const Eigen::Vector3d& direction)
+               const Eigen::Vector3d& direction,
+               double significance)
 {
   const Eigen::Vector3d d = direction.normalized();
   // Each face's direction away from the line, within the section: the side its points
@@ -108,12 +121,23 @@ kinkedSection (const std::vector<Eigen::Vector3d>& points,
     bend_b += y * bend;
     yy += y * y;
   }
-  const auto rss = [yy] (const Eigen::Matrix3d& g, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d c = g.ldlt().solve (b);
-    return c.allFinite() ? yy - c.dot (b) : -1.0;
-  };
-  const double kink_rss = rss (kink_g, kink_b), bend_rss = rss (bend_g, bend_b);
-  return !(kink_rss >= 0.0 && bend_rss >= 0.0) || kink_rss < bend_rss;
+  const Eigen::LDLT<Eigen::Matrix3d> kink_fit (kink_g), bend_fit (bend_g);
+  const Eigen::Vector3d kink_c = kink_fit.solve (kink_b),
+                        bend_c = bend_fit.solve (bend_b);
+  if (!kink_c.allFinite() || !bend_c.allFinite())
+    return true;
+  const double kink_rss = std::max (yy - kink_c.dot (kink_b), 0.0),
+               bend_rss = std::max (yy - bend_c.dot (bend_b), 0.0);
+  if (!(kink_rss < bend_rss))
+    return false;
+  const double n = static_cast<double> (points.size());
+  if (significance <= 0.0 || n <= 3.0)
+    return true;
+  // Var(c2) = sigma^2 [(G^-1)]_22, sigma^2 from the kink model's residual.
+  const Eigen::Vector3d unit_c2 = kink_fit.solve (Eigen::Vector3d::UnitZ());
+  const double variance = kink_rss / (n - 3.0) * unit_c2[2];
+  return !(variance > 0.0) ||
+         std::abs (kink_c[2]) > significance * std::sqrt (variance);
 }
 } // namespace detail
 } // namespace pcl_ext
@@ -174,11 +198,12 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
   report_.examined = candidates.size();
 
   // Each neighbour's normal from its nearest normal_k_ points (zero: none), the
-  // surface variance of that patch (eq. 4) and its distance to its nearest other point
-  // (-1: none).
+  // surface variance of that patch (eq. 4), the RMS distance of its points from their
+  // plane, and its distance to its nearest other point (-1: none).
   const std::size_t slots = slot_row.size();
   std::vector<Eigen::Vector3f> normal (slots, Eigen::Vector3f::Zero());
-  std::vector<float> nearest (slots, -1.0f), patch_curvature (slots, -1.0f);
+  std::vector<float> nearest (slots, -1.0f), patch_curvature (slots, -1.0f),
+      patch_rms (slots, -1.0f);
   const std::size_t normal_k = static_cast<std::size_t> (normal_k_);
   const unsigned int threads = resolveThreadCount (this->threads_);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 256)
@@ -190,9 +215,14 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
     if (row.size() > 1)
       nearest[s] = std::sqrt (nb->getSquaredDistance (static_cast<std::size_t> (r), 1));
     const std::size_t m = std::min (row.size(), normal_k);
-    if (m >= 3)
-      fitPatchNormal (
-          *input_, row.begin(), row.begin() + m, normal[s], patch_curvature[s]);
+    float smallest = 0.0f;
+    if (m >= 3 && fitPatchNormal (*input_,
+                                  row.begin(),
+                                  row.begin() + m,
+                                  normal[s],
+                                  patch_curvature[s],
+                                  &smallest))
+      patch_rms[s] = std::sqrt (smallest);
   }
 
   // Fewer normals than this in a neighbourhood: no faces to fit.
@@ -300,9 +330,15 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
         }
         if (!fitted || std::abs (plane_a.normal.dot (plane_b.normal)) > min_cos)
           return kNone;
+        // The faces' residual limit: a share of the spacing, or a multiple of the
+        // noise of the patches around the point where the noise is the larger (a
+        // scan's near field, dense and noisy, whose creases two planes still fit).
         const float nearest_spacing = median (nearest, -1.0f);
+        const float noise = median (patch_rms, -1.0f);
         if (!(nearest_spacing >= 0.0f) ||
-            std::max (plane_a.rms, plane_b.rms) > max_residual_ * nearest_spacing)
+            std::max (plane_a.rms, plane_b.rms) >
+                std::max (max_residual_ * nearest_spacing,
+                          noise_factor_ * std::max (noise, 0.0f)))
           return kNone;
         const double spacing =
             std::sqrt (M_PI * static_cast<double> (nb->getSquaredDistance (r, k - 1)) /
@@ -314,8 +350,13 @@ pcl_ext::EdgeLocalisation<PointT>::localise (LabelCloud& output)
         Eigen::Vector3d foot, direction;
         if (!intersectLocalPlanes (plane_a, plane_b, q, q, foot, direction))
           return kNone;
-        if (!detail::kinkedSection (
-                points, on_a, plane_a.normal, plane_b.normal, foot, direction))
+        if (!detail::kinkedSection (points,
+                                    on_a,
+                                    plane_a.normal,
+                                    plane_b.normal,
+                                    foot,
+                                    direction,
+                                    kink_significance_))
           return kNone;
         return (foot - q).norm() <= band_width_ * spacing ? kNear : kFar;
       };

@@ -161,7 +161,8 @@ bool
 isFinite (const EigenFeatures& features);
 
 /** \brief The normal of a small patch, the points [begin, end) of \a cloud (a point's
- * nearest few), and its surface variance (eq. 4).
+ * nearest few), and its surface variance (eq. 4); optionally the smallest eigenvalue of
+ * its covariance, the mean squared distance of its points from their plane.
  * \return false, the outputs unchanged, with fewer than 3 finite points or no spread */
 template <typename PointT, typename IndexIterator>
 bool
@@ -169,7 +170,8 @@ fitPatchNormal (const pcl::PointCloud<PointT>& cloud,
                 IndexIterator begin,
                 IndexIterator end,
                 Eigen::Vector3f& normal,
-                float& curvature);
+                float& curvature,
+                float* smallest_variance = nullptr);
 } // namespace pcl_ext
 
 #include <pcl_ext/common/impl/covariance.hpp>

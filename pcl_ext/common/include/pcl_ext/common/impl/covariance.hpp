@@ -42,7 +42,8 @@ pcl_ext::fitPatchNormal (const pcl::PointCloud<PointT>& cloud,
                          IndexIterator begin,
                          IndexIterator end,
                          Eigen::Vector3f& normal,
-                         float& curvature)
+                         float& curvature,
+                         float* smallest_variance)
 {
   Eigen::Matrix3d covariance;
   Eigen::Vector3d centroid;
@@ -52,5 +53,7 @@ pcl_ext::fitPatchNormal (const pcl::PointCloud<PointT>& cloud,
     return false;
   normal = eigen.normal().template cast<float>();
   curvature = static_cast<float> (surfaceVariance (eigen.values));
+  if (smallest_variance)
+    *smallest_variance = static_cast<float> (std::max (eigen.values (0), 0.0));
   return true;
 }
