@@ -92,35 +92,46 @@ kinkedSection (const std::vector<Eigen::Vector3d>& points,
 {
   const Eigen::Vector3d d = direction.normalized();
   // Each face's direction away from the line, within the section: the side its points
-  // lie on.
-  Eigen::Vector3d along_a = d.cross (normal_a).normalized(),
-                  along_b = d.cross (normal_b).normalized();
+  // lie on. The section's axes are their difference (across) and sum (up the V), so a
+  // point's coordinates follow from its two projections.
+  const Eigen::Vector3d along_a = d.cross (normal_a).normalized(),
+                        along_b = d.cross (normal_b).normalized();
   double side_a = 0.0, side_b = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Eigen::Vector3d v = points[i] - foot;
-    (on_a[i] ? side_a : side_b) += (on_a[i] ? along_a : along_b).dot (v);
+    if (on_a[i])
+      side_a += along_a.dot (v);
+    else
+      side_b += along_b.dot (v);
   }
-  if (side_a < 0.0)
-    along_a = -along_a;
-  if (side_b < 0.0)
-    along_b = -along_b;
-  const Eigen::Vector3d x_axis = (along_a - along_b).normalized(),
-                        y_axis = (along_a + along_b).normalized();
+  const double sign_a = side_a < 0.0 ? -1.0 : 1.0, sign_b = side_b < 0.0 ? -1.0 : 1.0;
+  const Eigen::Vector3d x_axis = (sign_a * along_a - sign_b * along_b).normalized(),
+                        y_axis = (sign_a * along_a + sign_b * along_b).normalized();
   if (!x_axis.allFinite() || !y_axis.allFinite())
     return true;
-  Eigen::Matrix3d kink_g = Eigen::Matrix3d::Zero(), bend_g = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d kink_b = Eigen::Vector3d::Zero(), bend_b = Eigen::Vector3d::Zero();
-  double yy = 0.0;
+  // The moments both fits need: n, x, |x|, x^2, x |x|, x^3, x^4, y, x y, |x| y, x^2 y.
+  double n = 0.0, sx = 0.0, sa = 0.0, sxx = 0.0, sxa = 0.0, sx3 = 0.0, sx4 = 0.0,
+         sy = 0.0, sxy = 0.0, say = 0.0, sx2y = 0.0, yy = 0.0;
   for (const auto& p : points) {
     const Eigen::Vector3d v = p - foot;
-    const double x = x_axis.dot (v), y = y_axis.dot (v);
-    const Eigen::Vector3d kink (1.0, x, std::abs (x)), bend (1.0, x, x * x);
-    kink_g += kink * kink.transpose();
-    bend_g += bend * bend.transpose();
-    kink_b += y * kink;
-    bend_b += y * bend;
+    const double x = x_axis.dot (v), y = y_axis.dot (v), a = std::abs (x), x2 = x * x;
+    n += 1.0;
+    sx += x;
+    sa += a;
+    sxx += x2;
+    sxa += x * a;
+    sx3 += x2 * x;
+    sx4 += x2 * x2;
+    sy += y;
+    sxy += x * y;
+    say += a * y;
+    sx2y += x2 * y;
     yy += y * y;
   }
+  Eigen::Matrix3d kink_g, bend_g;
+  kink_g << n, sx, sa, sx, sxx, sxa, sa, sxa, sxx;
+  bend_g << n, sx, sxx, sx, sxx, sx3, sxx, sx3, sx4;
+  const Eigen::Vector3d kink_b (sy, sxy, say), bend_b (sy, sxy, sx2y);
   const Eigen::LDLT<Eigen::Matrix3d> kink_fit (kink_g), bend_fit (bend_g);
   const Eigen::Vector3d kink_c = kink_fit.solve (kink_b),
                         bend_c = bend_fit.solve (bend_b);
@@ -130,7 +141,6 @@ kinkedSection (const std::vector<Eigen::Vector3d>& points,
                bend_rss = std::max (yy - bend_c.dot (bend_b), 0.0);
   if (!(kink_rss < bend_rss))
     return false;
-  const double n = static_cast<double> (points.size());
   if (significance <= 0.0 || n <= 3.0)
     return true;
   // Var(c2) = sigma^2 [(G^-1)]_22, sigma^2 from the kink model's residual.
