@@ -108,9 +108,7 @@ main (int argc, char** argv)
   std::size_t wide_edges = 0;
   for (const auto& l : labels)
     wide_edges += l.label == static_cast<std::uint32_t> (pcl_ext::PointClass::Edge);
-  const bool range_camera =
-      classifier.isRangeCameraNoise (classifier.getNoiseEstimate());
-  const bool narrowed = edges.localises (options.preset, range_camera);
+  const bool narrowed = edges.localises (options.preset);
   if (narrowed && !pcl_ext::apps::EdgeLocalisationOption::localise<pcl::PointXYZ> (
                       cloud, nb, threads, labels))
     return 1;
@@ -124,9 +122,6 @@ main (int argc, char** argv)
             << counts[3] << ", unknown " << counts[0];
   if (narrowed)
     std::cout << " (edges narrowed to their creases; " << wide_edges << " before)";
-  else if (range_camera && !edges.wide_edges && options.preset != "paper")
-    std::cout << " (edges as eq. 5 gives them: the noise is above a fifth of the point "
-                 "spacing, too much to place a crease within a spacing)";
   std::cout << "\n";
 
   std::vector<std::uint32_t> classes (labels.size());

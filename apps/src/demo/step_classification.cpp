@@ -24,7 +24,7 @@ classify (DemoContext& context,
           std::vector<std::uint32_t>& classes)
 {
   // As pcl_ext_classify_variance: one search, the classes, the edges narrowed to
-  // their creases (not on a range camera's cloud).
+  // their creases.
   auto nb = pcl::make_shared<Neighbourhoods<pcl::PointXYZ>>();
   nb->setInputCloud (cloud);
   nb->setKSearch (context.k);
@@ -40,17 +40,15 @@ classify (DemoContext& context,
     classifier.classify (*labels);
   if (labels->size() != cloud->size())
     return false;
-  if (!classifier.isRangeCameraNoise (classifier.getNoiseEstimate())) {
-    EdgeLocalisation<pcl::PointXYZ> localisation;
-    localisation.setInputCloud (cloud);
-    localisation.setNeighbourhoods (nb);
-    localisation.setNumberOfThreads (context.threads);
-    localisation.setPointClasses (labels);
-    pcl::PointCloud<pcl::Label> narrowed;
-    if (!localisation.localise (narrowed))
-      return false;
-    labels->swap (narrowed);
-  }
+  EdgeLocalisation<pcl::PointXYZ> localisation;
+  localisation.setInputCloud (cloud);
+  localisation.setNeighbourhoods (nb);
+  localisation.setNumberOfThreads (context.threads);
+  localisation.setPointClasses (labels);
+  pcl::PointCloud<pcl::Label> narrowed;
+  if (!localisation.localise (narrowed))
+    return false;
+  labels->swap (narrowed);
   const double ms = timer.done (labels->size());
   classes.resize (labels->size());
   std::size_t count[kNumPointClasses] = {0};

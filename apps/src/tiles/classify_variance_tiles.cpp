@@ -94,7 +94,7 @@ public:
     }
     // The narrowing reads an edge point's neighbourhood and its neighbours' nearest
     // points: within the classification's reach (eq. 5), so exact on the core.
-    if (edges_.localises (options_.preset, hasRangeCameraNoise (settings))) {
+    if (edges_.localises (options_.preset)) {
       auto core = pcl::make_shared<pcl::Indices>();
       for (std::size_t i = 0; i < tile.cloud->size(); ++i)
         if (tile.core[i])

@@ -28,7 +28,6 @@ constexpr const char* kSpreadValues[4] = {
     "lv_noise_l0", "lv_noise_l1", "lv_noise_l2", "lv_noise_size"};
 constexpr const char* kNoiseSetting = "noise_sigma";
 /** Setting: "1" when the whole cloud's noise is a range camera's. */
-constexpr const char* kRangeCameraSetting = "range_camera_noise";
 
 /** The eigenvalues and size of the neighbourhood of the tile's point \a i, as the
  * classifier computes them; size 0 (eigenvalues 0) where it has none. */
@@ -215,11 +214,6 @@ VarianceTileMethod::reduce (const std::string& folder,
               << noise.reason << "; none is removed (the paper's eq. 4-6).\n";
   if (estimate_noise_)
     settings[kNoiseSetting] = text (sigma);
-  // Whether the whole cloud's noise is a range camera's, where the untiled classifier
-  // estimates it (the edges are then not narrowed).
-  if (noise_needed)
-    settings[kRangeCameraSetting] =
-        Classification::isRangeCameraNoise (noise) ? "1" : "0";
   if (getClassificationOptions().curvature_threshold != 0.0)
     return true;
   // As LocalVarianceClassification derives it: factor * the sample's median kappa with
@@ -230,14 +224,6 @@ VarianceTileMethod::reduce (const std::string& folder,
                             : Classification::curvatureFactorFor (noise);
   settings[kThresholdSetting] = text (std::isfinite (median) ? factor * median : 0.0);
   return true;
-}
-
-bool
-VarianceTileMethod::hasRangeCameraNoise (
-    const std::map<std::string, std::string>& settings)
-{
-  const auto found = settings.find (kRangeCameraSetting);
-  return found != settings.end() && found->second == "1";
 }
 
 bool

@@ -74,12 +74,6 @@ protected:
   applyEstimates (LocalVarianceClassification<pcl::PointXYZ>& classifier,
                   const std::map<std::string, std::string>& settings) const;
 
-  /** \brief Whether the reduce found a range camera's noise in the whole cloud
-   * (LocalVarianceClassification::isRangeCameraNoise), where the untiled classifier
-   * estimates the noise; false otherwise. */
-  static bool
-  hasRangeCameraNoise (const std::map<std::string, std::string>& settings);
-
 private:
   double curvature_factor_ =
       0.0; ///< the classifier's after the options (0: from the cloud)

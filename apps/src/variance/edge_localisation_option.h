@@ -31,15 +31,12 @@ struct EdgeLocalisationOption {
                   "neighbourhood spans; -preset paper keeps them all too)");
   }
 
-  /** \brief Whether the edges are narrowed, given the classification's preset and
-   * whether the classifier found a range camera's noise in the cloud
-   * (LocalVarianceClassification::isRangeCameraNoise): with noise above a fifth of the
-   * spacing no two faces fit a neighbourhood closely enough to place a crease within a
-   * spacing, so eq. 5's band is kept. */
+  /** \brief Whether the edges are narrowed, given the classification's preset. A
+   * range camera's cloud too: the narrowing's faces may fit within the local noise. */
   bool
-  localises (const std::string& preset, bool range_camera_noise) const
+  localises (const std::string& preset) const
   {
-    return !wide_edges && preset != "paper" && !range_camera_noise;
+    return !wide_edges && preset != "paper";
   }
 
   /** \brief Narrow the edges of \a classes (one per point of \a cloud, classified on
