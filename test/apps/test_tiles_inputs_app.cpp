@@ -1,6 +1,7 @@
 /*
  * pcl_ext_tiles run as a command on inputs that cannot go into one output: LAS files in
- * two coordinate reference systems are refused before any tile runs.
+ * two coordinate reference systems are refused before any tile runs, and so is a tile
+ * size far too small for the data.
  */
 #include "../app_test.h"
 
@@ -90,4 +91,24 @@ TEST_F (TilesInputsApp, InputsInDifferentCoordinateSystemsAreRefused)
   EXPECT_NE (output_.find ("declares no coordinate reference system"),
              std::string::npos)
       << output_;
+}
+
+TEST_F (TilesInputsApp, ATileSizeFarTooSmallIsRefused)
+{
+  // 20,000 points over a room of several metres in 2 cm tiles: more than a thousand
+  // tiles would hold points, a few each. Refused with the reason, without output and
+  // without a file per tile; with the tile size fitted to the data the run goes
+  // through.
+  EXPECT_EQ (run ("classify_variance " + path ("scene.pcd") + " " + path ("out.las") +
+                  " -tile_size 0.02 -workdir " + path ("work")),
+             1);
+  EXPECT_NE (output_.find ("give a larger tile size"), std::string::npos) << output_;
+  EXPECT_FALSE (exists ("out.las"));
+  EXPECT_FALSE (exists ("work/plan.txt"));
+  EXPECT_FALSE (exists ("work/tile_0.points"));
+  EXPECT_EQ (run ("classify_variance " + path ("scene.pcd") + " " + path ("out.las") +
+                  " -workdir " + path ("work2")),
+             0)
+      << output_;
+  EXPECT_TRUE (exists ("out.las"));
 }

@@ -18,6 +18,7 @@
 #include <iomanip>
 #include <limits>
 #include <stdexcept>
+#include <unordered_set>
 #include <sstream>
 
 #include <unistd.h>
@@ -30,6 +31,8 @@ constexpr const char* kPlanHeader = "pcl_ext tile plan 1";
  * coordinates and LAS header bounds rounded to the file's scale. */
 constexpr double kBoxMargin = 0.01;
 constexpr std::size_t kChunkPoints = 1 << 20;
+/// Tiles that own points are allowed at least this many, however few the points.
+constexpr std::uint64_t kMinTileLimit = 1000;
 
 /** \a path made absolute (a relative one joined to the working folder), so that the
  * steps of a plan find its inputs from any working folder; as given where the working
@@ -302,6 +305,13 @@ writeTiles (const TilePlan& plan,
             NoiseSampleCut* sample_cut)
 {
   const TileGrid grid = plan.getGrid();
+  // A tile size far too small for the data (a cloud in millimetres, a typing error)
+  // would write files for millions of tiles of a few points each: stop once the tiles
+  // that own points would average fewer than a hundred.
+  const std::size_t max_tiles = static_cast<std::size_t> (
+      std::max<std::uint64_t> (kMinTileLimit, plan.getTotalPoints() / 100));
+  std::unordered_set<std::size_t> owners;
+  std::size_t last_owner = TileGrid::kNoTile;
   TilePointWriter writer (folder, grid.size(), 4096, attribute_count);
   std::vector<float> values;
   pcl::PCLPointCloud2 chunk;
@@ -351,6 +361,19 @@ writeTiles (const TilePlan& plan,
                      x,
                      y);
           return false;
+        }
+        if (owner != last_owner) {
+          last_owner = owner;
+          if (owners.insert (owner).second && owners.size() > max_tiles) {
+            PCL_ERROR (
+                "[pcl_ext::tiling::writeTiles] tile size %g: more than %zu tiles "
+                "hold points, fewer than a hundred of the %llu points each; "
+                "give a larger tile size (0: fitted to the data).\n",
+                plan.tile_size,
+                max_tiles,
+                static_cast<unsigned long long> (plan.getTotalPoints()));
+            return false;
+          }
         }
         p.owner = static_cast<std::uint32_t> (owner);
         if (sample_cut)
