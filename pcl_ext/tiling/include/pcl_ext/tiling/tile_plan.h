@@ -113,8 +113,9 @@ using ChunkAttributes = std::function<bool (const pcl::PCLPointCloud2& chunk,
  * them) is added to it: the whole cloud's noise sample is then known before any tile
  * runs. \throw io::ReadError naming an input that cannot be read \return false
  * (PCL_ERROR) when a point lies outside the plan's box (an input changed since the
- * plan, or a LAS header whose box lies), the attributes cannot be read or a file cannot
- * be written */
+ * plan, or a LAS header whose box lies), the attributes cannot be read, a file cannot
+ * be written, or the tile size is far too small for the data (more than max(1,000,
+ * points / 100) tiles would hold points) */
 bool
 writeTiles (const TilePlan& plan,
             const std::string& folder,
