@@ -195,8 +195,8 @@ scoreCurveTurns (const ProfilePoints& profile,
       parameters.window_scale && parameters.window_scale->size() == n
           ? parameters.window_scale
           : nullptr;
-  std::vector<std::uint32_t> window_points;
-  std::vector<float> window_d2;
+  std::vector<std::uint32_t> near_points;
+  std::vector<float> near_d2;
   for (std::uint32_t i = 0; i < n; ++i) {
     const double scale_i =
         window_scale ? std::max (1.0, double ((*window_scale)[i])) : 1.0;
@@ -207,28 +207,31 @@ scoreCurveTurns (const ProfilePoints& profile,
     if ((hi[chain[i]] - lo[chain[i]]).norm() < 2.0 * window_i)
       continue;
     const Eigen::Vector2f& p = profile.uv[i];
-    // The window's points of the chain, searched once for the direction, the side
-    // frames and the fits, in the grid's order: the tangent radius's points come in the
-    // order a search of that radius gives (the same sums, term by term).
-    window_points.clear();
-    window_d2.clear();
+    // The chain's points within the larger of the window and the tangent radius,
+    // searched once for the direction, the side frames and the fits, in the grid's
+    // order: each radius's points come in the order a search of that radius gives (the
+    // same sums, term by term).
+    const float window_reach = static_cast<float> (window_i),
+                tangent_reach = static_cast<float> (tangent_radius);
+    const float window_reach2 = window_reach * window_reach,
+                tangent_reach2 = tangent_reach * tangent_reach;
+    near_points.clear();
+    near_d2.clear();
     grid.forEachWithin (
-        p, static_cast<float> (window_i), [&] (std::uint32_t j, float d2) {
+        p, std::max (window_reach, tangent_reach), [&] (std::uint32_t j, float d2) {
           if (chain[j] == chain[i]) {
-            window_points.push_back (j);
-            window_d2.push_back (d2);
+            near_points.push_back (j);
+            near_d2.push_back (d2);
           }
         });
     // Local direction of the curve: principal axis of the nearby points of the chain.
-    const float tangent_reach = static_cast<float> (tangent_radius);
-    const float tangent_reach2 = tangent_reach * tangent_reach;
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
     std::size_t count = 0;
-    for (std::size_t w = 0; w < window_points.size(); ++w) {
-      if (!(window_d2[w] <= tangent_reach2))
+    for (std::size_t w = 0; w < near_points.size(); ++w) {
+      if (!(near_d2[w] <= tangent_reach2))
         continue;
-      const Eigen::Vector2d d = (profile.uv[window_points[w]] - p).cast<double>();
+      const Eigen::Vector2d d = (profile.uv[near_points[w]] - p).cast<double>();
       mean += d;
       cov += d * d.transpose();
       ++count;
@@ -245,6 +248,15 @@ scoreCurveTurns (const ProfilePoints& profile,
       continue;
     const Eigen::Vector2d e = eig.eigenvectors().col (1);
     const Eigen::Vector2d f (-e[1], e[0]);
+    // Where the tangent radius exceeds the window, the window's points alone are
+    // fitted.
+    if (tangent_reach > window_reach) {
+      std::size_t kept = 0;
+      for (std::size_t w = 0; w < near_points.size(); ++w)
+        if (near_d2[w] <= window_reach2)
+          near_points[kept++] = near_points[w];
+      near_points.resize (kept);
+    }
 
     Gram side[2];
     double reach[2] = {0.0, 0.0};
@@ -258,7 +270,7 @@ scoreCurveTurns (const ProfilePoints& profile,
       Eigen::Vector2d sum[2] = {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
       Eigen::Matrix2d second[2] = {Eigen::Matrix2d::Zero(), Eigen::Matrix2d::Zero()};
       double count_side[2] = {0.0, 0.0};
-      for (const std::uint32_t j : window_points) {
+      for (const std::uint32_t j : near_points) {
         const Eigen::Vector2d d = (profile.uv[j] - p).cast<double>() / scale;
         for (int k = 0; k < 2; ++k)
           if (k == 0 ? e.dot (d) <= 0.0 : e.dot (d) >= 0.0) {
@@ -282,7 +294,7 @@ scoreCurveTurns (const ProfilePoints& profile,
     const Eigen::Vector2d normal_axis[2] = {Eigen::Vector2d (-axis[0][1], axis[0][0]),
                                             Eigen::Vector2d (-axis[1][1], axis[1][0])};
     double side_reach[2] = {0.0, 0.0};
-    for (const std::uint32_t j : window_points) {
+    for (const std::uint32_t j : near_points) {
       const Eigen::Vector2d d = (profile.uv[j] - p).cast<double>();
       const double x = e.dot (d) / scale;
       const double t = (static_cast<double> (profile.t[j]) - profile.t[i]) / scale;

@@ -27,8 +27,6 @@ constexpr const char* kKeyParts[3] = {
 constexpr const char* kSpreadValues[4] = {
     "lv_noise_l0", "lv_noise_l1", "lv_noise_l2", "lv_noise_size"};
 constexpr const char* kNoiseSetting = "noise_sigma";
-/** Setting: "1" when the whole cloud's noise is a range camera's. */
-
 /** The eigenvalues and size of the neighbourhood of the tile's point \a i, as the
  * classifier computes them; size 0 (eigenvalues 0) where it has none. */
 NeighbourhoodSpread
