@@ -353,11 +353,11 @@ main (int argc, char** argv)
 
   // Walls from the data: sequential RANSAC, and the roof outlines of a classified
   // airborne cloud when RANSAC finds fewer than 3 walls.
-  const bool has_buildings =
-      labels->size() == scan->size() &&
-      std::any_of (labels->begin(), labels->end(), [&] (const pcl::Label& l) {
-        return l.label == building_label;
-      });
+  pcl::IndicesPtr roofs (new pcl::Indices); // the building-class points
+  for (std::size_t i = 0; labels->size() == scan->size() && i < labels->size(); ++i)
+    if ((*labels)[i].label == building_label)
+      roofs->push_back (static_cast<pcl::index_t> (i));
+  const bool has_buildings = !roofs->empty();
   if (!roof_outline) {
     const auto settings =
         pcl_ext::apps::wallExtractionSettings (*scan,
@@ -390,6 +390,8 @@ main (int argc, char** argv)
     extraction.setGroundLabel (ground_label);
     extraction.setBuildingLabel (building_label);
     reg.setPlaneExtractor (extraction.asExtractor());
+    // The roofs lie over the footprints: a pose that puts fewer there is not chosen.
+    reg.setCoverageIndices (roofs);
   }
   // The map has no heights: with footprints in a projected system (beyond 1 km of its
   // zero), heights are absolute, and a classified airborne cloud gives its ground's.

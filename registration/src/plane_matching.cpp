@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <utility>
 
 #ifdef _OPENMP
@@ -78,6 +80,10 @@ checkPlaneMatchingParameters (const PlaneMatchingParameters& p)
     bad = "the ambiguity tolerance must be >= 0 pairs";
   else if (!(p.ambiguity_support >= 0.0 && p.ambiguity_support <= 1.0))
     bad = "the ambiguity support ratio must be in [0, 1]";
+  else if (p.coverage_pairs < 0)
+    bad = "the pose score's tolerance must be >= 0 pairs";
+  else if (!(p.coverage_margin >= 0.0 && p.coverage_margin <= 1.0))
+    bad = "the pose score's margin must be in [0, 1]";
   else if (p.min_matches < 0)
     bad = "the minimum number of matches must be >= 0";
   else if (!(p.min_conditioning > 0.0 && p.min_conditioning < 1.0))
@@ -111,7 +117,8 @@ matchPlanes (const std::vector<Plane>& scan,
              const std::vector<Plane>& map,
              const PlaneMatchingParameters& parameters,
              PlaneMatchingResult& result,
-             const Eigen::Matrix4d& guess)
+             const Eigen::Matrix4d& guess,
+             const std::function<double (const Eigen::Matrix4d&)>& pose_score)
 {
   using plane_matching::Candidate;
   using plane_matching::Worker;
@@ -126,7 +133,12 @@ matchPlanes (const std::vector<Plane>& scan,
   }
   const int k = parameters.k;
   auto& stats = result.statistics;
-  plane_matching::Context c (scan, map, parameters);
+  // With a pose score, the workers keep the match sets that the score may choose and
+  // those that may then be candidates beside it.
+  PlaneMatchingParameters search = parameters;
+  if (pose_score)
+    search.ambiguity_pairs += parameters.coverage_pairs;
+  plane_matching::Context c (scan, map, search);
   if (!plane_matching::prepareContext (c, guess, stats))
     return false;
   const int m = stats.m, n = stats.n;
@@ -178,37 +190,62 @@ matchPlanes (const std::vector<Plane>& scan,
                static_cast<unsigned long long> (stats.degenerate));
     return false;
   }
-  result.matches = best.matches;
-  result.estimate = best.estimate;
-  // Poses the map cannot tell apart: the best of each distinct pose, best first.
   std::sort (alternatives.begin(), alternatives.end(), plane_matching::better);
-  result.candidates.push_back ({best.support, best.matches, best.estimate});
-  std::vector<Eigen::Matrix4d> poses{best.estimate.transformation};
-  for (const auto& a : alternatives) {
+  // The pose score: the first match set (best first, one per pose) within
+  // coverage_pairs of the best whose score is within coverage_margin of the highest
+  // there. Those within coverage_pairs come first (more matches first), so the first
+  // that passes is one of them.
+  std::vector<const Candidate*> distinct{&best};
+  for (const auto& a : alternatives)
+    if (a.valid &&
+        std::none_of (distinct.begin(), distinct.end(), [&] (const Candidate* d) {
+          return plane_matching::samePose (d->estimate.transformation,
+                                           a.estimate.transformation);
+        }))
+      distinct.push_back (&a);
+  std::vector<double> scores (distinct.size(), 0.0);
+  double least_score = -std::numeric_limits<double>::infinity();
+  if (pose_score) {
+    double highest = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < distinct.size(); ++i) {
+      scores[i] = pose_score (distinct[i]->estimate.transformation);
+      if (distinct[i]->matches.size() +
+              static_cast<std::size_t> (parameters.coverage_pairs) >=
+          best.matches.size())
+        highest = std::max (highest, scores[i]);
+    }
+    least_score = highest - parameters.coverage_margin;
+  }
+  std::size_t chosen = 0;
+  if (pose_score)
+    while (scores[chosen] < least_score)
+      ++chosen;
+  const Candidate& top = *distinct[chosen];
+  result.matches = top.matches;
+  result.estimate = top.estimate;
+  // Poses the map cannot tell apart: the best of each distinct pose, best first.
+  result.candidates.push_back ({top.support, top.matches, top.estimate});
+  for (std::size_t i = 0; i < distinct.size(); ++i) {
+    const Candidate& a = *distinct[i];
     // As many pairs (within ambiguity_pairs), and the scan planes only it pairs hold as
-    // many points as those only the best pairs (within ambiguity_support): a ceiling or
-    // a roof in the floor's place pairs as many planes as the ground but holds a
+    // many points as those only the chosen pairs (within ambiguity_support): a ceiling
+    // or a roof in the floor's place pairs as many planes as the ground but holds a
     // fraction of its points; the poses of a symmetric map pair the same scan planes.
-    if (!a.valid ||
+    // With a pose score, those it turned down are not candidates either.
+    if (i == chosen || (pose_score && scores[i] < least_score) ||
         a.matches.size() + static_cast<std::size_t> (parameters.ambiguity_pairs) <
-            best.matches.size() ||
-        static_cast<double> (supportOfPlanesNotIn (scan, a.matches, best.matches)) <
+            top.matches.size() ||
+        static_cast<double> (supportOfPlanesNotIn (scan, a.matches, top.matches)) <
             parameters.ambiguity_support * static_cast<double> (supportOfPlanesNotIn (
-                                               scan, best.matches, a.matches)))
+                                               scan, top.matches, a.matches)))
       continue;
-    bool seen = false;
-    for (const auto& pose : poses)
-      seen = seen || plane_matching::samePose (pose, a.estimate.transformation);
-    if (seen)
-      continue;
-    poses.push_back (a.estimate.transformation);
     result.candidates.push_back ({a.support, a.matches, a.estimate});
   }
-  if (best.matches.size() < needed) {
+  if (top.matches.size() < needed) {
     PCL_ERROR (
         "[pcl_ext::matchPlanes] The best match set has %zu pairs, fewer than the %zu "
         "required.\n",
-        best.matches.size(),
+        top.matches.size(),
         needed);
     return false;
   }

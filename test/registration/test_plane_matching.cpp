@@ -337,6 +337,84 @@ TEST (PlaneMatching, CandidatesAreTheSymmetricPosesNotAStandInFloor)
   }
 }
 
+// A pose score decides between the poses the planes cannot tell apart (the symmetric
+// H's true pose and its half turn pair the same planes): a score that favours one by
+// more than coverage_margin makes it the result and the only candidate, whichever the
+// search ranked first; scores within the margin leave both, in the search's order.
+TEST (PlaneMatching, PoseScoreChoosesAmongThePosesThePlanesCannotTellApart)
+{
+  std::vector<MapPlane> map;
+  ASSERT_TRUE (computeMapPlanes (test::hShape(), MapPlaneParameters(), map));
+  const Eigen::Matrix4d half_turn = halfTurnOfTheH();
+  const PlaneMatchingParameters parameters;
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    std::mt19937 rng (seed);
+    const Eigen::Matrix4d truth = test::randomPose (rng);
+    const auto scan = test::scanPlanes (map, truth, rng, 0.1 * kPi / 180.0, 0.02);
+    const Eigen::Vector3d centre =
+        (truth.inverse() * Eigen::Vector4d (20, 15, 5, 1)).head<3>();
+    auto near = [&] (const Eigen::Matrix4d& pose, const Eigen::Matrix4d& target) {
+      const auto e = computeTransformationError (pose, target, centre);
+      return e.rotation_deg < 0.5 && e.translation < 0.2;
+    };
+    PlaneMatchingResult unscored;
+    ASSERT_TRUE (matchPlanes (scan, test::slice (map), parameters, unscored));
+    ASSERT_EQ (unscored.candidates.size(), 2u) << "seed " << seed;
+    for (const Eigen::Matrix4d& favoured :
+         {truth, Eigen::Matrix4d (half_turn * truth)}) {
+      PlaneMatchingResult r;
+      ASSERT_TRUE (matchPlanes (scan,
+                                test::slice (map),
+                                parameters,
+                                r,
+                                Eigen::Matrix4d::Identity(),
+                                [&] (const Eigen::Matrix4d& pose) {
+                                  return near (pose, favoured) ? 0.8 : 0.6;
+                                }));
+      EXPECT_TRUE (near (r.estimate.transformation, favoured)) << "seed " << seed;
+      ASSERT_EQ (r.candidates.size(), 1u) << "seed " << seed;
+      EXPECT_TRUE (near (r.candidates[0].estimate.transformation, favoured));
+    }
+    // Within the margin (0.1): the search's order, both poses.
+    PlaneMatchingResult r;
+    const Eigen::Matrix4d second = unscored.candidates[1].estimate.transformation;
+    ASSERT_TRUE (matchPlanes (scan,
+                              test::slice (map),
+                              parameters,
+                              r,
+                              Eigen::Matrix4d::Identity(),
+                              [&] (const Eigen::Matrix4d& pose) {
+                                return near (pose, second) ? 0.8 : 0.75;
+                              }));
+    EXPECT_TRUE (r.estimate.transformation == unscored.estimate.transformation);
+    EXPECT_EQ (r.candidates.size(), 2u) << "seed " << seed;
+  }
+}
+
+// The pose score's settings are checked like the others.
+TEST (PlaneMatching, PoseScoreSettingsOutOfRangeAreRefused)
+{
+  std::vector<MapPlane> map;
+  ASSERT_TRUE (computeMapPlanes (test::hShape(), MapPlaneParameters(), map));
+  std::mt19937 rng (1);
+  const auto scan = test::scanPlanes (map, test::randomPose (rng), rng, 0.001, 0.02);
+  for (int which = 0; which < 3; ++which) {
+    PlaneMatchingParameters bad;
+    if (which == 0)
+      bad.coverage_pairs = -1;
+    else if (which == 1)
+      bad.coverage_margin = 1.5;
+    else
+      bad.coverage_margin = std::numeric_limits<double>::quiet_NaN();
+    PlaneMatchingResult r;
+    testing::internal::CaptureStderr();
+    EXPECT_FALSE (matchPlanes (scan, test::slice (map), bad, r)) << which;
+    const std::string log = testing::internal::GetCapturedStderr();
+    EXPECT_NE (log.find ("pose score"), std::string::npos) << log;
+    EXPECT_FALSE (r.converged);
+  }
+}
+
 namespace {
 // \a pose turned by \a yaw_deg about the vertical through \a centre (map frame) and
 // shifted by \a shift: a rough guess of it.

@@ -50,6 +50,20 @@ struct SampledScan {
   Eigen::Matrix4d truth = Eigen::Matrix4d::Identity(); // scan to map
 };
 
+// The points of a wall every 0.5 m along it and up to 8 m.
+std::vector<Eigen::Vector3d>
+wallSamples (const MapPlane& wall)
+{
+  std::vector<Eigen::Vector3d> points;
+  const double length = wall.length();
+  for (double u = 0.25; u < length; u += 0.5)
+    for (double z = 0.25; z < 8.0; z += 0.5) {
+      const Eigen::Vector2d p = wall.start + (wall.end - wall.start) * (u / length);
+      points.emplace_back (p.x(), p.y(), z);
+    }
+  return points;
+}
+
 SampledScan
 sampleScan (unsigned int seed)
 {
@@ -78,13 +92,8 @@ sampleScan (unsigned int seed)
     if (plane.isFloor())
       continue;
     pcl::PointIndices wall;
-    const double length = plane.length();
-    for (double u = 0.25; u < length; u += 0.5)
-      for (double z = 0.25; z < 8.0; z += 0.5) {
-        const Eigen::Vector2d p =
-            plane.start + (plane.end - plane.start) * (u / length);
-        add (Eigen::Vector3d (p.x(), p.y(), z), plane.normal, wall);
-      }
+    for (const auto& x : wallSamples (plane))
+      add (x, plane.normal, wall);
     s.planes.push_back (wall);
   }
   return s;
@@ -296,4 +305,92 @@ TEST (PlaneMatchingRegistration, FitnessIsTheMeanDistanceOfTheMatchedPlanes)
   const double wrong_fitness = wrong.getFitnessScore();
   EXPECT_GT (wrong_fitness, 0.25);
   EXPECT_GT (wrong_fitness, 4.0 * fitness);
+}
+
+namespace {
+// Inside the symmetric H (test::hShape): its 40 x 30 m block minus the two courtyards.
+bool
+insideH (double x, double y)
+{
+  return x > 0.0 && x < 40.0 && y > 0.0 && y < 30.0 &&
+         !(x > 12.0 && x < 28.0 && (y < 10.0 || y > 20.0));
+}
+} // namespace
+
+// An airborne-like scan of the symmetric H (a half turn about (20, 15) maps it onto
+// itself) and, north of it, a 10 x 10 m annex whose walls the scan does not hold: the
+// H's walls and the ground pair both ways, so without the roofs the two poses are
+// candidates alike. The roofs (every metre over both footprints, 8 m and 3 m high) lie
+// over the footprints in the true pose; turned, the annex's roof falls on open ground:
+// with the roof points as coverage indices the true pose is the one result.
+TEST (PlaneMatchingRegistration, CoverageIndicesChooseThePoseThatPutsTheRoofsOverTheMap)
+{
+  const io::Ring2d annex{{15, 40}, {25, 40}, {25, 50}, {15, 50}};
+  std::vector<io::Footprint> footprints (2);
+  footprints[0].polygons.resize (1);
+  footprints[0].polygons[0].outer = test::hShape();
+  footprints[1].polygons.resize (1);
+  footprints[1].polygons[0].outer = annex;
+  std::vector<MapPlane> h_walls;
+  ASSERT_TRUE (computeMapPlanes (test::hShape(), MapPlaneParameters(), h_walls));
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    std::mt19937 rng (seed);
+    const Eigen::Matrix4d truth = test::randomPose (rng);
+    const Eigen::Matrix4d to_scan = truth.inverse();
+    std::normal_distribution<double> noise (0.0, kNoise);
+    Cloud::Ptr cloud (new Cloud);
+    pcl::IndicesPtr roofs (new pcl::Indices);
+    std::vector<pcl::PointIndices> planes (1);
+    auto add = [&] (const Eigen::Vector3d& x, const Eigen::Vector3d& normal) {
+      const Eigen::Vector3d q =
+          to_scan.topLeftCorner<3, 3>() * (x + noise (rng) * normal) +
+          to_scan.topRightCorner<3, 1>();
+      cloud->emplace_back (float (q.x()), float (q.y()), float (q.z()));
+      return static_cast<pcl::index_t> (cloud->size() - 1);
+    };
+    for (double x = -9.5; x < 50.0; x += 1.0)
+      for (double y = -9.5; y < 60.0; y += 1.0) {
+        if (insideH (x, y))
+          roofs->push_back (add ({x, y, 8.0}, Eigen::Vector3d::UnitZ()));
+        else if (x > 15.0 && x < 25.0 && y > 40.0 && y < 50.0) // the annex
+          roofs->push_back (add ({x, y, 3.0}, Eigen::Vector3d::UnitZ()));
+        else
+          planes[0].indices.push_back (add ({x, y, 0.0}, Eigen::Vector3d::UnitZ()));
+      }
+    for (const auto& plane : h_walls) {
+      if (plane.isFloor())
+        continue;
+      pcl::PointIndices wall;
+      for (const auto& x : wallSamples (plane))
+        wall.indices.push_back (add (x, plane.normal));
+      planes.push_back (wall);
+    }
+    auto registerScan = [&] (Registration& reg, bool with_roofs) {
+      EXPECT_TRUE (reg.setFootprints (footprints));
+      reg.setPlaneExtractor (
+          [planes] (const Cloud::ConstPtr&,
+                    const pcl::IndicesConstPtr&,
+                    std::vector<pcl::PointIndices>& out) { out = planes; });
+      if (with_roofs)
+        reg.setCoverageIndices (roofs);
+      reg.setInputSource (cloud);
+      Cloud out;
+      reg.align (out);
+    };
+    Registration plain, covered;
+    registerScan (plain, false);
+    ASSERT_TRUE (plain.hasConverged());
+    EXPECT_EQ (plain.getMatchingResult().candidates.size(), 2u) << "seed " << seed;
+    registerScan (covered, true);
+    ASSERT_TRUE (covered.hasConverged());
+    EXPECT_EQ (covered.getMatchingResult().candidates.size(), 1u) << "seed " << seed;
+    // The truth in the map's local frame.
+    Eigen::Matrix4d local_truth = truth;
+    local_truth.topRightCorner<3, 1>() -= covered.getLocalOrigin();
+    const TransformationError error = computeTransformationError (
+        covered.getFinalTransformationDouble(), local_truth, centroidOf (*cloud));
+    // The true pose, not its half turn (180 degrees and tens of metres away).
+    EXPECT_LT (error.rotation_deg, 0.5) << "seed " << seed;
+    EXPECT_LT (error.translation, 0.2) << "seed " << seed;
+  }
 }

@@ -5,6 +5,8 @@
  */
 #include <pcl_ext/registration/scan_levelling.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -102,3 +104,113 @@ TEST (ScanLevelling, RefineAboutVerticalKeepsTheVertical)
   EXPECT_FALSE (refineAboutVertical (scan, map, pairs, estimate));
 }
 } // namespace
+
+namespace {
+// The least-squares normal of \a points (the smallest eigenvector), z >= 0.
+Eigen::Vector3d
+fittedNormal (const std::vector<Eigen::Vector3d>& points)
+{
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& p : points)
+    mean += p;
+  mean /= static_cast<double> (points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const auto& p : points)
+    covariance += (p - mean) * (p - mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (covariance);
+  Eigen::Vector3d n = solver.eigenvectors().col (0);
+  return n.z() < 0.0 ? -n : n;
+}
+
+double
+angleDeg (const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+  return std::acos (std::min (1.0, a.normalized().dot (b.normalized()))) / kDeg;
+}
+} // namespace
+
+// A town's ground: level terraces 10 m deep, each 15 cm above the last (kerbs, steps),
+// 1 cm of noise. One plane through it leans by what the steps add up to; its flat
+// patches are level.
+TEST (FlatPatchNormal, StepsDoNotLeanTheGround)
+{
+  std::vector<Eigen::Vector3d> points;
+  unsigned state = 1;
+  auto jitter = [&state] {
+    state = state * 1103515245u + 12345u;
+    return ((state >> 8) % 2001) / 100000.0 - 0.01; // [-1, 1] cm
+  };
+  for (double x = 0.0; x < 100.0; x += 0.5)
+    for (double y = 0.0; y < 60.0; y += 0.5)
+      points.emplace_back (x, y, 0.15 * std::floor (x / 10.0) + jitter());
+  const Eigen::Vector3d fitted = fittedNormal (points);
+  ASSERT_GT (angleDeg (fitted, Eigen::Vector3d::UnitZ()), 0.7);
+  Eigen::Vector3d normal;
+  ASSERT_TRUE (estimateFlatPatchNormal (points, fitted, normal));
+  EXPECT_LT (angleDeg (normal, Eigen::Vector3d::UnitZ()), 0.05);
+  // The same ground turned by 2 degrees about a horizontal axis: the patches turn with
+  // it.
+  const Eigen::Matrix3d tilt =
+      Eigen::AngleAxisd (2.0 * kDeg, Eigen::Vector3d (1, -1, 0).normalized())
+          .toRotationMatrix();
+  for (auto& p : points)
+    p = tilt * p;
+  ASSERT_TRUE (estimateFlatPatchNormal (points, fittedNormal (points), normal));
+  EXPECT_LT (angleDeg (normal, tilt * Eigen::Vector3d::UnitZ()), 0.05);
+}
+
+// An even plane (noise only): its RMS is that of its patches, so its fit stands.
+TEST (FlatPatchNormal, AnEvenPlaneKeepsItsFit)
+{
+  const Eigen::Vector3d truth = Eigen::Vector3d (0.03, -0.02, 1.0).normalized();
+  const Eigen::Vector3d e1 = truth.unitOrthogonal(), e2 = truth.cross (e1);
+  std::vector<Eigen::Vector3d> points;
+  unsigned state = 7;
+  for (double u = -30.0; u < 30.0; u += 0.4)
+    for (double v = -20.0; v < 20.0; v += 0.4) {
+      state = state * 1103515245u + 12345u;
+      const double noise = ((state >> 8) % 2001) / 40000.0 - 0.025; // +-2.5 cm
+      points.push_back (u * e1 + v * e2 + noise * truth);
+    }
+  const Eigen::Vector3d fitted = fittedNormal (points);
+  Eigen::Vector3d normal;
+  EXPECT_FALSE (estimateFlatPatchNormal (points, fitted, normal));
+  EXPECT_TRUE (normal == fitted);
+  // The same plane with a 40 cm step across it (a quay, a terrace) is uneven: the
+  // patches' normal, on the side of the normal given, is the plane's.
+  for (auto& p : points)
+    if (p.dot (e1) > 10.0)
+      p += 0.4 * truth;
+  ASSERT_TRUE (estimateFlatPatchNormal (points, -fittedNormal (points), normal));
+  EXPECT_LT (angleDeg (normal, -truth), 0.05);
+}
+
+// Too few points or patches: false, and the normal given back as it came.
+TEST (FlatPatchNormal, TooLittleToGoOnKeepsTheFittedNormal)
+{
+  const Eigen::Vector3d fitted = Eigen::Vector3d (0.01, 0.0, 1.0).normalized();
+  Eigen::Vector3d normal;
+  EXPECT_FALSE (estimateFlatPatchNormal ({}, fitted, normal));
+  EXPECT_TRUE (normal == fitted);
+  // 400 points in a line: no cell has a slope across it.
+  std::vector<Eigen::Vector3d> line;
+  for (int i = 0; i < 400; ++i)
+    line.emplace_back (0.1 * i, 0.0, 0.0);
+  EXPECT_FALSE (estimateFlatPatchNormal (line, fitted, normal));
+  EXPECT_TRUE (normal == fitted);
+  // 100 points spread over 32 x 32 cells: no cell holds 8.
+  std::vector<Eigen::Vector3d> sparse;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j)
+      sparse.emplace_back (10.0 * i, 10.0 * j, 0.0);
+  EXPECT_FALSE (estimateFlatPatchNormal (sparse, fitted, normal));
+  EXPECT_TRUE (normal == fitted);
+  // Non-finite normal or too few cells across.
+  std::vector<Eigen::Vector3d> dense;
+  for (int i = 0; i < 100; ++i)
+    for (int j = 0; j < 100; ++j)
+      dense.emplace_back (0.1 * i, 0.1 * j, 0.0);
+  EXPECT_FALSE (estimateFlatPatchNormal (dense, Eigen::Vector3d::Zero(), normal));
+  EXPECT_FALSE (estimateFlatPatchNormal (dense, fitted, normal, 1));
+  EXPECT_TRUE (normal == fitted);
+}

@@ -8,6 +8,7 @@
 #include <pcl_ext/registration/planes.h>
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -68,6 +69,17 @@ struct PlaneMatchingParameters {
    * ground's inliers). */
   int ambiguity_pairs = 0;
   double ambiguity_support = 0.5;
+  /** \brief Beyond the paper, with a pose score (see matchPlanes, e.g. the share of an
+   * airborne scan's roof points a pose puts over the footprints, FootprintCoverage):
+   * among the match sets of distinct poses with at most \a coverage_pairs fewer matches
+   * than the best, the first in the best-first order whose score is within \a
+   * coverage_margin of the highest is the result; the others below that are not
+   * candidates. Defaults 1 and 0.1, from the shares of the candidates on the AHN
+   * tuning tile (docs/khoshelham_gorte.md): the quarter and half turns of a tile put
+   * far fewer roof points over the footprints than the poses near the truth, which
+   * differ among themselves by less than the margin. >= 0, and [0, 1]. */
+  int coverage_pairs = 1;
+  double coverage_margin = 0.1;
   int min_matches = 0;            ///< least final matches to converge; 0 = k
   double min_conditioning = 1e-2; ///< degeneracy threshold of the normals, (0, 1)
   PlaneTransformationModel model = PlaneTransformationModel::Rigid;
@@ -174,17 +186,33 @@ struct PlaneMatchingResult {
  * \param[in] map planes in the target frame
  * \param[in] parameters see PlaneMatchingParameters
  * \param[out] result the match set, transform and statistics
+ * Pose score (beyond the paper, none by default): with \a pose_score, the match sets
+ * of distinct poses within \a coverage_pairs of the best are scored, and the first of
+ * them, best first, that scores within \a coverage_margin of the highest is the
+ * result; the candidates are then chosen around it as above, among those that pass the
+ * same test. A match set's count of pairs cannot tell the pose of a whole block from
+ * its half turn when the walls are roof outlines a few degrees off; what the map says
+ * about the rest of the scan can.
+ *
+ * \param[in] scan planes in the source frame
+ * \param[in] map planes in the target frame
+ * \param[in] parameters see PlaneMatchingParameters
+ * \param[out] result the match set, transform and statistics
  * \param[in] guess an initial scan-to-map pose, used only by the bounds of \a
- * parameters \return result.converged; false with a PCL_ERROR for invalid parameters,
- * too few or non-finite planes, a non-finite guess, or when no combination yields a
- * valid transform
+ * parameters
+ * \param[in] pose_score a score of a scan-to-map pose, higher is better (for instance
+ * FootprintCoverage::share); empty: none
+ * \return result.converged; false with a PCL_ERROR for invalid parameters, too few or
+ * non-finite planes, a non-finite guess, or when no combination yields a valid
+ * transform
  */
 bool
 matchPlanes (const std::vector<Plane>& scan,
              const std::vector<Plane>& map,
              const PlaneMatchingParameters& parameters,
              PlaneMatchingResult& result,
-             const Eigen::Matrix4d& guess = Eigen::Matrix4d::Identity());
+             const Eigen::Matrix4d& guess = Eigen::Matrix4d::Identity(),
+             const std::function<double (const Eigen::Matrix4d&)>& pose_score = {});
 
 /** \brief Eq. 13: C(m, k) P(n, k), saturating at the largest std::uint64_t. */
 std::uint64_t

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pcl_ext/io/footprints.h>
+#include <pcl_ext/registration/footprint_coverage.h>
 #include <pcl_ext/registration/map_planes.h>
 #include <pcl_ext/registration/plane_distances.h>
 #include <pcl_ext/registration/plane_extraction.h>
@@ -300,6 +301,23 @@ public:
   {
     return estimate_vertical_;
   }
+  /** \brief Beyond the paper: the points of the scan that lie over a footprint in plan
+   * (an airborne scan's roof points, LAS class 6), indices into the source cloud;
+   * default none. With them and a map set by setFootprints(), each candidate pose of
+   * the search is scored by the share of these points (at most 4,096 of them, evenly
+   * spread) it puts inside the footprints, and one whose share falls short of the
+   * highest is not chosen (PlaneMatchingParameters::coverage_margin, matchPlanes). An
+   * index outside the source cloud or a non-finite point is left out. */
+  void
+  setCoverageIndices (const pcl::IndicesConstPtr& indices)
+  {
+    coverage_indices_ = indices;
+  }
+  const pcl::IndicesConstPtr&
+  getCoverageIndices () const
+  {
+    return coverage_indices_;
+  }
   /** \brief The up direction found by the last align() in the scan frame ((0, 0, 1)
    * when not estimated). */
   const Eigen::Vector3d&
@@ -391,6 +409,8 @@ private:
   ScanViewpoints source_viewpoints_, target_viewpoints_;
   std::vector<MapPlane> map_planes_;
   bool has_map_ = false;
+  std::shared_ptr<const FootprintCoverage> coverage_; // the footprints' areas
+  pcl::IndicesConstPtr coverage_indices_;
   std::vector<ScanPlane> source_planes_;
   bool source_planes_given_ = false;
   std::vector<ScanPlane> target_scan_planes_;

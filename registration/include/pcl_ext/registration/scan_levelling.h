@@ -12,6 +12,10 @@
 #include <vector>
 
 namespace pcl_ext {
+/** \brief The largest tilt of a scan's z axis that estimateUpDirection considers by
+ * default (degrees). */
+constexpr double kMaxLevellingTiltDeg = 20.0;
+
 /** \brief The up direction of a scan from its planes: horizontal planes (ground,
  * floors, roofs, ceilings) have it as normal and walls are perpendicular to it.
  *
@@ -35,8 +39,36 @@ namespace pcl_ext {
 bool
 estimateUpDirection (const std::vector<Plane>& planes,
                      Eigen::Vector3d& up,
-                     double max_tilt_deg = 20.0,
+                     double max_tilt_deg = kMaxLevellingTiltDeg,
                      double tolerance_deg = 2.0);
+
+/** \brief The normal of a large, nearly level plane (the ground) as the mean normal of
+ * its flat patches, for the levelling.
+ *
+ * The ground of a town is level pieces (streets, pavements, squares) joined by kerbs,
+ * steps and ramps. One plane fitted through all of it leans towards the higher side by
+ * what the steps add up to (docs/khoshelham_gorte.md has the figures of the AHN
+ * tiles); the pieces themselves are level. The plane's points are
+ * binned in cells of its own frame, \a cells_across along the larger side of their
+ * extent; each cell of 8 points or more is fitted by least squares (height along \a
+ * plane's normal over the plane's axes), the cells whose RMS exceeds 3 times the median
+ * cell's (steps, kerbs, clutter) are left out, and the mean of the others' normals,
+ * each cell one vote (area, not density, counts), is the result. A plane whose RMS is
+ * at most twice the median cell's is even at its own scale (a floor, a paved yard with
+ * noise): its fit is the better estimate and is kept; so is the fit of a plane whose
+ * patches lean from it by less than 0.1 degrees, the order of the patches' own error
+ * (cells of a few points, range noise at grazing angles).
+ * \param[in] points the plane's inliers
+ * \param[in] plane_normal the fitted plane's unit normal
+ * \param[out] normal the mean patch normal, on \a plane_normal's side
+ * \param[in] cells_across cells along the larger side, >= 2; default 32
+ * \return false (\a normal = \a plane_normal) for an even plane, patches leaning by
+ * less than 0.1 degrees, or fewer than 8 flat cells */
+bool
+estimateFlatPatchNormal (const std::vector<Eigen::Vector3d>& points,
+                         const Eigen::Vector3d& plane_normal,
+                         Eigen::Vector3d& normal,
+                         int cells_across = 32);
 
 /** \brief The smallest rotation taking \a up to (0, 0, 1), as a 4 x 4 transform. */
 Eigen::Matrix4d

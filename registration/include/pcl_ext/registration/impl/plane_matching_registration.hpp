@@ -14,8 +14,11 @@
 #include <pcl/common/transforms.h>
 #include <pcl/console/print.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 
 namespace pcl_ext {
@@ -171,6 +174,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::setFootprints (
   if (!computeMapPlanes (footprints, p, planes))
     return false;
   setMapPlanes (planes, p.origin);
+  coverage_ = std::make_shared<const FootprintCoverage> (footprints, p.origin);
   return true;
 }
 
@@ -182,6 +186,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::setMapPlanes (
   map_planes_ = planes;
   origin_ = origin;
   has_map_ = true;
+  coverage_.reset();
   setCornerTarget();
 }
 
@@ -191,6 +196,7 @@ PlaneMatchingRegistration<PointSource, PointTarget>::clearMap()
 {
   map_planes_.clear();
   has_map_ = false;
+  coverage_.reset();
   origin_.setZero();
 }
 
@@ -297,17 +303,51 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (
   // A scan that is not levelled is levelled from its planes (map only: the map is).
   source_up_ = Eigen::Vector3d::UnitZ();
   std::vector<Plane> scan (source_planes_.begin(), source_planes_.end());
+  // The levelling takes a nearly level plane's normal from its flat patches (see
+  // estimateFlatPatchNormal: a town's ground is level pieces joined by steps).
+  std::vector<Plane> levelling = scan;
+  if (has_map_ && estimate_vertical_)
+    for (std::size_t i = 0; i < levelling.size(); ++i) {
+      const Eigen::Vector3d fitted = levelling[i].normal;
+      if (!(std::abs (fitted.z()) >= std::cos (kMaxLevellingTiltDeg * M_PI / 180.0)))
+        continue;
+      std::vector<Eigen::Vector3d> points;
+      points.reserve (source_planes_[i].inliers.indices.size());
+      for (const auto index : source_planes_[i].inliers.indices)
+        if (index >= 0 && static_cast<std::size_t> (index) < input_->size() &&
+            pcl::isXYZFinite ((*input_)[index]))
+          points.push_back ((*input_)[index].getVector3fMap().template cast<double>());
+      estimateFlatPatchNormal (points, fitted, levelling[i].normal);
+    }
   const bool levelled =
-      has_map_ && estimate_vertical_ && estimateUpDirection (scan, source_up_);
+      has_map_ && estimate_vertical_ &&
+      estimateUpDirection (levelling, source_up_, kMaxLevellingTiltDeg);
   const Eigen::Matrix4d level = levellingTransform (source_up_);
   for (auto& plane : scan)
     plane = transformPlane (plane, level);
   const Eigen::Matrix4d level_inverse = level.inverse();
+  // The points a pose must put over the footprints, in the scan frame.
+  std::vector<Eigen::Vector3d> covered;
+  if (coverage_ && !coverage_->empty() && coverage_indices_) {
+    constexpr std::size_t kMaxCoveragePoints = 4096;
+    const auto& ids = *coverage_indices_;
+    const std::size_t step = std::max<std::size_t> (1, ids.size() / kMaxCoveragePoints);
+    for (std::size_t i = 0; i < ids.size(); i += step)
+      if (ids[i] >= 0 && static_cast<std::size_t> (ids[i]) < input_->size() &&
+          pcl::isXYZFinite ((*input_)[ids[i]]))
+        covered.push_back ((*input_)[ids[i]].getVector3fMap().template cast<double>());
+  }
+  std::function<double (const Eigen::Matrix4d&)> coverage;
+  if (!covered.empty())
+    coverage = [&] (const Eigen::Matrix4d& levelled) {
+      return coverage_->share (covered, levelled * level);
+    };
   if (!matchPlanes (scan,
                     target_planes_,
                     parameters_,
                     result_,
-                    guess.template cast<double>() * level_inverse))
+                    guess.template cast<double>() * level_inverse,
+                    coverage))
     return;
 
   // The tilt of the levelling, from every plane, not that of the matched few.
