@@ -3,6 +3,8 @@
  */
 #include <pcl_ext/registration/footprint_coverage.h>
 
+#include <algorithm>
+
 namespace pcl_ext {
 namespace {
 // Even-odd crossing test of one ring.
@@ -39,12 +41,59 @@ FootprintCoverage::FootprintCoverage (const std::vector<io::Footprint>& footprin
         }
       polygons_.push_back (std::move (area));
     }
+  indexAreas();
+}
+
+void
+FootprintCoverage::indexAreas()
+{
+  // A uniform grid over the areas' boxes, cells about a footprint across (at most
+  // kMaxCellsAcross along a side): a point is tested against the areas of its cell
+  // only, so a city's cadastre costs what a block does.
+  constexpr int kMaxCellsAcross = 512;
+  grid_box_.setEmpty();
+  cells_.clear();
+  if (polygons_.empty())
+    return;
+  std::vector<double> sizes;
+  for (const auto& area : polygons_) {
+    grid_box_.extend (area.box);
+    sizes.push_back (area.box.sizes().maxCoeff());
+  }
+  std::nth_element (sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+  const double extent = grid_box_.sizes().maxCoeff();
+  cell_ = std::max ({sizes[sizes.size() / 2], extent / kMaxCellsAcross, 1e-9});
+  columns_ =
+      std::min (kMaxCellsAcross, static_cast<int> (grid_box_.sizes().x() / cell_) + 1);
+  rows_ =
+      std::min (kMaxCellsAcross, static_cast<int> (grid_box_.sizes().y() / cell_) + 1);
+  cells_.assign (static_cast<std::size_t> (columns_) * rows_, {});
+  for (std::size_t i = 0; i < polygons_.size(); ++i) {
+    const auto lo = cellOf (polygons_[i].box.min()),
+               hi = cellOf (polygons_[i].box.max());
+    for (int y = lo.second; y <= hi.second; ++y)
+      for (int x = lo.first; x <= hi.first; ++x)
+        cells_[static_cast<std::size_t> (y) * columns_ + x].push_back (i);
+  }
+}
+
+std::pair<int, int>
+FootprintCoverage::cellOf (const Eigen::Vector2d& q) const
+{
+  const Eigen::Vector2d c = (q - grid_box_.min()) / cell_;
+  return {std::max (0, std::min (columns_ - 1, static_cast<int> (c.x()))),
+          std::max (0, std::min (rows_ - 1, static_cast<int> (c.y())))};
 }
 
 bool
 FootprintCoverage::inside (const Eigen::Vector2d& q) const
 {
-  for (const auto& area : polygons_) {
+  if (polygons_.empty() || !grid_box_.contains (q))
+    return false;
+  const auto cell = cellOf (q);
+  for (const std::size_t i :
+       cells_[static_cast<std::size_t> (cell.second) * columns_ + cell.first]) {
+    const Area& area = polygons_[i];
     if (!area.box.contains (q))
       continue;
     bool odd = false;

@@ -68,3 +68,35 @@ TEST (FootprintCoverage, ShareFollowsThePose)
   EXPECT_DOUBLE_EQ (map.share (points, turn), 0.0);
   EXPECT_DOUBLE_EQ (map.share ({}, turn), 0.0);
 }
+
+// A city's worth of footprints: 100 x 100 squares of 5 m every 10 m and one 2 km x 50 m
+// strip across them all (a dyke), looked up through the grid: every square's centre is
+// inside, every gap outside except on the strip.
+TEST (FootprintCoverage, ManyFootprintsOfManySizes)
+{
+  std::vector<io::Footprint> footprints;
+  for (int i = 0; i < 100; ++i)
+    for (int j = 0; j < 100; ++j) {
+      io::Footprint f;
+      f.polygons.resize (1);
+      const double x = 10.0 * i, y = 10.0 * j;
+      f.polygons[0].outer = {{x, y}, {x + 5, y}, {x + 5, y + 5}, {x, y + 5}};
+      footprints.push_back (f);
+    }
+  io::Footprint strip;
+  strip.polygons.resize (1);
+  strip.polygons[0].outer = {{-500, 402}, {1500, 402}, {1500, 452}, {-500, 452}};
+  footprints.push_back (strip);
+  const FootprintCoverage map (footprints, Eigen::Vector3d::Zero());
+  for (int i = 0; i < 100; ++i)
+    for (int j = 0; j < 100; ++j) {
+      const double x = 10.0 * i, y = 10.0 * j;
+      ASSERT_TRUE (map.inside ({x + 2.5, y + 2.5})) << i << " " << j;
+      const bool on_strip = y + 7.5 > 402.0 && y + 7.5 < 452.0;
+      ASSERT_EQ (map.inside ({x + 7.5, y + 7.5}), on_strip) << i << " " << j;
+    }
+  EXPECT_TRUE (map.inside ({-400, 420}));
+  EXPECT_TRUE (map.inside ({1400, 420}));
+  EXPECT_FALSE (map.inside ({-400, 400}));
+  EXPECT_FALSE (map.inside ({5000, 5000}));
+}

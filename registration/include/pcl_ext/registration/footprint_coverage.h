@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <utility>
 #include <vector>
 
 namespace pcl_ext {
@@ -52,6 +53,15 @@ private:
     Eigen::AlignedBox2d box;
     std::vector<io::Ring2d> rings;
   };
+  void
+  indexAreas ();
+  std::pair<int, int>
+  cellOf (const Eigen::Vector2d& q) const;
+
   std::vector<Area> polygons_;
+  Eigen::AlignedBox2d grid_box_; // the areas' boxes
+  double cell_ = 1.0;
+  int columns_ = 0, rows_ = 0;
+  std::vector<std::vector<std::size_t>> cells_; // areas overlapping each cell
 };
 } // namespace pcl_ext
