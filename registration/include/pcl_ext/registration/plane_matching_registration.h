@@ -30,6 +30,11 @@ namespace pcl_ext {
  * extend with the three constraints, see matchPlanes.
  * - Scan to scan (the paper's future work): without map planes, the target cloud's
  * planes are extracted the same way and play the map's part.
+ * - Beyond the paper: with footprints and points known to lie over them (an airborne
+ * scan's roofs, setCoverageIndices()), the candidate poses of the search are checked
+ * against the whole map (FootprintCoverage, PlaneMatchingParameters::coverage_margin);
+ * a scan that is not levelled is levelled from its planes (setEstimateVertical()), a
+ * stepped ground by its flat patches (estimateFlatPatchNormal).
  *
  * Departures from the text are listed with each function (signed d, projection, offsets
  * at the data, sign handling, up-axis and extent checks, bounds around a guess).
