@@ -311,12 +311,16 @@ PlaneMatchingRegistration<PointSource, PointTarget>::computeTransformation (
       const Eigen::Vector3d fitted = levelling[i].normal;
       if (!(std::abs (fitted.z()) >= std::cos (kMaxLevellingTiltDeg * M_PI / 180.0)))
         continue;
+      // At most kMaxPatchPoints of them, evenly spread: a few hundred a cell.
+      constexpr std::size_t kMaxPatchPoints = std::size_t (1) << 18;
+      const auto& ids = source_planes_[i].inliers.indices;
+      const std::size_t step = (ids.size() + kMaxPatchPoints - 1) / kMaxPatchPoints;
       std::vector<Eigen::Vector3d> points;
-      points.reserve (source_planes_[i].inliers.indices.size());
-      for (const auto index : source_planes_[i].inliers.indices)
-        if (index >= 0 && static_cast<std::size_t> (index) < input_->size() &&
-            pcl::isXYZFinite ((*input_)[index]))
-          points.push_back ((*input_)[index].getVector3fMap().template cast<double>());
+      points.reserve (std::min (ids.size(), kMaxPatchPoints));
+      for (std::size_t j = 0; j < ids.size(); j += std::max<std::size_t> (step, 1))
+        if (ids[j] >= 0 && static_cast<std::size_t> (ids[j]) < input_->size() &&
+            pcl::isXYZFinite ((*input_)[ids[j]]))
+          points.push_back ((*input_)[ids[j]].getVector3fMap().template cast<double>());
       estimateFlatPatchNormal (points, fitted, levelling[i].normal);
     }
   const bool levelled =
