@@ -309,10 +309,11 @@ public:
   /** \brief Beyond the paper: the points of the scan that lie over a footprint in plan
    * (an airborne scan's roof points, LAS class 6), indices into the source cloud;
    * default none. With them and a map set by setFootprints(), each candidate pose of
-   * the search is scored by the share of these points (at most 4,096 of them, evenly
-   * spread) it puts inside the footprints, and one whose share falls short of the
-   * highest is not chosen (PlaneMatchingParameters::coverage_margin, matchPlanes). An
-   * index outside the source cloud or a non-finite point is left out. */
+   * the search is scored by the share of these points (every (n / 4,096)-th of n,
+   * rounded down: fewer than 8,192) it puts inside the footprints, and one whose share
+   * falls short of the highest is not chosen (PlaneMatchingParameters::coverage_margin,
+   * matchPlanes). An index outside the source cloud or a non-finite point is left out.
+   */
   void
   setCoverageIndices (const pcl::IndicesConstPtr& indices)
   {
