@@ -322,7 +322,8 @@ insideH (double x, double y)
 // H's walls and the ground pair both ways, so without the roofs the two poses are
 // candidates alike. The roofs (every metre over both footprints, 8 m and 3 m high) lie
 // over the footprints in the true pose; turned, the annex's roof falls on open ground:
-// with the roof points as coverage indices the true pose is the one result.
+// with the roof points as coverage indices the true pose is the one result (indices
+// that do not fit the cloud, and a NaN point, left out).
 TEST (PlaneMatchingRegistration, CoverageIndicesChooseThePoseThatPutsTheRoofsOverTheMap)
 {
   const io::Ring2d annex{{15, 40}, {25, 40}, {25, 50}, {15, 50}};
@@ -365,6 +366,14 @@ TEST (PlaneMatchingRegistration, CoverageIndicesChooseThePoseThatPutsTheRoofsOve
         wall.indices.push_back (add (x, plane.normal));
       planes.push_back (wall);
     }
+    // Coverage indices that do not fit are left out: past the cloud's end, negative,
+    // and a NaN point.
+    const Eigen::Vector3d centre = centroidOf (*cloud);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    cloud->emplace_back (nan, nan, nan);
+    roofs->push_back (static_cast<pcl::index_t> (cloud->size() - 1));
+    roofs->push_back (static_cast<pcl::index_t> (cloud->size() + 5));
+    roofs->push_back (-1);
     auto registerScan = [&] (Registration& reg, bool with_roofs) {
       EXPECT_TRUE (reg.setFootprints (footprints));
       reg.setPlaneExtractor (
@@ -388,7 +397,7 @@ TEST (PlaneMatchingRegistration, CoverageIndicesChooseThePoseThatPutsTheRoofsOve
     Eigen::Matrix4d local_truth = truth;
     local_truth.topRightCorner<3, 1>() -= covered.getLocalOrigin();
     const TransformationError error = computeTransformationError (
-        covered.getFinalTransformationDouble(), local_truth, centroidOf (*cloud));
+        covered.getFinalTransformationDouble(), local_truth, centre);
     // The true pose, not its half turn (180 degrees and tens of metres away).
     EXPECT_LT (error.rotation_deg, 0.5) << "seed " << seed;
     EXPECT_LT (error.translation, 0.2) << "seed " << seed;
