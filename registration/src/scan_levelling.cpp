@@ -3,8 +3,6 @@
  */
 #include <pcl_ext/registration/scan_levelling.h>
 
-#include <pcl_ext/common/covariance.h>
-
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
@@ -120,10 +118,11 @@ estimateFlatPatchNormal (const std::vector<Eigen::Vector3d>& points,
   if (points.size() < kLeastCellPoints * kLeastCells || cells_across < 2 ||
       !(plane_normal.norm() > 0.0))
     return false;
-  // The plane's frame: axes e1, e2 in the plane (the cells), n across.
+  // The plane's frame: axes e1, e2 in the plane, heights along n.
   const Eigen::Vector3d n = plane_normal.normalized();
   const Eigen::Vector3d e1 = n.unitOrthogonal();
   const Eigen::Vector3d e2 = n.cross (e1);
+  const double h0 = points.front().dot (n); // heights from here: small sums
   Eigen::AlignedBox2d box;
   for (const auto& p : points)
     box.extend (Eigen::Vector2d (p.dot (e1), p.dot (e2)));
@@ -132,37 +131,63 @@ estimateFlatPatchNormal (const std::vector<Eigen::Vector3d>& points,
     return false;
   const int columns = static_cast<int> (box.sizes().x() / cell) + 1;
   const int rows = static_cast<int> (box.sizes().y() / cell) + 1;
-  std::vector<CovarianceSums> cells (static_cast<std::size_t> (columns) * rows);
+  // Per cell: the sums of a least-squares fit h = a u + b v + c about the cell's
+  // centre.
+  struct Sums {
+    std::size_t count = 0;
+    double u = 0, v = 0, h = 0, uu = 0, vv = 0, uv = 0, uh = 0, vh = 0, hh = 0;
+  };
+  std::vector<Sums> cells (static_cast<std::size_t> (columns) * rows);
   for (const auto& p : points) {
     const Eigen::Vector2d q =
         (Eigen::Vector2d (p.dot (e1), p.dot (e2)) - box.min()) / cell;
     const int cx = std::min (columns - 1, static_cast<int> (q.x()));
     const int cy = std::min (rows - 1, static_cast<int> (q.y()));
-    cells[static_cast<std::size_t> (cy) * columns + cx].add (p);
+    Sums& c = cells[static_cast<std::size_t> (cy) * columns + cx];
+    const double u = (q.x() - cx - 0.5) * cell, v = (q.y() - cy - 0.5) * cell;
+    const double h = p.dot (n) - h0;
+    ++c.count;
+    c.u += u;
+    c.v += v;
+    c.h += h;
+    c.uu += u * u;
+    c.vv += v * v;
+    c.uv += u * v;
+    c.uh += u * h;
+    c.vh += v * h;
+    c.hh += h * h;
   }
-  // Each cell's plane (its normal turned to n's side) and RMS; the whole plane's RMS
-  // along n.
-  CovarianceSums all;
-  std::vector<Eigen::Vector3d> patch_normals;
-  std::vector<double> roughness;
-  Eigen::Matrix3d covariance;
-  Eigen::Vector3d centroid;
-  EigenDecomposition patch;
+  // The plane's own RMS about its mean height along n.
+  double sum_h = 0.0, sum_hh = 0.0;
   for (const auto& c : cells) {
-    all.add (c);
-    // A cell whose points lie along a line gives no plane.
-    if (c.size() < kLeastCellPoints || !c.finish (covariance, centroid) ||
-        !computeEigenDecomposition (covariance, patch) ||
-        !(patch.values (1) > 1e-6 * patch.values (2)))
-      continue;
-    const Eigen::Vector3d normal_i = patch.normal();
-    patch_normals.push_back (normal_i.dot (n) < 0.0 ? -normal_i : normal_i);
-    roughness.push_back (std::sqrt (patch.values (0)));
+    sum_h += c.h;
+    sum_hh += c.hh;
   }
-  if (!all.finish (covariance, centroid))
-    return false;
-  const double plane_rms = std::sqrt (std::max (0.0, n.dot (covariance * n)));
-  if (patch_normals.size() < kLeastCells)
+  const double count = static_cast<double> (points.size());
+  const double plane_rms =
+      std::sqrt (std::max (0.0, sum_hh / count - (sum_h / count) * (sum_h / count)));
+  std::vector<Eigen::Vector2d> slopes;
+  std::vector<double> roughness;
+  for (const auto& c : cells) {
+    if (c.count < kLeastCellPoints)
+      continue;
+    const double k = static_cast<double> (c.count);
+    const double mu = c.u / k, mv = c.v / k, mh = c.h / k;
+    Eigen::Matrix2d a;
+    a << c.uu / k - mu * mu, c.uv / k - mu * mv, c.uv / k - mu * mv, c.vv / k - mv * mv;
+    const Eigen::Vector2d b (c.uh / k - mu * mh, c.vh / k - mv * mh);
+    // A cell whose points lie along a line gives no slope across it.
+    if (!(a.determinant() > 1e-6 * a.trace() * a.trace()))
+      continue;
+    const Eigen::Vector2d slope = a.ldlt().solve (b);
+    const double residual =
+        c.hh / k - mh * mh - 2.0 * slope.dot (b) + slope.dot (a * slope);
+    if (!slope.allFinite() || !std::isfinite (residual))
+      continue;
+    slopes.push_back (slope);
+    roughness.push_back (std::sqrt (std::max (0.0, residual)));
+  }
+  if (slopes.size() < kLeastCells)
     return false;
   std::vector<double> ordered = roughness;
   std::nth_element (
@@ -174,9 +199,9 @@ estimateFlatPatchNormal (const std::vector<Eigen::Vector3d>& points,
   const double limit = kRoughness * median;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   std::size_t flat = 0;
-  for (std::size_t i = 0; i < patch_normals.size(); ++i)
+  for (std::size_t i = 0; i < slopes.size(); ++i)
     if (roughness[i] <= limit) {
-      sum += patch_normals[i];
+      sum += (n - slopes[i].x() * e1 - slopes[i].y() * e2).normalized();
       ++flat;
     }
   if (flat < kLeastCells || !(sum.norm() > 0.0))

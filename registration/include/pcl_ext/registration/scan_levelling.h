@@ -50,15 +50,16 @@ estimateUpDirection (const std::vector<Plane>& planes,
  * what the steps add up to (docs/khoshelham_gorte.md has the figures of the AHN
  * tiles); the pieces themselves are level. The plane's points are
  * binned in cells of its own frame, \a cells_across along the larger side of their
- * extent; each cell of 8 points or more gets its own plane (the smallest eigenvector
- * of its covariance, pcl_ext::CovarianceSums), the cells whose RMS exceeds 3 times the
- * median cell's (steps, kerbs, clutter) are left out, and the mean of the others'
- * normals, each cell one vote (area, not density, counts), is the result. A plane whose
- * RMS is at most twice the median cell's is even at its own scale (a floor, a paved
- * yard with noise): its fit is the better estimate and is kept; so is the fit of a
- * plane whose patches lean from it by less than 0.1 degrees, the order of the patches'
- * own error (cells of a few points, range noise at grazing angles). \param[in] points
- * the plane's inliers \param[in] plane_normal the fitted plane's unit normal
+ * extent; each cell of 8 points or more is fitted by least squares (height along \a
+ * plane's normal over the plane's axes), the cells whose RMS exceeds 3 times the median
+ * cell's (steps, kerbs, clutter) are left out, and the mean of the others' normals,
+ * each cell one vote (area, not density, counts), is the result. A plane whose RMS is
+ * at most twice the median cell's is even at its own scale (a floor, a paved yard with
+ * noise): its fit is the better estimate and is kept; so is the fit of a plane whose
+ * patches lean from it by less than 0.1 degrees, the order of the patches' own error
+ * (cells of a few points, range noise at grazing angles).
+ * \param[in] points the plane's inliers
+ * \param[in] plane_normal the fitted plane's unit normal
  * \param[out] normal the mean patch normal, on \a plane_normal's side
  * \param[in] cells_across cells along the larger side, >= 2; default 32
  * \return false (\a normal = \a plane_normal) for an even plane, patches leaning by
