@@ -132,7 +132,9 @@ estimateFlatPatchNormal (const std::vector<Eigen::Vector3d>& points,
   const int columns = static_cast<int> (box.sizes().x() / cell) + 1;
   const int rows = static_cast<int> (box.sizes().y() / cell) + 1;
   // Per cell: the sums of a least-squares fit h = a u + b v + c about the cell's
-  // centre.
+  // centre. A regression of the height, not the covariance kernel's smallest
+  // eigenvector: range noise at grazing angles lies mostly in the plane, and only the
+  // height's error should enter the slope (docs/khoshelham_gorte.md).
   struct Sums {
     std::size_t count = 0;
     double u = 0, v = 0, h = 0, uu = 0, vv = 0, uv = 0, uh = 0, vh = 0, hh = 0;
