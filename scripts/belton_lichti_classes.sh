@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The Belton & Lichti classification with its defaults on scenes it was not tuned on:
 # surface and edge F1 of pcl_ext_classify_variance against each scene's `class` field (a
-# point is an edge within one scan spacing of a crease, as pcl_ext_generate_scene marks
-# it and pcl_ext_evaluate scores it), with the edges narrowed to their creases (the
-# default) and as eq. 5 gives them (-wide_edges). One row per scene, then the mean of
-# each family.
+# point is an edge within one scan spacing of a crease whose two faces were scanned, as
+# pcl_ext_generate_scene marks it and pcl_ext_evaluate scores it), with the edges
+# narrowed to their creases (the default) and as eq. 5 gives them (-wide_edges). One row
+# per scene, then the mean of each family.
 #
 #   scripts/belton_lichti_classes.sh                       # indoor, building, pipes, seeds 4-10
 #   SEEDS="1 2" FAMILIES="indoor" scripts/belton_lichti_classes.sh

@@ -138,8 +138,8 @@ main (int argc, char** argv)
                 "spacing range*step");
   cl.addSwitch ("curve_boundaries_only",
                 curves_only,
-                "class boundary only along the scene's borders, not along shadows and "
-                "the blind cone");
+                "class boundary only along the scene's borders, not along shadows, "
+                "the blind cone and creases seen from one side");
   cl.addSwitch (
       "surface_segments",
       surface_segments,

@@ -7,10 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <iostream>
 #include <map>
+#include <vector>
 
 using namespace pcl_ext;
 using namespace pcl_ext::simulation;
@@ -305,6 +307,115 @@ TEST (TlsScanSimulation, BordersOfOneScanThatAnotherCoversAreSurface)
             << ", both scans " << outline (both) << "\n";
   EXPECT_GT (outline (one), 40u);
   EXPECT_EQ (outline (both), 0u);
+}
+
+namespace {
+/** The box points of \a cloud within \a band of exactly one crease of the box of
+ * groundAndBox, away from its corners, counted by whether the crease's other face is
+ * one of \a seen (a face: axis * 2 + 0 for its lower side, + 1 for its upper) and by
+ * their class. */
+struct CreaseCounts {
+  std::size_t two_sided = 0, two_sided_edges = 0;
+  std::size_t one_sided = 0, one_sided_boundaries = 0;
+};
+
+CreaseCounts
+countCreasePoints (const pcl::PointCloud<SimulatedPoint>& cloud,
+                   const std::vector<int>& seen,
+                   double band)
+{
+  const double lo[3] = {5, -1, 0.5}, hi[3] = {7, 1, 2.5};
+  CreaseCounts counts;
+  for (const auto& p : cloud) {
+    if (p.label != 2)
+      continue;
+    const double c[3] = {p.x, p.y, p.z};
+    int on = -1;
+    for (int k = 0; k < 3; ++k)
+      if (std::min (std::abs (c[k] - lo[k]), std::abs (c[k] - hi[k])) < 1e-4)
+        on = k;
+    int other = -1, near = 0;
+    bool clear = true;
+    for (int k = 0; k < 3; ++k) {
+      if (k == on)
+        continue;
+      const double d_lo = std::abs (c[k] - lo[k]), d_hi = std::abs (c[k] - hi[k]);
+      const double d = std::min (d_lo, d_hi);
+      clear = clear && std::abs (d - band) > 1e-3;
+      if (d < band) {
+        ++near;
+        other = 2 * k + (d_hi < d_lo);
+      }
+    }
+    if (on < 0 || near != 1 || !clear)
+      continue;
+    const bool two_sided = std::find (seen.begin(), seen.end(), other) != seen.end();
+    const auto cls = static_cast<PointClass> (p.point_class);
+    if (two_sided) {
+      ++counts.two_sided;
+      counts.two_sided_edges += cls == PointClass::Edge;
+    }
+    else {
+      ++counts.one_sided;
+      counts.one_sided_boundaries += cls == PointClass::Boundary;
+    }
+  }
+  return counts;
+}
+} // namespace
+
+// A crease the scan saw from one side only is where the scanned part of a surface ends,
+// as at a shadow: from (0, 5, 6) the box shows its front (x = 5), its near side (y = 1)
+// and its top, each at 50-60 degrees of incidence, and the creases those faces share
+// are edges, while where they meet the back, the far side or the bottom, which no ray
+// reaches, their points are boundaries. A second scanner beside the far side (y = -1)
+// sees it, and the creases the front and the top share with it are edges again; the
+// bottom's stay boundaries.
+TEST (TlsScanSimulation, CreasesSeenFromOneSideAreBoundaries)
+{
+  const SceneGeometry geometry = groundAndBox (true);
+  const double band = 0.05;
+  const auto scan = [&] (const std::vector<Vec3>& origins) {
+    TlsScanSimulation scanner;
+    scanner.setScanPositions (origins);
+    scanner.setAngularStep (0.15);
+    scanner.setElevationRange (-45.0, 10.0);
+    scanner.setRangeNoise (0.0);
+    scanner.setEdgeDistance (band);
+    pcl::PointCloud<SimulatedPoint> cloud;
+    EXPECT_TRUE (scanner.scan (geometry, cloud));
+    return cloud;
+  };
+  // Faces: axis * 2 + (0 lower, 1 upper).
+  const auto one = countCreasePoints (scan ({Vec3 (0, 5, 6)}), {0, 3, 5}, band);
+  EXPECT_GT (one.two_sided, 300u);
+  EXPECT_GT (one.one_sided, 300u);
+  EXPECT_EQ (one.two_sided_edges, one.two_sided);
+  EXPECT_EQ (one.one_sided_boundaries, one.one_sided);
+
+  const auto both =
+      countCreasePoints (scan ({Vec3 (0, 5, 6), Vec3 (6, -6, 4)}), {0, 2, 3, 5}, band);
+  EXPECT_GT (both.two_sided, one.two_sided + 300u);
+  // The far side is seen from 5 m, the top from 9 m: a few far-side points at the far
+  // end of the band have no return of the top within 4 of their (shorter) spacings.
+  EXPECT_GE (both.two_sided_edges, 0.99 * both.two_sided);
+  EXPECT_GT (both.one_sided, 300u);
+  EXPECT_EQ (both.one_sided_boundaries, both.one_sided);
+
+  // Without the coverage boundaries the truth is the scene's: every crease point an
+  // edge.
+  TlsScanSimulation scanner;
+  scanner.setScanPositions ({Vec3 (0, 5, 6)});
+  scanner.setAngularStep (0.15);
+  scanner.setElevationRange (-45.0, 10.0);
+  scanner.setRangeNoise (0.0);
+  scanner.setEdgeDistance (band);
+  scanner.setCoverageBoundaries (false);
+  pcl::PointCloud<SimulatedPoint> scene;
+  ASSERT_TRUE (scanner.scan (geometry, scene));
+  const auto geometric = countCreasePoints (scene, {0, 1, 2, 3, 4, 5}, band);
+  EXPECT_EQ (geometric.two_sided_edges, geometric.two_sided);
+  EXPECT_GT (geometric.two_sided, one.two_sided + 300u);
 }
 
 // A vertical pipe standing on the ground in front of the scanner: its data end at its

@@ -32,6 +32,7 @@ struct ScanReturn {
   Vec3 truth;
   double range;
   double spacing;
+  double band;            ///< the truth's edge and boundary distance at this return
   Eigen::Vector3f normal; ///< unit surface normal at the true position
   bool porous; ///< on a porous primitive (vegetation), not a continuous surface
 };

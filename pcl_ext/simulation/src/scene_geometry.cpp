@@ -255,15 +255,13 @@ SceneGeometry::intersectBruteForce (const Ray& ray,
   return found;
 }
 
+template <typename Visit>
 void
-SceneGeometry::curveDistances (const Vec3& p,
-                               std::uint32_t segment,
-                               double max_distance,
-                               double& crease,
-                               double& border) const
+SceneGeometry::visitCurvesNear (const Vec3& p,
+                                std::uint32_t segment,
+                                double max_distance,
+                                Visit&& visit) const
 {
-  const double inf = std::numeric_limits<double>::infinity();
-  crease = border = inf;
   const auto it = curves_of_segment_.find (segment);
   if (it == curves_of_segment_.end())
     return;
@@ -278,14 +276,39 @@ SceneGeometry::curveDistances (const Vec3& p,
       if (far (curve_boxes_[c]))
         continue;
       const double d = curves_[c].distance (p);
-      if (d > max_distance)
-        continue;
-      if (curves_[c].kind == GroundTruthCurve::Kind::Crease)
-        crease = std::min (crease, d);
-      else
-        border = std::min (border, d);
+      if (d <= max_distance)
+        visit (curves_[c], d);
     }
   }
+}
+
+void
+SceneGeometry::curveDistances (const Vec3& p,
+                               std::uint32_t segment,
+                               double max_distance,
+                               double& crease,
+                               double& border) const
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  crease = border = inf;
+  visitCurvesNear (p, segment, max_distance, [&] (const GroundTruthCurve& c, double d) {
+    if (c.kind == GroundTruthCurve::Kind::Crease)
+      crease = std::min (crease, d);
+    else
+      border = std::min (border, d);
+  });
+}
+
+void
+SceneGeometry::creaseFacesNear (const Vec3& p,
+                                std::uint32_t segment,
+                                double max_distance,
+                                std::vector<std::uint32_t>& others) const
+{
+  visitCurvesNear (p, segment, max_distance, [&] (const GroundTruthCurve& c, double) {
+    if (c.kind == GroundTruthCurve::Kind::Crease)
+      others.push_back (c.segment_a == segment ? c.segment_b : c.segment_a);
+  });
 }
 
 PointClass

@@ -4,6 +4,7 @@
  */
 #include "connected_pieces.h"
 #include "coverage_boundaries.h"
+#include "one_sided_creases.h"
 #include "scan_grid.h"
 
 #include <pcl_ext/common/parallel.h>
@@ -307,8 +308,10 @@ struct ScanVisitor {
       // The tree serves the coverage boundaries and the links between scanners.
       detail::ReturnIndex index;
       detail::buildReturnIndex (grid, points, coverage_boundaries, index);
-      if (coverage_boundaries)
+      if (coverage_boundaries) {
         detail::markCoverageBoundaries (grid, index, threads, points);
+        detail::markOneSidedCreases (grid, index, geometry, threads, points);
+      }
       if (connected_segments)
         detail::splitSegmentsIntoPieces (
             grid, index, threads, points, surface_of_segment);
@@ -364,6 +367,7 @@ struct ScanVisitor {
                                 truth,
                                 hit.t,
                                 hit.t * step_rad / std::max (cos_incidence, 0.05),
+                                distance,
                                 hit.normal.cast<float>(),
                                 primitive.porosity > 0.0});
   }

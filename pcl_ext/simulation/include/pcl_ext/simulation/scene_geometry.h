@@ -65,6 +65,15 @@ public:
                   double& crease,
                   double& border) const;
 
+  /** \brief The other surfaces of the creases of segment \a segment within \a
+   * max_distance of \a p, appended to \a others (one entry per crease, in curve order).
+   */
+  void
+  creaseFacesNear (const Vec3& p,
+                   std::uint32_t segment,
+                   double max_distance,
+                   std::vector<std::uint32_t>& others) const;
+
   /** \brief Class of a point at true position \a p on segment \a segment: Edge when a
    * crease is within \a distance (and no border is nearer), Boundary when a border is,
    * else Surface. */
@@ -101,6 +110,14 @@ private:
   buildNode (int first, int count, const std::vector<Aabb>& boxes);
   bool
   passesThrough (int primitive, std::uint64_t ray_key) const;
+  /** Calls \a visit (curve, distance) for every curve of \a segment within \a
+   * max_distance of \a p. */
+  template <typename Visit>
+  void
+  visitCurvesNear (const Vec3& p,
+                   std::uint32_t segment,
+                   double max_distance,
+                   Visit&& visit) const;
 
   std::vector<Primitive::Ptr> primitives_;
   std::vector<GroundTruthCurve> curves_;

@@ -44,8 +44,11 @@ namespace simulation {
  * of the field of view; not on porous surfaces, whose gaps let rays through). A point
  * stays marked only where the returns of all scanners leave the gap open: those of its
  * surface among its 64 nearest returns, within 4 of its spacings, leave more than a
- * right angle free around it (another scanner seeing into a shadow closes it). Those
- * are the borders of the sampled surface that a point cloud method sees.
+ * right angle free around it (another scanner seeing into a shadow closes it). An Edge
+ * point becomes Boundary too where no scanner saw the crease's other face near it (the
+ * back of a box, a roof above a wall seen from the street): no return of that face lies
+ * within 4 of its spacings, as for the open borders. Those are the borders
+ * of the sampled surface that a point cloud method sees.
  * - Segment ground truth: by default (setConnectedSegments) a segment id names one
  * connected visible piece of a surface, not the whole surface: a ceiling cut in two by
  * a wall, or a floor split by an object's shadow that no scan position sees into, gives
@@ -147,8 +150,8 @@ public:
   }
 
   /** \brief Mark the borders of the scanned part of each surface (shadows, silhouettes,
-   * field of view, range) as Boundary, besides the borders of the surfaces themselves
-   * (default true). */
+   * field of view, range, creases whose other face was not seen) as Boundary, besides
+   * the borders of the surfaces themselves (default true). */
   void
   setCoverageBoundaries (bool enable)
   {
