@@ -375,13 +375,14 @@ TEST (TlsScanSimulation, CreasesSeenFromOneSideAreBoundaries)
 {
   const SceneGeometry geometry = groundAndBox (true);
   const double band = 0.05;
-  const auto scan = [&] (const std::vector<Vec3>& origins) {
+  const auto scan = [&] (const std::vector<Vec3>& origins, bool coverage = true) {
     TlsScanSimulation scanner;
     scanner.setScanPositions (origins);
     scanner.setAngularStep (0.15);
     scanner.setElevationRange (-45.0, 10.0);
     scanner.setRangeNoise (0.0);
     scanner.setEdgeDistance (band);
+    scanner.setCoverageBoundaries (coverage);
     pcl::PointCloud<SimulatedPoint> cloud;
     EXPECT_TRUE (scanner.scan (geometry, cloud));
     return cloud;
@@ -404,16 +405,8 @@ TEST (TlsScanSimulation, CreasesSeenFromOneSideAreBoundaries)
 
   // Without the coverage boundaries the truth is the scene's: every crease point an
   // edge.
-  TlsScanSimulation scanner;
-  scanner.setScanPositions ({Vec3 (0, 5, 6)});
-  scanner.setAngularStep (0.15);
-  scanner.setElevationRange (-45.0, 10.0);
-  scanner.setRangeNoise (0.0);
-  scanner.setEdgeDistance (band);
-  scanner.setCoverageBoundaries (false);
-  pcl::PointCloud<SimulatedPoint> scene;
-  ASSERT_TRUE (scanner.scan (geometry, scene));
-  const auto geometric = countCreasePoints (scene, {0, 1, 2, 3, 4, 5}, band);
+  const auto geometric =
+      countCreasePoints (scan ({Vec3 (0, 5, 6)}, false), {0, 1, 2, 3, 4, 5}, band);
   EXPECT_EQ (geometric.two_sided_edges, geometric.two_sided);
   EXPECT_GT (geometric.two_sided, one.two_sided + 300u);
 }
