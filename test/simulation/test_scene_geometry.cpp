@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 using namespace pcl_ext::simulation;
 
@@ -134,4 +135,18 @@ TEST (SceneGeometry, ClassesFromTheCurvesOfTheirOwnSegment)
   geometry.curveDistances (Vec3 (1.03, 0.02, 0), 1, 0.025, to_crease, to_border);
   EXPECT_NEAR (to_crease, 0.02, 1e-12);
   EXPECT_TRUE (std::isinf (to_border)) << "farther than the distance asked for";
+
+  // The other faces of the creases near a point: segment 2 seen from segment 1 and the
+  // reverse; none from a border, from too far, or for a segment with no crease.
+  std::vector<std::uint32_t> others;
+  geometry.creaseFacesNear (Vec3 (1.03, 0.02, 0), 1, band, others);
+  EXPECT_EQ (others, std::vector<std::uint32_t> ({2}));
+  others.clear();
+  geometry.creaseFacesNear (Vec3 (-3, 0.02, 0), 2, band, others);
+  EXPECT_EQ (others, std::vector<std::uint32_t> ({1}));
+  others.clear();
+  geometry.creaseFacesNear (Vec3 (1.03, 5, 0), 1, band, others);
+  geometry.creaseFacesNear (Vec3 (-3, 0.2, 0), 1, band, others);
+  geometry.creaseFacesNear (Vec3 (-3, 0.02, 0), 3, band, others);
+  EXPECT_TRUE (others.empty());
 }
