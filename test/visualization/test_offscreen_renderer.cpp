@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <unistd.h>
 #include <limits>
@@ -87,6 +88,28 @@ TEST (OffscreenRenderer, RefusesNothingToDrawAndBadSizesWithoutWriting)
   EXPECT_FALSE (renderToPng ({ok}, path, tiny));
   EXPECT_FALSE (renderToPng ({ok}, "/nonexistent-folder/x.png"));
   EXPECT_FALSE (std::ifstream (path).good());
+}
+
+// A DISPLAY naming no server: an error and no file, where VTK alone aborts the process.
+TEST (OffscreenRenderer, ADisplayThatCannotBeOpenedIsRefused)
+{
+  using namespace pcl_ext::visualization;
+  const char* before = std::getenv ("DISPLAY");
+  const std::string saved = before ? before : "";
+  setenv ("DISPLAY", ":9876", 1);
+  EXPECT_FALSE (displayAvailable());
+  const std::string path = temporaryPng ("no_display");
+  std::remove (path.c_str());
+  const auto cloud = sphereCloud (100);
+  View view{
+      "no display",
+      {{makeColouredCloud (cloud, std::vector<Colour> (100, Colour{1, 2, 3})), 2.0}}};
+  EXPECT_FALSE (renderToPng ({view}, path));
+  EXPECT_FALSE (std::ifstream (path).good());
+  if (before)
+    setenv ("DISPLAY", saved.c_str(), 1);
+  else
+    unsetenv ("DISPLAY");
 }
 
 TEST (OffscreenRenderer, LongTitlesStayInsideTheirPanel)

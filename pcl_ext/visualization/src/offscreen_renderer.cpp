@@ -26,13 +26,6 @@
 
 namespace pcl_ext {
 namespace visualization {
-bool
-displayAvailable ()
-{
-  const char* display = std::getenv ("DISPLAY");
-  return display && *display;
-}
-
 namespace {
 /** Font size (pixels) at which every line of \a title fits a panel of the given size:
  * at most 22 and a 22nd of the panel height, smaller for long lines (VTK's default
@@ -161,12 +154,13 @@ renderToPng (const std::vector<View>& views,
     return false;
   }
   if (!displayAvailable()) {
+    const char* display = std::getenv ("DISPLAY");
     PCL_ERROR (
         "[pcl_ext::visualization::renderToPng] rendering %s needs an X display (VTK "
-        "here "
-        "is built for X only); on a headless machine run under Xvfb, e.g. 'xvfb-run -a "
-        "<command>'.\n",
-        path.c_str());
+        "here is built for X only) and none can be opened (DISPLAY=%s); on a headless "
+        "machine run under Xvfb, e.g. 'xvfb-run -a <command>'.\n",
+        path.c_str(),
+        display ? display : "");
     return false;
   }
   if (!io::checkWritable (path))

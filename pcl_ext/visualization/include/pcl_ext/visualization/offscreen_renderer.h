@@ -112,7 +112,8 @@ renderToPng (const std::vector<View>& views,
              const std::string& path,
              const RenderOptions& options = RenderOptions());
 
-/** \brief Whether an X display is available for rendering. */
+/** \brief Whether an X display is available for rendering: DISPLAY is set and the
+ * display opens (tried a few times over about a second). */
 bool
 displayAvailable ();
 } // namespace visualization
