@@ -118,7 +118,4 @@ if [ "$mode" = "--sanitize-quick" ]; then
   done
   exit "$status"
 fi
-# A test that fails is run once more: under Xvfb a connection can be refused for a moment
-# (docs/visualization.md), and VTK then aborts the test that renders. A failure that
-# repeats still fails the run.
-ctest --output-on-failure -j "$jobs" --timeout "$timeout" --repeat until-pass:2
+ctest --output-on-failure -j "$jobs" --timeout "$timeout"

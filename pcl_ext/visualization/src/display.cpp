@@ -6,6 +6,9 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <map>
+#include <mutex>
+#include <string>
 #include <thread>
 
 #include <X11/Xlib.h>
@@ -18,13 +21,21 @@ displayAvailable ()
   const char* name = std::getenv ("DISPLAY");
   if (!name || !*name)
     return false;
-  // VTK aborts the process when it cannot open the display: open it here first, so
-  // that a display that cannot be reached (a stale DISPLAY, a server that has gone)
-  // gives an error instead. A busy server may refuse a connection for a moment: a few
-  // attempts.
+  // An X server resets when its last client leaves (unless started with -noreset, which
+  // Xvfb is not by default) and refuses connections while it does. A connection opened
+  // here and closed again would leave the server without clients just before VTK opens
+  // its own, which then fails, and VTK aborts the process. The connection therefore
+  // stays open for the life of the process (one per display name): while it is open the
+  // server does not reset under VTK's connection. A server that is resetting because
+  // another process has just left it refuses for a moment: a few attempts.
+  static std::mutex mutex;
+  static std::map<std::string, Display*> connections;
+  std::lock_guard<std::mutex> lock (mutex);
+  if (connections.count (name))
+    return true;
   for (int attempt = 0; attempt < 5; ++attempt) {
     if (Display* display = XOpenDisplay (name)) {
-      XCloseDisplay (display);
+      connections[name] = display;
       return true;
     }
     std::this_thread::sleep_for (std::chrono::milliseconds (200));

@@ -113,7 +113,9 @@ renderToPng (const std::vector<View>& views,
              const RenderOptions& options = RenderOptions());
 
 /** \brief Whether an X display is available for rendering: DISPLAY is set and the
- * display opens (tried a few times over about a second). */
+ * display opens (tried a few times over about a second). The connection is kept open
+ * until the process ends, so that the server does not reset (and refuse VTK's
+ * connection) between this check and the rendering. */
 bool
 displayAvailable ();
 } // namespace visualization
