@@ -19,6 +19,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+#include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -37,8 +39,12 @@ public:
     if (pid_ == 0) {
       ::close (fds[0]);
       const std::string fd = std::to_string (fds[1]);
-      // Quiet: its log is not the test's.
-      std::freopen ("/dev/null", "w", stderr);
+      // Its output is not the test's, and it must not hold the test's output open
+      // (ctest waits for it) nor outlive the test should the test abort.
+      const int null = ::open ("/dev/null", O_WRONLY);
+      ::dup2 (null, STDOUT_FILENO);
+      ::dup2 (null, STDERR_FILENO);
+      ::prctl (PR_SET_PDEATHSIG, SIGTERM);
       ::execlp ("Xvfb",
                 "Xvfb",
                 "-displayfd",
