@@ -116,7 +116,10 @@ main (int argc, char** argv)
       "also writes <stem>.footprint.wkt and <stem>.transform.txt (scan-to-map 4x4).");
   cl.addPositional ("scene", scene_name, "one of: " + names);
   cl.addPositional ("output.pcd", output, "where to write the cloud (.pcd or .ply)");
-  cl.addOption ("seed", seed, "random seed (noise, vegetation, layout variations)");
+  cl.addOption (
+      "seed",
+      seed,
+      "random seed (noise, vegetation; the layout of tree, street, cubes and spheres)");
   cl.addOption (
       "points",
       points,

@@ -264,9 +264,10 @@ TEST_P (LocalVarianceScenes, CreaseAngleRaisesEdgeF1)
 
 // Edge goal, met with a 70 degree crease angle (k = 50, 1e-4, range noise removed,
 // boundary band). The angle was chosen on these two scenes and checked on other
-// layouts. Near a crease the normals of k = 50 neighbourhoods are blends of the two
-// faces', so a right angle shows as less and large angles lose crease points; on pipes
-// the false edges without the crease angle are pipe points whose one-sided or pipe-wide
+// seeds (other noise; the layouts of indoor and pipes do not change with the seed).
+// Near a crease the normals of k = 50 neighbourhoods are blends of the two faces', so a
+// right angle shows as less and large angles lose crease points; on pipes the false
+// edges without the crease angle are pipe points whose one-sided or pipe-wide
 // neighbourhood changes kappa though the surface is smooth, which the crease angle
 // catches.
 TEST_P (LocalVarianceScenes, EdgeF1MeetsTheGoal)
@@ -294,7 +295,7 @@ TEST (LocalVarianceScenes, IndoorEdgeF1MeetsTheGoalWithTheNoiseRemoved)
 // only within about half a neighbourhood radius of a border, where the truth reaches
 // one radius: the band carries it there, and through the whole neighbourhood (about 1.5
 // radii) too far. The fraction was chosen on these two scenes and checked on other
-// layouts; the margin on pipes is thin.
+// seeds (other noise, the same layouts); the margin on pipes is thin.
 TEST_P (LocalVarianceScenes, BoundaryF1MeetsTheGoal)
 {
   const Scene& s = scene (GetParam());

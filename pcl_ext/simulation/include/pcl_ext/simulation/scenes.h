@@ -32,7 +32,10 @@ enum class OutdoorLabel : std::uint32_t {
 /** \brief Parameters shared by every scene; 0 (or empty) means "the scene's default".
  */
 struct SceneParameters {
-  std::uint64_t seed = 1; ///< noise, porosity and layout variations
+  /// Noise and porosity draws, and the layout of the tree, street, cubes and spheres
+  /// scenes (indoor, pipes, coaxial and building have one layout each; the building's
+  /// frame pose is drawn from it too).
+  std::uint64_t seed = 1;
   std::size_t points = 0; ///< target point count (chooses the angular step), <= 1e8
   double angular_step_deg =
       0.0;              ///< angular step in [0.001, 10] degrees; overrides \a points
